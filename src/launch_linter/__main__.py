@@ -1,0 +1,5 @@
+import sys
+
+from launch_linter.cli import main
+
+sys.exit(main())

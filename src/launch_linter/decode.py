@@ -1,0 +1,161 @@
+"""Decode ``static_transform_publisher`` argument lists exactly as each program reads them.
+
+ROS 1 ``tf`` takes 9 (ypr) or 10 (quaternion) arguments, the last being the period in ms.
+ROS 1 ``tf2_ros`` takes 8 (ypr), 9 (quaternion) or 1 (a parameter name), and no period.
+Numbers go through C ``atof``: junk reads as 0. ``name:=value`` words are ROS remappings
+that ``ros::init`` removes before the program counts its arguments.
+
+The decoded record keeps the developer's intended reading (the tf convention matching the
+written count) and, in ``arity_issue``, what the program really does with it.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from launch_linter.model.transform import NumberIssue, Rotation, RotationKind
+
+_NUMBER = re.compile(
+    r"""[+-]?(
+        (\d+\.?\d*|\.\d+)([eE][+-]?\d+)?
+      | 0[xX]([0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)([pP][+-]?\d+)?
+      | inf(inity)? | nan(\([0-9A-Za-z_]*\))?
+    )""",
+    re.VERBOSE | re.IGNORECASE,
+)
+
+
+def atof(text: str) -> tuple[float, bool]:
+    """C ``atof``: the longest numeric prefix (0.0 if none), and whether all of it was read."""
+    stripped = text.lstrip()
+    match = _NUMBER.match(stripped)
+    if match is None:
+        return 0.0, False
+    number = match.group(0)
+    try:
+        if "x" in number.lower() and "inf" not in number.lower():
+            sign = -1.0 if number.startswith("-") else 1.0
+            body = number.lstrip("+-")
+            value = sign * float.fromhex(body)
+        else:
+            value = float(number)
+    except (ValueError, OverflowError):
+        value = 0.0
+    return value, match.end() == len(stripped) and stripped == text
+
+
+def is_number(text: str) -> bool:
+    _, whole = atof(text)
+    return whole
+
+
+@dataclass(frozen=True, slots=True)
+class Decoded:
+    form: str
+    parent: str | None
+    child: str | None
+    translation: tuple[float, float, float] | None
+    rotation: Rotation | None
+    period_ms: float | None
+    arity_issue: str | None
+    number_issues: tuple[NumberIssue, ...]
+    numeric_indices: tuple[int, ...]
+    parent_index: int | None
+    child_index: int | None
+
+
+def program_words(tokens: tuple[str, ...]) -> tuple[str, ...]:
+    """The words the program counts: ``ros::init`` removes ``name:=value`` remappings."""
+    return tuple(t for t in tokens if ":=" not in t)
+
+
+def _numbers(words: tuple[str, ...], count: int) -> tuple[list[float], list[NumberIssue]]:
+    values: list[float] = []
+    issues: list[NumberIssue] = []
+    for index in range(count):
+        value, whole = atof(words[index])
+        if not whole or not math.isfinite(value):
+            issues.append(NumberIssue(index, words[index], value))
+        values.append(value)
+    return values, issues
+
+
+def _layout(
+    words: tuple[str, ...], rotation_size: int, with_period: bool, form: str, issue: str | None
+) -> Decoded:
+    numeric = 3 + rotation_size
+    values, issues = _numbers(words, numeric)
+    period: float | None = None
+    if with_period:
+        period, whole = atof(words[numeric + 2])
+        if not whole:
+            issues.append(NumberIssue(numeric + 2, words[numeric + 2], period))
+    kind = RotationKind.YPR if rotation_size == 3 else RotationKind.QUATERNION
+    return Decoded(
+        form=form,
+        parent=words[numeric],
+        child=words[numeric + 1],
+        translation=(values[0], values[1], values[2]),
+        rotation=Rotation(kind, tuple(values[3:numeric])),
+        period_ms=period,
+        arity_issue=issue,
+        number_issues=tuple(issues),
+        numeric_indices=tuple(range(numeric)) + ((numeric + 2,) if with_period else ()),
+        parent_index=numeric,
+        child_index=numeric + 1,
+    )
+
+
+def _invalid(issue: str) -> Decoded:
+    return Decoded("invalid", None, None, None, None, None, issue, (), (), None, None)
+
+
+def decode_ros1(package: str, tokens: tuple[str, ...]) -> Decoded:
+    """Decode the argument words of a ROS 1 ``tf`` or ``tf2_ros`` static_transform_publisher."""
+    words = program_words(tokens)
+    count = len(words)
+    if package == "tf":
+        if count == 9:
+            if not is_number(words[8]) and is_number(words[6]):
+                return _layout(
+                    words, 4, False, "quaternion",
+                    f"tf needs a period after the child frame: with 9 arguments it reads "
+                    f"'{words[6]}' as the parent frame, '{words[7]}' as the child and "
+                    f"'{words[8]}' as the period",
+                )
+            return _layout(words, 3, True, "ypr", None)
+        if count == 10:
+            return _layout(words, 4, True, "quaternion", None)
+        if count == 8:
+            return _layout(
+                words, 3, False, "ypr",
+                "tf needs 9 or 10 arguments (the last is the period in ms); "
+                "with 8 it prints its usage and exits",
+            )
+        return _invalid(
+            f"tf takes 9 (x y z yaw pitch roll parent child period_ms) or 10 "
+            f"(x y z qx qy qz qw parent child period_ms) arguments, not {count}"
+        )
+    if count == 8:
+        return _layout(words, 3, False, "ypr", None)
+    if count == 9:
+        if not is_number(words[6]) and is_number(words[8]):
+            return _layout(
+                words, 3, True, "ypr",
+                f"tf2_ros takes no period: with 9 arguments it reads a quaternion with "
+                f"qw='{words[6]}' (0), parent '{words[7]}' and child '{words[8]}'",
+            )
+        return _layout(words, 4, False, "quaternion", None)
+    if count == 10:
+        return _layout(
+            words, 4, True, "quaternion",
+            "tf2_ros takes no period: with 10 arguments it prints its usage and exits",
+        )
+    if count == 1:
+        return Decoded("param", None, None, None, None, None, None, (), (), None, None)
+    return _invalid(
+        f"tf2_ros takes 8 (x y z yaw pitch roll parent child), 9 "
+        f"(x y z qx qy qz qw parent child) or 1 (/param_name) arguments, not {count}"
+    )

@@ -1,0 +1,189 @@
+"""The library API under the command line: discover files, load trees, run rules."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+
+from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
+from launch_linter.frontends.ros1 import LoadOptions
+from launch_linter.model.beliefs import BeliefSet
+from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.transform import StaticTransform
+from launch_linter.resolve.packages import PackageIndex, default_package_roots
+from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+
+MAX_DISCOVERED_FILES = 200_000
+
+
+@dataclass(frozen=True, slots=True)
+class LintOptions:
+    """How to resolve launch files and which rules to run."""
+
+    args: dict[str, str] = field(default_factory=dict)
+    env: dict[str, str] = field(default_factory=dict)
+    package_paths: tuple[str, ...] | None = None
+    """``$(find)`` roots; None means the enclosing workspace of each linted file."""
+    select: frozenset[str] | None = None
+    ignore: frozenset[str] = frozenset()
+    severity: dict[str, Severity] = field(default_factory=dict)
+    beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
+    jobs: int = 1
+
+
+@dataclass(frozen=True, slots=True)
+class LintResult:
+    files: tuple[FileRecord, ...]
+    trees: tuple[LaunchTree, ...]
+    diagnostics: tuple[Diagnostic, ...]
+
+    @property
+    def transforms(self) -> tuple[StaticTransform, ...]:
+        return tuple(t for tree in self.trees for t in tree.transforms)
+
+
+@dataclass(frozen=True, slots=True)
+class InputFile:
+    path: str
+    """Absolute path."""
+    display: str
+    """As the user gave it (relative stays relative)."""
+
+
+def _is_launch_xml(path: str) -> bool:
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(4096)
+    except OSError:
+        return False
+    return b"<launch" in head
+
+
+def discover(paths: Sequence[str]) -> list[InputFile]:
+    """Input files: each file named, and launch files found under each folder named."""
+    found: list[InputFile] = []
+    seen: set[str] = set()
+
+    def add(path: str, display: str) -> None:
+        absolute = os.path.abspath(path)
+        if absolute not in seen and len(found) < MAX_DISCOVERED_FILES:
+            seen.add(absolute)
+            found.append(InputFile(absolute, display))
+
+    for given in paths:
+        if os.path.isdir(given):
+            for directory, subdirs, files in os.walk(given):
+                subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
+                for name in sorted(files):
+                    full = os.path.join(directory, name)
+                    if name.endswith(LAUNCH_SUFFIXES) or (
+                        name.endswith(".xml") and _is_launch_xml(full)
+                    ):
+                        add(full, full)
+        else:
+            add(given, given)
+    return found
+
+
+def _display_function(item: InputFile) -> object:
+    relative = not os.path.isabs(item.display)
+
+    def display(path: str) -> str:
+        absolute = os.path.abspath(path)
+        if absolute == item.path:
+            return item.display
+        if relative:
+            rel = os.path.relpath(absolute)
+            if not rel.startswith(".."):
+                return rel
+        return absolute
+
+    return display
+
+
+def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
+    return tuple(
+        r
+        for r in RULES
+        if (options.select is None or r.id in options.select or r.category.value in options.select)
+        and r.id not in options.ignore
+        and r.category.value not in options.ignore
+    )
+
+
+def load_options_for(item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]) -> LoadOptions:
+    roots = tuple(options.package_paths) if options.package_paths is not None else tuple(
+        default_package_roots(item.path)
+    )
+    if roots not in cache:
+        cache[roots] = PackageIndex(list(roots))
+    return LoadOptions(
+        args=options.args,
+        env=options.env,
+        packages=cache[roots],
+        display_path=_display_function(item),  # type: ignore[arg-type]
+    )
+
+
+def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
+    """Run ``rules`` on one tree and apply severity overrides."""
+    context = RuleContext(tree, options.beliefs)
+    out: list[Diagnostic] = []
+    for rule in rules:
+        for diagnostic in rule.check(context):
+            level = options.severity.get(diagnostic.rule)
+            if level is not None and level is not diagnostic.severity:
+                diagnostic = _with_severity(diagnostic, level)
+            out.append(diagnostic)
+    return out
+
+
+def _with_severity(diagnostic: Diagnostic, severity: Severity) -> Diagnostic:
+    from dataclasses import replace
+
+    return replace(diagnostic, severity=severity)
+
+
+def _file_record(item: InputFile, tree: LaunchTree) -> FileRecord:
+    own = sum(1 for t in tree.transforms if t.path == item.display)
+    return FileRecord(item.display, tree.status, own)
+
+
+def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
+    cache: dict[tuple[str, ...], PackageIndex] = {}
+    rules = selected_rules(options)
+    trees: list[LaunchTree] = []
+    records: list[FileRecord] = []
+    diagnostics: dict[tuple[object, ...], Diagnostic] = {}
+    for item in inputs:
+        tree = load_tree(item.path, load_options_for(item, options, cache))
+        trees.append(tree)
+        records.append(_file_record(item, tree))
+        for diagnostic in check_tree(tree, rules, options):
+            diagnostics.setdefault(
+                (diagnostic.sort_key, diagnostic.related, diagnostic.node), diagnostic
+            )
+    ordered = sorted(diagnostics.values(), key=lambda d: d.sort_key)
+    return LintResult(tuple(records), tuple(trees), tuple(ordered))
+
+
+def lint_paths(paths: Sequence[str], options: LintOptions | None = None) -> LintResult:
+    """Lint files and folders; every input file appears once in ``files``."""
+    return lint_files(discover(paths), options or LintOptions())
+
+
+def lint_text(text: str, path: str = "<string>.launch", options: LintOptions | None = None) -> LintResult:
+    """Lint launch-file text as if it were the file ``path`` (which need not exist)."""
+    options = options or LintOptions()
+    item = InputFile(os.path.abspath(path), path)
+    cache: dict[tuple[str, ...], PackageIndex] = {}
+    load = load_options_for(item, options, cache)
+    tree = load_tree(item.path, load, text.encode("utf-8"))
+    diagnostics = sorted(check_tree(tree, selected_rules(options), options), key=lambda d: d.sort_key)
+    return LintResult((_file_record(item, tree),), (tree,), tuple(diagnostics))
+
+
+def rule_ids() -> tuple[str, ...]:
+    return tuple(RULES_BY_ID)

@@ -1,0 +1,82 @@
+"""Mined MAY-Implied beliefs, as the rules read them (format ``launch-linter-beliefs/1``)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from launch_linter.model.diagnostic import Belief
+
+BELIEF_FORMAT = "launch-linter-beliefs/1"
+BELIEF_CLASSES = (
+    "sig_implication",
+    "name_implication",
+    "sig_null_disp",
+    "name_null_disp",
+    "sig_null_rot",
+    "name_null_rot",
+)
+
+
+class BeliefFormatError(ValueError):
+    """The beliefs file does not follow the contract."""
+
+
+def _key(value: Any) -> tuple[str, ...] | str:
+    if isinstance(value, list):
+        return tuple(str(v) for v in value)
+    if isinstance(value, str):
+        return value
+    raise BeliefFormatError(f"belief key must be a string or a list of strings, not {value!r}")
+
+
+@dataclass(frozen=True, slots=True)
+class BeliefSet:
+    """Beliefs at or above ``min_z``; ``source`` names where they came from."""
+
+    source: str
+    min_z: float
+    beliefs: tuple[Belief, ...]
+    p0: float = 0.9
+
+    @staticmethod
+    def empty(source: str = "none") -> BeliefSet:
+        return BeliefSet(source, 0.0, ())
+
+    @staticmethod
+    def from_json(data: Any, source: str, min_z: float = 1.0) -> BeliefSet:
+        if not isinstance(data, dict) or data.get("format") != BELIEF_FORMAT:
+            raise BeliefFormatError(f"not a {BELIEF_FORMAT} document")
+        beliefs: list[Belief] = []
+        for entry in data.get("beliefs", []):
+            try:
+                cls = entry["class"]
+                if cls not in BELIEF_CLASSES:
+                    raise BeliefFormatError(f"unknown belief class {cls!r}")
+                z = float(entry["z"])
+                if z < min_z:
+                    continue
+                then = entry.get("then")
+                beliefs.append(
+                    Belief(
+                        cls,
+                        _key(entry["if"]),
+                        None if then is None else _key(then),
+                        int(entry["n"]),
+                        int(entry["e"]),
+                        z,
+                    )
+                )
+            except (KeyError, TypeError, ValueError) as exc:
+                if isinstance(exc, BeliefFormatError):
+                    raise
+                raise BeliefFormatError(f"malformed belief {entry!r}: {exc}") from None
+        return BeliefSet(source, min_z, tuple(beliefs), float(data.get("p0", 0.9)))
+
+    def of_class(self, cls: str) -> tuple[Belief, ...]:
+        return tuple(b for b in self.beliefs if b.cls == cls)
+
+    def restricted(self, classes: tuple[str, ...]) -> BeliefSet:
+        return BeliefSet(
+            self.source, self.min_z, tuple(b for b in self.beliefs if b.cls in classes), self.p0
+        )

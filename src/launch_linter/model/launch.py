@@ -1,0 +1,46 @@
+"""A launch tree: one input file with everything it includes, as the front-end saw it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+from launch_linter.model.diagnostic import Diagnostic
+from launch_linter.model.transform import StaticTransform
+
+
+class FileStatus(str, Enum):
+    OK = "ok"
+    PARSE_ERROR = "parse_error"
+    UNREADABLE = "unreadable"
+
+
+@dataclass(frozen=True, slots=True)
+class FileRecord:
+    """One input file and how reading it went."""
+
+    path: str
+    status: FileStatus
+    transforms: int
+
+
+@dataclass(frozen=True, slots=True)
+class Comment:
+    """An XML comment (or YAML/Python comment) with the line it ends on."""
+
+    path: str
+    line: int
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchTree:
+    """Everything read from one root file, its includes included."""
+
+    root: str
+    status: FileStatus
+    transforms: tuple[StaticTransform, ...]
+    diagnostics: tuple[Diagnostic, ...]
+    files: tuple[str, ...]
+    comments: tuple[Comment, ...] = ()
+    element_lines: tuple[tuple[str, int], ...] = ()

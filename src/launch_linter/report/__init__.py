@@ -1,0 +1,1 @@
+"""Reporters: diagnostics and transforms to text."""

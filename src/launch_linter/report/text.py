@@ -1,0 +1,54 @@
+"""Human-readable output: ``path:line:col: severity: message [rule]``."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.transform import StaticTransform
+
+_COLOURS = {Severity.ERROR: "\033[31m", Severity.WARNING: "\033[33m", Severity.INFO: "\033[36m"}
+_BOLD, _RESET = "\033[1m", "\033[0m"
+
+
+def format_diagnostic(d: Diagnostic, colour: bool = False) -> str:
+    level = d.severity.value
+    location = f"{d.path}:{d.line}:{d.column}:"
+    if colour:
+        level = f"{_COLOURS[d.severity]}{level}{_RESET}"
+        location = f"{_BOLD}{location}{_RESET}"
+    return f"{location} {level}: {d.message} [{d.rule}]"
+
+
+def format_diagnostics(diagnostics: Iterable[Diagnostic], colour: bool = False) -> str:
+    lines = [format_diagnostic(d, colour) for d in diagnostics]
+    return "\n".join(lines) + ("\n" if lines else "")
+
+
+def summary(diagnostics: Iterable[Diagnostic], files: int) -> str:
+    counts = {s: 0 for s in Severity}
+    for d in diagnostics:
+        counts[d.severity] += 1
+    return (
+        f"{files} file(s): {counts[Severity.ERROR]} error(s), "
+        f"{counts[Severity.WARNING]} warning(s), {counts[Severity.INFO]} info"
+    )
+
+
+def format_transform(t: StaticTransform) -> str:
+    rotation = (
+        f"{t.rotation.kind.value}({', '.join(f'{v:g}' for v in t.rotation.values)})"
+        if t.rotation
+        else "?"
+    )
+    translation = f"({', '.join(f'{v:g}' for v in t.translation)})" if t.translation else "?"
+    extra = []
+    if not t.condition.always:
+        extra.append(f"when {t.condition.describe()}")
+    if t.unresolved:
+        extra.append(f"unresolved: {', '.join(t.unresolved)}")
+    tail = f"  [{'; '.join(extra)}]" if extra else ""
+    return (
+        f"{t.path}:{t.line}:{t.column}: {t.namespace}{t.name or '?'} ({t.package}) "
+        f"{t.parent or '?'} -> {t.child or '?'} t={translation} r={rotation}{tail}"
+    )

@@ -1,0 +1,1 @@
+"""Static resolution of launch-file substitutions, without executing anything."""

@@ -1,0 +1,52 @@
+"""Values that may contain holes: the parts of a text the linter could not resolve."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True, slots=True)
+class Hole:
+    """An unresolved piece of text: the substitution as written and why it is unknown."""
+
+    text: str
+    reason: str
+
+
+Part = str | Hole
+Value = tuple[Part, ...]
+
+
+def literal(text: str) -> Value:
+    return (text,) if text else ()
+
+
+def join(parts: list[Part] | tuple[Part, ...]) -> Value:
+    """Concatenate parts, merging adjacent strings and dropping empty ones."""
+    out: list[Part] = []
+    for part in parts:
+        if isinstance(part, str):
+            if not part:
+                continue
+            if out and isinstance(out[-1], str):
+                out[-1] = out[-1] + part
+                continue
+        out.append(part)
+    return tuple(out)
+
+
+def is_resolved(value: Value) -> bool:
+    return all(isinstance(p, str) for p in value)
+
+
+def text_of(value: Value) -> str:
+    """The value as text, holes shown as the substitution that was written."""
+    return "".join(p if isinstance(p, str) else p.text for p in value)
+
+
+def resolved_text(value: Value) -> str | None:
+    return "".join(p for p in value if isinstance(p, str)) if is_resolved(value) else None
+
+
+def holes(value: Value) -> tuple[Hole, ...]:
+    return tuple(p for p in value if isinstance(p, Hole))

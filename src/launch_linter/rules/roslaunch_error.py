@@ -1,0 +1,40 @@
+"""Something roslaunch itself refuses to load.
+
+## What it does
+Reports what makes roslaunch stop with an error while loading a launch tree: an unknown
+substitution, `if` and `unless` on one tag, a condition that is not `true`/`false`/`1`/`0`,
+an arg declared twice or overridden, include args that are unused or have no value, a
+missing or cyclic include, a node name with a namespace in it. The linter goes on after
+each, so one run shows every such problem instead of roslaunch's first.
+
+## Why is this bad?
+roslaunch refuses to start the whole launch tree, so nothing in it runs.
+
+## Example
+```xml
+<launch>
+  <arg name="rate" default="100"/>
+  <arg name="rate" default="50"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <arg name="rate" default="100"/>
+</launch>
+```
+"""
+
+from collections.abc import Iterable
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext, frontend_diagnostics
+
+ID = "roslaunch_error"
+CATEGORY = Category.LAUNCH
+SEVERITY = Severity.ERROR
+
+
+def check(context: RuleContext) -> Iterable[Diagnostic]:
+    return frontend_diagnostics(context, ID)

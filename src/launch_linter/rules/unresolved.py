@@ -1,0 +1,44 @@
+"""A value the linter could not resolve statically.
+
+## What it does
+Reports a static transform (or an `<include>`) whose values depend on something the linter
+cannot know without running roslaunch: an `$(arg)` that is never set, an `$(env)` variable
+not given with `--env`, a `$(find)` package that is not under the package path, or an
+`$(eval)` outside the safe expression language. The message names each substitution that
+blocked resolution. Rules that need an unknown value stay silent about it.
+
+## Why is this bad?
+It is not a fault in itself: it tells you what the linter could not check, so that a
+clean result is not mistaken for a checked one.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 base_link $(arg laser_frame)"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <arg name="laser_frame" default="laser"/>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 base_link $(arg laser_frame)"/>
+</launch>
+```
+or give the value on the command line: `launch-linter check --arg laser_frame:=laser`.
+"""
+
+from collections.abc import Iterable
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext, frontend_diagnostics
+
+ID = "unresolved"
+CATEGORY = Category.LAUNCH
+SEVERITY = Severity.INFO
+
+
+def check(context: RuleContext) -> Iterable[Diagnostic]:
+    return frontend_diagnostics(context, ID)
