@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
-from launch_linter.rules import parse_error, roslaunch_error, unresolved
+from launch_linter.rules import parse_error, roslaunch_error, unresolved, unused_suppression
 from launch_linter.rules._api import Rule, RuleContext, rule_from_module
 
 RULE_MODULES = (
     parse_error,
     roslaunch_error,
     unresolved,
+    unused_suppression,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

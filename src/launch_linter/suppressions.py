@@ -1,0 +1,221 @@
+"""Inline suppressions written in launch files, and per-path ignores from the configuration.
+
+A directive is a comment whose text (after an optional leading ``#``, for YAML and Python
+launch files) starts with ``launch-linter:``::
+
+    <!-- launch-linter: disable=dup_sig,rot_degrees -->       the next element
+    <!-- launch-linter: disable-file=leading_slash -->         the whole file
+
+``disable`` applies to the first element that starts on a later line than the comment
+ends; ``disable-file`` to every diagnostic located in the comment's file. Ids are rule ids
+or categories, separated by commas; free text may follow after a space (a reason).
+
+Each id of a directive that suppresses nothing is reported as ``unused_suppression``, and
+so are unknown ids and comments that start with ``launch-linter:`` but are not a directive.
+An id naming a rule that did not run (``--select``/``--ignore``) is never reported unused:
+whether it would have matched is unknown.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Collection, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.launch import LaunchTree
+
+UNUSED_ID = "unused_suppression"
+PREFIX = "launch-linter:"
+_DIRECTIVE = re.compile(
+    r"launch-linter:\s*(?P<kind>disable-file|disable)\s*=\s*"
+    r"(?P<ids>[A-Za-z0-9_.-]+(?:\s*,\s*[A-Za-z0-9_.-]+)*)(?P<rest>.*)",
+    re.DOTALL,
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Directive:
+    """One ``launch-linter:`` comment; ``target`` is the element line it covers."""
+
+    path: str
+    line: int
+    """The line the comment ends on (where problems with it are reported)."""
+    whole_file: bool
+    ids: tuple[str, ...]
+    target: int | None
+    """Start line of the next element; None for ``disable-file`` or when none follows."""
+
+
+@dataclass(frozen=True, slots=True)
+class Malformed:
+    """A comment that starts with ``launch-linter:`` but is not a directive."""
+
+    path: str
+    line: int
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class PathIgnore:
+    """``per-path-ignores``: rules (or categories) ignored in files matching ``pattern``.
+
+    ``pattern`` is relative to ``base`` (the configuration file's folder); ``*`` and ``?``
+    stay within one path segment, ``**`` spans segments, and a pattern without ``/``
+    matches the file name at any depth.
+    """
+
+    base: str
+    pattern: str
+    ids: frozenset[str]
+
+    def matches(self, path: str) -> bool:
+        absolute = os.path.abspath(path)
+        if "/" not in self.pattern:
+            return _glob_regex(self.pattern).fullmatch(os.path.basename(absolute)) is not None
+        relative = os.path.relpath(absolute, os.path.abspath(self.base)).replace(os.sep, "/")
+        if relative.startswith("../"):
+            return False
+        return _glob_regex(self.pattern.removeprefix("./")).fullmatch(relative) is not None
+
+
+@lru_cache(maxsize=256)
+def _glob_regex(pattern: str) -> re.Pattern[str]:
+    parts: list[str] = []
+    i = 0
+    while i < len(pattern):
+        if pattern.startswith("**/", i):
+            parts.append("(?:.*/)?")
+            i += 3
+        elif pattern.startswith("**", i):
+            parts.append(".*")
+            i += 2
+        elif pattern[i] == "*":
+            parts.append("[^/]*")
+            i += 1
+        elif pattern[i] == "?":
+            parts.append("[^/]")
+            i += 1
+        else:
+            parts.append(re.escape(pattern[i]))
+            i += 1
+    return re.compile("".join(parts), re.DOTALL)
+
+
+def _directive_text(comment: str) -> str:
+    return comment.strip().lstrip("#").strip()
+
+
+def parse_directives(trees: Iterable[LaunchTree]) -> tuple[list[Directive], list[Malformed]]:
+    """Every directive in the files of ``trees``, once each even if a file is read twice."""
+    directives: dict[Directive, None] = {}
+    malformed: dict[Malformed, None] = {}
+    for tree in trees:
+        starts: dict[str, list[int]] = {}
+        for path, line in tree.element_lines:
+            starts.setdefault(path, []).append(line)
+        for comment in tree.comments:
+            text = _directive_text(comment.text)
+            if not text.startswith(PREFIX):
+                continue
+            match = _DIRECTIVE.fullmatch(text)
+            if match is None or (match["rest"] and not match["rest"][0].isspace()):
+                malformed[Malformed(comment.path, comment.line, text)] = None
+                continue
+            whole_file = match["kind"] == "disable-file"
+            ids = tuple(dict.fromkeys(i.strip() for i in match["ids"].split(",")))
+            later = [line for line in starts.get(comment.path, ()) if line > comment.line]
+            target = None if whole_file or not later else min(later)
+            directives[Directive(comment.path, comment.line, whole_file, ids, target)] = None
+    return list(directives), list(malformed)
+
+
+def _names(diagnostic: Diagnostic) -> tuple[str, str]:
+    return (diagnostic.rule, diagnostic.category.value)
+
+
+def _covers(directive: Directive, diagnostic: Diagnostic) -> bool:
+    if diagnostic.path != directive.path:
+        return False
+    return directive.whole_file or diagnostic.line == directive.target
+
+
+def _unused(path: str, line: int, message: str) -> Diagnostic:
+    return Diagnostic(UNUSED_ID, Category.LAUNCH, Severity.INFO, path, line, 1, message)
+
+
+def apply_suppressions(
+    trees: Sequence[LaunchTree],
+    diagnostics: Iterable[Diagnostic],
+    known: Mapping[str, str],
+    ran: Collection[str],
+    report_unused: bool,
+) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """Drop what the directives in ``trees`` suppress; return (kept, unused-suppression).
+
+    ``known`` maps every rule id to its category; ``ran`` holds the ids of the rules that
+    ran. ``report_unused`` is False when ``unused_suppression`` itself is not selected.
+    """
+    directives, malformed = parse_directives(trees)
+    categories = set(known.values())
+    used: set[tuple[Directive, str]] = set()
+    kept: list[Diagnostic] = []
+    for diagnostic in diagnostics:
+        hits = [
+            (directive, name)
+            for directive in directives
+            if _covers(directive, diagnostic)
+            for name in _names(diagnostic)
+            if name in directive.ids
+        ]
+        if hits:
+            used.update(hits)
+        else:
+            kept.append(diagnostic)
+    if not report_unused:
+        return kept, []
+    ran_categories = {known[r] for r in ran if r in known}
+    unused: list[Diagnostic] = [
+        _unused(m.path, m.line, f"not a launch-linter directive: {m.text!r} "
+                "(expected 'launch-linter: disable=RULE,…' or 'disable-file=RULE,…')")
+        for m in malformed
+    ]
+    for directive in directives:
+        kind = "disable-file" if directive.whole_file else "disable"
+        for name in directive.ids:
+            if name not in known and name not in categories:
+                unused.append(_unused(
+                    directive.path, directive.line,
+                    f"unknown rule {name!r} in '{kind}' directive; it suppresses nothing "
+                    "(see 'launch-linter rules')",
+                ))
+            elif (directive, name) in used or name == UNUSED_ID:
+                continue
+            elif name in ran or name in ran_categories:
+                reason = (
+                    f"no {name} diagnostic in this file" if directive.whole_file
+                    else f"no {name} diagnostic on the next element (line {directive.target})"
+                    if directive.target is not None
+                    else "no element follows the comment"
+                )
+                unused.append(_unused(
+                    directive.path, directive.line,
+                    f"'{kind}={name}' suppresses nothing: {reason}",
+                ))
+    # A directive may silence the reports about directives (disable-file=unused_suppression).
+    reported = [
+        d for d in unused
+        if not any(_covers(directive, d) and UNUSED_ID in directive.ids for directive in directives)
+    ]
+    return kept, reported
+
+
+def ignored_by_path(diagnostic: Diagnostic, ignores: Iterable[PathIgnore]) -> bool:
+    """True when a ``per-path-ignores`` entry covers the diagnostic's file and rule."""
+    names = _names(diagnostic)
+    return any(
+        (names[0] in ignore.ids or names[1] in ignore.ids) and ignore.matches(diagnostic.path)
+        for ignore in ignores
+    )
