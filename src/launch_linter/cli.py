@@ -8,6 +8,7 @@ import sys
 from collections.abc import Sequence
 
 from launch_linter import __version__
+from launch_linter.config import Config, ConfigError, config_for
 from launch_linter.engine import LintOptions, LintResult, lint_paths
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Severity
@@ -123,31 +124,60 @@ def build_parser() -> argparse.ArgumentParser:
     graph.add_argument("--arg", action="append", metavar="NAME:=VALUE")
     graph.add_argument("--package-path", action="append", metavar="DIR")
     graph.add_argument("--env", action="append", metavar="NAME=VALUE")
+    graph.add_argument("--config", metavar="FILE", help="configuration file")
+    graph.add_argument("--beliefs", default=None, metavar="bundled|study|none|FILE",
+                       help="mined beliefs for the may_implied rules (default: bundled)")
     return parser
 
 
 def load_beliefs(spec: str | None, min_z: float) -> BeliefSet:
+    from launch_linter.beliefs_files import BeliefsNotFound
     from launch_linter.beliefs_files import load_beliefs as load
 
-    return load(spec or "bundled", min_z)
+    try:
+        return load(spec or "bundled", min_z)
+    except BeliefsNotFound as exc:
+        raise UsageError(str(exc)) from None
 
 
-def lint_options(ns: argparse.Namespace) -> LintOptions:
+def load_config(ns: argparse.Namespace) -> Config:
+    """The configuration file for this command's paths (``--config`` or found)."""
+    paths = getattr(ns, "paths", None) or [ns.path]
+    try:
+        return config_for(paths, getattr(ns, "config", None))
+    except ConfigError as exc:
+        raise UsageError(str(exc)) from None
+
+
+def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOptions:
+    """Command-line flags over the configuration file, key by key."""
+    config = config if config is not None else load_config(ns)
     select = _split_ids(getattr(ns, "select", None))
     ignore = _split_ids(getattr(ns, "ignore", None))
     _check_ids(select + ignore)
+    if not select:
+        select = list(config.select or ())
+    if not ignore:
+        ignore = list(config.ignore or ())
+    jobs = getattr(ns, "jobs", None) or 1
+    if jobs < 1:
+        raise UsageError("--jobs must be at least 1")
     beliefs = BeliefSet.empty()
-    if ns.command == "check":
-        min_z = ns.min_z if ns.min_z is not None else 1.0
-        beliefs = load_beliefs(ns.beliefs, min_z)
+    if ns.command in ("check", "graph"):
+        min_z = getattr(ns, "min_z", None)
+        if min_z is None:
+            min_z = config.min_z if config.min_z is not None else 1.0
+        beliefs = load_beliefs(getattr(ns, "beliefs", None) or config.beliefs, min_z)
     return LintOptions(
-        args=_pairs(ns.arg, ":=", "--arg"),
-        env=_pairs(ns.env, "=", "--env"),
-        package_paths=tuple(ns.package_path) if ns.package_path else None,
+        args={**config.args, **_pairs(ns.arg, ":=", "--arg")},
+        env={**config.env, **_pairs(ns.env, "=", "--env")},
+        package_paths=tuple(ns.package_path) if ns.package_path else config.package_path,
         select=frozenset(select) if select else None,
         ignore=frozenset(ignore),
+        severity=dict(config.severity),
         beliefs=beliefs,
-        jobs=ns.jobs or 1,
+        jobs=jobs,
+        per_path_ignores=config.per_path_ignores,
     )
 
 
@@ -167,7 +197,8 @@ def _use_colour(choice: str) -> bool:
 def run_check(ns: argparse.Namespace) -> int:
     if not ns.paths:
         raise UsageError("check needs at least one PATH")
-    options = lint_options(ns)
+    config = load_config(ns)
+    options = lint_options(ns, config)
     result = lint_paths(ns.paths, options)
     fmt = ns.format or "text"
     if fmt == "json":
@@ -180,7 +211,7 @@ def run_check(ns: argparse.Namespace) -> int:
         colour = _use_colour(ns.color)
         sys.stdout.write(text.format_diagnostics(result.diagnostics, colour))
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")
-    return _exit_status(result, ns.fail_on or "warning")
+    return _exit_status(result, ns.fail_on or config.fail_on or "warning")
 
 
 def run_transforms(ns: argparse.Namespace) -> int:

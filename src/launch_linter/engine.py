@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
@@ -14,6 +15,12 @@ from launch_linter.model.launch import FileRecord, LaunchTree
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import PackageIndex, default_package_roots
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+from launch_linter.suppressions import (
+    UNUSED_ID,
+    PathIgnore,
+    apply_suppressions,
+    ignored_by_path,
+)
 
 MAX_DISCOVERED_FILES = 200_000
 
@@ -31,6 +38,7 @@ class LintOptions:
     severity: dict[str, Severity] = field(default_factory=dict)
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
     jobs: int = 1
+    per_path_ignores: tuple[PathIgnore, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,14 +138,14 @@ def load_options_for(item: InputFile, options: LintOptions, cache: dict[tuple[st
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
     """Run ``rules`` on one tree and apply severity overrides."""
     context = RuleContext(tree, options.beliefs)
-    out: list[Diagnostic] = []
-    for rule in rules:
-        for diagnostic in rule.check(context):
-            level = options.severity.get(diagnostic.rule)
-            if level is not None and level is not diagnostic.severity:
-                diagnostic = _with_severity(diagnostic, level)
-            out.append(diagnostic)
-    return out
+    return [_override(d, options) for rule in rules for d in rule.check(context)]
+
+
+def _override(diagnostic: Diagnostic, options: LintOptions) -> Diagnostic:
+    level = options.severity.get(diagnostic.rule)
+    if level is not None and level is not diagnostic.severity:
+        return _with_severity(diagnostic, level)
+    return diagnostic
 
 
 def _with_severity(diagnostic: Diagnostic, severity: Severity) -> Diagnostic:
@@ -151,22 +159,72 @@ def _file_record(item: InputFile, tree: LaunchTree) -> FileRecord:
     return FileRecord(item.display, tree.status, own)
 
 
-def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
-    cache: dict[tuple[str, ...], PackageIndex] = {}
+def finish_diagnostics(
+    trees: Sequence[LaunchTree], diagnostics: Iterable[Diagnostic], options: LintOptions
+) -> tuple[Diagnostic, ...]:
+    """Apply inline suppressions and per-path ignores to the rules' diagnostics, and sort."""
+    ran = {r.id for r in selected_rules(options)}
+    kept, unused = apply_suppressions(
+        trees,
+        diagnostics,
+        known={r.id: r.category.value for r in RULES},
+        ran=ran,
+        report_unused=UNUSED_ID in ran,
+    )
+    out = [
+        d
+        for d in (*kept, *(_override(u, options) for u in unused))
+        if not ignored_by_path(d, options.per_path_ignores)
+    ]
+    return tuple(sorted(out, key=lambda d: d.sort_key))
+
+
+Linted = tuple[LaunchTree, FileRecord, list[Diagnostic]]
+
+
+def _lint_chunk(
+    items: Sequence[InputFile], options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+) -> list[Linted]:
     rules = selected_rules(options)
-    trees: list[LaunchTree] = []
-    records: list[FileRecord] = []
-    diagnostics: dict[tuple[object, ...], Diagnostic] = {}
-    for item in inputs:
+    out: list[Linted] = []
+    for item in items:
         tree = load_tree(item.path, load_options_for(item, options, cache))
-        trees.append(tree)
-        records.append(_file_record(item, tree))
-        for diagnostic in check_tree(tree, rules, options):
+        out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
+    return out
+
+
+_worker_packages: dict[tuple[str, ...], PackageIndex] = {}
+"""Package indexes of one worker process, so that its chunks share each ``$(find)`` crawl."""
+
+
+def _lint_chunk_in_worker(items: Sequence[InputFile], options: LintOptions) -> list[Linted]:
+    return _lint_chunk(items, options, _worker_packages)
+
+
+def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Linted]:
+    # Several chunks per worker balance uneven files; map() keeps the input order, so the
+    # result is the serial one.
+    size = max(1, -(-len(inputs) // (options.jobs * 4)))
+    chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
+    with ProcessPoolExecutor(max_workers=min(options.jobs, len(chunks))) as pool:
+        done = pool.map(_lint_chunk_in_worker, chunks, [options] * len(chunks))
+        return [linted for chunk in done for linted in chunk]
+
+
+def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
+    if options.jobs > 1 and len(inputs) > 1:
+        linted = _lint_parallel(inputs, options)
+    else:
+        linted = _lint_chunk(inputs, options, {})
+    trees = tuple(tree for tree, _, _ in linted)
+    diagnostics: dict[tuple[object, ...], Diagnostic] = {}
+    for _, _, found in linted:
+        for diagnostic in found:
             diagnostics.setdefault(
                 (diagnostic.sort_key, diagnostic.related, diagnostic.node), diagnostic
             )
-    ordered = sorted(diagnostics.values(), key=lambda d: d.sort_key)
-    return LintResult(tuple(records), tuple(trees), tuple(ordered))
+    records = tuple(record for _, record, _ in linted)
+    return LintResult(records, trees, finish_diagnostics(trees, diagnostics.values(), options))
 
 
 def lint_paths(paths: Sequence[str], options: LintOptions | None = None) -> LintResult:
@@ -181,8 +239,9 @@ def lint_text(text: str, path: str = "<string>.launch", options: LintOptions | N
     cache: dict[tuple[str, ...], PackageIndex] = {}
     load = load_options_for(item, options, cache)
     tree = load_tree(item.path, load, text.encode("utf-8"))
-    diagnostics = sorted(check_tree(tree, selected_rules(options), options), key=lambda d: d.sort_key)
-    return LintResult((_file_record(item, tree),), (tree,), tuple(diagnostics))
+    found = check_tree(tree, selected_rules(options), options)
+    diagnostics = finish_diagnostics((tree,), found, options)
+    return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 
 
 def rule_ids() -> tuple[str, ...]:

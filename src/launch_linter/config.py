@@ -1,0 +1,253 @@
+"""Configuration files: ``[tool.launch-linter]`` in ``pyproject.toml`` or ``.launch-linter.toml``.
+
+The file is ``--config FILE`` when given; otherwise the first of ``.launch-linter.toml`` or
+a ``pyproject.toml`` with a ``[tool.launch-linter]`` table found by walking up from each
+linted path (all paths must lead to the same file). Relative paths in the file (beliefs
+file, package paths, per-path-ignores globs) are relative to the file's folder.
+Command-line flags override the file key by key; for the tables ``args``, ``env`` and
+``severity`` the command line overrides name by name.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import tomllib
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from launch_linter.model.diagnostic import Severity
+from launch_linter.rules import RULES, RULES_BY_ID
+from launch_linter.suppressions import PathIgnore
+
+CONFIG_NAME = ".launch-linter.toml"
+PYPROJECT = "pyproject.toml"
+TABLE = "launch-linter"
+KEYS = (
+    "select",
+    "ignore",
+    "severity",
+    "min-z",
+    "beliefs",
+    "args",
+    "package-path",
+    "env",
+    "per-path-ignores",
+    "fail-on",
+)
+BELIEF_KEYWORDS = ("bundled", "study", "none")
+MAX_CONFIG_BYTES = 1024 * 1024
+
+
+class ConfigError(ValueError):
+    """The configuration file cannot be used; the message names the file and the key."""
+
+
+@dataclass(frozen=True, slots=True)
+class Config:
+    """What a configuration file sets; None (or empty) where it sets nothing."""
+
+    path: str | None = None
+    select: tuple[str, ...] | None = None
+    ignore: tuple[str, ...] | None = None
+    severity: dict[str, Severity] = field(default_factory=dict)
+    min_z: float | None = None
+    beliefs: str | None = None
+    args: dict[str, str] = field(default_factory=dict)
+    package_path: tuple[str, ...] | None = None
+    env: dict[str, str] = field(default_factory=dict)
+    per_path_ignores: tuple[PathIgnore, ...] = ()
+    fail_on: str | None = None
+
+
+def _categories() -> set[str]:
+    return {r.category.value for r in RULES}
+
+
+def check_rule_ids(ids: Iterable[str], where: str) -> None:
+    """Raise :class:`ConfigError` naming every id that is neither a rule nor a category."""
+    known = sorted({*RULES_BY_ID, *_categories()})
+    unknown = [i for i in ids if i not in RULES_BY_ID and i not in _categories()]
+    if unknown:
+        hints = []
+        for name in unknown:
+            close = difflib.get_close_matches(name, known, n=1)
+            hints.append(f"{name!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
+        raise ConfigError(
+            f"{where}: unknown rule id(s) {', '.join(hints)} (see 'launch-linter rules')"
+        )
+
+
+def _scalar_text(value: Any, where: str) -> str:
+    # TOML gives booleans and numbers their own types; launch arguments are text, and
+    # roslaunch writes booleans in lower case.
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str | int | float):
+        return str(value)
+    raise ConfigError(f"{where} must be a string, number or boolean, not {type(value).__name__}")
+
+
+def _string_list(value: Any, where: str) -> tuple[str, ...]:
+    if isinstance(value, str):
+        value = [value]
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise ConfigError(f"{where} must be a list of strings")
+    return tuple(value)
+
+
+def _table(value: Any, where: str) -> dict[str, Any]:
+    if not isinstance(value, dict):
+        raise ConfigError(f"{where} must be a table (name = value)")
+    return value
+
+
+def _relative_to(base: str, path: str) -> str:
+    return os.path.normpath(os.path.join(base, os.path.expanduser(path)))
+
+
+def parse_config(data: Mapping[str, Any], path: str) -> Config:
+    """Check and convert the launch-linter table ``data`` read from ``path``."""
+    unknown = [k for k in data if k not in KEYS]
+    if unknown:
+        hints = []
+        for key in unknown:
+            close = difflib.get_close_matches(key, KEYS, n=1)
+            hints.append(f"{key!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
+        raise ConfigError(
+            f"{path}: unknown key(s) {', '.join(hints)}; known keys: {', '.join(KEYS)}"
+        )
+    base = os.path.dirname(os.path.abspath(path))
+    values: dict[str, Any] = {"path": path}
+    for key in ("select", "ignore"):
+        if key in data:
+            ids = _string_list(data[key], f"{path}: '{key}'")
+            check_rule_ids(ids, f"{path}: '{key}'")
+            values[key] = ids
+    if "severity" in data:
+        values["severity"] = _severities(_table(data["severity"], f"{path}: 'severity'"), path)
+    if "min-z" in data:
+        z = data["min-z"]
+        if isinstance(z, bool) or not isinstance(z, int | float):
+            raise ConfigError(f"{path}: 'min-z' must be a number")
+        values["min_z"] = float(z)
+    if "beliefs" in data:
+        beliefs = data["beliefs"]
+        if not isinstance(beliefs, str) or not beliefs:
+            raise ConfigError(f"{path}: 'beliefs' must be bundled, study, none or a file name")
+        values["beliefs"] = beliefs if beliefs in BELIEF_KEYWORDS else _relative_to(base, beliefs)
+    for key in ("args", "env"):
+        if key in data:
+            table = _table(data[key], f"{path}: '{key}'")
+            values[key] = {
+                str(name): _scalar_text(v, f"{path}: '{key}.{name}'") for name, v in table.items()
+            }
+    if "package-path" in data:
+        roots = _string_list(data["package-path"], f"{path}: 'package-path'")
+        values["package_path"] = tuple(_relative_to(base, r) for r in roots)
+    if "per-path-ignores" in data:
+        table = _table(data["per-path-ignores"], f"{path}: 'per-path-ignores'")
+        ignores = []
+        for pattern, ids in table.items():
+            where = f"{path}: 'per-path-ignores' entry {pattern!r}"
+            rule_ids = _string_list(ids, where)
+            check_rule_ids(rule_ids, where)
+            ignores.append(PathIgnore(base, pattern, frozenset(rule_ids)))
+        values["per_path_ignores"] = tuple(ignores)
+    if "fail-on" in data:
+        fail_on = data["fail-on"]
+        if fail_on not in ("error", "warning", "info"):
+            raise ConfigError(f"{path}: 'fail-on' must be error, warning or info")
+        values["fail_on"] = fail_on
+    return Config(**values)
+
+
+def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
+    """Severity by rule id; a category sets its rules, and a rule named itself wins."""
+    check_rule_ids(table, f"{path}: 'severity'")
+    levels: dict[str, Severity] = {}
+    for name, level in table.items():
+        if level not in ("error", "warning", "info"):
+            raise ConfigError(
+                f"{path}: 'severity.{name}' must be error, warning or info, not {level!r}"
+            )
+    for name, level in table.items():
+        if name not in RULES_BY_ID:
+            levels.update({r.id: Severity(level) for r in RULES if r.category.value == name})
+    for name, level in table.items():
+        if name in RULES_BY_ID:
+            levels[name] = Severity(level)
+    return levels
+
+
+def _read_toml(path: str) -> dict[str, Any]:
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_CONFIG_BYTES + 1)
+    except OSError as exc:
+        raise ConfigError(f"cannot read configuration file {path}: {exc.strerror or exc}") from None
+    if len(data) > MAX_CONFIG_BYTES:
+        raise ConfigError(f"{path}: larger than {MAX_CONFIG_BYTES} bytes")
+    try:
+        return tomllib.loads(data.decode("utf-8"))
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+
+
+def _pyproject_table(document: Mapping[str, Any]) -> Any:
+    tool = document.get("tool")
+    return tool.get(TABLE) if isinstance(tool, dict) else None
+
+
+def load_config(path: str) -> Config:
+    """Read ``path``: the ``[tool.launch-linter]`` table of a ``pyproject.toml``, or the
+    top level of any other TOML file."""
+    document = _read_toml(path)
+    if os.path.basename(path) == PYPROJECT:
+        table = _pyproject_table(document)
+        if table is None:
+            raise ConfigError(f"{path}: no [tool.{TABLE}] table")
+        return parse_config(_table(table, f"{path}: [tool.{TABLE}]"), path)
+    return parse_config(document, path)
+
+
+def _config_in(directory: str) -> str | None:
+    candidate = os.path.join(directory, CONFIG_NAME)
+    if os.path.isfile(candidate):
+        return candidate
+    candidate = os.path.join(directory, PYPROJECT)
+    if os.path.isfile(candidate) and _pyproject_table(_read_toml(candidate)) is not None:
+        return candidate
+    return None
+
+
+def find_config(path: str) -> str | None:
+    """The configuration file that governs ``path``, walking up from it."""
+    directory = os.path.abspath(path)
+    if not os.path.isdir(directory):
+        directory = os.path.dirname(directory)
+    while True:
+        found = _config_in(directory)
+        if found is not None:
+            return found
+        parent = os.path.dirname(directory)
+        if parent == directory:
+            return None
+        directory = parent
+
+
+def config_for(paths: Sequence[str], explicit: str | None = None) -> Config:
+    """The configuration for linting ``paths``: ``explicit`` if given, else the one file
+    found from every path, else an empty configuration."""
+    if explicit is not None:
+        return load_config(explicit)
+    found = {find_config(p) for p in paths} if paths else {find_config(os.curdir)}
+    if len(found) > 1:
+        names = ", ".join(sorted(f or "(none)" for f in found))
+        raise ConfigError(
+            f"the paths are governed by different configuration files ({names}); "
+            "lint them separately or name one with --config"
+        )
+    chosen = found.pop()
+    return load_config(chosen) if chosen is not None else Config()
