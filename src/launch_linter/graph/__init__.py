@@ -1,0 +1,1 @@
+"""``launch-linter graph``: the static transform tree of a launch file, drawn."""

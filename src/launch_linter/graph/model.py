@@ -1,0 +1,135 @@
+"""The transform tree as a graph: frames are vertices, static transforms are edges.
+
+A transform defines its child frame (each frame has one parent in tf), so a diagnostic at
+a transform marks its edge and its child frame. Only errors and warnings mark; ``info``
+diagnostics (what could not be resolved) show as ``?`` in the labels instead.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from launch_linter.engine import LintResult
+from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.transform import RotationKind, StaticTransform
+
+MAX_NOTES = 12
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    key: str
+    label: str
+    resolved: bool
+    flagged: bool
+
+
+@dataclass(frozen=True, slots=True)
+class Edge:
+    parent: str
+    child: str
+    label: tuple[str, ...]
+    """Lines: node name, translation, rotation, condition, place, flagged rules."""
+    conditional: bool
+    flagged: bool
+    tooltip: str
+
+
+@dataclass(frozen=True, slots=True)
+class TfGraph:
+    title: str
+    frames: tuple[Frame, ...]
+    edges: tuple[Edge, ...]
+    notes: tuple[str, ...]
+    """Diagnostics that are not at a transform (parse errors, roslaunch errors)."""
+
+
+def _numbers(values: Iterable[float]) -> str:
+    return " ".join(f"{v:g}" for v in values)
+
+
+def _frame_key(transform: StaticTransform, which: str, index: int) -> tuple[str, str, bool]:
+    """(key, label, resolved) of the parent or child frame of ``transform``."""
+    normalised = transform.parent if which == "parent" else transform.child
+    written = transform.parent_written if which == "parent" else transform.child_written
+    if normalised is not None and which not in transform.unresolved:
+        return normalised, normalised, True
+    # Unresolved frames are distinct vertices: two unknowns need not be the same frame.
+    return f"?{index}:{which}", written or "?", False
+
+
+def _edge_label(transform: StaticTransform, rules: list[str]) -> tuple[str, ...]:
+    lines = [transform.qualified_name or "?"]
+    if transform.translation is None or "translation" in transform.unresolved:
+        lines.append("xyz ?")
+    else:
+        lines.append(f"xyz {_numbers(transform.translation)}")
+    rotation = transform.rotation
+    if rotation is None or "rotation" in transform.unresolved:
+        lines.append("rotation ?")
+    elif rotation.kind is RotationKind.YPR:
+        lines.append(f"ypr {_numbers(rotation.values)}")
+    else:
+        lines.append(f"q {_numbers(rotation.values)}")
+    if not transform.condition.always:
+        lines.append(transform.condition.describe())
+    lines.append(f"{os.path.basename(transform.path)}:{transform.line}")
+    if rules:
+        lines.append("! " + ", ".join(rules))
+    return tuple(lines)
+
+
+def build_graph(result: LintResult) -> TfGraph:
+    """The graph of every transform in ``result``, marked with its diagnostics."""
+    at: dict[tuple[str, int, int], list[Diagnostic]] = {}
+    for diagnostic in result.diagnostics:
+        at.setdefault((diagnostic.path, diagnostic.line, diagnostic.column), []).append(diagnostic)
+    frames: dict[str, Frame] = {}
+    edges: list[Edge] = []
+    placed: set[tuple[str, int, int]] = set()
+    seen: set[tuple[object, ...]] = set()
+    for index, transform in enumerate(result.transforms):
+        identity = (transform.path, transform.line, transform.column, transform.args,
+                    transform.condition)
+        if identity in seen:
+            continue  # one element reached twice with the same values draws one edge
+        seen.add(identity)
+        where = (transform.path, transform.line, transform.column)
+        placed.add(where)
+        found = at.get(where, [])
+        serious = [d for d in found if d.severity is not Severity.INFO]
+        rules = sorted({d.rule for d in serious})
+        parent = _frame_key(transform, "parent", index)
+        child = _frame_key(transform, "child", index)
+        for key, label, resolved in (parent, child):
+            frames.setdefault(key, Frame(key, label, resolved, False))
+        if serious:
+            frames[child[0]] = Frame(child[0], child[1], child[2], True)
+        edges.append(
+            Edge(
+                parent=parent[0],
+                child=child[0],
+                label=_edge_label(transform, rules),
+                conditional=not transform.condition.always,
+                flagged=bool(serious),
+                tooltip="\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found),
+            )
+        )
+    unplaced = [
+        d for d in result.diagnostics
+        if (d.path, d.line, d.column) not in placed and d.severity is not Severity.INFO
+    ]
+    notes = [f"{d.path}:{d.line}: {d.severity.value}: {d.message} [{d.rule}]"
+             for d in unplaced[:MAX_NOTES]]
+    if len(unplaced) > MAX_NOTES:
+        notes.append(f"... and {len(unplaced) - MAX_NOTES} more")
+    roots = ", ".join(f.path for f in result.files)
+    errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
+    warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
+    title = (
+        f"{roots}: {len(edges)} static transform(s), {len(frames)} frame(s), "
+        f"{errors} error(s), {warnings} warning(s)"
+    )
+    return TfGraph(title, tuple(frames.values()), tuple(edges), tuple(notes))
