@@ -2,10 +2,43 @@
 
 from __future__ import annotations
 
-from launch_linter.rules import parse_error, roslaunch_error, unresolved, unused_suppression
+from launch_linter.rules import (
+    bad_arity,
+    bad_number,
+    bad_quaternion,
+    dup_name,
+    dup_sig,
+    int_suffix,
+    leading_slash,
+    multiple_parents,
+    ned_transform,
+    parse_error,
+    reversed_name,
+    roslaunch_error,
+    rot_degrees,
+    self_transform,
+    sensor_null,
+    tf_cycle,
+    unresolved,
+    unused_suppression,
+)
 from launch_linter.rules._api import Rule, RuleContext, rule_from_module
 
 RULE_MODULES = (
+    self_transform,
+    dup_name,
+    dup_sig,
+    reversed_name,
+    rot_degrees,
+    int_suffix,
+    ned_transform,
+    sensor_null,
+    bad_arity,
+    bad_number,
+    bad_quaternion,
+    leading_slash,
+    multiple_parents,
+    tf_cycle,
     parse_error,
     roslaunch_error,
     unresolved,

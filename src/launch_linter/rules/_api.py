@@ -77,3 +77,28 @@ def rule_from_module(module: ModuleType) -> Rule:
         doc=doc,
         check=module.check,
     )
+
+
+def by_file(transforms: Iterable[StaticTransform]) -> dict[str, list[StaticTransform]]:
+    """Transforms grouped by the file that declares them, each group in tree order."""
+    groups: dict[str, list[StaticTransform]] = {}
+    for transform in transforms:
+        groups.setdefault(transform.path, []).append(transform)
+    return groups
+
+
+def can_coexist(a: StaticTransform, b: StaticTransform) -> bool:
+    """False when the two presence conditions exclude each other (``if`` vs ``unless``)."""
+    return not a.condition.excludes(b.condition)
+
+
+def same_element(a: StaticTransform, b: StaticTransform) -> bool:
+    """True for one ``<node>`` element reached twice (its file included twice)."""
+    return (a.path, a.line, a.column) == (b.path, b.line, b.column)
+
+
+def place(transform: StaticTransform, seen_from: StaticTransform) -> str:
+    """Where ``transform`` is, as a reader of ``seen_from``'s diagnostic wants it."""
+    if transform.path == seen_from.path:
+        return f"line {transform.line}"
+    return f"{transform.path}:{transform.line}"

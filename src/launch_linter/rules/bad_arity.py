@@ -1,0 +1,63 @@
+"""An argument count that the package's program rejects or misreads.
+
+## What it does
+Reports a `static_transform_publisher` whose argument count does not fit its package:
+ROS 1 `tf` takes 9 (`x y z yaw pitch roll parent child period_ms`) or 10 (with a
+quaternion) arguments; ROS 1 `tf2_ros` takes 8, 9 (with a quaternion) or 1 (a parameter
+name), and no period. Some wrong counts make the program print its usage and exit; others
+are silently misread: `tf2_ros` given `... parent child 100` reads a quaternion whose `qw`
+is the parent frame (0), takes the child as the parent and `100` as the child frame. The
+message says what the program does with the arguments as written. `name:=value` words
+are ROS remappings and are not counted.
+
+## Why is this bad?
+In both cases the transform that was meant never reaches tf: the node dies at start-up, or
+it publishes a transform between the wrong frames with an invalid quaternion that tf2
+rejects. Nothing in the launch output points at the cause.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 base_link laser 100"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 base_link laser"/>
+</launch>
+```
+"""
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.transform import StaticTransform
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "bad_arity"
+CATEGORY = Category.TF
+SEVERITY = Severity.ERROR
+
+
+def _fix(transform: StaticTransform) -> str:
+    """What to write instead, for the ROS 1 forms whose intent is clear."""
+    if transform.ros_version != 1 or transform.form not in ("ypr", "quaternion"):
+        return ""
+    if transform.package == "tf2_ros" and transform.period_ms is not None:
+        return f"; remove the period '{transform.period_ms:g}' (tf2_ros publishes once, latched)"
+    if transform.package == "tf" and transform.period_ms is None:
+        return "; add a period in milliseconds after the child frame, or use tf2_ros"
+    return ""
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        if transform.arity_issue is None or "arity" in transform.unresolved:
+            continue
+        yield diagnostic_at(
+            ID, CATEGORY, SEVERITY, transform, transform.arity_issue + _fix(transform)
+        )

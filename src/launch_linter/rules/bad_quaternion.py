@@ -1,0 +1,91 @@
+"""A quaternion that is zero, not finite, or not of unit length.
+
+## What it does
+Reports a static transform written with a quaternion (`qx qy qz qw`) that is zero, holds a
+NaN or infinite value, or whose squared norm differs from 1 by 0.01 or more (error). A
+smaller deviation above 1e-6 is reported as info.
+
+## Why is this bad?
+tf2 drops a transform whose quaternion is not normalised within 0.01
+(`TF_DENORMALIZED_QUATERNION`) or holds NaN (`TF_NAN_INPUT`), so the child frame never
+appears. A quaternion slightly off unit length is accepted but distorts every point
+transformed through it; `roswtf` warns about it.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 0 base_link laser"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 1 base_link laser"/>
+</launch>
+```
+"""
+
+import math
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, RotationKind
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "bad_quaternion"
+CATEGORY = Category.TF
+SEVERITY = Severity.ERROR
+
+TF2_TOLERANCE = 0.01
+"""tf2's ``QUATERNION_NORMALIZATION_TOLERANCE`` on abs(|q|² - 1)."""
+ROSWTF_TOLERANCE = 1e-6
+
+
+def _written(values: tuple[float, ...]) -> str:
+    return f"({', '.join(f'{v:g}' for v in values)})"
+
+
+def _problem(values: tuple[float, ...]) -> tuple[Severity, str] | None:
+    if not all(math.isfinite(v) for v in values):
+        return SEVERITY, "is not finite: tf2 drops it (TF_NAN_INPUT)"
+    if all(abs(v) <= NULL_TOLERANCE for v in values):
+        return SEVERITY, (
+            "is zero, which is no rotation at all: tf2 drops it "
+            "(TF_DENORMALIZED_QUATERNION); write 0 0 0 1 for the identity"
+        )
+    squared = sum(v * v for v in values)
+    deviation = abs(squared - 1.0)
+    norm = math.sqrt(squared)
+    unit = " ".join(f"{v / norm:.7g}" for v in values)
+    if deviation >= TF2_TOLERANCE:
+        return SEVERITY, (
+            f"has squared norm {squared:.6g}, not 1 within tf2's tolerance of "
+            f"{TF2_TOLERANCE:g}: tf2 drops it (TF_DENORMALIZED_QUATERNION); normalised it "
+            f"is {unit}"
+        )
+    if deviation > ROSWTF_TOLERANCE:
+        return Severity.INFO, (
+            f"has squared norm {squared:.9g}: tf2 accepts it, but it is not quite unit "
+            f"length; normalised it is {unit}"
+        )
+    return None
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        rotation = transform.rotation
+        if rotation is None or rotation.kind is not RotationKind.QUATERNION:
+            continue
+        if "rotation" in transform.unresolved:
+            continue
+        found = _problem(rotation.values)
+        if found is None:
+            continue
+        severity, problem = found
+        yield diagnostic_at(
+            ID, CATEGORY, severity, transform,
+            f"quaternion (qx, qy, qz, qw) = {_written(rotation.values)} {problem}",
+        )

@@ -1,0 +1,53 @@
+"""A frame id written with a leading `/`.
+
+## What it does
+Reports each parent or child frame id of a static transform that starts with `/`.
+
+## Why is this bad?
+Leading slashes are a tf (ROS 1, before tf2) habit. tf2 strips one leading `/` when a
+transform is published, so the frame is really called `base_link`, not `/base_link`; a
+lookup or a message header that still says `/base_link` fails (`Invalid argument
+"/base_link" passed to lookupTransform argument target_frame - in tf2 frame_ids cannot
+start with a '/'`), and tools such as cartographer refuse such frame ids outright. Mixing
+`/base_link` and `base_link` in one project also hides that they are the same frame.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 /base_link /laser 100"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 base_link laser 100"/>
+</launch>
+```
+"""
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "leading_slash"
+CATEGORY = Category.TF
+SEVERITY = Severity.WARNING
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        for role, written in (
+            ("parent", transform.parent_written),
+            ("child", transform.child_written),
+        ):
+            if written is None or not written.startswith("/"):
+                continue
+            yield diagnostic_at(
+                ID, CATEGORY, SEVERITY, transform,
+                f"{role} frame '{written}' starts with '/': tf2 names it '{written[1:]}' "
+                f"and rejects lookups of '{written}'; write '{written.lstrip('/')}'",
+            )

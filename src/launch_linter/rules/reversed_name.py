@@ -1,0 +1,67 @@
+"""A node name that reads child-to-parent, the reverse of what the transform does.
+
+## What it does
+Reports a static transform whose node name, compared case-insensitively, is
+`<child><sep><parent>` with `<sep>` one of `_to_`, `2`, `_2_` or `_` (e.g. `odom_to_map`
+on the transform map → odom), unless the name also reads `<parent><sep><child>`. Frame ids
+are compared without one leading `/`.
+
+## Why is this bad?
+A static transform goes from the parent frame (first frame argument) to the child frame
+(second). A name that says the opposite means either the name is wrong, which misleads the
+next reader, or the frames were swapped and the transform is the inverse of the one meant.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="map_to_odom"
+        args="0 0 0 0 0 0 odom map"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="map_to_odom"
+        args="0 0 0 0 0 0 map odom"/>
+</launch>
+```
+"""
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "reversed_name"
+CATEGORY = Category.MAY_SEMANTIC
+SEVERITY = Severity.WARNING
+
+SEPARATORS = ("_to_", "2", "_2_", "_")
+
+
+def _joins(name: str, first: str, second: str) -> str | None:
+    """The separator with which ``name`` is ``first<sep>second``, if any."""
+    for separator in SEPARATORS:
+        if name == f"{first}{separator}{second}":
+            return separator
+    return None
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        signature = transform.signature
+        if signature is None or transform.name is None or "name" in transform.unresolved:
+            continue
+        parent, child = (frame.lower() for frame in signature)
+        name = transform.name.lower()
+        separator = _joins(name, child, parent)
+        if separator is None or _joins(name, parent, child) is not None:
+            continue
+        yield diagnostic_at(
+            ID, CATEGORY, SEVERITY, transform,
+            f"name '{transform.name}' reads '{signature[1]}' -> '{signature[0]}', but the "
+            f"transform goes from parent '{signature[0]}' to child '{signature[1]}': either "
+            f"the frames are swapped or the name should be "
+            f"'{signature[0]}{separator}{signature[1]}'",
+        )

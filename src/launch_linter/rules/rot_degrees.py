@@ -1,0 +1,82 @@
+"""A yaw, pitch or roll value that looks like degrees.
+
+## What it does
+Reports a static transform written with yaw, pitch and roll whose angles include one with
+an absolute value above 2π (negative angles included). The message gives the angle read as
+degrees and the radians that were probably meant. A multiple of π/2 written in radians
+(such as `4.712389` or `9.42478`) is not reported.
+
+## Why is this bad?
+`static_transform_publisher` reads yaw, pitch and roll in radians. A value above 2π is
+almost always an angle in degrees: `90` turns the frame by 90 radians (14 whole turns and
+another 117°), not by a quarter turn, and nothing complains at run time.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 135 base_link laser 100"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf" type="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 2.356194 base_link laser 100"/>
+</launch>
+```
+
+## Known problems
+An angle in degrees between -2π and 2π (such as `5`) cannot be told from radians and is
+not reported.
+"""
+
+import math
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.transform import RotationKind
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "rot_degrees"
+CATEGORY = Category.MAY_SEMANTIC
+SEVERITY = Severity.WARNING
+
+ANGLE_NAMES = ("yaw", "pitch", "roll")
+FULL_TURN = 2 * math.pi
+# Radians written as k·π/2 carry rounding of π (3.14, 3.1416): allow 0.1 % of the value.
+RADIAN_MULTIPLE_TOLERANCE = 1e-3
+
+
+def is_radian_multiple(value: float) -> bool:
+    """True for a non-integer value close to a multiple of π/2 (an integer is degrees)."""
+    if value.is_integer():
+        return False
+    steps = round(value / (math.pi / 2))
+    return abs(value - steps * math.pi / 2) <= RADIAN_MULTIPLE_TOLERANCE * abs(value)
+
+
+def looks_like_degrees(value: float) -> bool:
+    return math.isfinite(value) and abs(value) > FULL_TURN and not is_radian_multiple(value)
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        rotation = transform.rotation
+        if rotation is None or rotation.kind is not RotationKind.YPR:
+            continue
+        if "rotation" in transform.unresolved:
+            continue
+        suspects = [
+            f"{name} {value:g} ({value:g}° is {math.radians(value):.6g} rad)"
+            for name, value in zip(ANGLE_NAMES, rotation.values, strict=True)
+            if looks_like_degrees(value)
+        ]
+        if not suspects:
+            continue
+        yield diagnostic_at(
+            ID, CATEGORY, SEVERITY, transform,
+            f"{', '.join(suspects)}: static_transform_publisher reads yaw, pitch and roll in "
+            f"radians, and an angle above 2π is probably in degrees",
+        )

@@ -1,0 +1,67 @@
+"""A velodyne, kinect, openni or imu transform that is all zero.
+
+## What it does
+Reports a static transform whose node name, parent frame or child frame contains
+`velodyne`, `kinect`, `openni` or `imu` (any case) and whose displacement and rotation are
+both null.
+
+## Why is this bad?
+These names stand for physical sensors, which sit somewhere on the robot and are rarely
+mounted exactly at the origin of their parent frame and aligned with it. A null transform
+usually means the real mounting pose was never measured and entered, so the sensor's data
+is placed at the wrong spot of the robot.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="imu_tf"
+        args="0 0 0 0 0 0 base_link imu_link"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="imu_tf"
+        args="0.05 0 0.12 0 0 0 base_link imu_link"/>
+</launch>
+```
+
+## Known problems
+A null transform is sometimes meant, to give a sensor frame a second name (an alias).
+"""
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "sensor_null"
+CATEGORY = Category.MAY_SEMANTIC
+SEVERITY = Severity.WARNING
+
+SENSOR_WORDS = ("velodyne", "kinect", "openni", "imu")
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        if transform.null_displacement is not True or transform.null_rotation is not True:
+            continue
+        labels = [
+            text
+            for text, field in (
+                (transform.name, "name"),
+                (transform.parent, "parent"),
+                (transform.child, "child"),
+            )
+            if text is not None and field not in transform.unresolved
+        ]
+        sensors = sorted({w for w in SENSOR_WORDS for text in labels if w in text.lower()})
+        if not sensors:
+            continue
+        yield diagnostic_at(
+            ID, CATEGORY, SEVERITY, transform,
+            f"transform '{transform.parent}' -> '{transform.child}' of a sensor "
+            f"({', '.join(sensors)}) has zero displacement and zero rotation: the sensor's "
+            f"mounting pose was probably never entered",
+        )
