@@ -89,6 +89,20 @@ class NumberIssue:
 
 
 @dataclass(frozen=True, slots=True)
+class ArgIssue:
+    """A mistake in how a ROS 2 transform is written, beyond counts and numbers.
+
+    ``kind`` names it for the rule that reports it: ``positional`` (deprecated old-style
+    arguments), ``unknown_flag``, ``mixed_styles``, ``rpy_and_quaternion``,
+    ``partial_quaternion``, ``missing_frame``, ``single_string`` (several arguments in
+    one argv item) or ``default_frames`` (a component left at ``/frame`` → ``/child``).
+    """
+
+    kind: str
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
 class StaticTransform:
     """One ``static_transform_publisher`` node, resolved as far as statically possible.
 
@@ -122,6 +136,7 @@ class StaticTransform:
     unresolved_reasons: tuple[str, ...] = ()
     ros_version: int = 1
     launch_format: str = "ros1-xml"
+    arg_issues: tuple[ArgIssue, ...] = ()
 
     @property
     def parent(self) -> str | None:
