@@ -62,9 +62,9 @@ class Malformed:
 class PathIgnore:
     """``per-path-ignores``: rules (or categories) ignored in files matching ``pattern``.
 
-    ``pattern`` is relative to ``base`` (the configuration file's folder); ``*`` and ``?``
-    stay within one path segment, ``**`` spans segments, and a pattern without ``/``
-    matches the file name at any depth.
+    ``pattern`` is relative to ``base`` (the configuration file's folder) and only matches
+    files under it; ``*`` and ``?`` stay within one path segment, ``**`` spans segments,
+    and a pattern without ``/`` matches the file name at any depth.
     """
 
     base: str
@@ -73,11 +73,11 @@ class PathIgnore:
 
     def matches(self, path: str) -> bool:
         absolute = os.path.abspath(path)
-        if "/" not in self.pattern:
-            return _glob_regex(self.pattern).fullmatch(os.path.basename(absolute)) is not None
         relative = os.path.relpath(absolute, os.path.abspath(self.base)).replace(os.sep, "/")
         if relative.startswith("../"):
             return False
+        if "/" not in self.pattern:
+            return _glob_regex(self.pattern).fullmatch(os.path.basename(absolute)) is not None
         return _glob_regex(self.pattern.removeprefix("./")).fullmatch(relative) is not None
 
 
