@@ -1,5 +1,7 @@
 from collections.abc import Callable
+from pathlib import Path
 
+from launch_linter import LintOptions, lint_paths
 from launch_linter.model import Diagnostic, Location
 
 Lint = Callable[..., list[tuple[str, int]]]
@@ -135,3 +137,17 @@ def test_study_fig_4c(lint_diagnostics: LintDiagnostics) -> None:
     found = lint_diagnostics(xml, RULE)
     assert [d.line for d in found] == [5, 6]
     assert all(d.related == (Location("test.launch", 4, 1),) for d in found)
+
+
+def test_reported_once_when_the_file_is_also_included(tmp_path: Path) -> None:
+    child = "\n".join([
+        "<launch>", node("a", "0 0 0 0 0 0 base laser"), node("b", "0 0 1 0 0 0 base laser"),
+        "</launch>",
+    ])
+    (tmp_path / "child.launch").write_text(child, encoding="utf-8")
+    (tmp_path / "root.launch").write_text(
+        '<launch>\n<include file="$(dirname)/child.launch"/>\n</launch>\n', encoding="utf-8"
+    )
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(tmp_path)], options).diagnostics
+    assert [(d.path.endswith("child.launch"), d.line) for d in found] == [(True, 3)]

@@ -1,0 +1,55 @@
+from collections.abc import Callable
+
+import pytest
+
+from launch_linter.model import Diagnostic
+
+Lint = Callable[..., list[tuple[str, int]]]
+LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+
+RULE = "bad_number"
+
+
+def launch(args: str, pkg: str = "tf2_ros") -> str:
+    return (
+        f'<launch>\n<node pkg="{pkg}" type="static_transform_publisher" name="t" '
+        f'args="{args}"/>\n</launch>'
+    )
+
+
+def test_junk_reads_as_zero(lint_diagnostics: LintDiagnostics) -> None:
+    (found,) = lint_diagnostics(launch("0 0 0 pi/2 0 0 a b"), RULE)
+    assert found.line == 2
+    assert "yaw 'pi/2'" in found.message and "as 0" in found.message
+
+
+def test_numeric_prefix_is_read(lint_diagnostics: LintDiagnostics) -> None:
+    (found,) = lint_diagnostics(launch("0 0 0 1,57 0 0 a b"), RULE)
+    assert "roll" not in found.message and "1 (C atof)" in found.message
+
+
+def test_each_bad_number_is_reported(lint_diagnostics: LintDiagnostics) -> None:
+    found = lint_diagnostics(launch("0.1m 0 0 0 0 0 a b x100", "tf"), RULE)
+    assert [d.message.split("'")[0] for d in found] == ["period_ms ", "x "]
+
+
+@pytest.mark.parametrize(
+    "args", ["0 0 0 0 0 0 a b", "-1e-3 +2. .5 1E2 0 0 a b", "0 0 0 0 0 0 1 a b"]
+)
+def test_numbers_pass(lint: Lint, args: str) -> None:
+    assert lint(launch(args), RULE) == []
+
+
+def test_quaternion_slots_are_named(lint_diagnostics: LintDiagnostics) -> None:
+    (found,) = lint_diagnostics(launch("0 0 0 0 0 0 w a b"), RULE)
+    assert found.message.startswith("qw 'w'")
+
+
+def test_unresolved_number_is_silent(lint: Lint) -> None:
+    xml = """<launch>
+  <arg name="x"/>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="t"
+        args="$(arg x) 0 0 0 0 0 a b"/>
+</launch>"""
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"x": "ten"}) == [(RULE, 3)]

@@ -1,0 +1,108 @@
+from collections.abc import Callable
+
+from launch_linter.model import Diagnostic, Location
+
+Lint = Callable[..., list[tuple[str, int]]]
+LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+LintTree = Callable[..., tuple[Diagnostic, ...]]
+
+RULE = "multiple_parents"
+
+
+def node(name: str, parent: str, child: str, attrs: str = "") -> str:
+    return (
+        f'<node pkg="tf2_ros" type="static_transform_publisher" name="{name}" '
+        f'args="0 0 0.1 0 0 0 {parent} {child}" {attrs}/>'
+    )
+
+
+def test_two_parents(lint_diagnostics: LintDiagnostics) -> None:
+    xml = "\n".join([
+        "<launch>",
+        node("a", "base_link", "laser"),
+        node("b", "base_footprint", "laser"),
+        "</launch>",
+    ])
+    (found,) = lint_diagnostics(xml, RULE)
+    assert found.line == 3 and found.related == (Location("test.launch", 2, 1),)
+    assert found.message.startswith("frame 'laser' gets 2 parents")
+
+
+def test_three_parents_once_each_later_node(lint_diagnostics: LintDiagnostics) -> None:
+    xml = "\n".join([
+        "<launch>",
+        node("a", "base_link", "laser"),
+        node("b", "base_footprint", "laser"),
+        node("c", "odom", "laser"),
+        "</launch>",
+    ])
+    found = lint_diagnostics(xml, RULE)
+    assert [(d.line, len(d.related)) for d in found] == [(3, 1), (4, 2)]
+
+
+def test_slashes_do_not_make_a_second_parent(lint: Lint) -> None:
+    xml = "\n".join([
+        "<launch>", node("a", "/base_link", "laser"), node("b", "base_link", "/laser"),
+        "</launch>",
+    ])
+    assert lint(xml, RULE) == []
+
+
+def test_a_chain_passes(lint: Lint) -> None:
+    xml = "\n".join([
+        "<launch>",
+        node("a", "map", "odom"), node("b", "odom", "base_link"), node("c", "base_link", "laser"),
+        "</launch>",
+    ])
+    assert lint(xml, RULE) == []
+
+
+def test_conditional_presence_says_may(lint_diagnostics: LintDiagnostics) -> None:
+    xml = "\n".join([
+        "<launch>",
+        '<arg name="sim"/>',
+        node("a", "base_link", "laser"),
+        node("b", "base_footprint", "laser", 'if="$(arg sim)"'),
+        "</launch>",
+    ])
+    (found,) = lint_diagnostics(xml, RULE)
+    assert "may get 2 parents" in found.message
+
+
+def test_exclusive_conditions_pass(lint: Lint) -> None:
+    xml = "\n".join([
+        "<launch>",
+        '<arg name="sim"/>',
+        node("a", "base_link", "laser", 'unless="$(arg sim)"'),
+        node("b", "base_footprint", "laser", 'if="$(arg sim)"'),
+        "</launch>",
+    ])
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"sim": "false"}) == []
+
+
+def test_across_includes(lint_tree: LintTree) -> None:
+    driver = "<launch>\n" + node("laser_tf", "base_link", "laser") + "\n</launch>\n"
+    robot = "\n".join([
+        "<launch>",
+        node("mount_tf", "base_footprint", "laser"),
+        '<include file="$(dirname)/driver.launch"/>',
+        "</launch>",
+    ])
+    (found,) = lint_tree({"driver.launch": driver, "robot.launch": robot}, "robot.launch", RULE)
+    assert found.path.endswith("driver.launch") and found.line == 2
+    assert found.related[0].path.endswith("robot.launch")
+    assert "robot.launch:2" in found.message
+
+
+def test_unresolved_parent_is_silent(lint: Lint) -> None:
+    xml = "\n".join([
+        "<launch>",
+        '<arg name="p"/>',
+        node("a", "base_link", "laser"),
+        node("b", "$(arg p)", "laser"),
+        "</launch>",
+    ])
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"p": "base_link"}) == []
+    assert lint(xml, RULE, {"p": "odom"}) == [(RULE, 4)]

@@ -1,0 +1,54 @@
+from collections.abc import Callable
+
+import pytest
+
+from launch_linter.model import Diagnostic
+
+Lint = Callable[..., list[tuple[str, int]]]
+LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+
+RULE = "ned_transform"
+
+
+def launch(args: str) -> str:
+    return (
+        '<launch>\n<node pkg="tf2_ros" type="static_transform_publisher" name="t" '
+        f'args="{args}"/>\n</launch>'
+    )
+
+
+@pytest.mark.parametrize(
+    ("args", "problem"),
+    [
+        ("0 0 0 0 0 0 base_link base_link_ned", "has no rotation"),
+        ("0 0 0 0 0 0 1 base_link base_link_ned", "has no rotation"),
+        ("0.1 0 0 1.5708 0 3.1416 base_link base_link_ned", "has a displacement"),
+        ("1 0 0 0 0 0 map map_NED", "has a displacement and has no rotation"),
+    ],
+)
+def test_reported(lint_diagnostics: LintDiagnostics, args: str, problem: str) -> None:
+    (found,) = lint_diagnostics(launch(args), RULE)
+    assert found.line == 2 and problem in found.message
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        "0 0 0 1.5708 0 3.1416 base_link base_link_ned",
+        "0 0 0 0.70710678 0.70710678 0 0 odom odom_ned",
+        "0 0 0 0 0 0 base_link ned_frame",
+        "1 0 0 0 0 0 base_link_ned base_link",
+    ],
+)
+def test_passes(lint: Lint, args: str) -> None:
+    assert lint(launch(args), RULE) == []
+
+
+def test_unresolved_values_are_silent(lint: Lint) -> None:
+    xml = """<launch>
+  <arg name="x"/>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="t"
+        args="$(arg x) 0 0 1.5708 0 3.1416 base_link base_link_ned"/>
+</launch>"""
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"x": "0.2"}) == [(RULE, 3)]

@@ -1,0 +1,58 @@
+from collections.abc import Callable
+
+import pytest
+
+from launch_linter.model import Diagnostic
+
+Lint = Callable[..., list[tuple[str, int]]]
+LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+
+RULE = "sensor_null"
+
+
+def launch(name: str, args: str) -> str:
+    return (
+        f'<launch>\n<node pkg="tf2_ros" type="static_transform_publisher" name="{name}" '
+        f'args="{args}"/>\n</launch>'
+    )
+
+
+@pytest.mark.parametrize(
+    ("name", "args"),
+    [
+        # anchors.md (e): PhysFrame's sensor_null could never fire on its own.
+        ("imu_tf", "0 0 0 0 0 0 base_link imu_link"),
+        ("t", "0 0 0 0 0 0 base_link Velodyne"),
+        ("kinect_frames", "0 0 0 0 0 0 1 camera_link camera_rgb"),
+        ("t", "0 0 0 0 0 0 openni_camera base"),
+    ],
+)
+def test_null_sensor_transform(lint: Lint, name: str, args: str) -> None:
+    assert lint(launch(name, args), RULE) == [(RULE, 2)]
+
+
+@pytest.mark.parametrize(
+    ("name", "args"),
+    [
+        ("imu_tf", "0.05 0 0.1 0 0 0 base_link imu_link"),
+        ("imu_tf", "0 0 0 1.5708 0 0 base_link imu_link"),
+        ("map_tf", "0 0 0 0 0 0 map odom"),
+    ],
+)
+def test_passes(lint: Lint, name: str, args: str) -> None:
+    assert lint(launch(name, args), RULE) == []
+
+
+def test_message_names_the_sensor(lint_diagnostics: LintDiagnostics) -> None:
+    (found,) = lint_diagnostics(launch("t", "0 0 0 0 0 0 base_link velodyne"), RULE)
+    assert "velodyne" in found.message
+
+
+def test_unresolved_displacement_is_silent(lint: Lint) -> None:
+    xml = """<launch>
+  <arg name="z"/>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="imu_tf"
+        args="0 0 $(arg z) 0 0 0 base_link imu"/>
+</launch>"""
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"z": "0"}) == [(RULE, 3)]

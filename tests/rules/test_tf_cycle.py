@@ -1,0 +1,100 @@
+from collections.abc import Callable
+
+from launch_linter.model import Diagnostic
+
+Lint = Callable[..., list[tuple[str, int]]]
+LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+LintTree = Callable[..., tuple[Diagnostic, ...]]
+
+RULE = "tf_cycle"
+
+
+def node(name: str, parent: str, child: str, attrs: str = "") -> str:
+    return (
+        f'<node pkg="tf2_ros" type="static_transform_publisher" name="{name}" '
+        f'args="0 0 0 0 0 0 {parent} {child}" {attrs}/>'
+    )
+
+
+def launch(*nodes: str, args: str = "") -> str:
+    return "\n".join(["<launch>", *([args] if args else []), *nodes, "</launch>"])
+
+
+def test_two_frame_loop(lint_diagnostics: LintDiagnostics) -> None:
+    (found,) = lint_diagnostics(launch(node("a", "map", "odom"), node("b", "/odom", "map")), RULE)
+    assert found.line == 3 and [r.line for r in found.related] == [2]
+    assert "map -> odom -> map" in found.message and "may" not in found.message
+
+
+def test_longer_loop_reported_once_at_the_closing_transform(
+    lint_diagnostics: LintDiagnostics,
+) -> None:
+    xml = launch(
+        node("a", "a", "b"), node("c", "c", "a"), node("x", "base", "laser"), node("b", "b", "c")
+    )
+    (found,) = lint_diagnostics(xml, RULE)
+    assert found.line == 5
+    assert sorted(r.line for r in found.related) == [2, 3]
+    assert "a -> b -> c -> a" in found.message
+
+
+def test_two_separate_loops(lint: Lint) -> None:
+    xml = launch(node("a", "a", "b"), node("b", "b", "a"), node("c", "c", "d"), node("d", "d", "c"))
+    assert lint(xml, RULE) == [(RULE, 3), (RULE, 5)]
+
+
+def test_tree_passes(lint: Lint) -> None:
+    xml = launch(node("a", "map", "odom"), node("b", "odom", "base"), node("c", "map", "gps"))
+    assert lint(xml, RULE) == []
+
+
+def test_diamond_is_not_a_loop(lint: Lint) -> None:
+    # Two parents for d (multiple_parents' business), but no loop.
+    xml = launch(node("a", "a", "b"), node("b", "a", "c"), node("c", "b", "d"), node("d", "c", "d"))
+    assert lint(xml, RULE) == []
+
+
+def test_self_transform_is_not_a_loop(lint: Lint) -> None:
+    assert lint(launch(node("a", "map", "map")), RULE) == []
+
+
+def test_conditional_loop_says_may(lint_diagnostics: LintDiagnostics) -> None:
+    xml = launch(
+        node("a", "map", "odom"), node("b", "odom", "map", 'if="$(arg x)"'),
+        args='<arg name="x"/>',
+    )
+    (found,) = lint_diagnostics(xml, RULE)
+    assert "may form a loop" in found.message
+
+
+def test_exclusive_conditions_break_the_loop(lint: Lint) -> None:
+    xml = launch(
+        node("a", "map", "odom", 'unless="$(arg x)"'), node("b", "odom", "map", 'if="$(arg x)"'),
+        args='<arg name="x"/>',
+    )
+    assert lint(xml, RULE) == []
+
+
+def test_a_compatible_alternative_edge_still_closes_the_loop(lint: Lint) -> None:
+    xml = launch(
+        node("a", "map", "odom", 'unless="$(arg x)"'),
+        node("b", "odom", "map", 'if="$(arg x)"'),
+        node("c", "odom", "map"),
+        args='<arg name="x"/>',
+    )
+    assert lint(xml, RULE) == [(RULE, 5)]
+
+
+def test_across_includes(lint_tree: LintTree) -> None:
+    child = launch(node("b", "odom", "map"))
+    root = launch(node("a", "map", "odom"), '<include file="$(dirname)/child.launch"/>')
+    (found,) = lint_tree({"child.launch": child, "root.launch": root}, "root.launch", RULE)
+    assert found.path.endswith("child.launch")
+    assert found.related[0].path.endswith("root.launch")
+
+
+def test_dense_graph_stays_bounded(lint: Lint) -> None:
+    frames = [f"f{i}" for i in range(12)]
+    nodes = [node(f"{a}_{b}", a, b) for a in frames for b in frames if a != b]
+    found = lint(launch(*nodes), RULE)
+    assert 0 < len(found) <= 100
