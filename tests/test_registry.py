@@ -1,0 +1,142 @@
+"""Meta-tests: every rule is registered, named, documented, and its documentation runs."""
+
+from __future__ import annotations
+
+import importlib.util
+import re
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+from launch_linter import LintOptions, lint_text
+from launch_linter.beliefs_files import load_beliefs
+from launch_linter.model import Category, Severity
+from launch_linter.rules import RULE_MODULES, RULES, RULES_BY_ID, Rule
+
+ROOT = Path(__file__).resolve().parent.parent
+RULES_DIR = ROOT / "src" / "launch_linter" / "rules"
+SNAKE_CASE = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
+SECTIONS = ("## What it does", "## Why is this bad?", "## Example", "## Use instead")
+OPTIONAL_SECTIONS = ("## Known problems", "## Options")
+XML_BLOCK = re.compile(r"```xml\n(.*?)```", re.DOTALL)
+
+# The rules table of DESIGN.md (a contract): id -> (category, severity).
+CONTRACT = {
+    "self_transform": (Category.MUST, Severity.ERROR),
+    "dup_name": (Category.MUST, Severity.ERROR),
+    "dup_sig": (Category.MUST, Severity.ERROR),
+    "reversed_name": (Category.MAY_SEMANTIC, Severity.WARNING),
+    "rot_degrees": (Category.MAY_SEMANTIC, Severity.WARNING),
+    "int_suffix": (Category.MAY_SEMANTIC, Severity.WARNING),
+    "ned_transform": (Category.MAY_SEMANTIC, Severity.WARNING),
+    "sensor_null": (Category.MAY_SEMANTIC, Severity.WARNING),
+    "sig_implication": (Category.MAY_IMPLIED, Severity.WARNING),
+    "name_implication": (Category.MAY_IMPLIED, Severity.WARNING),
+    "sig_null_disp": (Category.MAY_IMPLIED, Severity.WARNING),
+    "name_null_disp": (Category.MAY_IMPLIED, Severity.WARNING),
+    "sig_null_rot": (Category.MAY_IMPLIED, Severity.WARNING),
+    "name_null_rot": (Category.MAY_IMPLIED, Severity.WARNING),
+    "bad_arity": (Category.TF, Severity.ERROR),
+    "bad_number": (Category.TF, Severity.ERROR),
+    "bad_quaternion": (Category.TF, Severity.ERROR),
+    "leading_slash": (Category.TF, Severity.WARNING),
+    "multiple_parents": (Category.TF, Severity.ERROR),
+    "tf_cycle": (Category.TF, Severity.ERROR),
+    "unresolved": (Category.LAUNCH, Severity.INFO),
+    "parse_error": (Category.LAUNCH, Severity.ERROR),
+}
+
+# The rules of the MUST / MAY-Semantic / tf issue each have tests/rules/test_<id>.py.
+RULE_TEST_CATEGORIES = (Category.MUST, Category.MAY_SEMANTIC, Category.TF)
+
+
+def _section(doc: str, heading: str) -> str:
+    """The text of one ``## heading`` section, up to the next ``## ``."""
+    start = doc.index(heading) + len(heading)
+    following = doc.find("\n## ", start)
+    return doc[start:] if following == -1 else doc[start:following]
+
+
+def _first_xml(doc: str, heading: str) -> str:
+    match = XML_BLOCK.search(_section(doc, heading))
+    assert match is not None, f"no ```xml block under {heading}"
+    return match.group(1)
+
+
+def _run(rule: Rule, xml: str) -> list[int]:
+    """Lines where ``rule`` reports, with every rule on, as ``launch-linter check`` runs."""
+    options = LintOptions(package_paths=(), beliefs=load_beliefs("bundled", 1.0))
+    result = lint_text(xml, "example.launch", options)
+    return [d.line for d in result.diagnostics if d.rule == rule.id]
+
+
+def test_every_rule_module_is_registered() -> None:
+    files = sorted(p.stem for p in RULES_DIR.glob("*.py") if not p.stem.startswith("_"))
+    registered = sorted(m.__name__.rsplit(".", 1)[-1] for m in RULE_MODULES)
+    assert registered == files
+
+
+def test_ids_are_unique_snake_case_and_match_module_names() -> None:
+    ids = [r.id for r in RULES]
+    assert len(ids) == len(set(ids))
+    assert all(SNAKE_CASE.match(i) for i in ids)
+    module: ModuleType
+    for module in RULE_MODULES:
+        assert module.__name__.rsplit(".", 1)[-1] == module.ID
+
+
+@pytest.mark.parametrize("rule_id", sorted(CONTRACT))
+def test_contract_rules_have_their_category_and_severity(rule_id: str) -> None:
+    rule = RULES_BY_ID[rule_id]
+    assert (rule.category, rule.severity) == CONTRACT[rule_id]
+
+
+@pytest.mark.parametrize("rule", RULES, ids=lambda r: r.id)
+def test_documented(rule: Rule) -> None:
+    lines = rule.doc.splitlines()
+    assert lines and lines[0].strip() and not lines[0].startswith("#")
+    assert lines[0].rstrip().endswith(".")
+    positions = [rule.doc.find(heading) for heading in SECTIONS]
+    assert all(p > 0 for p in positions), f"missing one of {SECTIONS}"
+    assert positions == sorted(positions), "sections out of order"
+    headings = [line for line in lines if line.startswith("## ")]
+    assert set(headings) <= set(SECTIONS) | set(OPTIONAL_SECTIONS)
+    _first_xml(rule.doc, "## Example")
+    _first_xml(rule.doc, "## Use instead")
+
+
+@pytest.mark.parametrize("rule", RULES, ids=lambda r: r.id)
+def test_example_triggers_and_fix_does_not(rule: Rule) -> None:
+    assert _run(rule, _first_xml(rule.doc, "## Example")), "the Example does not trigger"
+    assert _run(rule, _first_xml(rule.doc, "## Use instead")) == [], "Use instead triggers"
+
+
+@pytest.mark.parametrize(
+    "rule", [r for r in RULES if r.category in RULE_TEST_CATEGORIES], ids=lambda r: r.id
+)
+def test_rule_has_a_test_file(rule: Rule) -> None:
+    assert (ROOT / "tests" / "rules" / f"test_{rule.id}.py").is_file()
+
+
+def _generator() -> ModuleType:
+    spec = importlib.util.spec_from_file_location(
+        "gen_rule_docs", ROOT / "scripts" / "gen_rule_docs.py"
+    )
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_docs_rules_md_is_current() -> None:
+    expected = _generator().render()
+    current = (ROOT / "docs" / "rules.md").read_text(encoding="utf-8")
+    assert current == expected, "docs/rules.md is stale: run python scripts/gen_rule_docs.py"
+
+
+def test_docs_hold_every_rule() -> None:
+    text = _generator().render()
+    for rule in RULES:
+        assert f"\n## {rule.id}\n" in text
+        assert _section(rule.doc, "## Why is this bad?").strip() in text
