@@ -1,0 +1,177 @@
+"""``launch-linter graph``: DOT and Mermaid content, and images through Graphviz."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from launch_linter import LintOptions, lint_text
+from launch_linter.cli import main
+from launch_linter.graph import commands
+from launch_linter.graph.model import Edge, Frame, TfGraph, build_graph
+from launch_linter.graph.render import to_dot, to_mermaid
+
+NODE = '<node pkg="tf2_ros" type="static_transform_publisher" name="{name}" args="{args}" {attrs}/>'
+
+
+def node(name: str, args: str, attrs: str = "") -> str:
+    return "  " + NODE.format(name=name, args=args, attrs=attrs)
+
+
+ROBOT = "\n".join([
+    "<launch>",
+    '  <arg name="use_gps"/>',
+    node("base_to_laser", "0.2 0 0.15 0 0 0 base_link laser"),
+    node("base_to_gps", "0 0 0.5 0 0 0 base_link gps", 'if="$(arg use_gps)"'),
+    node("laser_again", "0.2 0 0.15 0 0 0 base_link laser"),
+    node("cam", "0 0 0 0 0 0 1 base_link $(arg camera)"),
+    "</launch>",
+])
+
+
+def graph_of(xml: str) -> TfGraph:
+    return build_graph(lint_text(xml, "robot.launch", LintOptions(package_paths=())))
+
+
+def dot_edges(dot: str) -> list[str]:
+    return [line for line in dot.splitlines() if " -> " in line]
+
+
+def test_frames_and_edges() -> None:
+    graph = graph_of(ROBOT)
+    assert [f.label for f in graph.frames] == ["base_link", "laser", "gps", "$(arg camera)"]
+    assert [(e.parent, e.child) for e in graph.edges][:3] == [
+        ("base_link", "laser"), ("base_link", "gps"), ("base_link", "laser")
+    ]
+    assert [f.resolved for f in graph.frames] == [True, True, True, False]
+
+
+def test_dot_content() -> None:
+    dot = to_dot(graph_of(ROBOT))
+    assert dot.startswith("digraph tf {") and dot.rstrip().endswith("}")
+    assert 'f0 [label="base_link"]' in dot
+    edges = dot_edges(dot)
+    assert len(edges) == 4
+    first, conditional, duplicate, unresolved = edges
+    assert first.startswith("  f0 -> f1 ")
+    assert 'label="/base_to_laser\\nxyz 0.2 0 0.15\\nypr 0 0 0\\nrobot.launch:3"' in first
+    assert "dashed" not in first and "#c62828" not in first
+    assert "style=dashed" in conditional and "if='$(arg use_gps)'" in conditional
+    # the second base_link -> laser is a dup_sig error: red, with the rule and a tooltip
+    assert 'color="#c62828"' in duplicate and "! dup_sig" in duplicate
+    assert "tooltip=" in duplicate and "[dup_sig]" in duplicate
+    assert "q 0 0 0 1" in unresolved
+    assert re.search(r'f1 \[label="laser", color="#c62828"', dot)
+    assert re.search(r'f3 \[label="\$\(arg camera\)", style=dotted\]', dot)
+
+
+def test_info_diagnostics_do_not_mark() -> None:
+    graph = graph_of(ROBOT)
+    unresolved = graph.edges[3]
+    assert not unresolved.flagged and "[unresolved]" in unresolved.tooltip
+
+
+def test_diagnostics_not_at_a_transform_become_notes() -> None:
+    xml = "\n".join(
+        ["<launch>", node("a", "0 0 0 0 0 0 a b"), '  <include file="none.launch"/>', "</launch>"]
+    )
+    graph = graph_of(xml)
+    assert len(graph.notes) == 1 and "roslaunch_error" in graph.notes[0]
+    assert "none.launch" in to_dot(graph).splitlines()[1]
+
+
+def test_untrusted_names_are_escaped() -> None:
+    xml = "<launch>\n" + node("n", "0 0 0 0 0 0 a\\&quot;];x b|&lt;i&gt;") + "\n</launch>"
+    graph = graph_of(xml)
+    assert [f.label for f in graph.frames] == ['a"];x', "b|<i>"]
+    dot = to_dot(graph)
+    assert 'f0 [label="a\\"];x"];' in dot
+    (edge,) = dot_edges(dot)
+    assert edge.startswith("  f0 -> f1 [")
+    mermaid = to_mermaid(graph)
+    assert "b#124;#lt;i#gt;" in mermaid and "<i>" not in mermaid
+    if shutil.which("dot"):
+        done = subprocess.run(["dot", "-Tsvg"], input=dot.encode(), capture_output=True,
+                              check=False)
+        assert done.returncode == 0, done.stderr
+
+
+def test_dot_escapes_backslashes_and_line_breaks() -> None:
+    graph = TfGraph(
+        "t", (Frame("a", "a\\N", True, False), Frame("b", 'b\n"', True, False)),
+        (Edge("a", "b", ("x\\l",), False, False, ""),), (),
+    )
+    dot = to_dot(graph)
+    assert 'f0 [label="a\\\\N"];' in dot
+    assert 'f1 [label="b\\n\\""];' in dot
+    assert 'f0 -> f1 [label="x\\\\l"' in dot
+
+
+def test_mermaid_content() -> None:
+    mermaid = to_mermaid(graph_of(ROBOT))
+    lines = mermaid.splitlines()
+    assert lines[0] == "---" and lines[3] == "flowchart TD"
+    assert '  f0(["base_link"])' in lines
+    edges = [line for line in lines if "|" in line and "-" in line and "linkStyle" not in line]
+    assert edges[0].startswith("  f0 -->|") and edges[0].endswith("| f1")
+    assert edges[1].startswith("  f0 -.->|")
+    assert "  linkStyle 2 stroke:#c62828,color:#c62828,stroke-width:2px" in lines
+    assert "  class f1 flagged" in lines and "  class f3 unresolved" in lines
+
+
+@pytest.fixture
+def launch_file(tmp_path: Path) -> Path:
+    path = tmp_path / "robot.launch"
+    path.write_text(ROBOT)
+    return path
+
+
+def test_cli_dot_and_mermaid(
+    launch_file: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["graph", "--beliefs", "none", str(launch_file)]) == 0
+    assert capsys.readouterr().out.startswith("digraph tf {")
+    out = tmp_path / "tree.mmd"
+    assert main(["graph", "--beliefs", "none", str(launch_file), "-o", str(out)]) == 0
+    assert "flowchart TD" in out.read_text()
+    assert main(["graph", "--beliefs", "none", str(launch_file), "-o", str(tmp_path / "t.dot"),
+                 "--arg", "use_gps:=false"]) == 0
+    assert "base_to_gps" not in (tmp_path / "t.dot").read_text()
+
+
+@pytest.mark.skipif(shutil.which("dot") is None, reason="Graphviz is not installed")
+def test_cli_svg_and_png(launch_file: Path, tmp_path: Path) -> None:
+    svg = tmp_path / "tree.svg"
+    assert main(["graph", "--beliefs", "none", str(launch_file), "-o", str(svg)]) == 0
+    text = svg.read_text()
+    assert "<svg" in text and "base_link" in text and "base_to_laser" in text
+    png = tmp_path / "tree.png"
+    assert main(["graph", "--beliefs", "none", str(launch_file), "-o", str(png)]) == 0
+    assert png.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+
+
+def test_images_without_graphviz_say_what_to_install(
+    launch_file: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    monkeypatch.setattr(commands.shutil, "which", lambda name: None)
+    status = main(["graph", "--beliefs", "none", str(launch_file), "-o", str(tmp_path / "t.png")])
+    assert status == 2
+    assert "apt-get install graphviz" in capsys.readouterr().err
+    assert not (tmp_path / "t.png").exists()
+
+
+@pytest.mark.parametrize("target", ["folder", "t.jpg"])
+def test_usage_errors(
+    launch_file: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str], target: str
+) -> None:
+    if target == "folder":
+        argv = ["graph", str(tmp_path)]
+    else:
+        argv = ["graph", str(launch_file), "-o", str(tmp_path / target)]
+    assert main(argv) == 2
+    assert "error" in capsys.readouterr().err
