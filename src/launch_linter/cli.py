@@ -159,7 +159,8 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         select = list(config.select or ())
     if not ignore:
         ignore = list(config.ignore or ())
-    jobs = getattr(ns, "jobs", None) or 1
+    jobs = getattr(ns, "jobs", None)
+    jobs = 1 if jobs is None else jobs
     if jobs < 1:
         raise UsageError("--jobs must be at least 1")
     beliefs = BeliefSet.empty()
