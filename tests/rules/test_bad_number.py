@@ -2,7 +2,7 @@ from collections.abc import Callable
 
 import pytest
 
-from launch_linter.model import Diagnostic
+from launch_linter.model import Diagnostic, Severity
 
 Lint = Callable[..., list[tuple[str, int]]]
 LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
@@ -25,7 +25,7 @@ def test_junk_reads_as_zero(lint_diagnostics: LintDiagnostics) -> None:
 
 def test_numeric_prefix_is_read(lint_diagnostics: LintDiagnostics) -> None:
     (found,) = lint_diagnostics(launch("0 0 0 1,57 0 0 a b"), RULE)
-    assert "roll" not in found.message and "1 (C atof)" in found.message
+    assert found.message.endswith("reads only its numeric start, 1")
 
 
 def test_each_bad_number_is_reported(lint_diagnostics: LintDiagnostics) -> None:
@@ -53,3 +53,18 @@ def test_unresolved_number_is_silent(lint: Lint) -> None:
 </launch>"""
     assert lint(xml, RULE) == []
     assert lint(xml, RULE, {"x": "ten"}) == [(RULE, 3)]
+
+
+def test_trailing_separator_is_a_warning(lint_diagnostics: LintDiagnostics) -> None:
+    # Found in the corpus: comma-separated args ("1.5707963, 0.0, 0.0"); atof reads them
+    # as meant, so this is a warning, not an error.
+    found = lint_diagnostics(launch("0 0 0 1.5707963, 0.0, 0 a b"), RULE)
+    assert [(d.severity, d.message.split(" ")[0]) for d in found] == [
+        (Severity.WARNING, "pitch"), (Severity.WARNING, "yaw")
+    ]
+    assert "reads 1.5708 as meant" in found[1].message
+
+
+def test_non_finite_is_an_error(lint_diagnostics: LintDiagnostics) -> None:
+    (found,) = lint_diagnostics(launch("1e999 0 0 0 0 0 a b"), RULE)
+    assert found.severity is Severity.ERROR and "inf" in found.message

@@ -25,6 +25,8 @@ def launch(name: str, args: str) -> str:
         ("t", "0 0 0 0 0 0 base_link Velodyne"),
         ("kinect_frames", "0 0 0 0 0 0 1 camera_link camera_rgb"),
         ("t", "0 0 0 0 0 0 openni_camera base"),
+        ("radarRig_to_IMU", "0 0 0 0 0 0 radar bmi088"),
+        ("t", "0 0 0 0 0 0 base_link velodyne2"),
     ],
 )
 def test_null_sensor_transform(lint: Lint, name: str, args: str) -> None:
@@ -37,6 +39,9 @@ def test_null_sensor_transform(lint: Lint, name: str, args: str) -> None:
         ("imu_tf", "0.05 0 0.1 0 0 0 base_link imu_link"),
         ("imu_tf", "0 0 0 1.5708 0 0 base_link imu_link"),
         ("map_tf", "0 0 0 0 0 0 map odom"),
+        # Found in the corpus: "simulation" holds the letters "imu" but names no sensor.
+        ("world_to_sim", "0 0 0 0 0 0 world_frame simulation/world_frame"),
+        ("t", "0 0 0 0 0 0 base_link myimux"),
     ],
 )
 def test_passes(lint: Lint, name: str, args: str) -> None:

@@ -5,7 +5,8 @@ Reports each numeric argument of a `static_transform_publisher` (displacement, r
 period) that the program does not read as written: text such as `pi/2`, `1,57` or `0.1m`,
 or a value that is not finite. ROS 1 reads numbers with C `atof`, which takes the longest
 numeric prefix and reads junk as 0, so the message says which value the program will
-really use.
+really use. A number followed only by a separator (`1.57,`, as in comma-separated
+lists) is read as meant and is reported as a warning.
 
 ## Why is this bad?
 The program does not complain: `pi/2` silently becomes 0 and `1,57` becomes 1, so the
@@ -30,6 +31,7 @@ Or compute it with `$(eval)`: `args="0.1 0 0.3 $(eval pi/2) 0 0 base_link camera
 """
 
 import math
+import re
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
@@ -39,6 +41,10 @@ from launch_linter.rules._api import RuleContext, diagnostic_at
 ID = "bad_number"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
+
+_NUMERIC_START = re.compile(r"\s*[+-]?(\d|\.\d|inf|nan)", re.IGNORECASE)
+_PLAIN_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+SEPARATORS = ",;"
 
 SLOTS = {
     "ypr": ("x", "y", "z", "yaw", "pitch", "roll", "parent", "child", "period_ms"),
@@ -51,23 +57,38 @@ def _slot(transform: StaticTransform, index: int) -> str:
     return names[index] if index < len(names) else f"argument {index + 1}"
 
 
+def _separated(written: str) -> bool:
+    """True for a finite plain number followed only by list separators (``1.57,``)."""
+    number = written.rstrip(SEPARATORS)
+    return (
+        number != written
+        and _PLAIN_NUMBER.fullmatch(number) is not None
+        and math.isfinite(float(number))
+    )
+
+
 def _effect(transform: StaticTransform, issue: NumberIssue) -> str:
-    if transform.ros_version == 2:
-        return "the ROS 2 program cannot parse it and exits"
-    if issue.read_as is None:
-        return "the program cannot read it"
-    if not math.isfinite(issue.read_as):
-        return f"it is read as {issue.read_as}, which is not a usable value"
-    if issue.read_as == 0:
+    read = "" if issue.read_as is None else f"{issue.read_as:g}"
+    if _separated(issue.written):
+        return (
+            f"the program reads {read} as meant, but a separator in the arguments is "
+            f"fragile (without the space after it, two arguments become one): remove it"
+        )
+    if issue.read_as is not None and not math.isfinite(issue.read_as):
+        return f"it is read as {read}, which is not a usable value"
+    if _NUMERIC_START.match(issue.written) is None:
+        if transform.ros_version == 2:
+            return "the program cannot read it and stops with an error"
         return "the program reads it as 0 (C atof)"
-    return f"the program reads only its numeric start, {issue.read_as:g} (C atof)"
+    return f"the program reads only its numeric start, {read}"
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
     for transform in context.tree.transforms:
         for issue in transform.number_issues:
             yield diagnostic_at(
-                ID, CATEGORY, SEVERITY, transform,
+                ID, CATEGORY, Severity.WARNING if _separated(issue.written) else SEVERITY,
+                transform,
                 f"{_slot(transform, issue.index)} '{issue.written}' is not a number: "
                 f"{_effect(transform, issue)}",
             )

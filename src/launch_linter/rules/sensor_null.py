@@ -1,9 +1,10 @@
 """A velodyne, kinect, openni or imu transform that is all zero.
 
 ## What it does
-Reports a static transform whose node name, parent frame or child frame contains
+Reports a static transform whose node name, parent frame or child frame contains the word
 `velodyne`, `kinect`, `openni` or `imu` (any case) and whose displacement and rotation are
-both null.
+both null. Words are split at non-letters and at camelCase humps, so `base_imu_link`,
+`velodyne2` and `radarToIMU` hold a sensor word and `simulation` does not.
 
 ## Why is this bad?
 These names stand for physical sensors, which sit somewhere on the robot and are rarely
@@ -31,6 +32,7 @@ is placed at the wrong spot of the robot.
 A null transform is sometimes meant, to give a sensor frame a second name (an alias).
 """
 
+import re
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
@@ -40,7 +42,14 @@ ID = "sensor_null"
 CATEGORY = Category.MAY_SEMANTIC
 SEVERITY = Severity.WARNING
 
-SENSOR_WORDS = ("velodyne", "kinect", "openni", "imu")
+SENSOR_WORDS = frozenset({"velodyne", "kinect", "openni", "imu"})
+# A run of capitals (IMU), a capitalised word (Imu) or a lower-case word (imu).
+_WORD = re.compile(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+")
+
+
+def sensor_words(text: str) -> set[str]:
+    """The sensor words of ``text``: whole words only (not the "imu" of "simulation")."""
+    return {w.lower() for w in _WORD.findall(text)} & SENSOR_WORDS
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
@@ -56,7 +65,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             )
             if text is not None and field not in transform.unresolved
         ]
-        sensors = sorted({w for w in SENSOR_WORDS for text in labels if w in text.lower()})
+        sensors = sorted(set().union(*(sensor_words(text) for text in labels)))
         if not sensors:
             continue
         yield diagnostic_at(
