@@ -1,0 +1,62 @@
+"""The pre-commit hook definition and the integration guide agree with the code."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES
+
+yaml = pytest.importorskip("yaml")
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def hook() -> dict[str, object]:
+    (only,) = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
+    assert isinstance(only, dict)
+    return only
+
+
+def test_hook_runs_check() -> None:
+    definition = hook()
+    assert definition["id"] == "launch-linter"
+    assert definition["entry"] == "launch-linter check"
+    assert definition["language"] == "python"
+
+
+def test_hook_matches_every_launch_suffix_and_nothing_else() -> None:
+    pattern = re.compile(str(hook()["files"]))
+    for suffix in LAUNCH_SUFFIXES:
+        assert pattern.search(f"pkg/launch/robot{suffix}"), suffix
+    for name in ("setup.py", "package.xml", "robot.launch.pyc", "launch/notes.txt"):
+        assert not pattern.search(name), name
+
+
+def test_guide_uses_the_same_pattern() -> None:
+    guide = (ROOT / "docs" / "integration.md").read_text()
+    assert f"files: '{hook()['files']}'" in guide
+
+
+def test_guide_yaml_and_toml_examples_parse() -> None:
+    import tomllib
+
+    guide = (ROOT / "docs" / "integration.md").read_text()
+    yaml_blocks = re.findall(r"```yaml\n(.*?)```", guide, re.DOTALL)
+    assert len(yaml_blocks) >= 4
+    for block in yaml_blocks:
+        yaml.safe_load(block)
+    (toml_block,) = re.findall(r"```toml\n(.*?)```", guide, re.DOTALL)
+    tomllib.loads(toml_block)
+
+
+def test_guide_config_example_is_accepted(tmp_path: Path) -> None:
+    from launch_linter.config import load_config
+
+    guide = (ROOT / "docs" / "integration.md").read_text()
+    (toml_block,) = re.findall(r"```toml\n(.*?)```", guide, re.DOTALL)
+    (tmp_path / ".launch-linter.toml").write_text(toml_block)
+    config = load_config(str(tmp_path / ".launch-linter.toml"))
+    assert config.fail_on == "error" and config.args["use_sim_time"] == "false"
