@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.model.diagnostic import Belief
@@ -38,6 +39,9 @@ class BeliefSet:
     min_z: float
     beliefs: tuple[Belief, ...]
     p0: float = 0.9
+    _index: dict[str, dict[tuple[str, ...] | str, tuple[Belief, ...]]] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
 
     @staticmethod
     def empty(source: str = "none") -> BeliefSet:
@@ -75,6 +79,22 @@ class BeliefSet:
 
     def of_class(self, cls: str) -> tuple[Belief, ...]:
         return tuple(b for b in self.beliefs if b.cls == cls)
+
+    def by_antecedent(self, cls: str) -> Mapping[tuple[str, ...] | str, tuple[Belief, ...]]:
+        """The beliefs of ``cls`` keyed by antecedent, strongest first (built once per set,
+        so that linting many trees does not rescan every belief for each one)."""
+        index = self._index.get(cls)
+        if index is None:
+            grouped: dict[tuple[str, ...] | str, list[Belief]] = {}
+            for belief in self.beliefs:
+                if belief.cls == cls:
+                    grouped.setdefault(belief.antecedent, []).append(belief)
+            index = {
+                key: tuple(sorted(group, key=lambda b: (-b.z, -b.n)))
+                for key, group in grouped.items()
+            }
+            self._index[cls] = index
+        return index
 
     def restricted(self, classes: tuple[str, ...]) -> BeliefSet:
         return BeliefSet(

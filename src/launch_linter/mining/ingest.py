@@ -1,0 +1,328 @@
+"""Reading a corpus into the store: which files there are, and what each one declares.
+
+A corpus is either a folder with a ``manifest.jsonl`` (the format of ``../shared/corpus``:
+one line per repository, path and version, naming the stored file), or a plain folder
+whose top-level subfolders are repositories (git repositories are dated by their commit
+count; other folders count as immature unless ``--mature`` names them).
+
+Every distinct content (SHA-256 of the raw bytes) is parsed once, in parallel, and stored
+with its transforms and the files that hold it in one transaction per batch: a run that is
+killed loses at most the batch in flight, and the next run parses only what is missing.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import multiprocessing
+import os
+import subprocess
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from dataclasses import dataclass, field
+
+from launch_linter.engine import discover
+from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.ros1 import LoadOptions
+from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.mining.progress import Progress
+from launch_linter.mining.store import FileRef, ParsedContent, RepoInfo, Store, transform_row
+from launch_linter.model.launch import FileStatus
+from launch_linter.resolve.packages import PackageIndex
+
+MANIFEST = "manifest.jsonl"
+BATCH_SIZE = 256
+GIT_TIMEOUT_S = 120
+
+
+class CorpusError(Exception):
+    """The corpus cannot be read (missing folder, malformed manifest line, …)."""
+
+
+@dataclass(frozen=True, slots=True)
+class CorpusEntry:
+    """One file of the corpus and where to read it."""
+
+    ref: FileRef
+    source: str
+    """The file to read."""
+    parse_path: str
+    """The name the front-end sees: the file's own name, in the folder of ``source``."""
+    package_roots: tuple[str, ...]
+    """Where ``$(find)`` looks (the repository folder; nothing for a manifest corpus)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Corpus:
+    root: str
+    kind: str
+    """``manifest`` or ``folders``."""
+    repos: tuple[RepoInfo, ...]
+    entries: tuple[CorpusEntry, ...]
+    unknown_mature: tuple[str, ...] = ()
+    """Names given to ``--mature`` that match no repository."""
+
+
+@dataclass(slots=True)
+class IngestReport:
+    files: int = 0
+    """Files in the corpus."""
+    new_files: int = 0
+    """Files not stored before this run."""
+    parsed: int = 0
+    """Distinct contents parsed in this run."""
+    parse_failures: int = 0
+    unreadable: list[tuple[str, str]] = field(default_factory=list)
+    """(repo:path, reason) of files that could not be read in this run."""
+    unknown_mature: tuple[str, ...] = ()
+    """Names given to ``--mature`` that match no repository."""
+
+
+# -- reading the corpus --------------------------------------------------------------------
+def read_corpus(root: str, mature: Sequence[str] = ()) -> Corpus:
+    """The files of the corpus at ``root``; ``mature`` names repositories to treat as mature."""
+    if not os.path.isdir(root):
+        raise CorpusError(f"corpus folder {root!r} does not exist")
+    root = os.path.abspath(root)
+    if os.path.isfile(os.path.join(root, MANIFEST)):
+        return _read_manifest(root, mature)
+    return _read_folders(root, mature)
+
+
+def _inside(root: str, path: str) -> bool:
+    real_root = os.path.realpath(root)
+    return os.path.commonpath([real_root, os.path.realpath(path)]) == real_root
+
+
+def _manifest_lines(path: str) -> Iterator[tuple[int, dict[str, object]]]:
+    try:
+        with open(path, encoding="utf-8") as handle:
+            for number, line in enumerate(handle, 1):
+                if not line.strip():
+                    continue
+                try:
+                    row = json.loads(line)
+                except json.JSONDecodeError as exc:
+                    raise CorpusError(f"{path}:{number}: not JSON: {exc}") from None
+                if not isinstance(row, dict):
+                    raise CorpusError(f"{path}:{number}: expected a JSON object")
+                yield number, row
+    except (OSError, UnicodeDecodeError) as exc:
+        raise CorpusError(f"cannot read {path}: {exc}") from None
+
+
+def _text(row: dict[str, object], key: str, where: str) -> str:
+    value = row.get(key)
+    if not isinstance(value, str) or not value:
+        raise CorpusError(f"{where}: '{key}' must be a non-empty string")
+    return value
+
+
+def _read_manifest(root: str, mature: Sequence[str]) -> Corpus:
+    manifest = os.path.join(root, MANIFEST)
+    commits: dict[str, int | None] = {}
+    flagged: set[str] = set()
+    entries: list[CorpusEntry] = []
+    for number, row in _manifest_lines(manifest):
+        where = f"{manifest}:{number}"
+        repo = _text(row, "repo", where)
+        path = _text(row, "path", where)
+        stored = row.get("file") or os.path.join(repo, path)
+        if not isinstance(stored, str):
+            raise CorpusError(f"{where}: 'file' must be a string")
+        version = row.get("commit", row.get("version", ""))
+        count = row.get("repo_commits", row.get("commits"))
+        if count is not None and (not isinstance(count, int) or isinstance(count, bool)):
+            raise CorpusError(f"{where}: 'repo_commits' must be an integer")
+        if commits.get(repo) is None:
+            commits[repo] = count
+        if row.get("mature") is True and count is None:
+            flagged.add(repo)
+        source = os.path.join(root, stored)
+        entries.append(
+            CorpusEntry(
+                FileRef(repo, path, str(version or ""), row.get("latest", True) is not False),
+                source,
+                os.path.join(os.path.dirname(source), os.path.basename(path)),
+                (),
+            )
+        )
+    named = set(mature)
+    repos = tuple(
+        RepoInfo(name, count, name in named or name in flagged) for name, count in commits.items()
+    )
+    return Corpus(root, "manifest", repos, tuple(entries), tuple(sorted(named - set(commits))))
+
+
+def _git(folder: str, *args: str) -> str | None:
+    try:
+        done = subprocess.run(
+            ["git", "-C", folder, *args], capture_output=True, text=True,
+            timeout=GIT_TIMEOUT_S, check=False,
+        )
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return done.stdout.strip() if done.returncode == 0 else None
+
+
+def git_commits(folder: str) -> tuple[int | None, str]:
+    """(``git rev-list --count HEAD``, HEAD's SHA) of a git repository, (None, "") otherwise."""
+    if not os.path.exists(os.path.join(folder, ".git")):
+        return None, ""
+    count = _git(folder, "rev-list", "--count", "HEAD")
+    head = _git(folder, "rev-parse", "HEAD")
+    if count is None or not count.isdigit():
+        return None, ""
+    return int(count), head or ""
+
+
+def _read_folders(root: str, mature: Sequence[str]) -> Corpus:
+    named = {os.path.basename(os.path.normpath(m)) for m in mature}
+    repos: list[RepoInfo] = []
+    entries: list[CorpusEntry] = []
+    for name in sorted(os.listdir(root)):
+        folder = os.path.join(root, name)
+        if name.startswith(".") or not os.path.isdir(folder):
+            continue
+        count, head = git_commits(folder)
+        repos.append(RepoInfo(name, count, name in named))
+        for item in discover([folder]):
+            relative = os.path.relpath(item.path, folder).replace(os.sep, "/")
+            entries.append(
+                CorpusEntry(FileRef(name, relative, head, True), item.path, item.path, (folder,))
+            )
+    known = {r.name for r in repos}
+    return Corpus(root, "folders", tuple(repos), tuple(entries), tuple(sorted(named - known)))
+
+
+# -- parsing -------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class ParseJob:
+    sha256: str
+    source: str
+    parse_path: str
+    package_roots: tuple[str, ...]
+
+
+_INDEXES: dict[tuple[str, ...], PackageIndex] = {}
+
+
+def _identity(path: str) -> str:
+    return path
+
+
+def _read_bounded(path: str) -> bytes:
+    with open(path, "rb") as handle:
+        return handle.read(MAX_BYTES + 1)
+
+
+def parse_job(job: ParseJob) -> ParsedContent:
+    """Parse one distinct content (runs in a worker process)."""
+    try:
+        data = _read_bounded(job.source)
+    except OSError as exc:
+        return ParsedContent(job.sha256, 0, "unreadable", f"cannot read: {exc.strerror or exc}", ())
+    if hashlib.sha256(data).hexdigest() != job.sha256:
+        return ParsedContent(job.sha256, len(data), "unreadable", "changed while ingesting", ())
+    index = _INDEXES.get(job.package_roots)
+    if index is None:
+        index = _INDEXES[job.package_roots] = PackageIndex(list(job.package_roots))
+    options = LoadOptions(packages=index, display_path=_identity)
+    try:
+        tree = load_tree(job.parse_path, options, data)
+    except Exception as exc:
+        # A front-end bug on one hostile file must not end a corpus-wide run: the file is
+        # recorded as a parse failure with the reason, and the run goes on.
+        reason = f"front-end failed: {type(exc).__name__}: {exc}"
+        return ParsedContent(job.sha256, len(data), FileStatus.PARSE_ERROR.value, reason, ())
+    failure: str | None = None
+    if tree.status is not FileStatus.OK:
+        first = next((d for d in tree.diagnostics if d.rule == "parse_error"), None)
+        failure = first.message if first else tree.status.value
+    own = [t for t in tree.transforms if t.path == job.parse_path]
+    rows = tuple(transform_row(i, t) for i, t in enumerate(own))
+    return ParsedContent(job.sha256, len(data), tree.status.value, failure, rows)
+
+
+def _parsed(jobs: Sequence[ParseJob], workers: int) -> Iterator[ParsedContent]:
+    if workers <= 1 or len(jobs) < 2 * workers:
+        yield from map(parse_job, jobs)
+        return
+    with multiprocessing.Pool(workers) as pool:
+        yield from pool.imap(parse_job, jobs, chunksize=8)
+
+
+# -- ingest --------------------------------------------------------------------------------
+def _batches(items: Iterable[ParsedContent], size: int) -> Iterator[list[ParsedContent]]:
+    batch: list[ParsedContent] = []
+    for item in items:
+        batch.append(item)
+        if len(batch) >= size:
+            yield batch
+            batch = []
+    if batch:
+        yield batch
+
+
+def ingest(
+    store: Store,
+    corpus: Corpus,
+    mature_commits: int,
+    jobs: int = 1,
+    batch_size: int = BATCH_SIZE,
+    after_batch: Callable[[int], None] | None = None,
+) -> IngestReport:
+    """Store every file of ``corpus`` that is not stored yet; parse each new content once.
+
+    ``after_batch`` is called with the number of contents committed so far (tests use it
+    to stop a run halfway).
+    """
+    report = IngestReport(files=len(corpus.entries), unknown_mature=corpus.unknown_mature)
+    store.update_repos(corpus.repos, mature_commits)
+    stored = store.stored_files()
+    known = store.content_ids()
+    waiting: dict[str, list[FileRef]] = {}
+    parse_jobs: list[ParseJob] = []
+    seen: list[tuple[FileRef, str]] = []
+    unreadable: list[tuple[FileRef, str]] = []
+    for entry in corpus.entries:
+        if not _inside(corpus.root, entry.source):
+            unreadable.append((entry.ref, "outside the corpus folder"))
+            continue
+        try:
+            data = _read_bounded(entry.source)
+        except OSError as exc:
+            unreadable.append((entry.ref, f"cannot read: {exc.strerror or exc}"))
+            continue
+        sha = hashlib.sha256(data).hexdigest()
+        if stored.get((entry.ref.repo, entry.ref.path, entry.ref.version)) == sha:
+            continue
+        report.new_files += 1
+        if sha in known:
+            seen.append((entry.ref, sha))
+        elif sha in waiting:
+            waiting[sha].append(entry.ref)
+        else:
+            waiting[sha] = [entry.ref]
+            parse_jobs.append(ParseJob(sha, entry.source, entry.parse_path, entry.package_roots))
+    store.add_files(seen)
+
+    progress = Progress("parsing", len(parse_jobs))
+    committed = 0
+    try:
+        for batch in _batches(_parsed(parse_jobs, jobs), batch_size):
+            contents = [(c, waiting[c.sha256]) for c in batch if c.status != "unreadable"]
+            for c in batch:
+                if c.status == "unreadable":
+                    unreadable.extend((ref, c.reason or "unreadable") for ref in waiting[c.sha256])
+            store.add_contents(contents)
+            committed += len(batch)
+            report.parsed += len(contents)
+            report.parse_failures += sum(1 for c, _ in contents if c.status != "ok")
+            progress.advance(len(batch))
+            if after_batch is not None:
+                after_batch(committed)
+    finally:
+        progress.finish()
+    store.add_unreadable(unreadable)
+    report.unreadable = [(f"{ref.repo}:{ref.path}", reason) for ref, reason in unreadable]
+    return report
