@@ -1,0 +1,127 @@
+"""What the six ``may_implied`` rules share: looking up mined beliefs and citing them.
+
+Implications are checked per file (transforms grouped by the file that declares them);
+the null rules per transform. A value the linter could not resolve never counts: a file
+with an unresolved signature (name) is not judged for a missing one, since the unresolved
+transform may be the one that the belief asks for.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Severity
+from launch_linter.model.transform import StaticTransform
+from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
+
+Key = tuple[str, ...] | str
+KeyOf = Callable[[StaticTransform], Key | None]
+
+
+def signature_of(transform: StaticTransform) -> Key | None:
+    return transform.signature
+
+
+def signature_unresolved(transform: StaticTransform) -> bool:
+    return "parent" in transform.unresolved or "child" in transform.unresolved
+
+
+def name_of(transform: StaticTransform) -> Key | None:
+    if transform.name and "name" not in transform.unresolved:
+        return transform.name
+    return None
+
+
+def name_unresolved(transform: StaticTransform) -> bool:
+    return "name" in transform.unresolved
+
+
+def describe(key: Key | None) -> str:
+    """``(parent → child)`` for a signature, ``'name'`` for a node name."""
+    if isinstance(key, tuple):
+        return f"({' → '.join(key)})"
+    return repr(key)
+
+
+def evidence(belief: Belief) -> str:
+    """The belief's support; beliefs published without counts give only their z bound."""
+    if belief.n == 0:
+        return f"z ≥ {belief.z:g}, counts not published"
+    return f"n={belief.n}, e={belief.e}, z={belief.z:.2f}"
+
+
+def implications(
+    context: RuleContext,
+    rule_id: str,
+    key_of: KeyOf,
+    unresolved: Callable[[StaticTransform], bool],
+    what: str,
+) -> Iterator[Diagnostic]:
+    """One diagnostic per file and violated belief ``A ⇒ B``: the file has A but not B,
+    reported at the first transform with A."""
+    index = context.beliefs.by_antecedent(rule_id)
+    if not index:
+        return
+    for transforms in by_file(context.tree.transforms).values():
+        if any(unresolved(t) for t in transforms):
+            continue
+        first: dict[Key, StaticTransform] = {}
+        for transform in transforms:
+            key = key_of(transform)
+            if key is not None:
+                first.setdefault(key, transform)
+        for key, transform in first.items():
+            for belief in index.get(key, ()):
+                if belief.consequent not in first:
+                    yield diagnostic_at(
+                        rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+                        f"file has {what} {describe(key)} but not "
+                        f"{describe(belief.consequent)}, which usually comes with it "
+                        f"({evidence(belief)})",
+                        belief=belief,
+                    )
+
+
+def _numbers(values: tuple[float, ...]) -> str:
+    return "(" + ", ".join(f"{v:g}" for v in values) + ")"
+
+
+def null_displacements(
+    context: RuleContext, rule_id: str, key_of: KeyOf, what: str
+) -> Iterator[Diagnostic]:
+    """A transform whose key usually has zero displacement, with a non-zero one."""
+    index = context.beliefs.by_antecedent(rule_id)
+    if not index:
+        return
+    for transform in context.tree.transforms:
+        key, translation = key_of(transform), transform.translation
+        if key is None or translation is None or transform.null_displacement is not False:
+            continue
+        for belief in index.get(key, ()):
+            yield diagnostic_at(
+                rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+                f"{what} {describe(key)} usually has zero displacement, this one has "
+                f"{_numbers(translation)} ({evidence(belief)})",
+                belief=belief,
+            )
+
+
+def null_rotations(
+    context: RuleContext, rule_id: str, key_of: KeyOf, what: str
+) -> Iterator[Diagnostic]:
+    """A transform whose key usually has zero rotation, with a non-zero one."""
+    index = context.beliefs.by_antecedent(rule_id)
+    if not index:
+        return
+    for transform in context.tree.transforms:
+        key, rotation = key_of(transform), transform.rotation
+        if key is None or rotation is None or transform.null_rotation is not False:
+            continue
+        for belief in index.get(key, ()):
+            yield diagnostic_at(
+                rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+                f"{what} {describe(key)} usually has zero rotation, this one has "
+                f"{rotation.kind.value} {_numbers(rotation.values)} "
+                f"({evidence(belief)})",
+                belief=belief,
+            )
