@@ -1,5 +1,9 @@
 from collections.abc import Callable
 
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from launch_linter import LintOptions, lint_text
 from launch_linter.model import Diagnostic, Location
 
 Lint = Callable[..., list[tuple[str, int]]]
@@ -106,3 +110,20 @@ def test_unresolved_parent_is_silent(lint: Lint) -> None:
     assert lint(xml, RULE) == []
     assert lint(xml, RULE, {"p": "base_link"}) == []
     assert lint(xml, RULE, {"p": "odom"}) == [(RULE, 4)]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 4), st.integers(0, 4)).filter(lambda e: e[0] != e[1]),
+                max_size=8))
+def test_one_report_per_later_transform_with_a_new_parent(edges: list[tuple[int, int]]) -> None:
+    xml = "\n".join(
+        ["<launch>", *(node(f"t{i}", f"f{p}", f"f{c}") for i, (p, c) in enumerate(edges)),
+         "</launch>"]
+    )
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_text(xml, "test.launch", options).diagnostics
+    expected = [
+        i + 2 for i, (p, c) in enumerate(edges)
+        if any(c2 == c and p2 != p for p2, c2 in edges[:i])
+    ]
+    assert [d.line for d in found] == expected

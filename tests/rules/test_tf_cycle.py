@@ -1,5 +1,9 @@
 from collections.abc import Callable
 
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from launch_linter import LintOptions, lint_text
 from launch_linter.model import Diagnostic
 
 Lint = Callable[..., list[tuple[str, int]]]
@@ -7,6 +11,11 @@ LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
 LintTree = Callable[..., tuple[Diagnostic, ...]]
 
 RULE = "tf_cycle"
+
+
+def run_rule(xml: str, rule: str) -> tuple[Diagnostic, ...]:
+    options = LintOptions(package_paths=(), select=frozenset({rule}))
+    return lint_text(xml, "test.launch", options).diagnostics
 
 
 def node(name: str, parent: str, child: str, attrs: str = "") -> str:
@@ -98,3 +107,24 @@ def test_dense_graph_stays_bounded(lint: Lint) -> None:
     nodes = [node(f"{a}_{b}", a, b) for a in frames for b in frames if a != b]
     found = lint(launch(*nodes), RULE)
     assert 0 < len(found) <= 100
+
+
+def _has_cycle(edges: set[tuple[int, int]]) -> bool:
+    """Reference: repeatedly drop frames without a parent; a loop is what remains."""
+    remaining = set(edges)
+    while True:
+        children = {c for _, c in remaining}
+        roots = {p for p, _ in remaining} - children
+        if not roots:
+            return bool(remaining)
+        remaining = {(p, c) for p, c in remaining if p not in roots}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sets(st.tuples(st.integers(0, 5), st.integers(0, 5)).filter(lambda e: e[0] != e[1]),
+               max_size=10))
+def test_reports_a_loop_exactly_when_there_is_one(edges: set[tuple[int, int]]) -> None:
+    xml = launch(*(node(f"t{p}_{c}", f"f{p}", f"f{c}") for p, c in sorted(edges)))
+    found = run_rule(xml, RULE)
+    assert bool(found) == _has_cycle(edges)
+    assert all(len(d.related) >= 1 for d in found)
