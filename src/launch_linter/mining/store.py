@@ -159,6 +159,20 @@ class ParsedContent:
     rows: tuple[TransformRow, ...]
 
 
+@dataclass(frozen=True, slots=True)
+class StoredVersion:
+    """One stored (repository, path, version), as the evaluation reads it back."""
+
+    repo: str
+    path: str
+    version: str
+    latest: bool
+    mature: bool
+    """The repository's maturity as of the last mining run."""
+    sha256: str | None
+    """The content's SHA-256; None when the file could not be read."""
+
+
 def _json(value: object) -> str:
     return json.dumps(value, ensure_ascii=False, separators=(",", ":"))
 
@@ -394,6 +408,21 @@ class Store:
             then = decode_key(consequent) if consequent else None
             out.append(Belief(cls, decode_key(antecedent), then, n, e, z))
         return out
+
+    # -- evaluation -----------------------------------------------------------------
+    def file_versions(self) -> list[StoredVersion]:
+        """Every stored file version with its repository's maturity and its content's
+        SHA-256, ordered by repository, path and version (read-only)."""
+        rows = self.conn.execute(
+            "SELECT r.name, f.path, f.version, f.latest, r.mature, c.sha256 "
+            "FROM files f JOIN repos r ON r.id = f.repo_id "
+            "LEFT JOIN contents c ON c.id = f.content_id "
+            "ORDER BY r.name, f.path, f.version"
+        )
+        return [
+            StoredVersion(repo, path, version, bool(latest), bool(mature), sha)
+            for repo, path, version, latest, mature, sha in rows
+        ]
 
     # -- statistics -----------------------------------------------------------------
     def statistics(self) -> dict[str, int]:
