@@ -17,32 +17,44 @@ from dataclasses import dataclass
 
 from launch_linter.model.transform import NumberIssue, Rotation, RotationKind
 
+# What C's strtod (hence atof) reads, in the "C" locale. Hexadecimal comes first because a
+# regex alternation takes the first branch that matches, and "0x10" must not stop at "0".
 _NUMBER = re.compile(
     r"""[+-]?(
-        (\d+\.?\d*|\.\d+)([eE][+-]?\d+)?
-      | 0[xX]([0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)([pP][+-]?\d+)?
+        0[xX]([0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)([pP][+-]?[0-9]+)?
+      | ([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?
       | inf(inity)? | nan(\([0-9A-Za-z_]*\))?
     )""",
-    re.VERBOSE | re.IGNORECASE,
+    re.VERBOSE | re.IGNORECASE | re.ASCII,
 )
+_C_SPACE = " \t\n\v\f\r"
 
 
 def atof(text: str) -> tuple[float, bool]:
     """C ``atof``: the longest numeric prefix (0.0 if none), and whether all of it was read."""
-    stripped = text.lstrip()
+    # Python's float() reads the same numbers as strtod from ASCII text without blanks or
+    # underscores, except hexadecimal and NaN payloads, which it refuses (then the slow way).
+    if text.isascii() and "_" not in text and text == text.strip():
+        try:
+            return float(text), True
+        except ValueError:
+            pass
+    stripped = text.lstrip(_C_SPACE)
     match = _NUMBER.match(stripped)
     if match is None:
         return 0.0, False
     number = match.group(0)
-    try:
-        if "x" in number.lower() and "inf" not in number.lower():
-            sign = -1.0 if number.startswith("-") else 1.0
-            body = number.lstrip("+-")
+    sign = -1.0 if number.startswith("-") else 1.0
+    body = number.lstrip("+-").lower()
+    if body.startswith("nan"):
+        value = math.nan
+    elif body.startswith("0x"):
+        try:
             value = sign * float.fromhex(body)
-        else:
-            value = float(number)
-    except (ValueError, OverflowError):
-        value = 0.0
+        except OverflowError:
+            value = sign * math.inf
+    else:
+        value = sign * float(body)
     return value, match.end() == len(stripped) and stripped == text
 
 
@@ -145,7 +157,8 @@ def decode_ros1(package: str, tokens: tuple[str, ...]) -> Decoded:
             return _layout(
                 words, 3, True, "ypr",
                 f"tf2_ros takes no period: with 9 arguments it reads a quaternion with "
-                f"qw='{words[6]}' (0), parent '{words[7]}' and child '{words[8]}'",
+                f"qw='{words[6]}' ({atof(words[6])[0]:g}), parent '{words[7]}' and child "
+                f"'{words[8]}'",
             )
         return _layout(words, 4, False, "quaternion", None)
     if count == 10:

@@ -1,32 +1,56 @@
 """ROS 1 launch XML to static transforms, with roslaunch's loading rules.
 
-The walk follows ``roslaunch.xmlloader``: tags are processed in order, ``<arg>`` scoping
-(groups copy, includes see only what is passed), ``if``/``unless``, namespaces and
-``<include>``. Where roslaunch would stop with an error we record a ``roslaunch_error``
-diagnostic and go on; where a value cannot be known statically it becomes a hole, and the
-transform stays in the output marked unresolved, with its presence condition.
+The walk follows ``roslaunch.xmlloader`` tag by tag: the same tags, the same attributes
+resolved in the same order and in the same context (which matters for ``$(anon)``
+numbering and for the errors roslaunch raises), ``<arg>`` scoping (groups copy, includes
+see only what is passed), ``if``/``unless``, namespaces and ``<include>``. Where
+roslaunch would stop with an error we record a ``roslaunch_error`` diagnostic and go on;
+where a value cannot be known statically it becomes a hole, and the transform stays in
+the output marked unresolved, with its presence condition. Nothing is executed or read
+on behalf of the launch file except the files it includes.
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Mapping
+import re
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
 from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_safe import MAX_BYTES, Element, XmlError, parse_xml
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
-from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
+from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.packages import PackageIndex
-from launch_linter.resolve.substitution import SubstitutionError, SubstitutionScope, resolve, to_bool
+from launch_linter.resolve.substitution import (
+    SubstitutionError,
+    SubstitutionScope,
+    resolve,
+    to_bool,
+)
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
 
 STATIC_TF_TYPE = "static_transform_publisher"
 TF_PACKAGES = ("tf", "tf2_ros")
 MAX_INCLUDE_DEPTH = 32
+MAX_NESTING = 100
+"""Most ``<group>``/``<include>`` levels followed, all files of a tree together."""
 MAX_FILES_PER_TREE = 2_000
+
+_NAME_LEGAL = re.compile(r"[~/A-Za-z][\w/]*\Z")
+_COLLAPSE_SLASHES = re.compile("//+")
+
+# Attributes roslaunch resolves for each tag, in its order (after ``if``/``unless``).
+_ARG_ATTRS = ("name", "value", "default", "doc")
+_NODE_LATE_ATTRS = ("machine", "args", "output", "respawn", "respawn_delay", "cwd",
+                    "launch-prefix", "required")
+_PARAM_VALUE_ATTRS = ("value", "textfile", "binfile", "command")
+_ROSPARAM_ATTRS = ("command", "ns", "file", "param", "subst_value")
+_MACHINE_OLD_ATTRS = ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")
+_MACHINE_ATTRS = ("env-loader", "ssh-port", "user", "password", "default", "timeout")
+_PARAM_TYPES = ("auto", "str", "string", "int", "double", "bool", "boolean", "yaml")
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,26 +76,46 @@ class _AnonNames:
         return table[anon_id]
 
 
-@dataclass(slots=True)
 class _Context:
-    ns: str
-    ns_unresolved: bool
-    filename: str
-    args: dict[str, Value]
-    arg_names: list[str]
-    anon: dict[str, str]
-    condition: Condition
-    chain: tuple[str, ...]
-    included_from: tuple[str, int] | None
-    pass_all_args: bool = False
-    include_args: dict[str, Value] | None = None
+    """roslaunch's ``LoaderContext``, plus what static resolution needs to know."""
+
+    __slots__ = ("anon", "arg_names", "args", "chain", "condition", "depth", "filename",
+                 "include_args", "included_from", "ns", "ns_unresolved", "open_args",
+                 "pass_all_args", "scope")
+
+    def __init__(self, ns: str, filename: str, args: dict[str, Value], open_args: bool) -> None:
+        self.ns = ns
+        self.ns_unresolved = False
+        self.filename = filename
+        self.args = args
+        self.open_args = open_args
+        """Whether args the linter does not know may be set (the root's command line)."""
+        self.arg_names: dict[str, bool] = {}
+        """Args declared here; the value says whether under an unresolved condition."""
+        self.anon: dict[str, str] = {}
+        self.condition = ALWAYS
+        self.chain: tuple[str, ...] = (filename,)
+        self.included_from: tuple[str, int] | None = None
+        self.pass_all_args = False
+        self.include_args: dict[str, Value] | None = None
+        self.depth = 0
+        self.scope: SubstitutionScope | None = None
+        """Made on first use; it reads ``args`` and ``anon`` live, so only a change of
+        file or of those dicts themselves resets it."""
 
     def copy(self) -> _Context:
-        return _Context(
-            self.ns, self.ns_unresolved, self.filename, dict(self.args), list(self.arg_names),
-            dict(self.anon), self.condition, self.chain, self.included_from,
-            self.pass_all_args, self.include_args,
-        )
+        """A child context: roslaunch deep-copies args and anonymous names."""
+        child = _Context(self.ns, self.filename, dict(self.args), self.open_args)
+        child.ns_unresolved = self.ns_unresolved
+        child.arg_names = dict(self.arg_names)
+        child.anon = dict(self.anon)
+        child.condition = self.condition
+        child.chain = self.chain
+        child.included_from = self.included_from
+        child.pass_all_args = self.pass_all_args
+        child.include_args = self.include_args
+        child.depth = self.depth
+        return child
 
 
 def make_global_ns(ns: str) -> str:
@@ -92,6 +136,32 @@ def ns_join(ns: str, name: str) -> str:
     return ns + name if ns.endswith("/") else ns + "/" + name
 
 
+def _is_legal_name(name: str) -> bool:
+    """rosgraph's ``is_legal_name`` (the empty name is legal)."""
+    return name == "" or (_NAME_LEGAL.match(name) is not None and "//" not in name)
+
+
+def _canonical_name(name: str) -> str:
+    if not name or name == "/" or ("//" not in name and name[-1] != "/"):
+        return name
+    canonical = "/".join(x for x in name.split("/") if x)
+    return "/" + canonical if name.startswith("/") else canonical
+
+
+def _bool_attribute(value: str, label: str) -> str | None:
+    """roslaunch's strict booleans (``respawn``, ``required`` …): the error, if any."""
+    if value.lower() in ("true", "false"):
+        return None
+    if not value:
+        return f"bool value for {label} must be non-empty"
+    return f"invalid bool value for {label}: {value}"
+
+
+def _read(path: str) -> bytes:
+    with open(path, "rb") as handle:
+        return handle.read(MAX_BYTES + 1)
+
+
 class Ros1Loader:
     """Loads one root file (and its includes) into a :class:`LaunchTree`."""
 
@@ -104,52 +174,53 @@ class Ros1Loader:
         self.element_lines: list[tuple[str, int]] = []
         self.anon = _AnonNames()
         self.root_display = ""
+        self.node_names: dict[str, Location] = {}
+        self._displays: dict[str, str] = {}
 
     # -- diagnostics -------------------------------------------------------------------
     def _report(
-        self, rule: str, path: str, element: Element | None, message: str, node: str | None = None
+        self, rule: str, path: str, element: Element | None, message: str,
+        node: str | None = None, related: tuple[Location, ...] = (),
     ) -> None:
-        category, severity = {
-            "parse_error": (Category.LAUNCH, Severity.ERROR),
-            "roslaunch_error": (Category.LAUNCH, Severity.ERROR),
-            "unresolved": (Category.LAUNCH, Severity.INFO),
-        }[rule]
+        severity = Severity.INFO if rule == "unresolved" else Severity.ERROR
         line, column = (element.line, element.column) if element else (1, 1)
-        self.diagnostics.append(
-            Diagnostic(rule, category, severity, self._display(path), line, column, message, node)
-        )
+        self.diagnostics.append(Diagnostic(
+            rule, Category.LAUNCH, severity, self._display(path), line, column, message, node,
+            related,
+        ))
+
+    def _error(self, context: _Context, element: Element | None, message: str) -> None:
+        self._report("roslaunch_error", context.filename, element, message)
 
     def _display(self, path: str) -> str:
-        return self.options.display_path(path)
+        shown = self._displays.get(path)
+        if shown is None:
+            shown = self._displays[path] = self.options.display_path(path)
+        return shown
 
     # -- entry -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
         absolute = os.path.abspath(path)
         self.root_display = self._display(absolute)
-        status = FileStatus.OK
         if data is None:
             try:
                 data = _read(absolute)
             except OSError as exc:
-                self._report("parse_error", absolute, None, f"cannot read file: {exc.strerror or exc}")
+                self._report("parse_error", absolute, None,
+                             f"cannot read file: {exc.strerror or exc}")
                 return self._tree(FileStatus.UNREADABLE)
-        root = self._parse(absolute, data, None)
+        root = self._parse(absolute, data)
         if root is None:
-            status = FileStatus.PARSE_ERROR
-        else:
-            context = _Context(
-                ns=self._root_namespace(),
-                ns_unresolved=False,
-                filename=absolute,
-                args={k: (v,) if v else () for k, v in self.options.args.items() if not k.startswith("_")},
-                arg_names=[],
-                anon={},
-                condition=Condition(),
-                chain=(absolute,),
-                included_from=None,
-            )
+            return self._tree(FileStatus.PARSE_ERROR)
+        context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
+        self._launch_conditions(root, context)
+        try:
             self._walk(root.children, context)
-        return self._tree(status)
+        except RecursionError:
+            # MAX_NESTING keeps real files far from this; it is the last line of defence.
+            self._report("unresolved", absolute, root,
+                         "launch tree nested too deeply to follow; the rest is not read")
+        return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
         return LaunchTree(
@@ -162,6 +233,19 @@ class Ros1Loader:
             element_lines=tuple(self.element_lines),
         )
 
+    def _command_line_args(self) -> dict[str, Value]:
+        """``NAME:=VALUE`` arguments as rosgraph's ``load_mappings`` keeps them: names and
+        values stripped, empty ones and ``_private`` parameter assignments dropped."""
+        args: dict[str, Value] = {}
+        for name, value in self.options.args.items():
+            name, value = name.strip(), value.strip()
+            if not name or not value:
+                continue
+            if len(name) > 1 and name[0] == "_" and name[1] != "_":
+                continue
+            args[name] = (value,)
+        return args
+
     def _root_namespace(self) -> str:
         ns = self.options.args.get("__ns") or self.options.env.get("ROS_NAMESPACE") or "/"
         try:
@@ -169,135 +253,279 @@ class Ros1Loader:
         except ValueError:
             return "/"
 
-    def _parse(self, absolute: str, data: bytes, at: tuple[str, Element] | None) -> Element | None:
+    def _parse(self, absolute: str, data: bytes) -> Element | None:
         display = self._display(absolute)
         if display not in self.files:
             self.files.append(display)
         try:
-            document = parse_xml(data)
+            document = parse_xml(data, text_tags=("rosparam",), collect=("launch",))
         except XmlError as exc:
-            self.diagnostics.append(
-                Diagnostic(
-                    "parse_error", Category.LAUNCH, Severity.ERROR, display, exc.line, exc.column,
-                    f"not well-formed XML: {exc.message}",
-                )
-            )
+            self.diagnostics.append(Diagnostic(
+                "parse_error", Category.LAUNCH, Severity.ERROR, display, exc.line, exc.column,
+                f"not well-formed XML: {exc.message}",
+            ))
             return None
         self.comments.extend(Comment(display, line, text) for line, text in document.comments)
         self.element_lines.extend((display, line) for line in document.element_lines)
-        if document.root.tag != "launch":
-            self.diagnostics.append(
-                Diagnostic(
-                    "parse_error", Category.LAUNCH, Severity.ERROR, display, document.root.line,
-                    document.root.column,
-                    f"root element is <{document.root.tag}>, not <launch>",
-                )
+        # roslaunch takes the one <launch> element of the document, wherever it is.
+        launches = document.collected
+        if len(launches) != 1:
+            where = document.root if not launches else launches[1]
+            message = (
+                f"no <launch> element (the root element is <{document.root.tag}>)"
+                if not launches else "more than one <launch> element"
             )
+            self.diagnostics.append(Diagnostic(
+                "parse_error", Category.LAUNCH, Severity.ERROR, display, where.line,
+                where.column, message,
+            ))
             return None
-        return document.root
+        return launches[0]
+
+    def _launch_conditions(self, launch: Element, context: _Context) -> None:
+        """roslaunch evaluates ``if``/``unless`` on ``<launch>`` and ignores the outcome;
+        it fails on a value that is not a boolean and crashes on a substitution there."""
+        if_text, unless_text = launch.get("if"), launch.get("unless")
+        if if_text is not None and unless_text is not None:
+            self._error(context, launch, "cannot set both 'if' and 'unless' on the same tag")
+            return
+        text = if_text if if_text is not None else unless_text
+        if text is None:
+            return
+        if "$" in text:
+            self._error(context, launch,
+                        "roslaunch cannot resolve substitutions in if/unless of <launch>")
+            return
+        try:
+            to_bool((text,))
+        except ValueError as exc:
+            self._error(context, launch, str(exc))
 
     # -- substitution helpers ---------------------------------------------------------
-    def _scope(self, context: _Context) -> SubstitutionScope:
+    def _scope(self, context: _Context, anon: dict[str, str] | None) -> SubstitutionScope:
+        if anon is None or anon is context.anon:
+            if context.scope is None:
+                context.scope = self._new_scope(context, context.anon)
+            return context.scope
+        return self._new_scope(context, anon)
+
+    def _new_scope(self, context: _Context, anon: dict[str, str]) -> SubstitutionScope:
+        def missing(name: str) -> str:
+            if context.open_args:
+                return f"arg '{name}' is not set (give it with --arg {name}:=VALUE)"
+            if context.included_from is not None:
+                raise SubstitutionError(
+                    f"included file [{self._display(context.filename)}] requires the "
+                    f"'{name}' arg to be set"
+                )
+            raise SubstitutionError(f"arg '{name}' is not set")
+
         return SubstitutionScope(
             args=context.args,
             env=self.options.env,
             find=self.options.packages.find,
-            anon=lambda anon_id: self.anon.make(context.anon, anon_id),
+            anon=lambda anon_id: self.anon.make(anon, anon_id),
             filename=context.filename,
+            missing_arg=missing,
         )
 
-    def _resolve(self, element: Element, attribute: str, context: _Context) -> Value | None:
-        """The attribute's value (None when absent); roslaunch errors become holes."""
-        text = element.get(attribute)
-        if text is None:
-            return None
+    def _resolve_text(self, text: str, element: Element, label: str, context: _Context,
+                      anon: dict[str, str] | None = None) -> Value:
+        if "$" not in text:
+            return (text,) if text else ()
+        return self._substitute(text, element, label, context, anon)
+
+    def _substitute(self, text: str, element: Element, label: str, context: _Context,
+                    anon: dict[str, str] | None) -> Value:
         try:
-            return resolve(text, self._scope(context))
+            return resolve(text, self._scope(context, anon))
         except SubstitutionError as exc:
-            self._report("roslaunch_error", context.filename, element, f"{attribute}: {exc}")
+            self._error(context, element, f"<{element.tag}> {label}: {exc}")
             return (Hole(text, str(exc)),)
 
-    def _condition(self, element: Element, context: _Context) -> Condition | None:
+    def _resolve(self, element: Element, attribute: str, context: _Context,
+                 anon: dict[str, str] | None = None) -> Value | None:
+        """The attribute's value (None when absent); roslaunch errors become holes."""
+        text = element.attrib.get(attribute)
+        if text is None:
+            return None
+        if "$" not in text:
+            return (text,) if text else ()
+        return self._substitute(text, element, attribute, context, anon)
+
+    def _resolve_all(self, element: Element, attributes: Iterable[str], context: _Context,
+                     anon: dict[str, str] | None = None) -> list[Value | None]:
+        return [self._resolve(element, a, context, anon) for a in attributes]
+
+    def _present(self, element: Element, attributes: Iterable[str], context: _Context,
+                 anon: dict[str, str] | None = None) -> dict[str, Value]:
+        """The values of those of ``attributes`` that ``element`` has, resolved in order."""
+        attrib = element.attrib
+        found: dict[str, Value] = {}
+        for attribute in attributes:
+            text = attrib.get(attribute)
+            if text is not None:
+                found[attribute] = (
+                    ((text,) if text else ()) if "$" not in text
+                    else self._substitute(text, element, attribute, context, anon)
+                )
+        return found
+
+    def _required(self, element: Element, attribute: str, context: _Context,
+                  anon: dict[str, str] | None = None) -> Value | None:
+        value = self._resolve(element, attribute, context, anon)
+        if value is None:
+            self._error(context, element,
+                        f"<{element.tag}> tag is missing required attribute: '{attribute}'")
+        return value
+
+    def _condition(self, element: Element, context: _Context,
+                   anon: dict[str, str] | None = None) -> Condition | None:
         """The extra presence condition of ``element``; None when it is skipped."""
-        if_text, unless_text = element.get("if"), element.get("unless")
-        if if_text is not None and unless_text is not None:
-            self._report(
-                "roslaunch_error", context.filename, element,
-                "cannot set both 'if' and 'unless' on the same tag",
-            )
-        attribute = "if" if if_text is not None else "unless" if unless_text is not None else None
-        if attribute is None:
-            return Condition()
-        value = self._resolve(element, attribute, context) or ()
+        attrib = element.attrib
+        if "if" not in attrib and "unless" not in attrib:
+            return ALWAYS
+        if_value, unless_value = self._resolve_all(element, ("if", "unless"), context, anon)
+        if if_value is None and unless_value is None:
+            return ALWAYS
+        if if_value is not None and unless_value is not None:
+            self._error(context, element, "cannot set both 'if' and 'unless' on the same tag")
+        positive = if_value is not None
+        value = if_value if if_value is not None else unless_value
+        assert value is not None
         try:
             truth = to_bool(value)
         except ValueError as exc:
-            self._report("roslaunch_error", context.filename, element, f"{attribute}: {exc}")
+            self._error(context, element, f"{'if' if positive else 'unless'}: {exc}")
             truth = None
         if truth is None:
-            return Condition((ConditionLiteral(text_of(value), attribute == "if"),))
-        return Condition() if truth == (attribute == "if") else None
+            return Condition((ConditionLiteral(text_of(value), positive),))
+        return ALWAYS if truth == positive else None
+
+    def _check_bool(self, context: _Context, element: Element, value: Value | None,
+                    label: str) -> bool | None:
+        """A strict boolean attribute: its value, or None when absent, unknown or bad."""
+        text = resolved_text(value) if value is not None else None
+        if text is None:
+            return None
+        problem = _bool_attribute(text, label)
+        if problem is not None:
+            self._error(context, element, problem)
+            return None
+        return text.lower() == "true"
 
     # -- tags --------------------------------------------------------------------------
     def _walk(self, elements: list[Element], context: _Context) -> None:
         for element in elements:
             tag = element.tag
-            if tag == "arg":
+            if tag == "node":
+                self._node(element, context)
+            elif tag == "arg":
                 self._arg(element, context)
             elif tag == "group":
                 self._group(element, context)
-            elif tag == "node":
-                self._node(element, context.copy())
             elif tag == "include":
                 self._include(element, context)
+            elif tag == "param":
+                self._param(element, context)
+            elif tag == "rosparam":
+                self._rosparam(element, context)
+            elif tag == "remap":
+                self._remap(element, context)
+            elif tag == "env":
+                self._env(element, context)
+            elif tag == "machine":
+                self._machine(element, context)
+            elif tag == "test":
+                self._node(element, context, is_test=True)
 
-    def _child_namespace(self, element: Element, context: _Context, tag: str) -> _Context | None:
-        child = context.copy()
-        ns_value = self._resolve(element, "ns", context)
-        if ns_value is None:
-            return child
+    def _namespace(self, element: Element, context: _Context) -> tuple[str, bool] | None:
+        """The namespace inside ``element`` and whether it is unresolved; None when
+        roslaunch refuses it (``~`` names)."""
+        if "ns" not in element.attrib:
+            return context.ns, context.ns_unresolved
+        ns_value = self._resolve(element, "ns", context) or ()
         ns = text_of(ns_value)
         if not ns:
-            if tag == "group":
-                self._report("roslaunch_error", context.filename, element,
-                             "<group> tag has an empty 'ns' attribute")
-            return child
+            self._error(context, element, f"<{element.tag}> tag has an empty 'ns' attribute")
+            return context.ns, context.ns_unresolved
         try:
-            if ns.startswith("/"):
-                child.ns = make_global_ns(ns)
-            elif ns == "~" or ns.startswith("~"):
-                raise ValueError(f"cannot turn [{ns}] into a global name")
-            else:
-                child.ns = make_global_ns(ns_join(context.ns, ns))
+            joined = make_global_ns(ns if ns.startswith("/") else ns_join(context.ns, ns))
         except ValueError as exc:
-            self._report("roslaunch_error", context.filename, element, str(exc))
+            self._error(context, element, str(exc))
             return None
-        child.ns_unresolved = context.ns_unresolved or not is_resolved(ns_value)
+        return joined, context.ns_unresolved or not is_resolved(ns_value)
+
+    def _child_namespace(self, element: Element, context: _Context) -> _Context | None:
+        """roslaunch's ``_ns_clear_params_attr`` up to the new context (``clear_params``,
+        resolved afterwards in the parent, is :meth:`_clear_params`)."""
+        namespace = self._namespace(element, context)
+        if namespace is None:
+            return None
+        child = context.copy()
+        child.ns, child.ns_unresolved = namespace
         return child
+
+    def _clear_params(self, element: Element, context: _Context, needs_ns: bool,
+                      node_name: str | None = None) -> None:
+        value = self._resolve(element, "clear_params", context)
+        if value is None or not text_of(value):
+            return
+        if self._check_bool(context, element, value, "clear_params"):
+            if needs_ns and element.get("ns") is None:
+                self._error(context, element,
+                            "'ns' attribute must be set in order to use 'clear_params'")
+            elif not needs_ns and not node_name:
+                self._error(context, element,
+                            f"<{element.tag}> tag must have a 'name' attribute to use "
+                            f"'clear_params' attribute")
+
+    def _nested(self, element: Element, context: _Context) -> bool:
+        """Whether one more level of nesting may be followed."""
+        if context.depth < MAX_NESTING:
+            return True
+        self._report("unresolved", context.filename, element,
+                     f"<{element.tag}> nested deeper than {MAX_NESTING} levels; not followed")
+        return False
 
     def _group(self, element: Element, context: _Context) -> None:
         condition = self._condition(element, context)
-        if condition is None:
+        if condition is None or not self._nested(element, context):
             return
-        child = self._child_namespace(element, context, "group")
+        child = self._child_namespace(element, context)
+        self._clear_params(element, context, needs_ns=True)
         if child is None:
             return
-        child.condition = context.condition & condition
+        child.condition = _conjoin(context.condition, condition)
+        child.depth += 1
         self._walk(element.children, child)
 
-    def _add_arg(self, context: _Context, element: Element | None, name: str,
-                 value: Value | None, default: Value | None) -> None:
-        if name in context.arg_names:
-            if not context.pass_all_args and element is not None:
-                self._report("roslaunch_error", context.filename, element,
-                             f"arg '{name}' has already been declared")
-        else:
-            context.arg_names.append(name)
+    def _declare(self, context: _Context, element: Element | None, name: str,
+                 value: Value | None, default: Value | None, condition: Condition) -> None:
+        """roslaunch's ``LoaderContext.add_arg``; a declaration under an unresolved
+        condition may or may not happen, so what it would set becomes a hole."""
+        conditional = not condition.always
+        earlier = context.arg_names.get(name)
+        if earlier is None:
+            context.arg_names[name] = conditional
+        elif conditional or earlier:
+            context.arg_names[name] = True
+        elif not context.pass_all_args and element is not None:
+            self._error(context, element, f"arg '{name}' has already been declared")
         target = context.args if context.include_args is None else context.include_args
+        if conditional:
+            new = value if value is not None else default if name not in target else None
+            if new is not None and target.get(name) != new:
+                target[name] = (Hole(
+                    f"$(arg {name})",
+                    f"arg '{name}' is set under an unresolved condition ({condition.describe()})",
+                ),)
+            return
         if value is not None:
-            if name in target and not context.pass_all_args and element is not None:
-                self._report("roslaunch_error", context.filename, element,
-                             f"cannot override arg '{name}', which has already been set")
+            if name in target and not context.pass_all_args and not earlier:
+                if element is not None:
+                    self._error(context, element,
+                                f"cannot override arg '{name}', which has already been set")
                 return
             target[name] = value
         elif default is not None and name not in target:
@@ -307,66 +535,263 @@ class Ros1Loader:
         condition = self._condition(element, context)
         if condition is None:
             return
-        name_value = self._resolve(element, "name", context)
+        name_value = self._required(element, "name", context)
+        rest = self._present(element, _ARG_ATTRS[1:], context)
+        value, default = rest.get("value"), rest.get("default")
         if name_value is None:
-            self._report("roslaunch_error", context.filename, element,
-                         "<arg> tag is missing required attribute: 'name'")
             return
+        if value is not None and default is not None:
+            self._error(context, element, "<arg> tag must have one and only one of value/default.")
         name = resolved_text(name_value)
         if name is None:
             self._report("unresolved", context.filename, element,
-                         f"arg name {text_of(name_value)!r} cannot be resolved")
+                         f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
             return
-        value = self._resolve(element, "value", context)
-        default = self._resolve(element, "default", context)
-        if value is not None and default is not None:
-            self._report("roslaunch_error", context.filename, element,
-                         "<arg> tag must have one and only one of value/default.")
-        if not condition.always:
-            hole = (Hole(f"$(arg {name})", f"arg '{name}' is set under an unresolved condition"),)
-            value = hole if value is not None else None
-            default = hole if default is not None else None
-        self._add_arg(context, element, name, value, default)
+        self._declare(context, element, name, value, default, condition)
+
+    def _param(self, element: Element, context: _Context,
+               anon: dict[str, str] | None = None) -> None:
+        if self._condition(element, context, anon) is None:
+            return
+        values = self._present(element, _PARAM_VALUE_ATTRS, context, anon)
+        if len(values) != 1:
+            self._error(context, element,
+                        "<param> tag must have one and only one of value/textfile/binfile.")
+        name_text = element.get("name")
+        if name_text is None:
+            self._error(context, element, "<param> tag is missing required attribute: 'name'")
+            return
+        self._resolve_text(name_text.strip(), element, "name", context, anon)
+        written = values.get("value")
+        value = resolved_text(written) if written is not None else None
+        if value is not None and "type" in element.attrib:
+            problem = _param_value_problem(value.strip(), element.get("type") or "auto")
+            if problem is not None:
+                self._error(context, element, f"Invalid <param> tag: {problem}")
+
+    def _rosparam(self, element: Element, context: _Context,
+                  anon: dict[str, str] | None = None) -> None:
+        if self._condition(element, context, anon) is None:
+            return
+        command, _ns, file, _param, subst = self._resolve_all(element, _ROSPARAM_ATTRS, context,
+                                                              anon)
+        substitute = self._check_bool(context, element, subst, "subst_value")
+        command_text = resolved_text(command) if command is not None else "load"
+        if command_text is not None and (command_text or "load") not in ("load", "dump", "delete"):
+            self._error(context, element, "command must be 'load', 'dump', or 'delete'")
+        if file is not None and command_text == "delete":
+            self._error(context, element, "'file' attribute is invalid with 'delete' command.")
+        if substitute:
+            self._resolve_text(element.text, element, "text", context, anon)
+
+    def _remap(self, element: Element, context: _Context) -> None:
+        if self._condition(element, context) is None:
+            return
+        ends = [self._required(element, a, context) for a in ("from", "to")]
+        texts = [resolved_text(v) if v is not None else None for v in ends]
+        for text in texts:
+            if text is None:
+                continue
+            name = _canonical_name(text)
+            if not name:
+                self._error(context, element, "remap from/to attributes cannot be empty")
+            elif not _is_legal_name(name):
+                self._error(context, element, f"remap [{name}] is not a valid ROS name")
+
+    def _env(self, element: Element, context: _Context,
+             anon: dict[str, str] | None = None) -> None:
+        if self._condition(element, context, anon) is None:
+            return
+        name = self._required(element, "name", context, anon)
+        self._required(element, "value", context, anon)
+        if name is not None and resolved_text(name) == "":
+            self._error(context, element, "Invalid <env> tag: 'name' attribute must be non-empty")
+
+    def _machine(self, element: Element, context: _Context) -> None:
+        if self._condition(element, context) is None:
+            return
+        # roslaunch resolves the rest of a <machine> in a copy of the context.
+        anon = dict(context.anon)
+        old = self._resolve_all(element, _MACHINE_OLD_ATTRS, context, anon)
+        if any(v for v in old):
+            self._error(context, element,
+                        "<machine>: ros-* attributes are not supported since ROS Fuerte")
+        self._required(element, "name", context, anon)
+        self._required(element, "address", context, anon)
+        values = dict(zip(_MACHINE_ATTRS, self._resolve_all(element, _MACHINE_ATTRS, context,
+                                                            anon), strict=True))
+        default = values["default"]
+        default_text = resolved_text(default) if default is not None else "false"
+        if default_text is not None and (default_text or "false").lower() not in (
+            "true", "false", "never"
+        ):
+            self._error(context, element, f"Invalid value for 'attribute': {default_text}")
+        port = values["ssh-port"]
+        port_text = resolved_text(port) if port is not None else None
+        if port_text is not None and not _is_int(port_text or "22"):
+            self._error(context, element, f"invalid ssh-port: {port_text}")
+        if any(child.tag == "env" for child in element.children):
+            self._error(context, element, "<machine>: <env> tag is not supported since ROS Fuerte")
+        timeout = values["timeout"]
+        timeout_text = resolved_text(timeout) if timeout is not None else None
+        if timeout_text is not None and not _is_positive_number(timeout_text):
+            self._error(context, element, f"'timeout' be a positive number: [{timeout_text}]")
+
+    def _node(self, element: Element, context: _Context, is_test: bool = False) -> None:
+        """``<node>`` (or ``<test>``): every attribute is resolved in roslaunch's order;
+        static transform publishers become :class:`StaticTransform` records."""
+        condition = self._condition(element, context)
+        if condition is None:
+            return
+        attrib = element.attrib
+        if is_test:
+            for attribute in ("respawn", "respawn_delay", "output"):
+                if attribute in attrib:
+                    self._error(context, element,
+                                f"<test> tags cannot have '{attribute}' attribute")
+            name_value = self._resolve(element, "name", context)
+            test_name = self._required(element, "test-name", context)
+            self._present(element, ("time-limit", "retry"), context)
+            if not (name_value and text_of(name_value)):
+                name_value = test_name
+        else:
+            name_value = self._required(element, "name", context)
+        namespace = self._namespace(element, context)
+        # <param>/<rosparam> children resolve in a copy of the node's context taken here.
+        param_anon = dict(context.anon) if element.children else None
+        if "clear_params" in attrib:
+            name = text_of(name_value) if name_value is not None else None
+            self._clear_params(element, context, needs_ns=False, node_name=name)
+        package = self._required(element, "pkg", context)
+        node_type = self._required(element, "type", context)
+        late = self._present(element, _NODE_LATE_ATTRS, context)
+        if element.children:
+            self._node_children(element, context, param_anon or {}, dict(context.anon))
+        if namespace is None:
+            return
+        ns, ns_unresolved = namespace
+        if len(late) > 1 or "args" not in late:
+            self._validate_node(element, context, late)
+        self._validate_names(element, context, name_value, package, node_type)
+        ns = _COLLAPSE_SLASHES.sub("/", ns) if "//" in ns else ns
+        if not is_test:
+            self._register_name(element, context, name_value, ns, ns_unresolved)
+        if is_test or package is None or node_type is None:
+            return
+        package_text, type_text = resolved_text(package), resolved_text(node_type)
+        if type_text is not None and type_text != STATIC_TF_TYPE:
+            return
+        if package_text is not None and package_text not in TF_PACKAGES:
+            return
+        if type_text is None and package_text is None:
+            return
+        self._transform(element, context, condition, name_value or (), ns, ns_unresolved,
+                        package, node_type, late.get("args", ()))
+
+    def _node_children(self, element: Element, context: _Context, param_anon: dict[str, str],
+                       env_anon: dict[str, str]) -> None:
+        for sub in element.children:
+            sub_tag = sub.tag.lower()
+            if sub_tag == "remap":
+                self._remap(sub, context)
+            elif sub_tag == "param":
+                self._param(sub, context, param_anon)
+            elif sub_tag == "rosparam":
+                self._rosparam(sub, context, param_anon)
+            elif sub_tag == "env":
+                self._env(sub, context, env_anon)
+
+    def _validate_node(self, element: Element, context: _Context,
+                       late: dict[str, Value]) -> None:
+        """What roslaunch's ``Node`` constructor and ``_node_tag`` refuse in the optional
+        attributes."""
+        required = self._check_bool(context, element, late.get("required"), "required")
+        respawn = self._check_bool(context, element, late.get("respawn"), "respawn")
+        if required and respawn:
+            self._error(context, element, "respawn and required cannot both be set to true")
+        delay = late.get("respawn_delay")
+        delay_text = resolved_text(delay) if delay is not None else None
+        if delay_text is not None:
+            try:
+                float(delay_text)
+            except ValueError:
+                self._error(context, element,
+                            f"invalid float value for respawn_delay: {delay_text}")
+        output = late.get("output")
+        output_text = resolved_text(output) if output is not None else None
+        if output_text is not None and output_text not in ("log", "screen"):
+            self._error(context, element, "output must be one of 'log', 'screen'")
+        cwd = late.get("cwd")
+        cwd_text = resolved_text(cwd) if cwd is not None else None
+        if cwd_text is not None and cwd_text not in ("ROS_HOME", "ros_home", "node"):
+            self._error(context, element, "cwd must be one of 'ROS_HOME', 'node'")
+
+    def _validate_names(self, element: Element, context: _Context, name: Value | None,
+                        package: Value | None, node_type: Value | None) -> None:
+        name_text = resolved_text(name) if name is not None else None
+        if name_text and "/" in name_text:
+            self._error(context, element, f"node name cannot contain a namespace: {name_text}")
+        for label, value in (("package", package), ("type", node_type)):
+            text = resolved_text(value) if value is not None else None
+            if text is not None and not text.strip():
+                self._error(context, element, f"{label} must be non-empty")
+
+    def _register_name(self, element: Element, context: _Context, name: Value | None,
+                       namespace: str, ns_unresolved: bool) -> None:
+        """roslaunch refuses two nodes with the same resolved name in one launch tree."""
+        text = resolved_text(name) if name is not None else None
+        if not text or ns_unresolved:
+            return
+        resolved_name = ns_join(namespace, text)
+        here = Location(self._display(context.filename), element.line, element.column)
+        first = self.node_names.get(resolved_name)
+        if first is None:
+            self.node_names[resolved_name] = here
+            return
+        self._report(
+            "roslaunch_error", context.filename, element,
+            f"roslaunch file contains multiple nodes named [{resolved_name}]",
+            node=text, related=(first,),
+        )
 
     def _include(self, element: Element, context: _Context) -> None:
         condition = self._condition(element, context)
         if condition is None:
             return
-        file_value = self._resolve(element, "file", context)
-        if file_value is None:
-            self._report("roslaunch_error", context.filename, element,
-                         "<include> tag is missing required attribute: 'file'")
+        file_value = self._required(element, "file", context)
+        pass_all = bool(self._check_bool(
+            context, element, self._resolve(element, "pass_all_args", context), "pass_all_args"
+        ))
+        child = self._child_namespace(element, context)
+        self._clear_params(element, context, needs_ns=True)
+        if child is None or file_value is None or not self._nested(element, context):
             return
-        pass_all = False
-        pass_value = self._resolve(element, "pass_all_args", context)
-        if pass_value is not None:
-            text = text_of(pass_value).lower()
-            if text in ("true", "false"):
-                pass_all = text == "true"
-            else:
-                self._report("roslaunch_error", context.filename, element,
-                             f"invalid bool value for pass_all_args: {text_of(pass_value)}")
-        child = self._child_namespace(element, context, "include")
-        if child is None:
-            return
-        child.condition = context.condition & condition
-        child.arg_names = []
+        child.condition = _conjoin(context.condition, condition)
+        child.depth += 1
+        child.arg_names = {}
         child.include_args = {}
         if pass_all:
             for name, value in context.args.items():
-                self._add_arg(child, None, name, value, None)
+                self._declare(child, None, name, value, None, ALWAYS)
             child.pass_all_args = True
         for sub in element.children:
-            if sub.tag.lower() == "arg":
+            sub_tag = sub.tag.lower()
+            if sub_tag == "arg":
                 self._arg(sub, child)
-        passed = child.include_args or {}
+            elif sub_tag == "env":
+                self._env(sub, child)
+        passed = child.include_args
         for name in child.arg_names:
             if name not in passed:
-                self._report("roslaunch_error", context.filename, element,
-                             f"include args must have declared values ({name})")
+                self._error(context, element, f"include args must have declared values ({name})")
         args_passed = list(passed)
-        child.args, child.include_args, child.arg_names, child.anon = dict(passed), None, [], {}
+        child.args, child.include_args, child.arg_names, child.anon = dict(passed), None, {}, {}
+        child.scope = None
+        child.open_args = pass_all and context.open_args
+        self._follow_include(element, context, child, file_value, args_passed, pass_all)
 
+    def _follow_include(self, element: Element, context: _Context, child: _Context,
+                        file_value: Value, args_passed: list[str], pass_all: bool) -> None:
         path = resolved_text(file_value)
         if path is None:
             reasons = "; ".join(f"{h.text}: {h.reason}" for h in holes(file_value))
@@ -375,35 +800,37 @@ class Ros1Loader:
             return
         absolute = self._locate(path, context.filename)
         if absolute is None:
-            self._report("roslaunch_error", context.filename, element,
-                         f"included file not found: {path}")
+            self._error(context, element, f"included file not found: {path}")
             return
         if absolute in context.chain:
             cycle = " -> ".join(self._display(p) for p in (*context.chain, absolute))
-            self._report("roslaunch_error", context.filename, element, f"include cycle: {cycle}")
+            self._error(context, element, f"include cycle: {cycle}")
             return
-        if len(context.chain) > MAX_INCLUDE_DEPTH or len(self.files) >= MAX_FILES_PER_TREE:
-            self._report("roslaunch_error", context.filename, element,
-                         f"includes nested deeper than {MAX_INCLUDE_DEPTH} levels; not followed")
+        if len(context.chain) >= MAX_INCLUDE_DEPTH or len(self.files) >= MAX_FILES_PER_TREE:
+            self._report("unresolved", context.filename, element,
+                         f"includes nested deeper than {MAX_INCLUDE_DEPTH} levels or more than "
+                         f"{MAX_FILES_PER_TREE} files in the tree; not followed")
             return
         try:
             data = _read(absolute)
         except OSError as exc:
-            self._report("roslaunch_error", context.filename, element,
-                         f"cannot read included file {path}: {exc.strerror or exc}")
+            self._error(context, element,
+                        f"cannot read included file {path}: {exc.strerror or exc}")
             return
-        root = self._parse(absolute, data, (context.filename, element))
+        root = self._parse(absolute, data)
         if root is None:
             return
         child.filename = absolute
+        child.scope = None
         child.chain = (*context.chain, absolute)
         child.included_from = (self._display(context.filename), element.line)
+        self._launch_conditions(root, child)
         self._walk(root.children, child)
         if not pass_all:
             unused = [name for name in args_passed if name not in child.arg_names]
             if unused:
-                self._report("roslaunch_error", context.filename, element,
-                             f"unused args [{', '.join(unused)}] for include of [{path}]")
+                self._error(context, element,
+                            f"unused args [{', '.join(unused)}] for include of [{path}]")
 
     @staticmethod
     def _locate(path: str, including_file: str) -> str | None:
@@ -417,41 +844,16 @@ class Ros1Loader:
                 return os.path.abspath(candidate)
         return None
 
-    def _node(self, element: Element, context: _Context) -> None:
-        condition = self._condition(element, context)
-        if condition is None:
-            return
-        node_type = self._resolve(element, "type", context)
-        package = self._resolve(element, "pkg", context)
-        type_text = resolved_text(node_type) if node_type is not None else None
-        package_text = resolved_text(package) if package is not None else None
-        if node_type is None or package is None:
-            return
-        if type_text is not None and type_text != STATIC_TF_TYPE:
-            return
-        if package_text is not None and package_text not in TF_PACKAGES:
-            return
-        if type_text is None and package_text is None:
-            return
-        name_value = self._resolve(element, "name", context)
-        if name_value is None:
-            self._report("roslaunch_error", context.filename, element,
-                         "<node> tag is missing required attribute: 'name'")
-            name_value = ()
+    def _transform(self, element: Element, context: _Context, condition: Condition,
+                   name_value: Value, namespace: str, ns_unresolved: bool, package: Value,
+                   node_type: Value, args_value: Value) -> None:
+        package_text, type_text = resolved_text(package), resolved_text(node_type)
         name = text_of(name_value) or None
-        if name is not None and is_resolved(name_value) and "/" in name:
-            self._report("roslaunch_error", context.filename, element,
-                         f"node name cannot contain a namespace: {name}")
-        child = self._child_namespace(element, context, "node")
-        if child is None:
-            return
-        namespace = child.ns.replace("//", "/")
-        args_value = self._resolve(element, "args", context) or ()
         words = split_args(args_value)
         unresolved: list[str] = []
         if not is_resolved(name_value) or name is None:
             unresolved.append("name")
-        if child.ns_unresolved:
+        if ns_unresolved:
             unresolved.append("namespace")
         if package_text is None:
             unresolved.append("package")
@@ -466,22 +868,26 @@ class Ros1Loader:
         if words.unresolved:
             indices = words.unresolved
             if decoded.form == "invalid" or decoded.arity_issue:
+                # A hole may stand for any number of words: the count is not known.
                 unresolved.append("arity")
                 arity_issue, form = None, "unknown"
-            fields = {
-                "translation": any(i in indices for i in (0, 1, 2)),
-                "rotation": any(3 <= i < (6 if form == "ypr" else 7) for i in indices),
-                "parent": decoded.parent_index in indices,
-                "child": decoded.child_index in indices,
-                "period_ms": decoded.period_ms is not None
-                and decoded.numeric_indices[-1] in indices,
-            }
             if form == "unknown":
                 fields = dict.fromkeys(("translation", "rotation", "parent", "child"), True)
+            else:
+                rotation_end = 6 if form == "ypr" else 7
+                fields = {
+                    "translation": any(i in indices for i in (0, 1, 2)),
+                    "rotation": any(3 <= i < rotation_end for i in indices),
+                    "parent": decoded.parent_index in indices,
+                    "child": decoded.child_index in indices,
+                    "period_ms": decoded.period_ms is not None
+                    and decoded.numeric_indices[-1] in indices,
+                }
             unresolved.extend(k for k, v in fields.items() if v)
         number_issues = tuple(n for n in decoded.number_issues if n.index not in words.unresolved)
         all_holes = (*holes(name_value), *holes(args_value), *holes(package), *holes(node_type))
         reasons = tuple(dict.fromkeys(f"{h.text}: {h.reason}" for h in all_holes))
+        known = form != "unknown"
         transform = StaticTransform(
             path=self._display(context.filename),
             line=element.line,
@@ -495,15 +901,15 @@ class Ros1Loader:
             args_written=element.get("args") or "",
             args=text_of(args_value),
             tokens=words.words,
-            parent_written=None if form == "unknown" else decoded.parent,
-            child_written=None if form == "unknown" else decoded.child,
-            translation=None if form == "unknown" else decoded.translation,
-            rotation=None if form == "unknown" else decoded.rotation,
-            period_ms=None if form == "unknown" else decoded.period_ms,
+            parent_written=decoded.parent if known else None,
+            child_written=decoded.child if known else None,
+            translation=decoded.translation if known else None,
+            rotation=decoded.rotation if known else None,
+            period_ms=decoded.period_ms if known else None,
             form=form,
             arity_issue=arity_issue,
             number_issues=number_issues,
-            condition=context.condition & condition,
+            condition=_conjoin(context.condition, condition),
             unresolved=tuple(dict.fromkeys(unresolved)),
             unresolved_reasons=reasons,
         )
@@ -517,10 +923,40 @@ class Ros1Loader:
             )
 
 
-def _read(path: str) -> bytes:
-    with open(path, "rb") as handle:
-        data = handle.read(MAX_BYTES + 1)
-    return data
+def _conjoin(outer: Condition, inner: Condition) -> Condition:
+    return outer if inner.always else inner if outer.always else outer & inner
+
+
+def _is_int(text: str) -> bool:
+    try:
+        int(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _is_positive_number(text: str) -> bool:
+    try:
+        return float(text) > 0.0
+    except ValueError:
+        return False
+
+
+def _param_value_problem(value: str, param_type: str) -> str | None:
+    """What roslaunch's ``convert_value`` refuses (YAML is not checked)."""
+    kind = param_type.lower().strip()
+    if kind not in _PARAM_TYPES:
+        return f"Unknown type '{kind}'"
+    try:
+        if kind == "int":
+            int(value)
+        elif kind == "double":
+            float(value)
+        elif kind in ("bool", "boolean"):
+            to_bool((value,))
+    except ValueError as exc:
+        return str(exc)
+    return None
 
 
 def load_ros1(path: str, options: LoadOptions, data: bytes | None = None) -> LaunchTree:

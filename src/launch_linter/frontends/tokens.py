@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import re
 import shlex
 from dataclasses import dataclass
 
 from launch_linter.resolve.value import Hole, Value
 
 _OPEN, _CLOSE = "\ue000", "\ue001"
+# shlex in POSIX mode with whitespace_split (what shlex.split does) splits on exactly
+# these four characters; without quotes or backslashes it is a plain split on them.
+_SHLEX_WORD = re.compile(r"[^ \t\r\n]+")
+_SHLEX_SPECIAL = re.compile(r"[\"'\\]")
 
 
 @dataclass(frozen=True, slots=True)
@@ -17,10 +22,26 @@ class Words:
     unresolved: frozenset[int]
     """Indices of words that contain a hole."""
     holes: tuple[Hole, ...]
+    quoting_error: str | None = None
+    """Why ``shlex.split`` refuses the text (then it was split on whitespace instead)."""
+
+
+def shell_words(text: str) -> tuple[list[str], str | None]:
+    """The words roslaunch hands to the program (``shlex.split``), and shlex's complaint if
+    it refuses the text (then the text is split on whitespace, as the best guess)."""
+    if _SHLEX_SPECIAL.search(text) is None:
+        return _SHLEX_WORD.findall(text), None
+    try:
+        return shlex.split(text), None
+    except ValueError as exc:
+        return _SHLEX_WORD.findall(text), str(exc)
 
 
 def split_args(value: Value) -> Words:
     """Split like roslaunch does (``shlex.split``), with holes counted as part of one word."""
+    if len(value) == 1 and isinstance(value[0], str):
+        plain, error = shell_words(value[0])
+        return Words(tuple(plain), frozenset(), (), error)
     holes: list[Hole] = []
     marked: list[str] = []
     for part in value:
@@ -29,11 +50,7 @@ def split_args(value: Value) -> Words:
         else:
             marked.append(f"{_OPEN}{len(holes)}{_CLOSE}")
             holes.append(part)
-    text = "".join(marked)
-    try:
-        raw = shlex.split(text)
-    except ValueError:
-        raw = text.split()
+    raw, error = shell_words("".join(marked))
     words: list[str] = []
     unresolved: set[int] = set()
     for index, word in enumerate(raw):
@@ -42,4 +59,4 @@ def split_args(value: Value) -> Words:
             for number, hole in enumerate(holes):
                 word = word.replace(f"{_OPEN}{number}{_CLOSE}", hole.text)
         words.append(word)
-    return Words(tuple(words), frozenset(unresolved), tuple(holes))
+    return Words(tuple(words), frozenset(unresolved), tuple(holes), error)

@@ -1,9 +1,11 @@
 """``$(find pkg)``: locate ROS packages under package roots the way rospkg does.
 
 A package is a folder with a ``package.xml`` (named by its ``<name>`` element) or a
-``manifest.xml`` (named by the folder). The crawl does not descend into a package, skips
-hidden folders, prunes folders holding ``CATKIN_IGNORE`` and stops below
-``rospack_nosubdirs``. Earlier roots win. The crawl is bounded.
+``manifest.xml`` (named by the folder); a metapackage (``<export><metapackage/>``) is not
+one, as rospkg's ``RosPack`` skips it. The crawl follows symbolic links, does not descend
+into a package, skips hidden folders, prunes folders holding ``CATKIN_IGNORE`` and stops
+below ``rospack_nosubdirs``. Earlier roots win; within a root, the first package found
+(folders in sorted order, for reproducible results) wins. The crawl is bounded.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from launch_linter.frontends.xml_safe import XmlError, parse_xml
 
 MAX_DIRECTORIES = 50_000
 MAX_WALK_UP = 32
+MAX_MANIFEST_BYTES = 1024 * 1024
 
 
 class PackageIndex:
@@ -35,7 +38,7 @@ class PackageIndex:
         for root in self.roots:
             if not os.path.isdir(root):
                 continue
-            for directory, subdirs, files in os.walk(root):
+            for directory, subdirs, files in os.walk(root, followlinks=True):
                 budget -= 1
                 if budget <= 0:
                     return found
@@ -43,9 +46,10 @@ class PackageIndex:
                 if "CATKIN_IGNORE" in files:
                     subdirs[:] = []
                     continue
-                name = _package_name(directory, files)
-                if name is not None:
-                    found.setdefault(name, directory)
+                if "package.xml" in files or "manifest.xml" in files:
+                    name = _package_name(directory, files)
+                    if name is not None:
+                        found.setdefault(name, directory)
                     subdirs[:] = []
                     continue
                 if "rospack_nosubdirs" in files:
@@ -59,30 +63,45 @@ def _package_name(directory: str, files: list[str]) -> str | None:
     if "package.xml" in files:
         try:
             with open(os.path.join(directory, "package.xml"), "rb") as handle:
-                document = parse_xml(handle.read(1024 * 1024))
+                document = parse_xml(handle.read(MAX_MANIFEST_BYTES), text_tags=("name",))
         except (OSError, XmlError):
             return None
+        name: str | None = None
         for child in document.root.children:
-            if child.tag == "name":
-                return child.text.strip() or None
-        return None
-    if "manifest.xml" in files:
-        return os.path.basename(directory)
-    return None
+            if child.tag == "name" and name is None:
+                name = child.text.strip(" \n\r\t") or None
+            elif child.tag == "export" and any(
+                grandchild.tag == "metapackage" for grandchild in child.children
+            ):
+                return None
+        return name
+    return os.path.basename(directory)
 
 
 def default_package_roots(launch_file: str) -> list[str]:
-    """The enclosing workspace of ``launch_file``: walk up to a folder holding ``src/``
-    (a catkin/colcon workspace, whose ``src`` is the root) or, failing that, to the
-    nearest ``package.xml`` (whose parent folder is the root)."""
+    """The enclosing workspace of ``launch_file``: from the package that holds it (the
+    nearest folder up with a ``package.xml``), walk up to a folder whose ``src/`` holds
+    that package (a catkin/colcon workspace: the root is its ``src``); without one, the
+    package's parent folder is the root. A file outside any package has no roots."""
     directory = Path(launch_file).resolve().parent
-    package_parent: Path | None = None
+    package: Path | None = None
     for _ in range(MAX_WALK_UP):
-        if package_parent is None and (directory / "package.xml").is_file():
-            package_parent = directory.parent
-        if package_parent is not None and (directory / "src").is_dir():
-            return [str(directory / "src")]
+        if (directory / "package.xml").is_file():
+            package = directory
+            break
+        if directory.parent == directory:
+            return []
+        directory = directory.parent
+    if package is None:
+        return []
+    # A package's own ``src`` (its C++ sources) is not a workspace: only a ``src`` that
+    # holds the package counts.
+    directory = package.parent
+    for _ in range(MAX_WALK_UP):
+        source = directory / "src"
+        if source in package.parents and source.is_dir():
+            return [str(source)]
         if directory.parent == directory:
             break
         directory = directory.parent
-    return [str(package_parent)] if package_parent is not None else []
+    return [str(package.parent)]

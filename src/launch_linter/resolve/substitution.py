@@ -10,6 +10,7 @@ roslaunch itself refuses raises :class:`SubstitutionError`.
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -27,44 +28,64 @@ class SubstitutionError(Exception):
 
 @dataclass(frozen=True, slots=True)
 class SubstitutionScope:
-    """What a substitution can see at one place of a launch file."""
+    """What a substitution can see at one place of a launch file.
+
+    ``missing_arg`` is called with the name of an arg that is not set at all and returns
+    the reason for the hole; it raises :class:`SubstitutionError` where roslaunch would
+    certainly fail (an included file that was not given the arg).
+    """
 
     args: Mapping[str, Value]
     env: Mapping[str, str]
     find: Callable[[str], str | None]
     anon: Callable[[str], str]
     filename: str
+    missing_arg: Callable[[str], str] | None = None
+
+
+_SPECIAL = re.compile(r"[$()]")
 
 
 def collect_commands(text: str) -> list[str]:
-    """The ``$(…)`` bodies of ``text`` in order, with roslaunch's lexer rules."""
+    """The ``$(…)`` bodies of ``text`` in order, with roslaunch's lexer rules.
+
+    ``$(`` opens and the next ``)`` closes; there are no escapes and no nesting: a ``$``
+    or ``(`` inside a body is an error, as is a ``$`` or ``(`` right after ``$(``.
+    This is roslaunch's character-by-character state machine, stepping from one special
+    character to the next (the other characters never change its state).
+    """
     commands: list[str] = []
-    buffer: list[str] = []
-    state = "out"
-    for char in text:
-        if char == "$":
-            if state == "out":
-                state = "dollar"
-            elif state != "dollar":
-                raise SubstitutionError(
-                    f"Dollar signs '$' cannot be inside of substitution args [{text}]"
-                )
-        elif char == "(":
-            if state == "dollar":
-                state = "lparen"
-            elif state != "out":
-                raise SubstitutionError(f"Invalid left parenthesis '(' in substitution args [{text}]")
-        elif char == ")":
-            if state == "in":
-                commands.append("".join(buffer))
-                buffer.clear()
-            state = "out"
-        elif state == "dollar":
-            state = "out"
-        elif state == "lparen":
-            state = "in"
-        if state == "in":
-            buffer.append(char)
+    end = len(text)
+    dollar = text.find("$")
+    while dollar >= 0:
+        paren = dollar + 1
+        while paren < end and text[paren] == "$":
+            paren += 1
+        if paren >= end or text[paren] != "(":
+            dollar = text.find("$", paren)
+            continue
+        start = paren + 1
+        if start >= end:
+            break
+        first = text[start]
+        if first == ")":
+            dollar = text.find("$", start + 1)
+            continue
+        special = first if first in "$(" else None
+        close = start
+        if special is None:
+            match = _SPECIAL.search(text, start)
+            if match is None:
+                break
+            special, close = match.group(), match.start()
+        if special == "$":
+            raise SubstitutionError(
+                f"Dollar signs '$' cannot be inside of substitution args [{text}]"
+            )
+        if special == "(":
+            raise SubstitutionError(f"Invalid left parenthesis '(' in substitution args [{text}]")
+        commands.append(text[start:close])
+        dollar = text.find("$", close + 1)
     return commands
 
 
@@ -82,40 +103,57 @@ def _replace_all(parts: list[Part], needle: str, replacement: Value) -> list[Par
     return list(join(out))
 
 
+def _words(body: str) -> list[str]:
+    return [w for w in body.split(" ") if w]
+
+
 def _first_pass_value(command: str, body: str, words: list[str], scope: SubstitutionScope) -> Value:
     written = f"$({body})"
     if command == "arg":
-        if len(words) != 1:
-            raise SubstitutionError(f"$(arg var) must specify exactly one arg [{body}]")
+        if not words:
+            raise SubstitutionError(f"$(arg var) must specify a variable name [{body}]")
+        if len(words) > 1:
+            raise SubstitutionError(f"$(arg var) may only specify one arg [{body}]")
         if words[0] in scope.args:
             return scope.args[words[0]]
-        return (Hole(written, f"arg '{words[0]}' is not set"),)
+        reason = (
+            scope.missing_arg(words[0]) if scope.missing_arg else f"arg '{words[0]}' is not set"
+        )
+        return (Hole(written, reason),)
     if command == "env":
         if len(words) != 1:
             raise SubstitutionError(f"$(env var) command only accepts one argument [{body}]")
         if words[0] in scope.env:
             return (scope.env[words[0]],)
-        return (Hole(written, f"environment variable '{words[0]}' not given (use --env)"),)
+        return (Hole(written, f"environment variable '{words[0]}' is not given (use --env)"),)
     if command == "optenv":
         if not words:
             raise SubstitutionError(f"$(optenv var) must specify an environment variable [{body}]")
-        default = " ".join(words[1:])
-        return (scope.env.get(words[0], default),)
+        return (scope.env.get(words[0], " ".join(words[1:])),)
     if command == "dirname":
         return (os.path.dirname(os.path.abspath(scope.filename)),)
-    if len(words) != 1:
-        raise SubstitutionError(f"$(anon var) must specify exactly one name [{body}]")
+    if not words:
+        raise SubstitutionError(f"$(anon var) must specify a name [{body}]")
+    if len(words) > 1:
+        raise SubstitutionError(f"$(anon var) may only specify one name [{body}]")
     return (scope.anon(words[0]),)
+
+
+def _check_command(body: str) -> list[str]:
+    words = _words(body)
+    if not words or words[0] not in VALID_COMMANDS:
+        raise SubstitutionError(
+            f"Unknown substitution command [{body}]. Valid commands are {list(VALID_COMMANDS)}"
+        )
+    return words
 
 
 def _find_pass(parts: list[Part], scope: SubstitutionScope) -> list[Part]:
     flat = "".join(p if isinstance(p, str) else _HOLE_MARK for p in parts)
+    if "$" not in flat:
+        return parts
     for body in collect_commands(flat):
-        words = [w for w in body.split(" ") if w]
-        if not words or words[0] not in VALID_COMMANDS:
-            raise SubstitutionError(
-                f"Unknown substitution command [{body}]. Valid commands are {list(VALID_COMMANDS)}"
-            )
+        words = _check_command(body)
         if words[0] != "find":
             continue
         if len(words) != 2:
@@ -124,35 +162,43 @@ def _find_pass(parts: list[Part], scope: SubstitutionScope) -> list[Part]:
     return parts
 
 
-def _replace_find(parts: list[Part], needle: str, package: str, scope: SubstitutionScope) -> list[Part]:
+def _replace_find(
+    parts: list[Part], needle: str, package: str, scope: SubstitutionScope
+) -> list[Part]:
+    """Replace the first ``needle`` and the path that follows it, as roslaunch's ``_find``:
+    the path runs to the next space, one leading slash is dropped, and it is joined to
+    the package folder with ``os.path.join``."""
     for index, part in enumerate(parts):
         if isinstance(part, Hole) or needle not in part:
             continue
         before, _, after = part.partition(needle)
-        cut = len(after)
-        for position, char in enumerate(after):
-            if char.isspace():
-                cut = position
-                break
-        path, rest = after[:cut], after[cut:]
+        cut = after.find(" ")
+        path, rest = (after, "") if cut < 0 else (after[:cut], after[cut:])
+        # The path may go on into an unresolved part: then only its start is known.
+        runs_on = cut < 0 and index + 1 < len(parts)
         location = scope.find(package)
         replacement: list[Part]
         if location is None:
-            replacement = [Hole(needle, f"package '{package}' not found under the package path"), path]
+            missing = Hole(needle, f"package '{package}' not found under the package path")
+            replacement = [missing, path]
         else:
-            relative = path[1:] if path.startswith(("/", "\\")) else path
-            replacement = [os.path.join(location, relative) if relative else location]
+            relative = path.replace("\\", "/")
+            relative = relative[1:] if relative.startswith("/") else relative
+            if relative:
+                replacement = [os.path.join(location, relative)]
+            elif runs_on:
+                replacement = [location + "/"]
+            else:
+                replacement = [location]
         return list(join([*parts[:index], before, *replacement, rest, *parts[index + 1 :]]))
     return parts
 
 
-def _auto_text(value: Value) -> str | None:
-    return resolved_text(value)
-
-
 def _evaluate(expression: str, whole: str, scope: SubstitutionScope) -> Value:
+    if "__" in expression:
+        raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
     eval_scope = safe_eval.EvalScope(
-        args={name: _auto_text(v) for name, v in scope.args.items()},
+        args={name: resolved_text(v) for name, v in scope.args.items()},
         env=scope.env,
         find=scope.find,
         anon=scope.anon,
@@ -168,22 +214,34 @@ def _evaluate(expression: str, whole: str, scope: SubstitutionScope) -> Value:
 
 def resolve(text: str, scope: SubstitutionScope) -> Value:
     """Resolve one attribute value; raise :class:`SubstitutionError` where roslaunch would."""
-    if not text or "$" not in text:
+    if "$" not in text:
         return (text,) if text else ()
     if text.startswith("$(eval ") and text.endswith(")"):
         return _evaluate(text[7:-1], text, scope)
-    parts: list[Part] = [text]
+    # ``current`` holds the text while every replacement so far was plain text; ``parts``
+    # takes over once a hole appears.
+    current = text
+    parts: list[Part] | None = None
     for body in collect_commands(text):
-        words = [w for w in body.split(" ") if w]
-        if not words or words[0] not in VALID_COMMANDS:
-            raise SubstitutionError(
-                f"Unknown substitution command [{body}]. Valid commands are {list(VALID_COMMANDS)}"
-            )
-        if words[0] in FIRST_PASS:
-            replacement = _first_pass_value(words[0], body, words[1:], scope)
-            parts = _replace_all(parts, f"$({body})", replacement)
-    parts = _find_pass(parts, scope)
-    return join(parts)
+        words = _check_command(body)
+        if words[0] == "find":
+            continue
+        replacement = _first_pass_value(words[0], body, words[1:], scope)
+        needle = f"$({body})"
+        if parts is None:
+            if not replacement:
+                current = current.replace(needle, "")
+                continue
+            if len(replacement) == 1 and type(replacement[0]) is str:
+                current = current.replace(needle, replacement[0])
+                continue
+            parts = [current]
+        parts = _replace_all(parts, needle, replacement)
+    if parts is None:
+        if "$" not in current:
+            return (current,) if current else ()
+        parts = [current]
+    return join(_find_pass(parts, scope))
 
 
 def to_bool(value: Value) -> bool | None:

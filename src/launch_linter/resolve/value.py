@@ -36,6 +36,8 @@ def join(parts: list[Part] | tuple[Part, ...]) -> Value:
 
 
 def is_resolved(value: Value) -> bool:
+    if len(value) == 1:
+        return type(value[0]) is str
     return all(isinstance(p, str) for p in value)
 
 
@@ -45,6 +47,12 @@ def text_of(value: Value) -> str:
 
 
 def resolved_text(value: Value) -> str | None:
+    """The value as text, or None when it has a hole."""
+    if len(value) == 1:
+        only = value[0]
+        return only if type(only) is str else None
+    if not value:
+        return ""
     return "".join(p for p in value if isinstance(p, str)) if is_resolved(value) else None
 
 
