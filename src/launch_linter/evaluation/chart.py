@@ -1,0 +1,54 @@
+"""rules.png: percentage of files per rule, ours beside the study's."""
+
+from __future__ import annotations
+
+from launch_linter.evaluation.table import FaultTable
+
+
+def write_chart(table: FaultTable, path: str, title: str) -> None:
+    """A horizontal grouped bar chart, one group per line of the fault table."""
+    # Imported here: matplotlib is an edge dependency, and Agg draws without a display.
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot
+
+    rows = list(table.fault_rows)
+    ours = [table.percent(r) for r in rows]
+    study = [r.study.percent if r.study is not None else 0.0 for r in rows]
+    positions = range(len(rows))
+    height = 0.4
+    figure, axes = pyplot.subplots(figsize=(9, 0.38 * len(rows) + 1.6))
+    try:
+        bars = axes.barh(
+            [p - height / 2 for p in positions], ours, height, label="this corpus",
+            color="#1f77b4",
+        )
+        study_bars = axes.barh(
+            [p + height / 2 for p in positions], study, height, label="study (Table IV)",
+            color="#ff7f0e",
+        )
+        for bar, value in zip(bars, ours, strict=True):
+            axes.annotate(
+                f"{value:.2f}", (bar.get_width(), bar.get_y() + bar.get_height() / 2),
+                xytext=(3, 0), textcoords="offset points", va="center", fontsize=7,
+            )
+        for bar, row in zip(study_bars, rows, strict=True):
+            if row.study is not None:
+                axes.annotate(
+                    f"{row.study.percent:g}",
+                    (bar.get_width(), bar.get_y() + bar.get_height() / 2),
+                    xytext=(3, 0), textcoords="offset points", va="center", fontsize=7,
+                )
+        axes.set_yticks(list(positions), [r.rule for r in rows], fontsize=8)
+        axes.invert_yaxis()
+        axes.set_xlabel("% of files with the fault")
+        axes.set_title(title, fontsize=10)
+        axes.set_xlim(0, max([*ours, *study, 1.0]) * 1.15)
+        axes.grid(axis="x", linewidth=0.3)
+        axes.legend(loc="lower right", fontsize=8)
+        figure.tight_layout()
+        # No software/date metadata: the committed PNG changes only when the figures do.
+        figure.savefig(path, dpi=110, metadata={"Software": None})
+    finally:
+        pyplot.close(figure)

@@ -1,0 +1,36 @@
+"""``launch-linter evaluate``: the study's Table IV on a mined database."""
+
+from __future__ import annotations
+
+import argparse
+import sqlite3
+import sys
+
+from launch_linter.evaluation.evaluate import EvaluationError, evaluate, write_outputs
+
+EXIT_OK, EXIT_USAGE = 0, 2
+
+
+def run_evaluate(ns: argparse.Namespace) -> int:
+    try:
+        evaluation = evaluate(ns.db, ns.min_z, ns.beliefs)
+        paths = write_outputs(evaluation, ns.out)
+    except (EvaluationError, sqlite3.Error, OSError) as exc:
+        sys.stderr.write(f"launch-linter: error: {exc}\n")
+        return EXIT_USAGE
+    table = evaluation.table
+    total = table.all_total
+    history = evaluation.history.rules.values()
+    fixed = sum(h.outcomes["fixed"] for h in history)
+    persisting = sum(h.outcomes["persisting"] for h in history)
+    sys.stdout.write(
+        f"linted {table.files} latest files of {table.repos} immature repositories with "
+        f"{len(evaluation.scope.beliefs.beliefs)} beliefs (z >= {ns.min_z:g}): "
+        f"{total.files} files ({table.percent(total):.1f}%) with a fault, "
+        f"{total.faults} faults\n"
+        f"history: {fixed} faults of earlier versions fixed, {persisting} persisting\n"
+        f"wrote {', '.join(paths)}\n"
+    )
+    for where, reason in evaluation.scope.not_linted:
+        sys.stderr.write(f"launch-linter: warning: {where}: {reason}\n")
+    return EXIT_OK
