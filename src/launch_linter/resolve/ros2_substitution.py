@@ -1,0 +1,523 @@
+"""ROS 2 launch substitutions, parsed and resolved statically.
+
+ROS 2 launch (``launch.frontend``) parses an attribute into a list of substitutions:
+literal text and ``$(name arg arg ...)`` calls whose arguments are separated by single
+spaces, may be quoted (``'…'`` or ``"…"``) and may nest further calls. A backslash
+escapes the next character. Unlike roslaunch, the text of a call's result is never
+re-parsed, and a call may appear inside another call's arguments.
+
+The Python front-end builds the same :class:`Call` values from ``LaunchConfiguration``,
+``EnvironmentVariable``, ``FindPackageShare``, ``PathJoinSubstitution`` and friends, so
+one resolver serves every format. What cannot be known statically becomes a
+:class:`~launch_linter.resolve.value.Hole`; what launch itself refuses raises
+:class:`SubstitutionError`.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from launch_linter.resolve import safe_eval
+from launch_linter.resolve.value import (
+    Hole,
+    Part,
+    Value,
+    holes,
+    is_resolved,
+    join,
+    resolved_text,
+    text_of,
+)
+
+MAX_NESTING = 32
+MAX_TEXT = 100_000
+
+
+@dataclass(frozen=True, slots=True)
+class Text:
+    """Literal text."""
+
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """A substitution call: ``name`` with its arguments; ``written`` is how it appeared."""
+
+    name: str
+    args: tuple[Subs, ...]
+    written: str
+
+
+@dataclass(frozen=True, slots=True)
+class Opaque:
+    """A piece the linter cannot evaluate (a Python expression it does not model)."""
+
+    text: str
+    reason: str
+
+
+Sub = Text | Call | Opaque
+Subs = tuple[Sub, ...]
+
+
+class SubstitutionSyntaxError(Exception):
+    """The text does not follow the substitution grammar; ``position`` is 0-based."""
+
+    def __init__(self, message: str, position: int) -> None:
+        super().__init__(message)
+        self.position = position
+
+
+class SubstitutionError(Exception):
+    """ROS 2 launch refuses this substitution when it runs."""
+
+
+@dataclass(frozen=True, slots=True)
+class Ros2Scope:
+    """What a substitution can see at one place of a launch tree."""
+
+    configs: Mapping[str, Value]
+    env: Mapping[str, str]
+    find: Callable[[str], str | None]
+    anon: Callable[[str], str]
+    filename: str
+
+
+def literal(text: str) -> Subs:
+    return (Text(text),) if text else ()
+
+
+def written(subs: Subs) -> str:
+    """The substitutions as a launch file would write them."""
+    out: list[str] = []
+    for sub in subs:
+        if isinstance(sub, Text):
+            out.append(sub.text)
+        elif isinstance(sub, Call):
+            out.append(sub.written)
+        else:
+            out.append(sub.text)
+    return "".join(out)
+
+
+# -- parsing --------------------------------------------------------------------------
+
+
+class _Parser:
+    def __init__(self, source: str) -> None:
+        self.source = source
+        self.pos = 0
+
+    def error(self, message: str) -> SubstitutionSyntaxError:
+        return SubstitutionSyntaxError(f"{message} at column {self.pos + 1}", self.pos)
+
+    def template(self) -> Subs:
+        parts: list[Sub] = []
+        text: list[str] = []
+        while self.pos < len(self.source):
+            if self.source.startswith("$(", self.pos):
+                if text:
+                    parts.append(Text("".join(text)))
+                    text.clear()
+                parts.append(self.call(0))
+                continue
+            char = self.source[self.pos]
+            if char == "\\" and self.pos + 1 < len(self.source):
+                text.append(self.source[self.pos + 1])
+                self.pos += 2
+                continue
+            text.append(char)
+            self.pos += 1
+        if text:
+            parts.append(Text("".join(text)))
+        return tuple(parts)
+
+    def call(self, depth: int) -> Call:
+        if depth >= MAX_NESTING:
+            raise self.error(f"substitutions nested deeper than {MAX_NESTING} levels")
+        start = self.pos
+        self.pos += 2
+        name_start = self.pos
+        while self.pos < len(self.source) and (
+            self.source[self.pos].isalnum() or self.source[self.pos] in "_-"
+        ):
+            self.pos += 1
+        name = self.source[name_start : self.pos]
+        if not name or not name[0].isalpha():
+            raise self.error("expected a substitution name after '$('")
+        args: list[Subs] = []
+        while True:
+            if self.pos >= len(self.source):
+                raise self.error(f"'$({name}' is not closed by ')'")
+            char = self.source[self.pos]
+            if char == ")":
+                self.pos += 1
+                break
+            if char != " ":
+                raise self.error(f"unexpected {char!r} in '$({name} ...)'")
+            while self.source.startswith(" ", self.pos):
+                self.pos += 1
+            if self.source.startswith(")", self.pos):
+                continue
+            args.append(self.argument(depth))
+        return Call(name, tuple(args), self.source[start : self.pos])
+
+    def argument(self, depth: int) -> Subs:
+        if self.pos < len(self.source) and self.source[self.pos] in "'\"":
+            return self.quoted(self.source[self.pos], depth)
+        parts: list[Sub] = []
+        text: list[str] = []
+        while self.pos < len(self.source):
+            char = self.source[self.pos]
+            if char in " )":
+                break
+            if self.source.startswith("$(", self.pos):
+                if text:
+                    parts.append(Text("".join(text)))
+                    text.clear()
+                parts.append(self.call(depth + 1))
+                continue
+            if char == "\\" and self.pos + 1 < len(self.source):
+                text.append(self.source[self.pos + 1])
+                self.pos += 2
+                continue
+            if char in "'\"($":
+                raise self.error(f"unexpected {char!r} in a substitution argument")
+            text.append(char)
+            self.pos += 1
+        if text:
+            parts.append(Text("".join(text)))
+        return tuple(parts)
+
+    def quoted(self, quote: str, depth: int) -> Subs:
+        self.pos += 1
+        parts: list[Sub] = []
+        text: list[str] = []
+        while True:
+            if self.pos >= len(self.source):
+                raise self.error(f"quoted argument is not closed by {quote}")
+            char = self.source[self.pos]
+            if char == quote:
+                self.pos += 1
+                break
+            if self.source.startswith("$(", self.pos):
+                if text:
+                    parts.append(Text("".join(text)))
+                    text.clear()
+                parts.append(self.call(depth + 1))
+                continue
+            if char == "\\" and self.pos + 1 < len(self.source):
+                text.append(self.source[self.pos + 1])
+                self.pos += 2
+                continue
+            text.append(char)
+            self.pos += 1
+        if text:
+            parts.append(Text("".join(text)))
+        return tuple(parts)
+
+
+def parse(text: str) -> Subs:
+    """Parse an attribute value; raise :class:`SubstitutionSyntaxError` if launch would."""
+    if len(text) > MAX_TEXT:
+        raise SubstitutionSyntaxError(f"value longer than {MAX_TEXT} characters", 0)
+    return _Parser(text).template()
+
+
+# -- resolution -----------------------------------------------------------------------
+
+_ARITY: dict[str, tuple[int, int]] = {
+    "var": (1, 2),
+    "env": (1, 2),
+    "find-pkg-share": (1, 1),
+    "find-pkg-prefix": (1, 1),
+    "find-exec": (1, 1),
+    "exec-in-pkg": (2, 2),
+    "eval": (1, 2),
+    "anon": (1, 1),
+    "dirname": (0, 0),
+    "filename": (0, 0),
+    "command": (1, 2),
+    "file-content": (1, 1),
+    "not": (1, 1),
+    "and": (2, 2),
+    "or": (2, 2),
+    "any": (0, 64),
+    "all": (0, 64),
+    "equals": (2, 2),
+    "not-equals": (2, 2),
+    "if": (2, 3),
+    "path-join": (0, 64),
+}
+"""Substitutions that ROS 2 launch (or our Python front-end) knows, with their arity."""
+
+_RUNTIME_ONLY = {
+    "find-pkg-prefix": "the install prefix of a package is only known in a built workspace",
+    "find-exec": "the location of an executable is only known at run time",
+    "exec-in-pkg": "the location of an executable is only known in a built workspace",
+    "command": "$(command) runs a program, which the linter never does",
+    "file-content": "the linter does not read files named by substitutions",
+}
+
+_TRUE_WORDS = ("true", "1", "yes", "on")
+_FALSE_WORDS = ("false", "0", "no", "off")
+
+
+def _hole(call: Call, reason: str) -> Value:
+    return (Hole(call.written, reason),)
+
+
+def _reasons(value: Value) -> str:
+    return "; ".join(f"{h.text}: {h.reason}" for h in holes(value))
+
+
+class _Resolver:
+    def __init__(self, scope: Ros2Scope) -> None:
+        self.scope = scope
+
+    def value(self, subs: Subs) -> Value:
+        parts: list[Part] = []
+        for sub in subs:
+            if isinstance(sub, Text):
+                parts.append(sub.text)
+            elif isinstance(sub, Opaque):
+                parts.append(Hole(sub.text, sub.reason))
+            else:
+                parts.extend(self.call(sub))
+        return join(parts)
+
+    def text(self, subs: Subs) -> str | Value:
+        """The resolved text, or the unresolved value itself."""
+        value = self.value(subs)
+        text = resolved_text(value)
+        return value if text is None else text
+
+    def call(self, call: Call) -> Value:
+        if call.name not in _ARITY:
+            raise SubstitutionError(f"unknown substitution '$({call.name})'")
+        low, high = _ARITY[call.name]
+        if not low <= len(call.args) <= high:
+            expected = str(low) if low == high else f"{low} to {high}"
+            raise SubstitutionError(
+                f"'$({call.name})' takes {expected} argument(s), not {len(call.args)}"
+            )
+        if call.name in _RUNTIME_ONLY:
+            return _hole(call, _RUNTIME_ONLY[call.name])
+        handler = getattr(self, "_" + call.name.replace("-", "_"))
+        result: Value = handler(call)
+        return result
+
+    def _var(self, call: Call) -> Value:
+        name = self.text(call.args[0])
+        if not isinstance(name, str):
+            return _hole(call, f"the configuration name is unresolved: {_reasons(name)}")
+        if name in self.scope.configs:
+            value = self.scope.configs[name]
+            return value if is_resolved(value) else _hole(call, _reasons(value))
+        if len(call.args) == 2:
+            return self.value(call.args[1])
+        return _hole(
+            call,
+            f"launch argument '{name}' is not set (give it with --arg {name}:=VALUE)",
+        )
+
+    def _env(self, call: Call) -> Value:
+        name = self.text(call.args[0])
+        if not isinstance(name, str):
+            return _hole(call, f"the variable name is unresolved: {_reasons(name)}")
+        if name in self.scope.env:
+            return (self.scope.env[name],)
+        if len(call.args) == 2:
+            return self.value(call.args[1])
+        return _hole(call, f"environment variable '{name}' not given (use --env)")
+
+    def _find_pkg_share(self, call: Call) -> Value:
+        package = self.text(call.args[0])
+        if not isinstance(package, str):
+            return _hole(call, f"the package name is unresolved: {_reasons(package)}")
+        # The share folder holds what the package installs from its source folder
+        # (launch/, config/, urdf/ ...), so the source folder stands in for it.
+        location = self.scope.find(package)
+        if location is None:
+            return _hole(call, f"package '{package}' not found under the package path")
+        return (location,)
+
+    def _path_join(self, call: Call) -> Value:
+        pieces: list[Value] = [self.value(arg) for arg in call.args]
+        if not all(is_resolved(piece) for piece in pieces):
+            return _hole(call, "; ".join(_reasons(p) for p in pieces if not is_resolved(p)))
+        return (os.path.join(*(text_of(piece) for piece in pieces)),) if pieces else ()
+
+    def _eval(self, call: Call) -> Value:
+        expression = self.text(call.args[0])
+        if not isinstance(expression, str):
+            return _hole(call, f"the expression is unresolved: {_reasons(expression)}")
+        scope = safe_eval.EvalScope(
+            # ROS 2 evaluates the text with the math module only: there is no arg().
+            args={},
+            env=self.scope.env,
+            find=self.scope.find,
+            anon=self.scope.anon,
+            dirname=os.path.dirname(os.path.abspath(self.scope.filename)),
+        )
+        try:
+            return (safe_eval.evaluate(expression, scope),)
+        except safe_eval.EvalUnresolved as exc:
+            return _hole(call, f"$(eval) needs {exc.name}: {exc.reason}")
+        except safe_eval.EvalError as exc:
+            return _hole(call, f"$(eval) not evaluated: {exc.reason}")
+
+    def _anon(self, call: Call) -> Value:
+        name = self.text(call.args[0])
+        if not isinstance(name, str):
+            return _hole(call, f"the anonymous id is unresolved: {_reasons(name)}")
+        return (self.scope.anon(name),)
+
+    def _dirname(self, call: Call) -> Value:
+        return (os.path.dirname(os.path.abspath(self.scope.filename)),)
+
+    def _filename(self, call: Call) -> Value:
+        return (os.path.abspath(self.scope.filename),)
+
+    def _typed_bool(self, call: Call, subs: Subs) -> bool | Value:
+        text = self.text(subs)
+        if not isinstance(text, str):
+            return text
+        word = text.strip().lower()
+        if word in _TRUE_WORDS:
+            return True
+        if word in _FALSE_WORDS:
+            return False
+        raise SubstitutionError(f"'$({call.name})' needs a boolean, not {text!r}")
+
+    def _not(self, call: Call) -> Value:
+        value = self._typed_bool(call, call.args[0])
+        if isinstance(value, bool):
+            return (str(not value).lower(),)
+        return _hole(call, _reasons(value))
+
+    def _combine(self, call: Call, short: bool) -> Value:
+        # launch evaluates every operand; a known short-circuiting operand decides the
+        # result whenever the unknown ones turn out to be booleans, as they must.
+        unknown: list[Value] = []
+        for arg in call.args:
+            value = self._typed_bool(call, arg)
+            if isinstance(value, bool):
+                if value is short:
+                    return (str(short).lower(),)
+            else:
+                unknown.append(value)
+        if unknown:
+            return _hole(call, "; ".join(_reasons(v) for v in unknown))
+        return (str(not short).lower(),)
+
+    def _and(self, call: Call) -> Value:
+        return self._combine(call, False)
+
+    def _or(self, call: Call) -> Value:
+        return self._combine(call, True)
+
+    def _all(self, call: Call) -> Value:
+        return self._combine(call, False)
+
+    def _any(self, call: Call) -> Value:
+        return self._combine(call, True)
+
+    def _equals(self, call: Call) -> Value:
+        left = self.text(call.args[0])
+        right = self.text(call.args[1])
+        if not isinstance(left, str) or not isinstance(right, str):
+            pending = [v for v in (left, right) if not isinstance(v, str)]
+            return _hole(call, "; ".join(_reasons(v) for v in pending))
+        return (str(_loosely_equal(left, right)).lower(),)
+
+    def _not_equals(self, call: Call) -> Value:
+        value = self._equals(call)
+        if not is_resolved(value):
+            return value
+        return ("false" if text_of(value) == "true" else "true",)
+
+    def _if(self, call: Call) -> Value:
+        condition = self.value(call.args[0])
+        try:
+            truth = to_bool(condition)
+        except ValueError as exc:
+            raise SubstitutionError(f"'$(if)': {exc}") from None
+        if truth is None:
+            return _hole(call, _reasons(condition))
+        if truth:
+            return self.value(call.args[1])
+        return self.value(call.args[2]) if len(call.args) == 3 else ()
+
+
+def _loosely_equal(left: str, right: str) -> bool:
+    """``$(equals)`` compares typed values: numbers and booleans by value, else text."""
+    if left.lower() in ("true", "false") and right.lower() in ("true", "false"):
+        return left.lower() == right.lower()
+    try:
+        return float(left) == float(right)
+    except ValueError:
+        return left == right
+
+
+def resolve(subs: Subs, scope: Ros2Scope) -> Value:
+    """Resolve substitutions; raise :class:`SubstitutionError` where launch would fail."""
+    return _Resolver(scope).value(subs)
+
+
+def to_bool(value: Value) -> bool | None:
+    """launch's ``if``/``unless`` rule (``strip().lower()`` is ``true``/``1`` or
+    ``false``/``0``); None when unresolved; ValueError for any other text."""
+    text = resolved_text(value)
+    if text is None:
+        return None
+    word = text.strip().lower()
+    if word in ("true", "1"):
+        return True
+    if word in ("false", "0"):
+        return False
+    raise ValueError(f"{text!r} is not a valid condition (true, false, 1 or 0)")
+
+
+def split_command_line(subs: Subs) -> list[Subs]:
+    """Split an ``args`` attribute into argv items as launch's ``_parse_cmdline`` does.
+
+    Literal text is split like a shell (``shlex``); a substitution's result is never
+    split, so ``$(var a)`` is one argument whatever its value, and it joins the literal
+    text it touches (``$(var a)_link``). Launch would also emit an empty argument for
+    whitespace before a leading substitution; that artefact is not reproduced.
+    """
+    result: list[Subs] = []
+    current: list[Sub] = []
+
+    def flush() -> None:
+        if current:
+            result.append(tuple(current))
+            current.clear()
+
+    for sub in subs:
+        if not isinstance(sub, Text):
+            current.append(sub)
+            continue
+        try:
+            tokens = shlex.split(sub.text)
+        except ValueError:
+            tokens = sub.text.split()
+        if not tokens:
+            flush()
+            continue
+        if sub.text[0].isspace():
+            flush()
+        current.append(Text(tokens[0]))
+        if len(tokens) > 1:
+            flush()
+            result.extend((Text(token),) for token in tokens[1:-1])
+            current.append(Text(tokens[-1]))
+        if sub.text[-1].isspace():
+            flush()
+    flush()
+    return result

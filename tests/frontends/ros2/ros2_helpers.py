@@ -1,0 +1,14 @@
+"""Small helpers shared by the ROS 2 front-end tests."""
+
+from __future__ import annotations
+
+from launch_linter.model.launch import LaunchTree
+from launch_linter.model.transform import StaticTransform
+
+
+def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:
+    return {t.name: t for t in tree.transforms}
+
+
+def rules(tree: LaunchTree) -> list[tuple[str, int]]:
+    return [(d.rule, d.line) for d in tree.diagnostics]

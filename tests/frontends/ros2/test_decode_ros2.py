@@ -1,0 +1,259 @@
+"""ROS 2 static_transform_publisher arguments, decoded as the program reads them."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from launch_linter.decode_ros2 import ComponentParam, decode_component, decode_ros2, stod
+from launch_linter.model.transform import NumberIssue, Rotation, RotationKind
+
+
+def kinds(words: str | list[str]) -> list[str]:
+    items = words.split() if isinstance(words, str) else words
+    return [issue.kind for issue in decode_ros2(items).arg_issues]
+
+
+# -- std::stod ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("word", "expected"), [
+    ("1.5", (1.5, "ok")),
+    (" -2", (-2.0, "ok")),
+    (".5e1", (5.0, "ok")),
+    ("0x1p3", (8.0, "ok")),
+    ("1.5m", (1.5, "partial")),
+    ("pi/2", (None, "invalid")),
+    ("", (None, "invalid")),
+    ("1e400", (None, "range")),
+    ("1e-400", (None, "range")),
+    ("0e-999", (0.0, "ok")),
+])
+def test_stod(word: str, expected: tuple[float | None, str]) -> None:
+    assert stod(word) == expected
+
+
+def test_stod_reads_nan_and_inf() -> None:
+    nan, status = stod("nan")
+    assert nan is not None and math.isnan(nan) and status == "ok"
+    assert stod("-inf") == (-math.inf, "ok")
+
+
+@given(st.floats(allow_nan=False, allow_infinity=False))
+def test_stod_reads_what_python_prints(number: float) -> None:
+    value, status = stod(repr(number))
+    if number != 0 and abs(number) < 2.2250738585072014e-308:
+        assert status == "range"  # glibc reports subnormal results as out of range
+    else:
+        assert (value, status) == (number, "ok")
+
+
+# -- flags -------------------------------------------------------------------------------
+
+
+def test_flags() -> None:
+    decoded = decode_ros2(
+        "--x 1 --y -2 --z 0.5 --roll 0.1 --pitch 0.2 --yaw 0.3 "
+        "--frame-id base_link --child-frame-id laser".split()
+    )
+    assert (decoded.form, decoded.parent, decoded.child) == ("ypr", "base_link", "laser")
+    assert decoded.translation == (1.0, -2.0, 0.5)
+    assert decoded.rotation == Rotation(RotationKind.YPR, (0.3, 0.2, 0.1))
+    assert (decoded.arity_issue, decoded.number_issues, decoded.arg_issues) == (None, (), ())
+
+
+def test_flags_default_to_the_identity() -> None:
+    decoded = decode_ros2(["--frame-id", "map", "--child-frame-id", "odom"])
+    assert decoded.translation == (0.0, 0.0, 0.0)
+    assert decoded.rotation is not None and decoded.rotation.is_null
+
+
+def test_quaternion_flags() -> None:
+    decoded = decode_ros2(
+        "--qz 0.7071068 --qw 0.7071068 --frame-id a --child-frame-id b".split()
+    )
+    assert decoded.form == "quaternion"
+    assert decoded.rotation == Rotation(RotationKind.QUATERNION, (0.0, 0.0, 0.7071068, 0.7071068))
+    assert decoded.arg_issues == ()
+
+
+def test_a_partial_quaternion_that_is_not_unit_length() -> None:
+    decoded = decode_ros2("--qx 1 --frame-id a --child-frame-id b".split())
+    assert decoded.rotation == Rotation(RotationKind.QUATERNION, (1.0, 0.0, 0.0, 1.0))
+    assert [i.kind for i in decoded.arg_issues] == ["partial_quaternion"]
+    assert "(1, 0, 0, 1)" in decoded.arg_issues[0].message
+
+
+def test_rpy_together_with_a_quaternion() -> None:
+    decoded = decode_ros2("--yaw 1 --qw 1 --frame-id a --child-frame-id b".split())
+    assert kinds("--yaw 1 --qw 1 --frame-id a --child-frame-id b") == ["rpy_and_quaternion"]
+    assert decoded.rotation is None
+
+
+@pytest.mark.parametrize(("words", "suggestion"), [
+    ("--yaw_deg 90", "'--yaw'"),
+    ("--frame_id x", "'--frame-id'"),
+    ("-- yaw 1", "'--yaw', without the space"),
+])
+def test_unknown_flags_with_a_suggestion(words: str, suggestion: str) -> None:
+    decoded = decode_ros2(f"--x 1 {words} --frame-id a --child-frame-id b".split())
+    (issue,) = decoded.arg_issues
+    assert issue.kind == "unknown_flag" and suggestion in issue.message
+    assert "Extra unparsed arguments" in issue.message
+    assert decoded.arity_issue is None
+    assert (decoded.parent, decoded.child, decoded.translation) == ("a", "b", (1.0, 0.0, 0.0))
+
+
+def test_negative_numbers_are_not_flags() -> None:
+    assert kinds("--x -1 --y -0.5e-3 --frame-id a --child-frame-id b") == []
+
+
+def test_missing_frames() -> None:
+    decoded = decode_ros2("--x 1".split())
+    assert [i.kind for i in decoded.arg_issues] == ["missing_frame", "missing_frame"]
+    assert (decoded.parent, decoded.child) == (None, None)
+    assert "Child frame id must not be empty" in decoded.arg_issues[1].message
+    assert kinds(["--frame-id", "", "--child-frame-id", "b"]) == ["missing_frame"]
+
+
+def test_a_flag_value_may_look_like_a_flag() -> None:
+    decoded = decode_ros2("--frame-id --child-frame-id b".split())
+    assert decoded.parent == "--child-frame-id"
+    assert decoded.arity_issue is not None and "extra argument(s) 'b'" in decoded.arity_issue
+
+
+def test_a_flag_without_its_value() -> None:
+    decoded = decode_ros2("--frame-id a --child-frame-id b --x".split())
+    assert decoded.arity_issue is not None
+    assert "Not enough arguments for --x" in decoded.arity_issue
+
+
+def test_help_publishes_nothing() -> None:
+    decoded = decode_ros2(["--help"])
+    assert decoded.form == "invalid" and decoded.arity_issue is not None
+
+
+def test_bad_numbers_have_their_slot() -> None:
+    decoded = decode_ros2("--y abc --yaw 1.5rad --frame-id a --child-frame-id b".split())
+    assert decoded.number_issues == (NumberIssue(1, "abc", None), NumberIssue(3, "1.5rad", 1.5))
+
+
+def test_ros_arguments_are_removed() -> None:
+    decoded = decode_ros2(
+        "--frame-id a --ros-args -r __node:=tf -p x:=1 -- --child-frame-id b".split()
+    )
+    assert (decoded.parent, decoded.child, decoded.arg_issues) == ("a", "b", ())
+
+
+# -- old-style positional arguments -----------------------------------------------------
+
+
+def test_positional_ypr() -> None:
+    decoded = decode_ros2("0.1 0 0.2 1.57 0 0 base_link laser".split())
+    assert (decoded.form, decoded.parent, decoded.child) == ("ypr", "base_link", "laser")
+    assert decoded.rotation == Rotation(RotationKind.YPR, (1.57, 0.0, 0.0))
+    (issue,) = decoded.arg_issues
+    assert issue.kind == "positional"
+    assert issue.message.endswith(
+        "write: --x 0.1 --y 0 --z 0.2 --yaw 1.57 --pitch 0 --roll 0 "
+        "--frame-id base_link --child-frame-id laser"
+    )
+
+
+def test_positional_quaternion() -> None:
+    decoded = decode_ros2("0 0 0 0 0 0 1 map odom".split())
+    assert decoded.form == "quaternion" and (decoded.parent, decoded.child) == ("map", "odom")
+    assert "--qw 1 --frame-id map --child-frame-id odom" in decoded.arg_issues[0].message
+
+
+def test_a_ros1_period_fails_on_qw() -> None:
+    decoded = decode_ros2("0 0 0.2 0 0 0 base_link laser 100".split())
+    assert decoded.form == "ypr" and (decoded.parent, decoded.child) == ("base_link", "laser")
+    assert decoded.arity_issue is not None
+    assert "reads 'base_link' as qw" in decoded.arity_issue
+
+
+def test_ten_positionals_are_extra() -> None:
+    decoded = decode_ros2("0 0 0 0 0 0 1 map odom 100".split())
+    assert decoded.arity_issue is not None and "no period" in decoded.arity_issue
+    assert (decoded.parent, decoded.child) == ("map", "odom")
+
+
+@pytest.mark.parametrize("count", [1, 3, 6, 7, 11])
+def test_other_positional_counts_are_rejected(count: int) -> None:
+    decoded = decode_ros2(["0"] * count)
+    assert decoded.form == "invalid"
+    assert decoded.arity_issue is not None and f"not {count}" in decoded.arity_issue
+
+
+def test_flags_mixed_with_positionals() -> None:
+    assert kinds("--x 1 0 0 0 0 0 0 a b") == ["mixed_styles", "positional"]
+    decoded = decode_ros2("--roll 1 0 0 0 0 0 0 a b".split())
+    assert "silently replaces" in decoded.arg_issues[0].message
+
+
+def test_one_item_with_all_the_words() -> None:
+    decoded = decode_ros2(["0 0 0.2 0 0 0 base_link laser"])
+    assert [i.kind for i in decoded.arg_issues] == ["single_string", "positional"]
+    assert (decoded.parent, decoded.child, decoded.translation) == (
+        "base_link", "laser", (0.0, 0.0, 0.2),
+    )
+    assert decoded.number_issues == ()
+
+
+# -- unresolved items ----------------------------------------------------------------------
+
+
+def test_unresolved_items_mark_the_fields_they_feed() -> None:
+    decoded = decode_ros2(
+        ["--x", "$(var x)", "--frame-id", "base", "--child-frame-id", "$(var c)"],
+        frozenset({1, 5}),
+    )
+    assert decoded.unresolved == ("translation", "child")
+    assert decoded.number_issues == ()
+
+
+def test_one_substitution_is_one_argument() -> None:
+    decoded = decode_ros2(["$(var tf_args)"], frozenset({0}))
+    assert decoded.arity_issue is not None and "a substitution is one argument" in (
+        decoded.arity_issue
+    )
+
+
+# -- the component ------------------------------------------------------------------------
+
+
+def test_component_parameters() -> None:
+    decoded = decode_component({
+        "translation.z": ComponentParam("0.2", False),
+        "rotation.z": ComponentParam("0.7071068", False),
+        "rotation.w": ComponentParam("0.7071068", False),
+        "frame_id": ComponentParam("base_link", True),
+        "child_frame_id": ComponentParam("laser", True),
+    })
+    assert (decoded.parent, decoded.child, decoded.translation) == (
+        "base_link", "laser", (0.0, 0.0, 0.2),
+    )
+    assert decoded.rotation == Rotation(RotationKind.QUATERNION, (0.0, 0.0, 0.7071068, 0.7071068))
+    assert decoded.arg_issues == ()
+
+
+def test_component_defaults() -> None:
+    decoded = decode_component({"child_frame_id": ComponentParam("laser", True)})
+    assert (decoded.parent, decoded.child) == ("/frame", "laser")
+    (issue,) = decoded.arg_issues
+    assert issue.kind == "default_frames" and "frame_id" in issue.message
+
+
+def test_component_parameters_from_a_file_may_set_the_frames() -> None:
+    decoded = decode_component({}, complete=False)
+    assert decoded.arg_issues == ()
+    assert set(decoded.unresolved) == {"translation", "rotation", "parent", "child"}
+
+
+def test_component_string_for_a_number() -> None:
+    decoded = decode_component({"translation.x": ComponentParam("abc", True)})
+    assert decoded.number_issues == (NumberIssue(0, "abc", None),)
