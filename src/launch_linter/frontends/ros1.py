@@ -176,6 +176,9 @@ class Ros1Loader:
         self.root_display = ""
         self.node_names: dict[str, Location] = {}
         self._displays: dict[str, str] = {}
+        self._missing_reported: set[tuple[str, str]] = set()
+        self._element: Element | None = None
+        """The element whose attribute is being resolved (for errors found meanwhile)."""
 
     # -- diagnostics -------------------------------------------------------------------
     def _report(
@@ -313,12 +316,13 @@ class Ros1Loader:
         def missing(name: str) -> str:
             if context.open_args:
                 return f"arg '{name}' is not set (give it with --arg {name}:=VALUE)"
-            if context.included_from is not None:
-                raise SubstitutionError(
-                    f"included file [{self._display(context.filename)}] requires the "
-                    f"'{name}' arg to be set"
-                )
-            raise SubstitutionError(f"arg '{name}' is not set")
+            # Only the args passed to an included file exist there: roslaunch fails.
+            message = (f"included file [{self._display(context.filename)}] requires the "
+                       f"'{name}' arg to be set")
+            if (context.filename, name) not in self._missing_reported:
+                self._missing_reported.add((context.filename, name))
+                self._error(context, self._element, message)
+            return message
 
         return SubstitutionScope(
             args=context.args,
@@ -337,6 +341,7 @@ class Ros1Loader:
 
     def _substitute(self, text: str, element: Element, label: str, context: _Context,
                     anon: dict[str, str] | None) -> Value:
+        self._element = element
         try:
             return resolve(text, self._scope(context, anon))
         except SubstitutionError as exc:
@@ -867,8 +872,11 @@ class Ros1Loader:
         form = decoded.form
         if words.unresolved:
             indices = words.unresolved
-            if decoded.form == "invalid" or decoded.arity_issue:
-                # A hole may stand for any number of words: the count is not known.
+            # A hole is taken for one word (typically a frame from an arg) while that gives
+            # a form the program accepts; a hole that stands for the whole value (an
+            # $(eval) or a refused text) may hold any number of words.
+            if (decoded.form in ("invalid", "param") or decoded.arity_issue
+                    or any(not _single_command(h.text) for h in words.holes)):
                 unresolved.append("arity")
                 arity_issue, form = None, "unknown"
             if form == "unknown":
@@ -921,6 +929,12 @@ class Ros1Loader:
                 + (f": {'; '.join(reasons)}" if reasons else ""),
                 node=name,
             )
+
+
+def _single_command(text: str) -> bool:
+    """Whether ``text`` is one ``$(arg …)``-like substitution, not an ``$(eval)``."""
+    return (text.startswith("$(") and text.endswith(")") and text.count("$(") == 1
+            and not text.startswith("$(eval "))
 
 
 def _conjoin(outer: Condition, inner: Condition) -> Condition:

@@ -31,8 +31,7 @@ class SubstitutionScope:
     """What a substitution can see at one place of a launch file.
 
     ``missing_arg`` is called with the name of an arg that is not set at all and returns
-    the reason for the hole; it raises :class:`SubstitutionError` where roslaunch would
-    certainly fail (an included file that was not given the arg).
+    the reason for the hole (it may raise :class:`SubstitutionError` to refuse the value).
     """
 
     args: Mapping[str, Value]

@@ -1,0 +1,85 @@
+"""``$(find pkg)``: package discovery under package roots, as rospkg does it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from launch_linter.resolve.packages import PackageIndex, default_package_roots
+
+
+def package(folder: Path, name: str, extra: str = "") -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "package.xml").write_text(
+        '<?xml version="1.0"?>\n<package format="2">\n'
+        f"  <name> {name}\n</name>{extra}\n</package>\n"
+    )
+    return folder
+
+
+def test_the_name_comes_from_package_xml_not_the_folder(tmp_path: Path) -> None:
+    package(tmp_path / "src" / "folder_name", "real_name")
+    index = PackageIndex([str(tmp_path / "src")])
+    assert index.find("real_name") == str(tmp_path / "src" / "folder_name")
+    assert index.find("folder_name") is None
+
+
+def test_manifest_xml_packages_are_named_by_their_folder(tmp_path: Path) -> None:
+    legacy = tmp_path / "legacy_pkg"
+    legacy.mkdir()
+    (legacy / "manifest.xml").write_text("<package/>")
+    assert PackageIndex([str(tmp_path)]).find("legacy_pkg") == str(legacy)
+
+
+def test_no_descent_into_packages_hidden_or_ignored_folders(tmp_path: Path) -> None:
+    outer = package(tmp_path / "outer", "outer")
+    package(outer / "nested", "nested")
+    package(tmp_path / ".hidden" / "h", "hidden_pkg")
+    (tmp_path / "ignored").mkdir()
+    (tmp_path / "ignored" / "CATKIN_IGNORE").write_text("")
+    package(tmp_path / "ignored" / "i", "ignored_pkg")
+    (tmp_path / "stop").mkdir()
+    (tmp_path / "stop" / "rospack_nosubdirs").write_text("")
+    package(tmp_path / "stop" / "s", "below_nosubdirs")
+    index = PackageIndex([str(tmp_path)])
+    assert index.find("outer") == str(outer)
+    for name in ("nested", "hidden_pkg", "ignored_pkg", "below_nosubdirs"):
+        assert index.find(name) is None, name
+
+
+def test_metapackages_are_not_found(tmp_path: Path) -> None:
+    package(tmp_path / "meta", "meta", "<export><metapackage/></export>")
+    package(tmp_path / "meta" / "inside", "inside")
+    index = PackageIndex([str(tmp_path)])
+    assert index.find("meta") is None
+    assert index.find("inside") is None
+
+
+def test_earlier_roots_win(tmp_path: Path) -> None:
+    first = package(tmp_path / "a" / "p", "dup")
+    package(tmp_path / "b" / "p", "dup")
+    assert PackageIndex([str(tmp_path / "a"), str(tmp_path / "b")]).find("dup") == str(first)
+
+
+def test_unreadable_or_missing_roots_are_skipped(tmp_path: Path) -> None:
+    broken = tmp_path / "broken"
+    broken.mkdir()
+    (broken / "package.xml").write_text("<package><name>x</name>")
+    index = PackageIndex([str(tmp_path / "missing"), str(tmp_path)])
+    assert index.find("x") is None
+
+
+def test_default_roots_are_the_workspace_src_holding_the_package(tmp_path: Path) -> None:
+    robot = package(tmp_path / "ws" / "src" / "group" / "robot", "robot")
+    (robot / "src").mkdir()  # the package's own C++ sources are not a workspace
+    (robot / "launch").mkdir()
+    launch = robot / "launch" / "a.launch"
+    assert default_package_roots(str(launch)) == [str(tmp_path / "ws" / "src")]
+
+
+def test_default_roots_without_a_workspace_are_the_package_parent(tmp_path: Path) -> None:
+    robot = package(tmp_path / "loose" / "robot", "robot")
+    assert default_package_roots(str(robot / "a.launch")) == [str(tmp_path / "loose")]
+
+
+def test_no_default_roots_outside_a_package(tmp_path: Path) -> None:
+    assert default_package_roots(str(tmp_path / "a.launch")) == []

@@ -1,0 +1,123 @@
+"""The safe XML reader: positions, comments, text, and what it refuses."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from launch_linter.frontends.xml_safe import (
+    MAX_BYTES,
+    MAX_DEPTH,
+    MAX_ELEMENTS,
+    XmlError,
+    parse_xml,
+)
+
+
+def test_positions_are_one_based_line_and_column_of_the_start_tag() -> None:
+    data = b'<launch>\n  <group>\n\t<node a="1"\n        b="2"/></group>\n</launch>\n'
+    document = parse_xml(data)
+    launch = document.root
+    group = launch.children[0]
+    node = group.children[0]
+    assert (launch.tag, launch.line, launch.column) == ("launch", 1, 1)
+    assert (group.line, group.column) == (2, 3)
+    assert (node.line, node.column) == (3, 2)
+    assert node.attrib == {"a": "1", "b": "2"}
+    assert document.element_lines == [1, 2, 3]
+
+
+def test_column_counts_characters_not_bytes() -> None:
+    document = parse_xml('<launch><!-- é --><x/>é<y/></launch>'.encode())
+    x, y = document.root.children
+    assert x.column == len("<launch><!-- é -->") + 1
+    assert y.column == len("<launch><!-- é --><x/>é") + 1
+
+
+def test_attributes_keep_document_order_and_normalised_whitespace() -> None:
+    document = parse_xml(b'<launch z="1" a="x\n\ty" m="&quot;q&quot;"/>')
+    assert list(document.root.attrib) == ["z", "a", "m"]
+    assert document.root.attrib["a"] == "x  y"
+    assert document.root.attrib["m"] == '"q"'
+
+
+def test_comments_are_kept_with_the_line_they_end_on() -> None:
+    document = parse_xml(b"<launch>\n<!-- one -->\n<!-- two\nlines -->\n</launch>")
+    assert document.comments == [(2, " one "), (4, " two\nlines ")]
+
+
+def test_text_is_kept_only_for_the_tags_asked_for() -> None:
+    data = b"<launch><rosparam>a: 1<x/>b</rosparam><param>no</param></launch>"
+    plain = parse_xml(data)
+    assert [c.text for c in plain.root.children] == ["", ""]
+    kept = parse_xml(data, text_tags=("rosparam",))
+    rosparam, param = kept.root.children
+    assert rosparam.text == "a: 1b"
+    assert rosparam.children[0].text == ""
+    assert param.text == ""
+
+
+def test_collect_lists_elements_of_a_tag_anywhere() -> None:
+    document = parse_xml(b"<a><launch/><b><launch x='1'/></b></a>", collect=("launch",))
+    assert [e.get("x") for e in document.collected] == [None, "1"]
+
+
+@pytest.mark.parametrize(
+    ("data", "fragment"),
+    [
+        (b"<launch><node></launch>", "mismatched tag"),
+        (b"", "no element found"),
+        (b"<launch>\xff\xfe</launch>", "not well-formed"),
+        (b"<launch/><launch/>", "junk after document element"),
+        (b"<launch>&undefined;</launch>", "undefined entity"),
+    ],
+)
+def test_malformed_xml_is_an_error_with_a_position(data: bytes, fragment: str) -> None:
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert fragment in caught.value.message
+    assert caught.value.line >= 1 and caught.value.column >= 1
+
+
+def test_internal_entity_declarations_are_refused() -> None:
+    data = b'<?xml version="1.0"?>\n<!DOCTYPE launch [\n<!ENTITY a "x">\n]>\n<launch>&a;</launch>'
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert "entity declaration 'a' refused" in caught.value.message
+    assert caught.value.line == 3
+
+
+def test_external_entities_are_refused_and_never_read(tmp_path: Path) -> None:
+    secret = tmp_path / "secret.txt"
+    secret.write_text("TOP SECRET")
+    data = (
+        f'<!DOCTYPE launch [<!ENTITY s SYSTEM "file://{secret}">]><launch a="&s;"/>'
+    ).encode()
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert "TOP SECRET" not in str(caught.value)
+
+
+def test_a_doctype_without_entities_is_fine() -> None:
+    document = parse_xml(b'<!DOCTYPE launch SYSTEM "http://example.invalid/x.dtd"><launch/>')
+    assert document.root.tag == "launch"
+
+
+def test_depth_is_bounded() -> None:
+    deep = b"<a>" * MAX_DEPTH + b"</a>" * MAX_DEPTH
+    assert parse_xml(deep).root.tag == "a"
+    deeper = b"<a>" * (MAX_DEPTH + 1) + b"</a>" * (MAX_DEPTH + 1)
+    with pytest.raises(XmlError, match="nested deeper"):
+        parse_xml(deeper)
+
+
+def test_element_count_is_bounded() -> None:
+    many = b"<a>" + b"<b/>" * MAX_ELEMENTS + b"</a>"
+    with pytest.raises(XmlError, match="more than"):
+        parse_xml(many)
+
+
+def test_size_is_bounded() -> None:
+    with pytest.raises(XmlError, match="larger than"):
+        parse_xml(b" " * (MAX_BYTES + 1))
