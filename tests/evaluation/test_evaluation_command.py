@@ -87,6 +87,8 @@ def test_threshold_moves_only_the_belief_rules(make_db: MakeDb) -> None:
     text = render_thresholds([low, high])
     assert "| name_null_rot | 1 / 1 (33.33%) | 0 / 0 (0.00%) | 65 / 61 (0.72%) |" in text
     assert "| name_null_rot | 0 / 1 | 0 / 0 |" in text  # history: fixed / persisting
+    # p0 = 0.5: z(n, n) = sqrt(n), so z >= 5 needs 25 agreeing cases; these have 3
+    assert "(1 for z ≥ 1, 25 for z ≥ 5)" in text and "has z = 1.73" in text
 
 
 def test_command_writes_every_output(make_db: MakeDb, tmp_path: Path,
@@ -103,7 +105,8 @@ def test_command_writes_every_output(make_db: MakeDb, tmp_path: Path,
     assert tuple(rows[0]) == CSV_COLUMNS
     self_row = next(r for r in rows if r["rule"] == "self_transform")
     assert (self_row["faults"], self_row["files"], self_row["percent_files"]) == ("2", "2", "66.67")
-    assert "| rot_degrees | 1 | 1 | 1 | 0 | 0 | 100% | 1 | 0 |" in (out / "history.md").read_text()
+    history = (out / "history.md").read_text(encoding="utf-8")
+    assert "| rot_degrees | 1 | 1 | 1 | 0 | 0 | 100% | 1 | 1 | 0 |" in history
     assert "2 files (66.7%) with a fault" in capsys.readouterr().out
 
 

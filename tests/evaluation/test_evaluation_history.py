@@ -106,6 +106,6 @@ def test_render_lists_every_rule_and_examples() -> None:
     text = render_history(follow_history([earlier, latest], RULES), ["- preamble"])
     for rule in RULES:
         assert f"| {rule} |" in text
-    assert "| rot_degrees | 1 | 1 | 1 | 0 | 0 | 100% | 1 | 0 |" in text
+    assert "| rot_degrees | 1 | 1 | 1 | 0 | 0 | 100% | 1 | 1 | 0 |" in text
     assert "### `rot_degrees`" in text and "**fixed** — r/one: `launch/a.launch`" in text
     assert "`0 0 0 1.57 0 0 base_link laser 100`" in text

@@ -41,12 +41,12 @@ def write_chart(table: FaultTable, path: str, title: str) -> None:
                     xytext=(3, 0), textcoords="offset points", va="center", fontsize=7,
                 )
         axes.set_yticks(list(positions), [r.rule for r in rows], fontsize=8)
-        axes.invert_yaxis()
+        axes.set_ylim(len(rows) - 0.5, -0.5)  # first row on top, no empty band
         axes.set_xlabel("% of files with the fault")
         axes.set_title(title, fontsize=10)
         axes.set_xlim(0, max([*ours, *study, 1.0]) * 1.15)
         axes.grid(axis="x", linewidth=0.3)
-        axes.legend(loc="lower right", fontsize=8)
+        axes.legend(loc="upper right", fontsize=8)
         figure.tight_layout()
         # No software/date metadata: the committed PNG changes only when the figures do.
         figure.savefig(path, dpi=110, metadata={"Software": None})

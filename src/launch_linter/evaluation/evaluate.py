@@ -50,6 +50,8 @@ class Scope:
     versions: int
     not_linted: tuple[tuple[str, str], ...]
     """(repo:path@version, reason) of stored versions that could not be linted."""
+    strongest: float | None
+    """The highest z of any belief mined into the database (None when there is none)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -159,12 +161,12 @@ def evaluate(db: str, min_z: float, beliefs_spec: str | None = None) -> Evaluati
             if "p0" not in meta:
                 raise EvaluationError(f"{db}: nothing mined yet (run 'launch-linter mine')")
             stored = store.file_versions()
-            mined = store.beliefs(min_z)
+            every = store.beliefs()
     except StoreError as exc:
         raise EvaluationError(str(exc)) from None
     p0 = float(meta["p0"])
     if beliefs_spec is None:
-        beliefs = BeliefSet("database", min_z, tuple(mined), p0)
+        beliefs = BeliefSet("database", min_z, tuple(b for b in every if b.z >= min_z), p0)
     else:
         try:
             beliefs = load_beliefs(beliefs_spec, min_z)
@@ -183,6 +185,7 @@ def evaluate(db: str, min_z: float, beliefs_spec: str | None = None) -> Evaluati
         immature_repos=len({r.repo for r in stored if not r.mature}),
         versions=len(stored),
         not_linted=tuple(skipped),
+        strongest=max((b.z for b in every), default=None),
     )
     history = follow_history(linted, [r.id for r in RULES if is_fault_rule(r)])
     return Evaluation(scope, fault_table(evaluated, RULES), history)

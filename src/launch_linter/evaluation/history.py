@@ -53,6 +53,9 @@ class RuleHistory:
     outcomes: dict[str, int] = field(default_factory=lambda: dict.fromkeys(OUTCOMES, 0))
     immature: dict[str, int] = field(default_factory=lambda: dict.fromkeys(OUTCOMES, 0))
     """The same, for repositories below the maturity threshold only."""
+    fixed_repos: set[str] = field(default_factory=set)
+    """Repositories with at least one fixed fault: a repository of many near-identical
+    files can fix the same fault many times."""
 
     @property
     def faults(self) -> int:
@@ -168,6 +171,8 @@ def follow_history(linted: Iterable[Linted], rules: Sequence[str]) -> History:
                     continue
                 seen.add(identity)
                 history.outcomes[outcome] += 1
+                if outcome == FIXED:
+                    history.fixed_repos.add(item.version.repo)
                 if not item.version.mature:
                     history.immature[outcome] += 1
                 faults.append(
@@ -249,14 +254,15 @@ def render_history(history: History, preamble: Sequence[str]) -> str:
         "*fixed share* is fixed / (fixed + persisting).",
         "",
         "| rule | diagnostics | faults | fixed | persisting | gone | fixed share "
-        "| fixed (immature repos) | persisting (immature repos) |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| repos with a fix | fixed (immature repos) | persisting (immature repos) |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for rule, counts in history.rules.items():
         fixed, persisting = counts.outcomes[FIXED], counts.outcomes[PERSISTING]
         lines.append(
             f"| {rule} | {counts.diagnostics} | {counts.faults} | {fixed} | {persisting} "
             f"| {counts.outcomes[GONE]} | {_share(fixed, fixed + persisting)} "
+            f"| {len(counts.fixed_repos)} "
             f"| {counts.immature[FIXED]} | {counts.immature[PERSISTING]} |"
         )
     total = {o: sum(c.outcomes[o] for c in history.rules.values()) for o in OUTCOMES}
@@ -264,6 +270,7 @@ def render_history(history: History, preamble: Sequence[str]) -> str:
         f"| **all** | {sum(c.diagnostics for c in history.rules.values())} "
         f"| {sum(total.values())} | {total[FIXED]} | {total[PERSISTING]} | {total[GONE]} "
         f"| {_share(total[FIXED], total[FIXED] + total[PERSISTING])} "
+        f"| {len(set().union(*(c.fixed_repos for c in history.rules.values())))} "
         f"| {sum(c.immature[FIXED] for c in history.rules.values())} "
         f"| {sum(c.immature[PERSISTING] for c in history.rules.values())} |"
     )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from collections.abc import Sequence
 
@@ -9,6 +10,11 @@ from launch_linter.evaluation.evaluate import Evaluation
 from launch_linter.evaluation.history import FIXED, PERSISTING
 from launch_linter.evaluation.study import STUDY_FILES, STUDY_MIN_Z
 from launch_linter.model.beliefs import BELIEF_CLASSES
+
+
+def _cases_needed(z: float, p0: float) -> int:
+    """The least n with z(n, n) ≥ z: z(n, n) = sqrt(n (1 - p0) / p0)."""
+    return math.ceil(z * z * p0 / (1.0 - p0) - 1e-9)
 
 
 def render_thresholds(evaluations: Sequence[Evaluation]) -> str:
@@ -26,6 +32,14 @@ def render_thresholds(evaluations: Sequence[Evaluation]) -> str:
         f"totals. The study used z ≥ {STUDY_MIN_Z:g} on {STUDY_FILES} files.",
         "",
         "## Beliefs used",
+        "",
+        f"With p0 = {first.scope.p0:g}, a belief reaches z ≥ Z only with at least "
+        f"Z² · p0 / (1 - p0) cases that all agree ("
+        + ", ".join(f"{_cases_needed(e.scope.min_z, first.scope.p0)} for z ≥ {e.scope.min_z:g}"
+                    for e in evaluations)
+        + "). The strongest belief mined into this database has z = "
+        + ("none" if first.scope.strongest is None else f"{first.scope.strongest:.2f}")
+        + ".",
         "",
         "| class | " + " | ".join(zs) + " |",
         "|---|" + "---:|" * len(zs),
