@@ -1,13 +1,57 @@
-"""Pick the front-end for a launch file by its name and content."""
+"""Pick the front-end for a launch file by its name and content.
+
+``*.py`` files are ROS 2 Python launch files and ``*.yaml``/``*.yml`` files ROS 2 YAML
+launch files. XML is ROS 1 unless it uses what only ROS 2 launch XML has: a ``<node>``
+with ``exec=``, ``<let>``, ``$(var ...)``, ``$(find-pkg-share ...)``,
+``<push-ros-namespace>`` (or ``push_ros_namespace``), the composable-node tags, or an
+``<include>`` of a Python or YAML launch file. Both
+ROS versions use ``.launch`` and ``.launch.xml``, so the suffix does not decide.
+"""
 
 from __future__ import annotations
 
+import re
+
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
+from launch_linter.frontends.ros2_launch import load_ros2
+from launch_linter.frontends.xml_safe import MAX_BYTES
 from launch_linter.model.launch import LaunchTree
 
 LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.yaml", ".launch.yml", ".launch.py")
 
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
+_ROS2_XML = re.compile(
+    rb"<node\s[^>]*\bexec\s*="
+    rb"|<let[\s/>]"
+    rb"|\$\((?:var|find-pkg-share|find-pkg-prefix)[\s)]"
+    rb"|<push[-_]ros[-_]namespace[\s/>]"
+    rb"|<(?:node_container|composable_node|load_composable_node)[\s/>]"
+    rb"""|<include\s[^>]*\bfile\s*=\s*["'][^"']*\.(?:py|ya?ml)["']"""
+)
+
+
+def is_ros2_xml(data: bytes) -> bool:
+    """Whether launch XML uses anything that only ROS 2 launch XML has."""
+    return _ROS2_XML.search(_COMMENT.sub(b"", data)) is not None
+
+
+def front_end(path: str, data: bytes | None) -> str:
+    """``ros2`` or ``ros1``: which loader reads ``path`` (``data``: its bytes, if read)."""
+    name = path.lower()
+    if name.endswith((".py", ".yaml", ".yml")):
+        return "ros2"
+    return "ros2" if data is not None and is_ros2_xml(data) else "ros1"
+
 
 def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> LaunchTree:
     """Read the launch tree rooted at ``path`` with the front-end its format needs."""
+    if data is None and not path.lower().endswith((".py", ".yaml", ".yml")):
+        try:
+            with open(path, "rb") as handle:
+                data = handle.read(MAX_BYTES + 1)
+        except OSError:
+            # The ROS 1 loader reports the file as unreadable.
+            return load_ros1(path, options, None)
+    if front_end(path, data) == "ros2":
+        return load_ros2(path, options, data)
     return load_ros1(path, options, data)

@@ -12,6 +12,10 @@ from launch_linter.decode_ros2 import ComponentParam, decode_component, decode_r
 from launch_linter.model.transform import NumberIssue, Rotation, RotationKind
 
 
+def argv(words: str) -> list[str]:
+    return words.split()
+
+
 def kinds(words: str | list[str]) -> list[str]:
     items = words.split() if isinstance(words, str) else words
     return [issue.kind for issue in decode_ros2(items).arg_issues]
@@ -56,8 +60,8 @@ def test_stod_reads_what_python_prints(number: float) -> None:
 
 def test_flags() -> None:
     decoded = decode_ros2(
-        "--x 1 --y -2 --z 0.5 --roll 0.1 --pitch 0.2 --yaw 0.3 "
-        "--frame-id base_link --child-frame-id laser".split()
+        argv("--x 1 --y -2 --z 0.5 --roll 0.1 --pitch 0.2 --yaw 0.3 "
+        "--frame-id base_link --child-frame-id laser")
     )
     assert (decoded.form, decoded.parent, decoded.child) == ("ypr", "base_link", "laser")
     assert decoded.translation == (1.0, -2.0, 0.5)
@@ -73,7 +77,7 @@ def test_flags_default_to_the_identity() -> None:
 
 def test_quaternion_flags() -> None:
     decoded = decode_ros2(
-        "--qz 0.7071068 --qw 0.7071068 --frame-id a --child-frame-id b".split()
+        argv("--qz 0.7071068 --qw 0.7071068 --frame-id a --child-frame-id b")
     )
     assert decoded.form == "quaternion"
     assert decoded.rotation == Rotation(RotationKind.QUATERNION, (0.0, 0.0, 0.7071068, 0.7071068))
@@ -81,14 +85,14 @@ def test_quaternion_flags() -> None:
 
 
 def test_a_partial_quaternion_that_is_not_unit_length() -> None:
-    decoded = decode_ros2("--qx 1 --frame-id a --child-frame-id b".split())
+    decoded = decode_ros2(argv("--qx 1 --frame-id a --child-frame-id b"))
     assert decoded.rotation == Rotation(RotationKind.QUATERNION, (1.0, 0.0, 0.0, 1.0))
     assert [i.kind for i in decoded.arg_issues] == ["partial_quaternion"]
     assert "(1, 0, 0, 1)" in decoded.arg_issues[0].message
 
 
 def test_rpy_together_with_a_quaternion() -> None:
-    decoded = decode_ros2("--yaw 1 --qw 1 --frame-id a --child-frame-id b".split())
+    decoded = decode_ros2(argv("--yaw 1 --qw 1 --frame-id a --child-frame-id b"))
     assert kinds("--yaw 1 --qw 1 --frame-id a --child-frame-id b") == ["rpy_and_quaternion"]
     assert decoded.rotation is None
 
@@ -99,7 +103,7 @@ def test_rpy_together_with_a_quaternion() -> None:
     ("-- yaw 1", "'--yaw', without the space"),
 ])
 def test_unknown_flags_with_a_suggestion(words: str, suggestion: str) -> None:
-    decoded = decode_ros2(f"--x 1 {words} --frame-id a --child-frame-id b".split())
+    decoded = decode_ros2(argv(f"--x 1 {words} --frame-id a --child-frame-id b"))
     (issue,) = decoded.arg_issues
     assert issue.kind == "unknown_flag" and suggestion in issue.message
     assert "Extra unparsed arguments" in issue.message
@@ -112,7 +116,7 @@ def test_negative_numbers_are_not_flags() -> None:
 
 
 def test_missing_frames() -> None:
-    decoded = decode_ros2("--x 1".split())
+    decoded = decode_ros2(argv("--x 1"))
     assert [i.kind for i in decoded.arg_issues] == ["missing_frame", "missing_frame"]
     assert (decoded.parent, decoded.child) == (None, None)
     assert "Child frame id must not be empty" in decoded.arg_issues[1].message
@@ -120,13 +124,13 @@ def test_missing_frames() -> None:
 
 
 def test_a_flag_value_may_look_like_a_flag() -> None:
-    decoded = decode_ros2("--frame-id --child-frame-id b".split())
+    decoded = decode_ros2(argv("--frame-id --child-frame-id b"))
     assert decoded.parent == "--child-frame-id"
     assert decoded.arity_issue is not None and "extra argument(s) 'b'" in decoded.arity_issue
 
 
 def test_a_flag_without_its_value() -> None:
-    decoded = decode_ros2("--frame-id a --child-frame-id b --x".split())
+    decoded = decode_ros2(argv("--frame-id a --child-frame-id b --x"))
     assert decoded.arity_issue is not None
     assert "Not enough arguments for --x" in decoded.arity_issue
 
@@ -137,13 +141,13 @@ def test_help_publishes_nothing() -> None:
 
 
 def test_bad_numbers_have_their_slot() -> None:
-    decoded = decode_ros2("--y abc --yaw 1.5rad --frame-id a --child-frame-id b".split())
+    decoded = decode_ros2(argv("--y abc --yaw 1.5rad --frame-id a --child-frame-id b"))
     assert decoded.number_issues == (NumberIssue(1, "abc", None), NumberIssue(3, "1.5rad", 1.5))
 
 
 def test_ros_arguments_are_removed() -> None:
     decoded = decode_ros2(
-        "--frame-id a --ros-args -r __node:=tf -p x:=1 -- --child-frame-id b".split()
+        argv("--frame-id a --ros-args -r __node:=tf -p x:=1 -- --child-frame-id b")
     )
     assert (decoded.parent, decoded.child, decoded.arg_issues) == ("a", "b", ())
 
@@ -152,7 +156,7 @@ def test_ros_arguments_are_removed() -> None:
 
 
 def test_positional_ypr() -> None:
-    decoded = decode_ros2("0.1 0 0.2 1.57 0 0 base_link laser".split())
+    decoded = decode_ros2(argv("0.1 0 0.2 1.57 0 0 base_link laser"))
     assert (decoded.form, decoded.parent, decoded.child) == ("ypr", "base_link", "laser")
     assert decoded.rotation == Rotation(RotationKind.YPR, (1.57, 0.0, 0.0))
     (issue,) = decoded.arg_issues
@@ -164,20 +168,20 @@ def test_positional_ypr() -> None:
 
 
 def test_positional_quaternion() -> None:
-    decoded = decode_ros2("0 0 0 0 0 0 1 map odom".split())
+    decoded = decode_ros2(argv("0 0 0 0 0 0 1 map odom"))
     assert decoded.form == "quaternion" and (decoded.parent, decoded.child) == ("map", "odom")
     assert "--qw 1 --frame-id map --child-frame-id odom" in decoded.arg_issues[0].message
 
 
 def test_a_ros1_period_fails_on_qw() -> None:
-    decoded = decode_ros2("0 0 0.2 0 0 0 base_link laser 100".split())
+    decoded = decode_ros2(argv("0 0 0.2 0 0 0 base_link laser 100"))
     assert decoded.form == "ypr" and (decoded.parent, decoded.child) == ("base_link", "laser")
     assert decoded.arity_issue is not None
     assert "reads 'base_link' as qw" in decoded.arity_issue
 
 
 def test_ten_positionals_are_extra() -> None:
-    decoded = decode_ros2("0 0 0 0 0 0 1 map odom 100".split())
+    decoded = decode_ros2(argv("0 0 0 0 0 0 1 map odom 100"))
     assert decoded.arity_issue is not None and "no period" in decoded.arity_issue
     assert (decoded.parent, decoded.child) == ("map", "odom")
 
@@ -191,7 +195,7 @@ def test_other_positional_counts_are_rejected(count: int) -> None:
 
 def test_flags_mixed_with_positionals() -> None:
     assert kinds("--x 1 0 0 0 0 0 0 a b") == ["mixed_styles", "positional"]
-    decoded = decode_ros2("--roll 1 0 0 0 0 0 0 a b".split())
+    decoded = decode_ros2(argv("--roll 1 0 0 0 0 0 0 a b"))
     assert "silently replaces" in decoded.arg_issues[0].message
 
 

@@ -1,0 +1,188 @@
+"""The ROS 2 launch actions the linter models, as every ROS 2 front-end describes them.
+
+ROS 2 launch turns XML, YAML and Python alike into a list of actions that it then runs
+in order against one launch context. The front-ends here do the same: each reads its
+format into these descriptions (values stay unevaluated substitutions), and
+:mod:`launch_linter.frontends.ros2_launch` runs them, so argument scoping, namespaces,
+conditions and includes behave the same whatever the format.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from launch_linter.resolve.ros2_substitution import Subs
+from launch_linter.resolve.value import Value
+
+
+@dataclass(frozen=True, slots=True)
+class Where:
+    """Where an action is written: absolute path, 1-based line and column."""
+
+    path: str
+    line: int
+    column: int
+
+
+@dataclass(frozen=True, slots=True)
+class Predicate:
+    """An ``if`` (``positive``) or ``unless`` condition on an action."""
+
+    positive: bool
+    expression: Subs
+
+
+@dataclass(frozen=True, slots=True)
+class DeclareArg:
+    where: Where
+    condition: Predicate | None
+    name: Subs
+    default: Subs | None
+
+
+@dataclass(frozen=True, slots=True)
+class SetVar:
+    """``<let>`` / ``SetLaunchConfiguration``; ``value`` None unsets it."""
+
+    where: Where
+    condition: Predicate | None
+    name: Subs
+    value: Subs | None
+
+
+@dataclass(frozen=True, slots=True)
+class SetEnv:
+    """``<set_env>`` / ``SetEnvironmentVariable``; ``value`` None unsets it."""
+
+    where: Where
+    condition: Predicate | None
+    name: Subs
+    value: Subs | None
+
+
+@dataclass(frozen=True, slots=True)
+class PushNamespace:
+    where: Where
+    condition: Predicate | None
+    namespace: Subs
+
+
+@dataclass(frozen=True, slots=True)
+class Group:
+    """``<group>`` / ``GroupAction``: ``scoped`` keeps configurations set inside from
+    leaking out; ``forwarding`` False starts the group without the outer ones."""
+
+    where: Where
+    condition: Predicate | None
+    actions: tuple[Action, ...]
+    scoped: Subs | bool = True
+    forwarding: Subs | bool = True
+
+
+@dataclass(frozen=True, slots=True)
+class Include:
+    where: Where
+    condition: Predicate | None
+    path: Subs
+    args: tuple[tuple[Subs, Subs], ...]
+
+
+@dataclass(frozen=True, slots=True)
+class RunNode:
+    """``<node>`` / ``Node``. ``arguments`` holds one entry per argv item, or None when
+    the list cannot be known (``unknown`` says why)."""
+
+    where: Where
+    condition: Predicate | None
+    package: Subs | None
+    executable: Subs | None
+    name: Subs | None
+    namespace: Subs | None
+    arguments: tuple[Subs, ...] | None
+    args_written: str
+    unknown: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Params:
+    """Parameters given by name (nested names joined with ``.``). launch gives each value
+    YAML typing after substitution (``1.0`` is a double, ``map`` a string), whatever the
+    format, so values are kept as substitutions."""
+
+    items: tuple[tuple[str, Subs], ...]
+
+
+@dataclass(frozen=True, slots=True)
+class ParamsUnknown:
+    """Parameters from somewhere the linter does not read (a file, an expression)."""
+
+    reason: str
+
+
+@dataclass(frozen=True, slots=True)
+class Component:
+    """``<composable_node>`` / ``ComposableNode`` inside a container or a load action."""
+
+    where: Where
+    condition: Predicate | None
+    package: Subs | None
+    plugin: Subs | None
+    name: Subs | None
+    namespace: Subs | None
+    parameters: tuple[Params | ParamsUnknown, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class LoadComponents:
+    """``<node_container>``, ``<load_composable_node>`` and their Python classes."""
+
+    where: Where
+    condition: Predicate | None
+    components: tuple[Component, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Deferred:
+    """Actions known only when the launch runs (a Python ``OpaqueFunction``): ``expand``
+    receives a resolver for substitutions at that point and returns the actions."""
+
+    where: Where
+    condition: Predicate | None
+    expand: Callable[[Callable[[Subs], Value]], Sequence[Action]]
+
+
+@dataclass(frozen=True, slots=True)
+class Unfollowed:
+    """Something that may launch nodes but that the linter cannot follow."""
+
+    where: Where
+    reason: str
+
+
+Action = (
+    DeclareArg | SetVar | SetEnv | PushNamespace | Group | Include | RunNode
+    | LoadComponents | Deferred | Unfollowed
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Problem:
+    """Something the reader of one file reports: ``rule`` is ``parse_error``,
+    ``roslaunch_error`` or ``unresolved``."""
+
+    rule: str
+    line: int
+    column: int
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
+class FileRead:
+    """One file read by a ROS 2 front-end; ``actions`` is None when it is unreadable."""
+
+    launch_format: str
+    actions: tuple[Action, ...] | None
+    comments: tuple[tuple[int, str], ...] = ()
+    element_lines: tuple[int, ...] = ()
+    problems: tuple[Problem, ...] = ()

@@ -1,0 +1,254 @@
+"""ROS 2 launch XML (and, through :class:`Entity`, YAML) to launch actions.
+
+``launch_xml`` and ``launch_yaml`` both turn a file into "entities" (a type name,
+attributes, nested entity lists and children) that the actions' own ``parse`` methods
+read; :func:`actions_of` does the same for the tags that matter to static transforms:
+``arg``, ``let``, ``set_env``/``unset_env``, ``push_ros_namespace``, ``group``,
+``include``, ``timer``, ``node``, ``node_container``, ``load_composable_node``. Tag
+names are compared with ``-`` read as ``_`` (both spellings are in use). Other tags do not
+start static transforms and are skipped.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from launch_linter.frontends.ros2_actions import (
+    Action,
+    Component,
+    DeclareArg,
+    FileRead,
+    Group,
+    Include,
+    LoadComponents,
+    Params,
+    ParamsUnknown,
+    Predicate,
+    Problem,
+    PushNamespace,
+    RunNode,
+    SetEnv,
+    SetVar,
+    Where,
+)
+from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
+from launch_linter.resolve.ros2_substitution import (
+    Opaque,
+    Subs,
+    SubstitutionSyntaxError,
+    parse,
+    split_command_line,
+)
+
+
+@dataclass(slots=True)
+class Entity:
+    """One launch entity, whichever the file format."""
+
+    tag: str
+    line: int
+    column: int
+    attrs: dict[str, str] = field(default_factory=dict)
+    lists: dict[str, list[Entity]] = field(default_factory=dict)
+    """Attributes that hold entities (``param``, ``arg`` of an include, ...)."""
+    children: list[Entity] = field(default_factory=list)
+    """Nested actions (of ``launch``, ``group``, ``timer``)."""
+
+
+def normalise_tag(tag: str) -> str:
+    return tag.replace("-", "_")
+
+
+class _Reader:
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.problems: list[Problem] = []
+
+    def where(self, entity: Entity) -> Where:
+        return Where(self.path, entity.line, entity.column)
+
+    def report(self, rule: str, entity: Entity, message: str) -> None:
+        self.problems.append(Problem(rule, entity.line, entity.column, message))
+
+    def subs(self, entity: Entity, attribute: str) -> Subs | None:
+        text = entity.attrs.get(attribute)
+        if text is None:
+            return None
+        try:
+            return parse(text)
+        except SubstitutionSyntaxError as exc:
+            self.report("roslaunch_error", entity, f"{attribute}: {exc}")
+            return (Opaque(text, f"not a valid substitution: {exc}"),)
+
+    def required(self, entity: Entity, attribute: str) -> Subs | None:
+        value = self.subs(entity, attribute)
+        if value is None:
+            self.report(
+                "roslaunch_error", entity,
+                f"<{entity.tag}> is missing the required attribute '{attribute}'",
+            )
+        return value
+
+    def predicate(self, entity: Entity) -> Predicate | None:
+        if_value, unless_value = self.subs(entity, "if"), self.subs(entity, "unless")
+        if if_value is not None and unless_value is not None:
+            self.report("roslaunch_error", entity, "'if' and 'unless' cannot both be given")
+        if if_value is not None:
+            return Predicate(True, if_value)
+        if unless_value is not None:
+            return Predicate(False, unless_value)
+        return None
+
+    def actions(self, entities: list[Entity]) -> tuple[Action, ...]:
+        out: list[Action] = []
+        for entity in entities:
+            action = self.action(entity)
+            if action is not None:
+                out.append(action)
+        return tuple(out)
+
+    def action(self, entity: Entity) -> Action | None:
+        tag = normalise_tag(entity.tag)
+        where, condition = self.where(entity), self.predicate(entity)
+        if tag == "arg":
+            name = self.required(entity, "name")
+            if name is None:
+                return None
+            return DeclareArg(where, condition, name, self.subs(entity, "default"))
+        if tag == "let":
+            name, value = self.required(entity, "name"), self.required(entity, "value")
+            if name is None or value is None:
+                return None
+            return SetVar(where, condition, name, value)
+        if tag in ("set_env", "unset_env"):
+            name = self.required(entity, "name")
+            value = self.required(entity, "value") if tag == "set_env" else None
+            if name is None or (tag == "set_env" and value is None):
+                return None
+            return SetEnv(where, condition, name, value)
+        if tag == "push_ros_namespace":
+            namespace = self.required(entity, "namespace")
+            return None if namespace is None else PushNamespace(where, condition, namespace)
+        if tag in ("group", "timer"):
+            children = self.actions(entity.children)
+            if tag == "timer":
+                # A timer runs its actions later in the same context: an unscoped group.
+                return Group(where, condition, children, scoped=False)
+            return Group(
+                where, condition, children,
+                scoped=self.subs(entity, "scoped") or True,
+                forwarding=self.subs(entity, "forwarding") or True,
+            )
+        if tag == "include":
+            return self.include(entity, where, condition)
+        if tag == "node":
+            return self.node(entity, where, condition)
+        if tag in ("node_container", "load_composable_node"):
+            components = tuple(
+                self.component(child) for child in entity.lists.get("composable_node", [])
+            )
+            return LoadComponents(where, condition, components)
+        return None
+
+    def include(self, entity: Entity, where: Where, condition: Predicate | None
+                ) -> Include | None:
+        path = self.required(entity, "file")
+        if path is None:
+            return None
+        args: list[tuple[Subs, Subs]] = []
+        for arg in entity.lists.get("arg", []):
+            name, value = self.required(arg, "name"), self.required(arg, "value")
+            if name is not None and value is not None:
+                args.append((name, value))
+        return Include(where, condition, path, tuple(args))
+
+    def node(self, entity: Entity, where: Where, condition: Predicate | None) -> RunNode | None:
+        executable = self.subs(entity, "exec")
+        if executable is None:
+            hint = " (ROS 2 calls ROS 1's 'type' 'exec')" if "type" in entity.attrs else ""
+            self.report(
+                "roslaunch_error", entity,
+                f"<node> is missing the required attribute 'exec'{hint}",
+            )
+            return None
+        args = self.subs(entity, "args")
+        return RunNode(
+            where=where,
+            condition=condition,
+            package=self.subs(entity, "pkg"),
+            executable=executable,
+            name=self.subs(entity, "name") or self.subs(entity, "node-name"),
+            namespace=self.subs(entity, "namespace"),
+            arguments=() if args is None else tuple(split_command_line(args)),
+            args_written=entity.attrs.get("args", ""),
+        )
+
+    def component(self, entity: Entity) -> Component:
+        return Component(
+            where=self.where(entity),
+            condition=self.predicate(entity),
+            package=self.subs(entity, "pkg"),
+            plugin=self.required(entity, "plugin") or (),
+            name=self.subs(entity, "name"),
+            namespace=self.subs(entity, "namespace"),
+            parameters=self.params(entity.lists.get("param", [])),
+        )
+
+    def params(self, entities: list[Entity]) -> tuple[Params | ParamsUnknown, ...]:
+        out: list[Params | ParamsUnknown] = []
+        for entity in entities:
+            if "from" in entity.attrs:
+                out.append(ParamsUnknown(f"parameters from file {entity.attrs['from']!r}"))
+                continue
+            items: list[tuple[str, Subs]] = []
+            self.param_items(entity, "", items)
+            out.append(Params(tuple(items)))
+        return tuple(out)
+
+    def param_items(self, entity: Entity, prefix: str, items: list[tuple[str, Subs]]) -> None:
+        name = entity.attrs.get("name")
+        if name is None:
+            self.report("roslaunch_error", entity, "<param> needs a 'name' or 'from' attribute")
+            return
+        nested = entity.lists.get("param", [])
+        if nested:
+            for child in nested:
+                self.param_items(child, f"{prefix}{name}.", items)
+            return
+        value = self.subs(entity, "value")
+        if value is not None:
+            items.append((prefix + name, value))
+
+
+def actions_of(path: str, root: Entity) -> tuple[tuple[Action, ...], tuple[Problem, ...]]:
+    """The actions of a ``launch`` root entity read from ``path``, and the problems seen."""
+    reader = _Reader(path)
+    return reader.actions(root.children), tuple(reader.problems)
+
+
+def _entity(element: Element) -> Entity:
+    entity = Entity(element.tag, element.line, element.column, dict(element.attrib))
+    for child in element.children:
+        entity.children.append(_entity(child))
+        entity.lists.setdefault(normalise_tag(child.tag), []).append(entity.children[-1])
+    return entity
+
+
+def read_xml(path: str, data: bytes) -> FileRead:
+    """Read a ROS 2 launch XML file (``path`` absolute, ``data`` its bytes)."""
+    try:
+        document = parse_xml(data)
+    except XmlError as exc:
+        message = f"not well-formed XML: {exc.message}"
+        problem = Problem("parse_error", exc.line, exc.column, message)
+        return FileRead("ros2-xml", None, problems=(problem,))
+    comments = tuple(document.comments)
+    lines = tuple(document.element_lines)
+    if document.root.tag != "launch":
+        problem = Problem(
+            "parse_error", document.root.line, document.root.column,
+            f"root element is <{document.root.tag}>, not <launch>",
+        )
+        return FileRead("ros2-xml", None, comments, lines, (problem,))
+    actions, problems = actions_of(path, _entity(document.root))
+    return FileRead("ros2-xml", actions, comments, lines, problems)

@@ -1,0 +1,56 @@
+"""Which front-end reads a file: by suffix for Python and YAML, by content for XML."""
+
+from __future__ import annotations
+
+import pytest
+
+from launch_linter import LintOptions, lint_text
+from launch_linter.frontends.dispatch import front_end
+
+ROS1_NODE = '<node pkg="tf" type="static_transform_publisher" name="t" args="0 0 0 0 0 0 a b 100"/>'
+
+
+@pytest.mark.parametrize(("path", "text", "expected"), [
+    ("a.launch.py", "", "ros2"),
+    ("a.launch.yaml", "", "ros2"),
+    ("a.launch.yml", "", "ros2"),
+    ("a.launch", f"<launch>{ROS1_NODE}</launch>", "ros1"),
+    ("a.launch.xml", f"<launch>{ROS1_NODE}</launch>", "ros1"),
+    ("a.launch", '<launch><node pkg="tf2_ros" exec="x"/></launch>', "ros2"),
+    ("a.xml", '<launch><let name="a" value="b"/></launch>', "ros2"),
+    ("a.launch", '<launch><arg name="a" default="$(var b)"/></launch>', "ros2"),
+    ("a.launch", '<launch><push-ros-namespace namespace="r"/></launch>', "ros2"),
+    ("a.launch", '<launch><push_ros_namespace namespace="r"/></launch>', "ros2"),
+    ("a.launch", '<launch><include file="$(dirname)/b.launch.py"/></launch>', "ros2"),
+    ("a.launch", '<launch><include file="$(find pkg)/b.launch"/></launch>', "ros1"),
+    ("a.launch", "<launch><!-- <let name='a' value='b'/> --></launch>", "ros1"),
+    ("a.launch", '<launch><node pkg="x" type="y" exec_name="z"/></launch>', "ros1"),
+])
+def test_front_end(path: str, text: str, expected: str) -> None:
+    assert front_end(path, text.encode()) == expected
+
+
+def test_lint_text_reads_ros2_xml_even_with_a_ros1_suffix() -> None:
+    xml = ('<launch><node pkg="tf2_ros" exec="static_transform_publisher" name="t" '
+           'args="0 0 0 0 0 0 base_link laser"/></launch>')
+    result = lint_text(xml, "example.launch", LintOptions(package_paths=()))
+    (transform,) = result.transforms
+    assert (transform.ros_version, transform.parent, transform.child) == (2, "base_link", "laser")
+    assert [d.rule for d in result.diagnostics] == ["ros2_positional_args"]
+
+
+def test_lint_text_reads_python_and_yaml_by_suffix() -> None:
+    python = (
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='tf2_ros', "
+        "executable='static_transform_publisher', arguments=['--frame-id', 'a', "
+        "'--child-frame-id', 'b'])])\n"
+    )
+    yaml = ("launch:\n- node: {pkg: tf2_ros, exec: static_transform_publisher, "
+            "args: '--frame-id a --child-frame-id b'}\n")
+    for text, path in ((python, "x.launch.py"), (yaml, "x.launch.yaml")):
+        result = lint_text(text, path, LintOptions(package_paths=()))
+        assert [(t.parent, t.child) for t in result.transforms] == [("a", "b")]
+        assert result.files[0].status.value == "ok"

@@ -1,0 +1,373 @@
+"""ROS 2 Python launch files, read as a syntax tree and never run."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from conftest import Load
+from ros2_helpers import by_name, rules
+
+from launch_linter.model.launch import FileStatus
+
+HEADER = """\
+import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import (DeclareLaunchArgument, GroupAction, IncludeLaunchDescription,
+                            OpaqueFunction, RegisterEventHandler, TimerAction)
+from launch.conditions import IfCondition, LaunchConfigurationEquals, UnlessCondition
+from launch.event_handlers import OnProcessExit
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import (LaunchConfiguration, PathJoinSubstitution,
+                                  ThisLaunchFileDir)
+from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes, Node
+from launch_ros.actions import PushRosNamespace
+from launch_ros.descriptions import ComposableNode
+from launch_ros.substitutions import FindPackageShare
+
+"""
+HEADER_LINES = HEADER.count("\n")
+
+
+def tf(arguments: str, extra: str = "") -> str:
+    return (f"Node(package='tf2_ros', executable='static_transform_publisher'{extra}, "
+            f"arguments={arguments})")
+
+
+def launch_file(body: str) -> str:
+    return HEADER + "def generate_launch_description():\n" + body
+
+
+def test_a_node_with_a_list_of_arguments(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([\n"
+        "        " + tf("['--x', '0.1', '--frame-id', 'base_link', '--child-frame-id', 'laser']",
+                        ", name='laser_tf', namespace='robot'") + ",\n"
+        "    ])\n"
+    )}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert (transform.line, transform.column) == (HEADER_LINES + 3, 9)
+    assert (transform.name, transform.namespace) == ("laser_tf", "/robot")
+    assert (transform.parent, transform.child, transform.translation) == (
+        "base_link", "laser", (0.1, 0.0, 0.0),
+    )
+    assert (transform.ros_version, transform.launch_format) == (2, "ros2-python")
+    assert transform.args_written.startswith("['--x'")
+    assert tree.diagnostics == ()
+
+
+def test_arguments_and_configurations(load: Load) -> None:
+    files = {"a.launch.py": launch_file(
+        "    child = LaunchConfiguration('child')\n"
+        "    node = " + tf("['--frame-id', LaunchConfiguration('parent', default='odom'), "
+                           "'--child-frame-id', child]", ", name='t'") + "\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('child', default_value='base_link'),\n"
+        "        node,\n"
+        "    ])\n"
+    )}
+    (transform,) = load(files, "a.launch.py").transforms
+    assert (transform.parent, transform.child) == ("odom", "base_link")
+    (transform,) = load(files, "a.launch.py", args={"child": "body"}).transforms
+    assert transform.child == "body"
+
+
+def test_lists_loops_helpers_and_strings(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    ld = LaunchDescription()\n"
+        "    for side, y in (('left', 0.3), ('right', -0.3)):\n"
+        "        ld.add_action(wheel(side, y))\n"
+        "    extra = [wheel(s, 0.0) for s in ['front']]\n"
+        "    extra += [" + tf("'0 0 0 0 0 0 base_link mast'.split()", ", name='mast_tf'") + "]\n"
+        "    for action in extra:\n"
+        "        ld.add_action(action)\n"
+        "    return ld\n"
+        "\n"
+        "def wheel(side, y):\n"
+        "    frame = f'wheel_{side}_link'\n"
+        "    return " + tf("['--y', str(y), '--frame-id', 'base_link', '--child-frame-id', frame]",
+                          ", name='%s_tf' % side") + "\n"
+    )}, "a.launch.py")
+    nodes = by_name(tree)
+    assert set(nodes) == {"left_tf", "right_tf", "front_tf", "mast_tf"}
+    assert (nodes["right_tf"].child, nodes["right_tf"].translation) == (
+        "wheel_right_link", (0.0, -0.3, 0.0),
+    )
+    assert nodes["mast_tf"].child == "mast"
+    assert [i.kind for i in nodes["mast_tf"].arg_issues] == ["positional"]
+
+
+def test_arguments_in_one_string(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([" + tf("['0 0 0.2 0 0 0 base_link laser']") + "])\n"
+    )}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert [i.kind for i in transform.arg_issues] == ["single_string", "positional"]
+    assert (transform.parent, transform.child) == ("base_link", "laser")
+    assert transform.args == "'0 0 0.2 0 0 0 base_link laser'"
+
+
+def test_arguments_given_as_a_string_instead_of_a_list(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([" + tf("'0 0 0 0 0 0 a b'") + "])\n"
+    )}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert transform.form == "unknown" and "arity" in transform.unresolved
+    assert ("roslaunch_error", HEADER_LINES + 2) in rules(tree)
+
+
+def test_a_number_in_the_arguments_is_a_launch_error(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([" + tf("['--z', 0.2, '--frame-id', 'a', "
+                                              "'--child-frame-id', 'b']") + "])\n"
+    )}, "a.launch.py")
+    assert tree.transforms[0].translation == (0.0, 0.0, 0.2)
+    assert rules(tree) == [("roslaunch_error", HEADER_LINES + 2)]
+
+
+def test_unknown_values_are_unresolved_with_their_line(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    from my_robot.frames import laser_frame\n"
+        "    args = ['--frame-id', 'base', '--child-frame-id', laser_frame()]\n"
+        "    return LaunchDescription([\n"
+        "        " + tf("args", ", name='a'") + ",\n"
+        "        " + tf("compute_arguments()", ", name='b'") + ",\n"
+        "    ])\n"
+    )}, "a.launch.py")
+    nodes = by_name(tree)
+    assert nodes["a"].unresolved == ("child",)
+    assert nodes["a"].parent == "base"
+    (reason,) = nodes["a"].unresolved_reasons
+    assert reason.startswith(f"laser_frame(): line {HEADER_LINES + 3}:")
+    assert set(nodes["b"].unresolved) == {"translation", "rotation", "parent", "child", "arity"}
+    assert f"line {HEADER_LINES + 6}: compute_arguments()" in nodes["b"].unresolved_reasons[0]
+    assert [r for r, _ in rules(tree)] == ["unresolved", "unresolved"]
+
+
+def test_an_if_on_an_unknown_value_gives_exclusive_conditions(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    nodes = []\n"
+        "    if os.environ.get('USE_LIDAR') == '1':\n"
+        "        nodes.append(" + tf("['--frame-id', 'a', '--child-frame-id', 'lidar']",
+                                     ", name='x'") + ")\n"
+        "    else:\n"
+        "        nodes.append(" + tf("['--frame-id', 'a', '--child-frame-id', 'camera']",
+                                     ", name='x'") + ")\n"
+        "    return LaunchDescription(nodes)\n"
+    )}, "a.launch.py")
+    first, second = tree.transforms
+    assert (first.child, second.child) == ("lidar", "camera")
+    assert first.condition.excludes(second.condition)
+    assert "os.environ.get('USE_LIDAR') == '1'" in first.condition.describe()
+
+
+def test_a_static_if_is_decided(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    simulate = False\n"
+        "    nodes = [" + tf("['--frame-id', 'a', '--child-frame-id', 'b']", ", name='t'") + "]\n"
+        "    if simulate:\n"
+        "        nodes = []\n"
+        "    return LaunchDescription(nodes)\n"
+    )}, "a.launch.py")
+    assert [t.name for t in tree.transforms] == ["t"]
+    assert tree.transforms[0].condition.always
+
+
+def test_conditions_and_groups(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('mode', default_value='sim'),\n"
+        "        GroupAction([\n"
+        "            PushRosNamespace('r1'),\n"
+        "            " + tf("['--frame-id', 'a', '--child-frame-id', 'b']",
+                            ", name='in_group'") + ",\n"
+        "        ]),\n"
+        "        " + tf("['--frame-id', 'a', '--child-frame-id', 'c']",
+                        ", name='sim', condition=LaunchConfigurationEquals('mode', 'sim')") + ",\n"
+        "        " + tf("['--frame-id', 'a', '--child-frame-id', 'd']",
+                        ", name='real', condition=UnlessCondition(LaunchConfiguration("
+                        "'real'))") + ",\n"
+        "        " + tf("['--frame-id', 'a', '--child-frame-id', 'e']",
+                        ", name='not_real', condition=IfCondition(LaunchConfiguration("
+                        "'real'))") + ",\n"
+        "    ])\n"
+    )}, "a.launch.py")
+    nodes = by_name(tree)
+    assert nodes["in_group"].namespace == "/r1"
+    assert nodes["sim"].namespace == "/" and nodes["sim"].condition.always
+    assert nodes["real"].condition.excludes(nodes["not_real"].condition)
+
+
+def test_includes_of_every_form(load: Load) -> None:
+    package = '<package format="3"><name>robot</name></package>'
+    tree = load({
+        "ws/robot/package.xml": package,
+        "ws/robot/launch/b.launch.xml": (
+            '<launch><arg name="frame"/><node pkg="tf2_ros" exec="static_transform_publisher" '
+            'name="from_xml" args="--frame-id base --child-frame-id $(var frame)"/></launch>'
+        ),
+        "ws/robot/launch/c.launch.py": launch_file(
+            "    return LaunchDescription([" + tf(
+                "['--frame-id', 'base', '--child-frame-id', LaunchConfiguration('frame')]",
+                ", name='from_py'") + "])\n"
+        ),
+        "a.launch.py": launch_file(
+            "    share = get_package_share_directory('robot')\n"
+            "    return LaunchDescription([\n"
+            "        IncludeLaunchDescription(\n"
+            "            PathJoinSubstitution([FindPackageShare('robot'), 'launch', "
+            "'b.launch.xml']),\n"
+            "            launch_arguments={'frame': 'gps'}.items()),\n"
+            "        IncludeLaunchDescription(PythonLaunchDescriptionSource(\n"
+            "            os.path.join(share, 'launch', 'c.launch.py')),\n"
+            "            launch_arguments=[('frame', 'imu')]),\n"
+            "        IncludeLaunchDescription(PythonLaunchDescriptionSource(\n"
+            "            [ThisLaunchFileDir(), '/missing.launch.py'])),\n"
+            "    ])\n"
+        ),
+    }, "a.launch.py", packages=("ws",))
+    nodes = by_name(tree)
+    assert (nodes["from_xml"].child, nodes["from_xml"].launch_format) == ("gps", "ros2-xml")
+    assert (nodes["from_py"].child, nodes["from_py"].path) == ("imu",
+                                                                "ws/robot/launch/c.launch.py")
+    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.diagnostics,
+                                                                strict=True)] == [
+        ("roslaunch_error", True),
+    ]
+
+
+def test_opaque_function_reads_configurations_when_it_runs(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('robot', default_value='r2'),\n"
+        "        OpaqueFunction(function=setup),\n"
+        "    ])\n"
+        "\n"
+        "def setup(context, *args, **kwargs):\n"
+        "    robot = LaunchConfiguration('robot').perform(context)\n"
+        "    camera = context.launch_configurations.get('camera', 'cam')\n"
+        "    if robot == 'r2':\n"
+        "        return [" + tf("['--frame-id', robot + '_base', '--child-frame-id', camera]",
+                                ", name='t'") + "]\n"
+        "    return []\n"
+    )}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert (transform.parent, transform.child) == ("r2_base", "cam")
+    assert transform.condition.always
+
+
+def test_composable_nodes(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    tool = ComposableNode(package='tf2_ros',\n"
+        "                          plugin='tf2_ros::StaticTransformBroadcasterNode',\n"
+        "                          name='tool_tf',\n"
+        "                          parameters=[{'frame_id': 'flange', 'child_frame_id': 'tool',\n"
+        "                                       'translation': {'z': 0.1}, 'rotation.w': 1}])\n"
+        "    bare = ComposableNode(package='tf2_ros',\n"
+        "                          plugin='tf2_ros::StaticTransformBroadcasterNode')\n"
+        "    return LaunchDescription([\n"
+        "        ComposableNodeContainer(name='c', namespace='', package='rclcpp_components',\n"
+        "            executable='component_container', composable_node_descriptions=[tool]),\n"
+        "        LoadComposableNodes(target_container='c', composable_node_descriptions=[bare]),\n"
+        "    ])\n"
+    )}, "a.launch.py")
+    tool, bare = tree.transforms
+    assert (tool.line, tool.parent, tool.child, tool.translation) == (
+        HEADER_LINES + 2, "flange", "tool", (0.0, 0.0, 0.1),
+    )
+    assert tool.arg_issues == ()
+    assert (bare.name, bare.parent_written, bare.child_written) == (None, "/frame", "/child")
+    assert [i.kind for i in bare.arg_issues] == ["default_frames"]
+
+
+def test_event_handlers_and_timers(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    first = Node(package='demo_nodes_cpp', executable='talker')\n"
+        "    return LaunchDescription([\n"
+        "        first,\n"
+        "        RegisterEventHandler(OnProcessExit(target_action=first, on_exit=[\n"
+        "            " + tf("['--frame-id', 'a', '--child-frame-id', 'b']", ", name='later'") + "\n"
+        "        ])),\n"
+        "        TimerAction(period=2.0, actions=[\n"
+        "            " + tf("['--frame-id', 'a', '--child-frame-id', 'c']", ", name='timed'") + "\n"
+        "        ]),\n"
+        "    ])\n"
+    )}, "a.launch.py")
+    nodes = by_name(tree)
+    assert not nodes["later"].condition.always
+    assert nodes["timed"].condition.always
+
+
+def test_old_keyword_names(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([Node(package='tf2_ros', "
+        "node_executable='static_transform_publisher', node_name='old', "
+        "arguments=['--frame-id', 'a', '--child-frame-id', 'b'])])\n"
+    )}, "a.launch.py")
+    assert [t.name for t in tree.transforms] == ["old"]
+
+
+def test_nothing_in_the_file_runs(load: Load, tmp_path: Path) -> None:
+    marker = tmp_path / "ran"
+    tree = load({"a.launch.py": (
+        "import os\n"
+        "import subprocess\n"
+        f"open({str(marker)!r}, 'w').write('module')\n"
+        f"os.system('touch {marker}')\n"
+        "def generate_launch_description():\n"
+        f"    subprocess.run(['touch', {str(marker)!r}])\n"
+        f"    __import__('os').system('touch {marker}')\n"
+        "    while True:\n"
+        "        pass\n"
+    )}, "a.launch.py")
+    assert not marker.exists()
+    assert tree.status is FileStatus.OK
+
+
+def test_work_is_bounded(load: Load) -> None:
+    tree = load({"a.launch.py": (
+        "def generate_launch_description():\n"
+        "    nodes = []\n"
+        "    for i in range(10**9):\n"
+        "        nodes.append(i)\n"
+        "    return recurse(0)\n"
+        "def recurse(n):\n"
+        "    return recurse(n + 1)\n"
+    )}, "a.launch.py")
+    assert tree.transforms == ()
+    assert [r for r, _ in rules(tree)] == ["unresolved"]
+    deep = "x = " + "(" * 5000 + "1" + ")" * 5000 + "\n"
+    tree = load({"b.launch.py": deep}, "b.launch.py")
+    assert tree.status is FileStatus.PARSE_ERROR
+
+
+def test_loops_over_unknown_values_that_launch_nodes_are_reported(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    ld = LaunchDescription()\n"
+        "    for frame in load_frames():\n"
+        "        ld.add_action(" + tf("['--frame-id', 'a', '--child-frame-id', frame]") + ")\n"
+        "    return ld\n"
+    )}, "a.launch.py")
+    assert tree.transforms == ()
+    assert rules(tree) == [("unresolved", HEADER_LINES + 3)]
+
+
+def test_syntax_errors_and_missing_entry_point(load: Load) -> None:
+    tree = load({"a.launch.py": "def generate_launch_description(:\n"}, "a.launch.py")
+    assert tree.status is FileStatus.PARSE_ERROR and rules(tree) == [("parse_error", 1)]
+    tree = load({"b.launch.py": "x = 1\n"}, "b.launch.py")
+    assert rules(tree) == [("roslaunch_error", 1)]
+
+
+def test_comments_and_element_lines(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([\n"
+        "        # launch-linter: disable=ros2_positional_args\n"
+        "        " + tf("['0', '0', '0', '0', '0', '0', 'a', 'b']") + ",\n"
+        "    ])\n"
+    )}, "a.launch.py")
+    assert (HEADER_LINES + 3, " launch-linter: disable=ros2_positional_args") in [
+        (c.line, c.text) for c in tree.comments
+    ]
+    assert ("a.launch.py", HEADER_LINES + 4) in tree.element_lines
