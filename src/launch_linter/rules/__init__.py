@@ -6,6 +6,7 @@ from launch_linter.rules import (
     bad_arity,
     bad_number,
     bad_quaternion,
+    component_default_frames,
     dup_name,
     dup_sig,
     int_suffix,
@@ -16,7 +17,10 @@ from launch_linter.rules import (
     name_null_rot,
     ned_transform,
     parse_error,
+    py_arguments_single_string,
     reversed_name,
+    ros2_bad_flag,
+    ros2_positional_args,
     roslaunch_error,
     rot_degrees,
     self_transform,
@@ -55,6 +59,10 @@ RULE_MODULES = (
     roslaunch_error,
     unresolved,
     unused_suppression,
+    ros2_positional_args,
+    ros2_bad_flag,
+    py_arguments_single_string,
+    component_default_frames,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

@@ -1,0 +1,48 @@
+"""A ROS 2 static transform written with the deprecated positional arguments.
+
+## What it does
+Reports a ROS 2 `static_transform_publisher` (in a ROS 2 XML, YAML or Python launch file)
+whose arguments are the old positional form, `x y z yaw pitch roll parent child` (8) or
+`x y z qx qy qz qw parent child` (9), and gives the same transform written with flags
+(`--x --y --z`, `--yaw --pitch --roll` or `--qx --qy --qz --qw`, `--frame-id`,
+`--child-frame-id`).
+
+## Why is this bad?
+Since Galactic the program warns "Old-style arguments are deprecated" for this form, and
+recent distributions have removed it (ros2/geometry2#790): there the node stops with
+"Frame id must not be empty", and the transform is never published. The flags also say
+which number is which, where the positional order (yaw before roll, unlike URDF's `rpy`)
+is easy to get wrong.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" exec="static_transform_publisher" name="laser_tf"
+        args="0 0 0.2 0 0 0 base_link laser"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" exec="static_transform_publisher" name="laser_tf"
+        args="--z 0.2 --frame-id base_link --child-frame-id laser"/>
+</launch>
+```
+"""
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext, diagnostic_at
+
+ID = "ros2_positional_args"
+CATEGORY = Category.TF
+SEVERITY = Severity.WARNING
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for transform in context.tree.transforms:
+        for issue in transform.arg_issues:
+            if issue.kind == "positional":
+                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)

@@ -1,0 +1,51 @@
+"""ros2_positional_args: the deprecated old-style arguments in ROS 2 launch files."""
+
+from __future__ import annotations
+
+from conftest import Lint, LintDiagnostics, run_rule
+
+TF = 'pkg="tf2_ros" exec="static_transform_publisher"'
+
+
+def test_positional_ypr_and_quaternion(lint: Lint) -> None:
+    xml = (
+        "<launch>\n"
+        f'  <node {TF} name="a" args="0 0 0.2 0 0 0 base_link laser"/>\n'
+        f'  <node {TF} name="b" args="0 0 0 0 0 0 1 map odom"/>\n'
+        "</launch>"
+    )
+    assert lint(xml, "ros2_positional_args") == [
+        ("ros2_positional_args", 2), ("ros2_positional_args", 3),
+    ]
+
+
+def test_the_message_gives_the_flags(lint_diagnostics: LintDiagnostics) -> None:
+    xml = f'<launch><node {TF} name="a" args="0.1 0 0.2 1.57 0 0 base_link laser"/></launch>'
+    (diagnostic,) = lint_diagnostics(xml, "ros2_positional_args")
+    assert diagnostic.severity.value == "warning"
+    assert diagnostic.message.endswith(
+        "--x 0.1 --y 0 --z 0.2 --yaw 1.57 --pitch 0 --roll 0 --frame-id base_link "
+        "--child-frame-id laser"
+    )
+
+
+def test_flags_and_ros1_files_are_fine(lint: Lint) -> None:
+    ros2 = f'<launch><node {TF} name="a" args="--z 0.2 --frame-id b --child-frame-id l"/></launch>'
+    ros1 = ('<launch><node pkg="tf2_ros" type="static_transform_publisher" name="a" '
+            'args="0 0 0.2 0 0 0 base_link laser"/></launch>')
+    assert lint(ros2, "ros2_positional_args") == []
+    assert lint(ros1, "ros2_positional_args") == []
+
+
+def test_python_launch_file() -> None:
+    text = (
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='tf2_ros', executable='static_transform_publisher',\n"
+        "             arguments=['0', '0', '0', '0', '0', '0', 'map', 'odom']),\n"
+        "    ])\n"
+    )
+    diagnostics = run_rule(text, "ros2_positional_args", path="tf.launch.py")
+    assert [(d.rule, d.line, d.column) for d in diagnostics] == [("ros2_positional_args", 5, 9)]
