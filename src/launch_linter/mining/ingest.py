@@ -88,8 +88,7 @@ def read_corpus(root: str, mature: Sequence[str] = ()) -> Corpus:
     return _read_folders(root, mature)
 
 
-def _inside(root: str, path: str) -> bool:
-    real_root = os.path.realpath(root)
+def _inside(real_root: str, path: str) -> bool:
     return os.path.commonpath([real_root, os.path.realpath(path)]) == real_root
 
 
@@ -284,8 +283,9 @@ def ingest(
     parse_jobs: list[ParseJob] = []
     seen: list[tuple[FileRef, str]] = []
     unreadable: list[tuple[FileRef, str]] = []
+    real_root = os.path.realpath(corpus.root)
     for entry in corpus.entries:
-        if not _inside(corpus.root, entry.source):
+        if not _inside(real_root, entry.source):
             unreadable.append((entry.ref, "outside the corpus folder"))
             continue
         try:
