@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from conftest import Lint, LintDiagnostics
+from conftest import Lint, LintDiagnostics, run_rule
 
 TF = 'pkg="tf2_ros" exec="static_transform_publisher"'
 
@@ -51,6 +51,4 @@ def test_an_unknown_argument_list_is_not_judged(lint: Lint) -> None:
         "    return LaunchDescription([Node(package='tf2_ros',\n"
         "        executable='static_transform_publisher', arguments=tf_arguments())])\n"
     )
-    from conftest import run_rule
-
     assert run_rule(text, "ros2_bad_flag", path="tf.launch.py") == ()

@@ -3,19 +3,15 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from ros2_helpers import Load
 
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.packages import PackageIndex
-
-FIXTURES = Path(__file__).resolve().parent / "fixtures"
-
-Load = Callable[..., LaunchTree]
 
 
 @pytest.fixture

@@ -2,8 +2,16 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from pathlib import Path
+
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
+
+FIXTURES = Path(__file__).resolve().parent / "fixtures"
+
+Load = Callable[..., LaunchTree]
+"""The ``load`` fixture: ``load({"a.launch.xml": text, ...}, "a.launch.xml", ...)``."""
 
 
 def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from conftest import Load
-from ros2_helpers import by_name, rules
+from ros2_helpers import Load, by_name, rules
 
 from launch_linter.model.launch import FileStatus
 

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from conftest import Load
-from ros2_helpers import by_name, rules
+from ros2_helpers import FIXTURES, Load, by_name, rules
 
 from launch_linter.model.launch import FileStatus
 
@@ -259,8 +258,6 @@ def test_comments_and_element_lines_for_suppressions(load: Load) -> None:
 
 
 def test_the_fixture_tree_in_every_format(load: Load) -> None:
-    from conftest import FIXTURES
-
     from launch_linter.frontends.dispatch import load_tree
     from launch_linter.frontends.ros1 import LoadOptions
     from launch_linter.resolve.packages import PackageIndex

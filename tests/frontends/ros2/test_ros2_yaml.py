@@ -5,8 +5,7 @@ from __future__ import annotations
 import sys
 
 import pytest
-from conftest import Load
-from ros2_helpers import by_name, rules
+from ros2_helpers import Load, by_name, rules
 
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.launch import FileStatus
