@@ -248,7 +248,8 @@ class Interpreter:
     steps: int = 0
     depth: int = 0
     branches: list[Predicate] = field(default_factory=list)
-    context: ContextVal | None = None
+    call_sites: list[ast.AST] = field(default_factory=list)
+    """Calls of the file's own functions being run, outermost first."""
 
     # -- helpers -------------------------------------------------------------------------
     def step(self) -> None:
@@ -265,7 +266,10 @@ class Interpreter:
         return Unknown(reason, self.segment(node), getattr(node, "lineno", 1))
 
     def where(self, node: ast.AST) -> Where:
-        return Where(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
+        """Where an action is reported: inside a helper function of the file, at the call
+        of that helper, so that each call is its own place (to point at and suppress)."""
+        site = self.call_sites[0] if self.call_sites else node
+        return Where(self.path, getattr(site, "lineno", 1), getattr(site, "col_offset", 0) + 1)
 
     def problem(self, rule: str, node: ast.AST, message: str) -> None:
         where = self.where(node)
@@ -743,7 +747,11 @@ class Interpreter:
         if isinstance(function, Unknown):
             return self.unknown(node, f"calls {function.text}, which is unknown")
         if isinstance(function, FuncVal):
-            return self.call_function(function, args, kwargs, node)
+            self.call_sites.append(node)
+            try:
+                return self.call_function(function, args, kwargs, node)
+            finally:
+                self.call_sites.pop()
         if isinstance(function, BoundMethod):
             return self.method(function, args, kwargs, node)
         if isinstance(function, Builtin):

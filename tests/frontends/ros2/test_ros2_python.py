@@ -6,6 +6,7 @@ from pathlib import Path
 
 from ros2_helpers import Load, by_name, rules
 
+from launch_linter import LintOptions, lint_paths
 from launch_linter.model.launch import FileStatus
 
 HEADER = """\
@@ -370,3 +371,22 @@ def test_comments_and_element_lines(load: Load) -> None:
         (c.line, c.text) for c in tree.comments
     ]
     assert ("a.launch.py", HEADER_LINES + 4) in tree.element_lines
+
+
+def test_a_helper_call_is_where_its_transform_is(load: Load, tmp_path: Path) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    return LaunchDescription([\n"
+        "        laser('front_tf'),\n"
+        "        laser('rear_tf'),\n"
+        "    ])\n"
+        "\n"
+        "def laser(name):\n"
+        "    return " + tf("['--frame-id', 'base_link', '--child-frame-id', 'laser']",
+                          ", name=name") + "\n"
+    )}, "a.launch.py")
+    assert [(t.name, t.line, t.column) for t in tree.transforms] == [
+        ("front_tf", HEADER_LINES + 3, 9), ("rear_tf", HEADER_LINES + 4, 9),
+    ]
+    options = LintOptions(package_paths=(), select=frozenset({"dup_sig"}))
+    result = lint_paths([str(tmp_path / "a.launch.py")], options)
+    assert [d.line for d in result.diagnostics] == [HEADER_LINES + 4]
