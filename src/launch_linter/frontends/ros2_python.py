@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import ast
 import os
+import re
 import string
 import tokenize
 from collections.abc import Callable, Sequence
@@ -184,7 +185,7 @@ class ConfigsVal:
 
 
 BUILTINS = ("str", "int", "float", "bool", "len", "list", "tuple", "dict", "range", "print",
-            "isinstance", "sorted", "enumerate", "zip", "min", "max", "abs", "round")
+            "sorted", "enumerate", "zip", "min", "max", "abs", "round")
 
 
 class Env:
@@ -250,6 +251,7 @@ class Interpreter:
     branches: list[Predicate] = field(default_factory=list)
     call_sites: list[ast.AST] = field(default_factory=list)
     """Calls of the file's own functions being run, outermost first."""
+    lines: list[str] = field(default_factory=list)
 
     # -- helpers -------------------------------------------------------------------------
     def step(self) -> None:
@@ -258,9 +260,28 @@ class Interpreter:
             raise _OutOfSteps
 
     def segment(self, node: ast.AST) -> str:
-        text = ast.get_source_segment(self.source, node) or type(node).__name__
-        text = " ".join(text.split())
+        """The first characters of the source text of ``node``, on one line."""
+        if not self.lines:
+            self.lines = self.source.splitlines(keepends=True)
+        first = getattr(node, "lineno", 0) - 1
+        last = getattr(node, "end_lineno", None)
+        if not 0 <= first < len(self.lines) or last is None:
+            return type(node).__name__
+        # Columns are UTF-8 byte offsets; three lines are plenty for a short excerpt.
+        chunk = [line.encode("utf-8") for line in self.lines[first:min(last, first + 3)]]
+        if last - 1 < first + 3:
+            chunk[-1] = chunk[-1][:getattr(node, "end_col_offset", None)]
+        chunk[0] = chunk[0][getattr(node, "col_offset", 0):]
+        text = " ".join(b"".join(chunk).decode("utf-8", "replace").split())
         return text if len(text) <= 120 else text[:117] + "..."
+
+    def text_value(self, subs: Subs, node: ast.AST) -> object:
+        """Text when every part is known, else a lazy string; refused when too long."""
+        if sum(len(sub.text) for sub in subs if isinstance(sub, Text)) > MAX_TEXT:
+            return self.unknown(node, f"text longer than {MAX_TEXT} characters")
+        if all(isinstance(sub, Text) for sub in subs):
+            return "".join(sub.text for sub in subs if isinstance(sub, Text))
+        return LazyStr(subs)
 
     def unknown(self, node: ast.AST, reason: str) -> Unknown:
         return Unknown(reason, self.segment(node), getattr(node, "lineno", 1))
@@ -574,7 +595,8 @@ class Interpreter:
             if isinstance(value, ast.Constant) and isinstance(value.value, str):
                 parts.append(Text(value.value))
                 continue
-            assert isinstance(value, ast.FormattedValue)
+            if not isinstance(value, ast.FormattedValue):
+                return self.unknown(value, "unexpected part of an f-string")
             if value.format_spec is not None or value.conversion not in (-1, 115):
                 return self.unknown(value, "formatted values are not interpreted")
             inner = self.eval(value.value, env)
@@ -586,7 +608,7 @@ class Interpreter:
                 return inner
             else:
                 return self.unknown(value, "a launch object cannot be put into a string")
-        return _text_or_lazy(tuple(parts))
+        return self.text_value(tuple(parts), node)
 
     def binary(self, op: ast.operator, left: object, right: object, node: ast.AST) -> object:
         if isinstance(left, Unknown):
@@ -595,7 +617,7 @@ class Interpreter:
             return right
         if isinstance(op, ast.Add):
             if isinstance(left, LazyStr | str) and isinstance(right, LazyStr | str):
-                return _text_or_lazy((*_as_subs(left), *_as_subs(right)))
+                return self.text_value((*_as_subs(left), *_as_subs(right)), node)
             if isinstance(left, list) and isinstance(right, list):
                 if len(left) + len(right) > MAX_ITEMS:
                     return self.unknown(node, f"more than {MAX_ITEMS} items")
@@ -611,7 +633,9 @@ class Interpreter:
                                  self.segment(node)),), path=True)
         if isinstance(op, ast.Mod) and isinstance(left, str):
             args = right if isinstance(right, tuple) else (right,)
-            if all(isinstance(a, str | int | float | bool) for a in args) and "*" not in left:
+            if all(isinstance(a, str | int | float | bool) for a in args) and (
+                "%" not in _SAFE_PERCENT.sub("", left)
+            ):
                 try:
                     formatted = left % args
                 except (TypeError, ValueError, OverflowError):
@@ -916,7 +940,7 @@ class Interpreter:
                 if position:
                     parts.extend(literal(target))
                 parts.extend(_as_subs(item))
-            return _text_or_lazy(tuple(parts))
+            return self.text_value(tuple(parts), node)
         if name == "format":
             return self.format(target, args, node)
         if not all(isinstance(a, str | int) for a in args):
@@ -926,6 +950,10 @@ class Interpreter:
             "rstrip": str.rstrip, "lower": str.lower, "upper": str.upper,
             "replace": str.replace, "startswith": str.startswith, "endswith": str.endswith,
         }
+        if name == "replace" and len(args) >= 2 and isinstance(args[1], str) and (
+            len(target) * (len(args[1]) + 1) > MAX_TEXT
+        ):
+            return self.unknown(node, "str.replace() could make too long a text")
         if name in simple:
             try:
                 return simple[name](target, *args)
@@ -959,7 +987,7 @@ class Interpreter:
                 parts.extend(literal(str(value)))
             else:
                 return self.unknown(node, "str.format() of an unknown value")
-        return _text_or_lazy(tuple(parts))
+        return self.text_value(tuple(parts), node)
 
     # -- the launch library ---------------------------------------------------------------
     def library(self, module: ModuleVal, args: list[object], kwargs: dict[str, object],
@@ -1395,11 +1423,8 @@ def _as_subs(value: str | LazyStr) -> Subs:
     return literal(value) if isinstance(value, str) else value.subs
 
 
-def _text_or_lazy(subs: Subs) -> object:
-    if all(isinstance(sub, Text) for sub in subs):
-        text = "".join(sub.text for sub in subs if isinstance(sub, Text))
-        return text[:MAX_TEXT]
-    return LazyStr(subs)
+_SAFE_PERCENT = re.compile(r"%(?:[-+ #0]*\d{0,3}(?:\.\d{0,3})?[sdifgeEr]|%)")
+"""``%`` conversions with small widths: wider ones could build huge strings."""
 
 
 def _plain(value: object) -> bool:

@@ -390,3 +390,19 @@ def test_a_helper_call_is_where_its_transform_is(load: Load, tmp_path: Path) -> 
     options = LintOptions(package_paths=(), select=frozenset({"dup_sig"}))
     result = lint_paths([str(tmp_path / "a.launch.py")], options)
     assert [d.line for d in result.diagnostics] == [HEADER_LINES + 4]
+
+
+def test_text_bombs_are_refused(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    a = 'x' * 90000\n"
+        "    b = a.replace('x', a)\n"
+        "    c = '%999999999d' % 1\n"
+        "    d = f'{a}{a}{a}'\n"
+        "    e = ''.join([a, a, a])\n"
+        "    f = '{}{}{}'.format(a, a, a)\n"
+        "    return LaunchDescription([" + tf("['--frame-id', 'base', '--child-frame-id', "
+                                              "b + c + d + e + f]") + "])\n"
+    )}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert transform.unresolved == ("child",)
+    assert "too long" in transform.unresolved_reasons[0]
