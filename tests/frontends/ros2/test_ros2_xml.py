@@ -279,3 +279,18 @@ def test_the_fixture_tree_in_every_format(load: Load) -> None:
     }
     assert {t.launch_format for t in tree.transforms} == {"ros2-xml", "ros2-yaml", "ros2-python"}
     assert tree.diagnostics == ()
+
+
+def test_set_env_and_forwarding(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <set_env name="ROBOT" value="r2"/>\n'
+        '  <let name="parent" value="base"/>\n'
+        '  <group forwarding="false">\n'
+        f'    <node {TF} name="a" args="--frame-id $(var parent) --child-frame-id $(env ROBOT)"/>\n'
+        '  </group>\n'
+        '  <unset_env name="ROBOT"/>\n'
+        f'  <node {TF} name="b" args="--frame-id $(var parent) --child-frame-id $(env ROBOT x)"/>'
+    )}, "a.launch.xml", env={"ROBOT": "r1"})
+    nodes = by_name(tree)
+    assert (nodes["a"].child, nodes["a"].unresolved) == ("r2", ("parent",))
+    assert (nodes["b"].parent, nodes["b"].child) == ("base", "x")
