@@ -30,7 +30,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 COMPAT_MODULE = "_launch_linter_compat"
-ADDED = "  # added by launch-linter generate, for Python < 3.11"
+ADDED = "  # launch-linter generate: for Python < 3.11"
 
 COMPAT_FROM = {
     ("dataclasses", "dataclass"),
@@ -110,6 +110,29 @@ NOT_STANDALONE = {
 }
 
 
+@dataclass(frozen=True, slots=True)
+class Types:
+    """What the embedded modules define that their run-time type expressions name."""
+
+    names: frozenset[str] = frozenset()
+    """Classes and type aliases, by bare name."""
+    unions: frozenset[str] = frozenset()
+    """Type aliases that are unions (``A | B``), by qualified name (``pkg.module.Name``):
+    ``isinstance(x, Name)`` becomes ``isinstance(x, _typing.get_args(Name))``, since
+    before Python 3.10 ``isinstance`` does not take a ``typing.Union``."""
+
+    def __or__(self, other: Types) -> Types:
+        return Types(self.names | other.names, self.unions | other.unions)
+
+
+def module_name(path: str) -> tuple[str, bool]:
+    """``pkg/sub/mod.py`` to (``pkg.sub.mod``, is a package)."""
+    parts = path.removesuffix(".py").split("/")
+    if parts[-1] == "__init__":
+        return ".".join(parts[:-1]), True
+    return ".".join(parts), False
+
+
 class BackportError(ValueError):
     """The source cannot be rewritten; ``problems`` are ``path:line: message`` texts."""
 
@@ -182,22 +205,32 @@ def _runtime_nodes(tree: ast.Module) -> Iterator[ast.AST]:
 class _Names:
     """What names mean in one module, as far as type expressions are concerned."""
 
-    def __init__(self, tree: ast.Module, type_names: frozenset[str]) -> None:
-        self.type_names = set(type_names) | BUILTIN_TYPES
+    def __init__(self, tree: ast.Module, types: Types, path: str = "") -> None:
+        self.type_names = set(types.names) | BUILTIN_TYPES | class_names_of(tree)
         self.abc: dict[str, str] = {}
         self.other: dict[str, str] = {}
+        self.unions: set[str] = set()
+        """Local names of union aliases (defined here or imported)."""
+        module, is_package = module_name(path)
         for node in ast.walk(tree):
-            if isinstance(node, ast.ImportFrom) and node.module:
-                for alias in node.names:
-                    local = alias.asname or alias.name
-                    if node.module == "collections.abc" and (
-                        alias.name in ABC_GENERICS or alias.name in ABC_RENAMED
-                    ):
-                        self.abc[local] = ABC_RENAMED.get(alias.name, alias.name)
-                    if (node.module, alias.name) in OTHER_GENERICS:
-                        self.other[local] = OTHER_GENERICS[(node.module, alias.name)]
-                    if alias.name[:1].isupper():
-                        self.type_names.add(local)
+            if not isinstance(node, ast.ImportFrom):
+                continue
+            source = _absolute(node, module, is_package)
+            for alias in node.names:
+                local = alias.asname or alias.name
+                if f"{source}.{alias.name}" in types.unions:
+                    self.unions.add(local)
+                if source == "collections.abc" and (
+                    alias.name in ABC_GENERICS or alias.name in ABC_RENAMED
+                ):
+                    self.abc[local] = ABC_RENAMED.get(alias.name, alias.name)
+                if (source, alias.name) in OTHER_GENERICS:
+                    self.other[local] = OTHER_GENERICS[(source, alias.name)]
+                if alias.name[:1].isupper():
+                    self.type_names.add(local)
+        self.unions |= {
+            n for n in union_alias_names(tree, self) if f"{module}.{n}" in types.unions
+        }
 
     def generic(self, node: ast.expr) -> str | None:
         """The ``typing`` name for a subscripted generic that Python 3.8 cannot subscript."""
@@ -236,6 +269,36 @@ class _Names:
             if isinstance(sub, ast.Subscript) and self.generic(sub.value) is not None:
                 return True
         return False
+
+
+def _absolute(node: ast.ImportFrom, module: str, is_package: bool) -> str:
+    if not node.level:
+        return node.module or ""
+    parts = module.split(".") if is_package else module.split(".")[:-1]
+    anchor = ".".join(parts[: len(parts) - node.level + 1])
+    return f"{anchor}.{node.module}" if node.module else anchor
+
+
+def _is_union(node: ast.expr, names: _Names) -> bool:
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.BitOr):
+        return names.type_like(node)
+    if isinstance(node, ast.Subscript):
+        base = node.value
+        name = base.attr if isinstance(base, ast.Attribute) else (
+            base.id if isinstance(base, ast.Name) else ""
+        )
+        return name in ("Union", "Optional")
+    return False
+
+
+def union_alias_names(tree: ast.Module, names: _Names) -> set[str]:
+    """Module-level names bound to a union of types."""
+    found = set()
+    for statement in tree.body:
+        name, value = _assigned_name(statement), _assigned(statement)
+        if name is not None and value is not None and _is_union(value, names):
+            found.add(name)
+    return found
 
 
 def _union_members(node: ast.expr) -> list[ast.expr]:
@@ -320,7 +383,7 @@ def _assigned_name(statement: ast.stmt) -> str | None:
 def type_alias_names(source: str) -> set[str]:
     """Module-level names bound to a type expression (they are types in other modules too)."""
     tree = ast.parse(source)
-    names = _Names(tree, frozenset())
+    names = _Names(tree, Types(frozenset(class_names(source))))
     found: set[str] = set()
     changed = True
     while changed:
@@ -340,8 +403,33 @@ def type_alias_names(source: str) -> set[str]:
     return found
 
 
+def class_names_of(tree: ast.Module) -> set[str]:
+    return {n.name for n in ast.walk(tree) if isinstance(n, ast.ClassDef)}
+
+
 def class_names(source: str) -> set[str]:
-    return {n.name for n in ast.walk(ast.parse(source)) if isinstance(n, ast.ClassDef)}
+    return class_names_of(ast.parse(source))
+
+
+def module_types(source: str, path: str) -> Types:
+    """What one module contributes to :class:`Types`."""
+    tree = ast.parse(source)
+    names = class_names_of(tree) | type_alias_names(source)
+    module, _ = module_name(path)
+    unions = union_alias_names(tree, _Names(tree, Types(frozenset(names)), path))
+    return Types(frozenset(names), frozenset(f"{module}.{n}" for n in unions))
+
+
+def _same_lines(positions: _Positions, start: int, end: int, text: str) -> _Edit:
+    """An edit whose text spans as many lines as what it replaces (the text is code that
+    ends with a bracket, inside which line breaks are free), so line numbers stay."""
+    missing = positions.source.count("\n", start, end) - text.count("\n")
+    if missing > 0:
+        if text.endswith((")", "]")):
+            text = text[:-1] + "\n" * missing + text[-1]
+        else:
+            text = "(" + text + "\n" * missing + ")"
+    return _Edit(start, end, text)
 
 
 def _import_edit(
@@ -366,14 +454,20 @@ def _import_edit(
             statements.append(ast.ImportFrom(module=node.module, names=kept, level=node.level))
     statements.append(ast.ImportFrom(module=COMPAT_MODULE, names=moved, level=0))
     start, end = positions.span(node)
-    indent = " " * (start - positions.line_start(node.lineno - 1))
-    text = ("\n" + indent).join(ast.unparse(s) for s in statements)
-    return _Edit(start, end, text)
+    texts = [ast.unparse(s) for s in statements]
+    if positions.source.count("\n", start, end):
+        # Parentheses let _same_lines keep the lines that the statement spanned.
+        names = ", ".join(ast.unparse(a) for a in moved)
+        texts[-1] = f"from {COMPAT_MODULE} import ({names})"
+    return _same_lines(positions, start, end, "; ".join(texts))
 
 
-def _insertion_line(tree: ast.Module) -> int:
-    """The line after which added imports go: after the docstring and future imports."""
-    line = 0
+def _insertion_point(tree: ast.Module, positions: _Positions) -> tuple[int, bool]:
+    """Where added imports go, and whether they go before the statement found there:
+    after the docstring and future imports, on the same line (so that every line of the
+    module keeps its number); else before the first statement, on its line when that is a
+    simple statement."""
+    last: ast.stmt | None = None
     for index, statement in enumerate(tree.body):
         is_docstring = (
             index == 0
@@ -383,13 +477,29 @@ def _insertion_line(tree: ast.Module) -> int:
         )
         is_future = isinstance(statement, ast.ImportFrom) and statement.module == "__future__"
         if not (is_docstring or is_future):
-            first = min(
-                [statement.lineno]
-                + [d.lineno for d in getattr(statement, "decorator_list", [])]
-            )
-            return line if line else first - 1
-        line = statement.end_lineno or statement.lineno
-    return line
+            break
+        last = statement
+    if last is not None:
+        return positions.span(last)[1], False
+    first = tree.body[0]
+    decorators = getattr(first, "decorator_list", [])
+    line = min([first.lineno] + [d.lineno for d in decorators])
+    return positions.line_start(line - 1), True
+
+
+_COMPOUND = (
+    ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.If, ast.For, ast.AsyncFor,
+    ast.While, ast.With, ast.AsyncWith, ast.Try, ast.Match,
+)
+
+
+def _has_annotations(tree: ast.Module) -> bool:
+    return any(
+        (isinstance(n, ast.arg) and n.annotation is not None)
+        or (isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef) and n.returns is not None)
+        or isinstance(n, ast.AnnAssign)
+        for n in ast.walk(tree)
+    )
 
 
 def _has_future_annotations(tree: ast.Module) -> bool:
@@ -427,22 +537,24 @@ def _method_edits(tree: ast.Module, positions: _Positions) -> tuple[list[_Edit],
             receiver = positions.text(node.func.value)
             argument = positions.text(node.args[0])
             start, end = positions.span(node)
-            edits.append(_Edit(start, end, f"{node.func.attr}({receiver}, {argument})"))
+            text = f"{node.func.attr}({receiver}, {argument})"
+            edits.append(_same_lines(positions, start, end, text))
             used.add(node.func.attr)
     return edits, used
 
 
-def backport(source: str, path: str, type_names: frozenset[str]) -> str:
-    """``source`` with the edits described in the module docstring (unchanged if none)."""
+def backport(source: str, path: str, types: Types) -> str:
+    """``source`` (the file ``path`` of the package, ``/``-separated) with the edits
+    described in the module docstring (unchanged if none)."""
     try:
         tree = ast.parse(source)
     except SyntaxError as exc:
         raise BackportError([f"{path}:{exc.lineno}: {exc.msg}"]) from None
     positions = _Positions(source)
-    names = _Names(tree, type_names)
+    names = _Names(tree, types, path)
     edits: list[_Edit] = []
     added: list[str] = []
-    if not _has_future_annotations(tree):
+    if not _has_future_annotations(tree) and _has_annotations(tree):
         added.append("from __future__ import annotations")
     for node in _runtime_nodes(tree):
         if isinstance(node, ast.Import | ast.ImportFrom):
@@ -451,20 +563,35 @@ def backport(source: str, path: str, type_names: frozenset[str]) -> str:
                 edits.append(edit)
     needs_typing = False
     for expression, class_argument in _type_positions(tree, names):
-        if not names.needs_rewrite(expression):
-            continue
         start, end = positions.span(expression)
         members = _union_members(expression)
-        if class_argument and len(members) > 1 and names.type_like(expression):
+        if class_argument:
+            # The class argument of isinstance() is a type or a tuple of them, so ``|``
+            # there can only be a union, whatever its members look like.
+            if len(members) == 1 and isinstance(expression, ast.Tuple):
+                members = expression.elts
+            elif len(members) == 1 and not (
+                isinstance(expression, ast.Name) and expression.id in names.unions
+            ):
+                continue
             rewritten = [_TypingSpelling(names).visit(m) for m in members]
-            needs_typing = needs_typing or any(
-                names.needs_rewrite(m) for m in members
-            )
-            text = "(" + ", ".join(ast.unparse(m) for m in rewritten) + ")"
-        else:
+            needs_typing = needs_typing or any(names.needs_rewrite(m) for m in members)
+            texts = []
+            for member in rewritten:
+                if isinstance(member, ast.Name) and member.id in names.unions:
+                    texts.append(f"*_typing.get_args({member.id})")
+                    needs_typing = True
+                else:
+                    texts.append(ast.unparse(member))
+            if texts == [ast.unparse(m) for m in members] and isinstance(expression, ast.Tuple):
+                continue
+            text = "(" + ", ".join(texts) + ("," if len(texts) == 1 else "") + ")"
+        elif names.needs_rewrite(expression):
             text = ast.unparse(_TypingSpelling(names).visit(expression))
             needs_typing = True
-        edits.append(_Edit(start, end, text))
+        else:
+            continue
+        edits.append(_same_lines(positions, start, end, text))
     if needs_typing:
         added.append("import typing as _typing")
     method_edits, methods = _method_edits(tree, positions)
@@ -482,17 +609,21 @@ def backport(source: str, path: str, type_names: frozenset[str]) -> str:
     for edit in reversed(edits):
         result = result[: edit.start] + edit.text + result[edit.end :]
     if added:
-        at = _insertion_line(tree)
-        offset = positions.line_start(at)
-        prefix = "" if offset == 0 or source[offset - 1] == "\n" else "\n"
-        block = prefix + "".join(line + ADDED + "\n" for line in added)
+        offset, ahead = _insertion_point(tree, positions)
         # Edits never touch the docstring or future imports, which come before ``offset``.
+        if not ahead:
+            rest = source[offset:].split("\n", 1)[0]
+            block = "; " + "; ".join(added) + ("" if rest.strip() else ADDED)
+        elif isinstance(tree.body[0], _COMPOUND) or getattr(tree.body[0], "decorator_list", []):
+            block = "".join(line + ADDED + "\n" for line in added)
+        else:
+            block = "; ".join(added) + "; "
         result = result[:offset] + block + result[offset:]
     return result
 
 
 def python38_problems(
-    source: str, path: str, type_names: frozenset[str], allowed: tuple[str, ...] = ()
+    source: str, path: str, types: Types, allowed: tuple[str, ...] = ()
 ) -> list[str]:
     """What in ``source`` Python 3.8 cannot run, or runs differently from Python 3.11;
     ``allowed`` names :data:`NOT_STANDALONE` entries that the caller takes care of."""
@@ -500,7 +631,7 @@ def python38_problems(
         tree = ast.parse(source, feature_version=(3, 8))
     except SyntaxError as exc:
         return [f"{path}:{exc.lineno}: syntax newer than Python 3.8: {exc.msg}"]
-    names = _Names(tree, type_names)
+    names = _Names(tree, types, path)
     found = {
         (getattr(node, "lineno", 1), message)
         for node in _runtime_nodes(tree)
@@ -560,6 +691,13 @@ def _node_problems(node: ast.AST, names: _Names, allowed: tuple[str, ...]) -> It
             yield f"{callee}(kw_only=...) needs Python 3.10"
         if "slots" in keywords and callee == "dataclass" and isinstance(node.func, ast.Attribute):
             yield "dataclasses.dataclass(slots=...) needs Python 3.10 (import dataclass by name)"
+        if callee in ("isinstance", "issubclass") and len(node.args) == 2:
+            classes = node.args[1]
+            for part in classes.elts if isinstance(classes, ast.Tuple) else [classes]:
+                if _is_union(part, names) or (
+                    isinstance(part, ast.Name) and part.id in names.unions
+                ):
+                    yield f"{callee}() with a union needs Python 3.10 (use a tuple)"
         if callee in ("bisect", "bisect_left", "bisect_right", "insort", "insort_left",
                       "insort_right") and "key" in keywords:
             yield f"{callee}(key=...) needs Python 3.10"

@@ -276,11 +276,9 @@ def collect(root: Path) -> Embedding:
 
 
 def _rewrite(package: _Package, names: list[str], notes: tuple[str, ...]) -> Embedding:
-    type_names: set[str] = set()
+    types = backport.Types()
     for name in names:
-        source = package.source(name)
-        type_names |= backport.class_names(source) | backport.type_alias_names(source)
-    frozen = frozenset(type_names)
+        types = types | backport.module_types(package.source(name), package.relative(name))
     problems: list[str] = []
     modules: list[Module] = []
     compat = (Path(__file__).parent / COMPAT_SOURCE).read_text(encoding="utf-8")
@@ -292,12 +290,12 @@ def _rewrite(package: _Package, names: list[str], notes: tuple[str, ...]) -> Emb
         original = package.source(name)
         path = package.relative(name)
         try:
-            source = backport.backport(original, path, frozen)
+            source = backport.backport(original, path, types)
         except backport.BackportError as exc:
             problems.extend(exc.problems)
             continue
         allowed = ("resources",) if name in DATA_READERS else ()
-        problems.extend(backport.python38_problems(source, path, frozen, allowed))
+        problems.extend(backport.python38_problems(source, path, types, allowed))
         found = package.file_of(name)
         assert found is not None
         digest = hashlib.sha256(original.encode("utf-8")).hexdigest()

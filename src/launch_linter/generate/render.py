@@ -105,7 +105,7 @@ def source_literal(text: str) -> Code:
     body = "\n" + text
     raw_safe = (
         "'''" not in body
-        and not body.endswith("\\")
+        and not body.endswith(("\\", "'"))
         and not any(c == "\r" or (ord(c) < 32 and c not in "\n\t\f") for c in body)
     )
     if raw_safe:
@@ -152,7 +152,8 @@ def belief_rows(beliefs: Sequence[Belief], cls: str) -> list[Code]:
 
 
 def _finalize(value: object) -> object:
-    if isinstance(value, Code):
+    if isinstance(value, Code | jinja2.Undefined):
+        # An undefined value raises its own error when printed.
         return value
     raise RenderError(
         f"the template printed a raw {type(value).__name__}; use the py filter: {value!r:.60}"
