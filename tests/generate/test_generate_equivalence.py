@@ -50,8 +50,9 @@ def test_there_are_fixtures_to_compare() -> None:
         ["--package-path", str((FIXTURES / "pkgs").relative_to(REPO)), "--env",
          "SENSOR_FRAME=lidar", "--arg", "offset:=0.5", "--arg", "sensor:=velodyne"],
         ["--select", "may_implied,tf", "--fail-on", "info"],
+        ["--jobs", "3"],
     ],
-    ids=["plain", "resolution-options", "selection"],
+    ids=["plain", "resolution-options", "selection", "jobs"],
 )
 @pytest.mark.parametrize("beliefs", ["bundled", "tests"])
 def test_every_fixture_gives_the_same_json(

@@ -88,7 +88,8 @@ def test_belief_tables_are_sorted_one_per_class(standalone: Generated) -> None:
 
 def test_exit_status_and_text_output_match_the_package(standalone: Generated) -> None:
     for args in ([IMPLIED], [CLEAN], [IMPLIED, "--fail-on", "error"], [CLEAN, "--fail-on", "info"],
-                 [IMPLIED, "--select", "may_implied", "--ignore", "sig_null_rot"]):
+                 [IMPLIED, "--select", "may_implied", "--ignore", "sig_null_rot"],
+                 [IMPLIED, "--format", "sarif"], [IMPLIED, "--format", "github"]):
         status, out, err = run_check(["--beliefs", standalone.beliefs, *args])
         done = run_standalone(standalone.path, args)
         assert (done.returncode, done.stdout, done.stderr) == (status, out, err), args
@@ -140,6 +141,15 @@ def test_the_package_is_never_imported(standalone: Generated) -> None:
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.split()[0] == "_EmbeddedModules"
+
+
+def test_it_refuses_to_mix_with_the_installed_package(standalone: Generated) -> None:
+    probe = "import runpy, sys, launch_linter; runpy.run_path(sys.argv[1])"
+    done = subprocess.run(
+        [sys.executable, "-I", "-c", probe, str(standalone.path)],
+        capture_output=True, text=True, check=False, timeout=120,
+    )
+    assert done.returncode == 1 and "cannot run in a process that has imported" in done.stderr
 
 
 def test_beliefs_options(standalone: Generated, beliefs_file: Path) -> None:
