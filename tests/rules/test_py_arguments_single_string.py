@@ -2,7 +2,19 @@
 
 from __future__ import annotations
 
-from conftest import Lint, run_rule
+from collections.abc import Callable
+
+from launch_linter import LintOptions, lint_text
+from launch_linter.model import Diagnostic
+
+Lint = Callable[..., list[tuple[str, int]]]
+
+
+def run_rule(text: str, rule: str, path: str) -> tuple[Diagnostic, ...]:
+    """The diagnostics of ``rule`` alone for launch text ``text`` read as ``path``."""
+    options = LintOptions(package_paths=(), select=frozenset({rule}))
+    return lint_text(text, path, options).diagnostics
+
 
 PYTHON = (
     "from launch import LaunchDescription\n"

@@ -2,8 +2,22 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
-from conftest import Lint, LintDiagnostics, run_rule
+
+from launch_linter import LintOptions, lint_text
+from launch_linter.model import Diagnostic
+
+Lint = Callable[..., list[tuple[str, int]]]
+LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+
+
+def run_rule(text: str, rule: str, path: str) -> tuple[Diagnostic, ...]:
+    """The diagnostics of ``rule`` alone for launch text ``text`` read as ``path``."""
+    options = LintOptions(package_paths=(), select=frozenset({rule}))
+    return lint_text(text, path, options).diagnostics
+
 
 TF = 'pkg="tf2_ros" exec="static_transform_publisher"'
 
