@@ -62,13 +62,24 @@ def is_fault_rule(rule: Rule) -> bool:
 
 
 def _row(
-    rule: str, category: str, linted: Sequence[Linted], ids: set[str], study: StudyRow | None
+    rule: str,
+    category: str,
+    linted: Sequence[Linted],
+    ids: set[str],
+    study: StudyRow | None,
+    include_info: bool = False,
 ) -> RuleRow:
+    # A fault rule may also speak at info level (bad_quaternion's rounding notice): only
+    # its warnings and errors are faults.
     faults = 0
     files = 0
     repos: set[str] = set()
     for item in linted:
-        here = sum(1 for d in item.diagnostics if d.rule in ids)
+        here = sum(
+            1
+            for d in item.diagnostics
+            if d.rule in ids and (include_info or d.severity is not Severity.INFO)
+        )
         if here:
             faults += here
             files += 1
@@ -92,7 +103,7 @@ def fault_table(linted: Sequence[Linted], rules: Sequence[Rule]) -> FaultTable:
         extra_rows=tuple(_row(r.id, r.category.value, linted, {r.id}, None) for r in extra),
         all_total=_row(TOTAL_ALL_RULES, "", linted, fault_ids, None),
         info_rows=tuple(
-            _row(r.id, r.category.value, linted, {r.id}, None)
+            _row(r.id, r.category.value, linted, {r.id}, None, include_info=True)
             for r in rules
             if not is_fault_rule(r)
         ),
