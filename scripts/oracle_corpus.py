@@ -23,6 +23,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 from collections import Counter
 from collections.abc import Sequence
 from concurrent.futures import ThreadPoolExecutor
@@ -50,14 +51,14 @@ def oracle_available() -> bool:
     return probe.returncode == 0
 
 
-def run_oracle(tool: str, files: Sequence[str], cwd: str, batch: int, jobs: int
-               ) -> dict[str, dict[str, Any]]:
+def run_oracle(tool: str, files: Sequence[str], cwd: str, batch: int, jobs: int,
+               options: Sequence[str] = ()) -> dict[str, dict[str, Any]]:
     """Run the shared oracle over ``files`` in batches; results by file path."""
     chunks = [list(files[i:i + batch]) for i in range(0, len(files), batch)]
 
     def one(chunk: list[str]) -> list[dict[str, Any]]:
         done = subprocess.run(
-            [SYSTEM_PYTHON, tool, "--safe-eval", "--stable-anon", *chunk],
+            [SYSTEM_PYTHON, tool, "--safe-eval", "--stable-anon", *options, *chunk],
             capture_output=True, text=True, cwd=cwd, env={}, check=False, timeout=3600,
         )
         return [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
@@ -79,14 +80,9 @@ def oracle_keys(row: dict[str, Any]) -> dict[Key, int | None]:
     }
 
 
-def our_keys(tree: LaunchTree) -> dict[Key, int]:
-    return {
-        (
-            ns_join(t.namespace, t.name) if t.name else None,
-            t.namespace, t.package, t.executable, t.args,
-        ): t.line
-        for t in tree.transforms
-    }
+def our_key(t: StaticTransform) -> Key:
+    resolved_name = ns_join(t.namespace, t.name) if t.name else None
+    return (resolved_name, t.namespace, t.package, t.executable, t.args)
 
 
 @dataclass
@@ -104,10 +100,6 @@ class Report:
         self.examples.setdefault(kind, example)
 
 
-def _unresolved_or_conditional(t: StaticTransform) -> bool:
-    return bool(t.unresolved) or not t.condition.always
-
-
 def compare(path: str, row: dict[str, Any], tree: LaunchTree, report: Report) -> None:
     name = os.path.basename(path)
     rules = {d.rule for d in tree.diagnostics}
@@ -119,23 +111,33 @@ def compare(path: str, row: dict[str, Any], tree: LaunchTree, report: Report) ->
         report.refused_examples.setdefault(kind, f"{name}: {row['error'][:160]!r}")
         return
     report.loaded += 1
-    theirs = oracle_keys(row)
-    ours = our_keys(tree)
+    # Pair the nodes by line (corpus files are flat: no include resolves), then compare.
+    theirs = {line: key for key, line in oracle_keys(row).items()}
+    ours_by_line = {t.line: t for t in tree.transforms}
     problems: list[tuple[str, str]] = []
-    for t in tree.transforms:
-        if t.unresolved:
+    for line in sorted(theirs.keys() | ours_by_line.keys()):
+        key = theirs.get(line)
+        transform = ours_by_line.get(line)
+        where = f"{name}:{line}"
+        if transform is None:
+            problems.append(("roslaunch has a transform we lack", f"{where} {key}"))
+            continue
+        if key is None:
+            problems.append(("we have a transform roslaunch lacks", f"{where} {transform.name}"))
+            continue
+        if transform.unresolved:
             problems.append(("ours unresolved, roslaunch resolved",
-                             f"{name}:{t.line} {t.unresolved} {t.unresolved_reasons[:1]}"))
-        elif not t.condition.always:
+                             f"{where} {transform.unresolved} {transform.unresolved_reasons[:1]}"))
+            continue
+        if not transform.condition.always:
             problems.append(("ours conditional, roslaunch decided",
-                             f"{name}:{t.line} {t.condition.describe()}"))
-    for key in theirs.keys() - ours.keys():
-        problems.append(("missing on our side", f"{name}:{theirs[key]} {key}"))
-    for key in ours.keys() - theirs.keys():
-        problems.append(("extra on our side", f"{name}:{ours[key]} {key}"))
-    for key in theirs.keys() & ours.keys():
-        if theirs[key] != ours[key]:
-            problems.append(("different line", f"{name}: {theirs[key]} vs {ours[key]} {key}"))
+                             f"{where} {transform.condition.describe()}"))
+        mine = our_key(transform)
+        for index, field_name in enumerate(("resolved name", "namespace", "package", "type",
+                                            "args")):
+            if mine[index] != key[index]:
+                problems.append((f"different {field_name}",
+                                 f"{where} ours {mine[index]!r}, roslaunch {key[index]!r}"))
     if tree.status.value != "ok":
         problems.append(("ours parse_error, roslaunch loads", name))
     errors = [d for d in tree.diagnostics if d.rule in ("parse_error", "roslaunch_error")]
@@ -180,6 +182,72 @@ def _reason_kind(reason: str) -> str:
     return f"$({command}): {why[:60]}"
 
 
+def missing_package(row: dict[str, Any]) -> str | None:
+    """The package a refusal names, if roslaunch refused for want of a package."""
+    if row.get("error_type") != "ResourceNotFound":
+        return None
+    message = str(row["error"]).strip()
+    name = message.rsplit(": ", 1)[-1] if "was not found in" in message else message
+    name = name.splitlines()[0].strip() if name else ""
+    return name if name and " " not in name else None
+
+
+def stub_packages(root: str, names: set[str]) -> None:
+    for name in names:
+        folder = os.path.join(root, name)
+        os.makedirs(folder, exist_ok=True)
+        with open(os.path.join(folder, "package.xml"), "w", encoding="utf-8") as handle:
+            handle.write(f"<package><name>{name}</name></package>\n")
+
+
+def with_stub_packages(ns: argparse.Namespace, folder: str, results: dict[str, dict[str, Any]],
+                       baseline: dict[str, LaunchTree]) -> None:
+    """Give roslaunch empty packages for every package it missed, until no new one is
+    missed, and check the files it then loads: with the same packages we must agree, and
+    without them each transform of ours must be either the same or unresolved."""
+    pending = {p: r for p, r in results.items() if missing_package(r)}
+    refused = set(pending)
+    names: set[str] = set()
+    with tempfile.TemporaryDirectory() as root:
+        for _ in range(8):
+            new = {missing_package(r) for r in pending.values()} - names - {None}
+            if not new:
+                break
+            names |= {n for n in new if n}
+            stub_packages(root, names)
+            rerun = run_oracle(ns.oracle, sorted(pending), folder, ns.batch, ns.jobs,
+                               ["--pkg-path", root])
+            pending = {p: r for p, r in rerun.items() if missing_package(r)}
+            results = {**results, **rerun}
+        report = Report()
+        same = unresolved_ok = wrong = 0
+        wrong_example = ""
+        options = LoadOptions(packages=PackageIndex([root]))
+        for path in sorted(refused):
+            row = results[path]
+            if "error" in row:
+                continue
+            tree = load_tree(path, options)
+            compare(path, row, tree, report)
+            theirs = {line: key for key, line in oracle_keys(row).items()}
+            for t in baseline[path].transforms:
+                if t.unresolved or not t.condition.always:
+                    unresolved_ok += 1
+                elif theirs.get(t.line) != our_key(t):
+                    wrong += 1
+                    wrong_example = wrong_example or f"{os.path.basename(path)}:{t.line}"
+                else:
+                    same += 1
+    print(f"\nwith empty stand-ins for the {len(names)} packages it missed, roslaunch loads "
+          f"{report.loaded} of the {len(refused)} files it refused for want of a package; "
+          f"agreement {report.agree}/{report.loaded}")
+    for kind, count in report.classes.most_common():
+        print(f"  {count:6d}  {kind}\n          e.g. {report.examples[kind]}")
+    print(f"  without the packages, our transforms there: {same} the same as roslaunch's "
+          f"with them, {unresolved_ok} unresolved, "
+          f"{wrong} resolved differently{' (e.g. ' + wrong_example + ')' if wrong else ''}")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--corpus", default=os.path.join(SHARED, "corpus"))
@@ -218,6 +286,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         example = report.refused_examples.get(kind)
         print(f"  {count:6d}  {kind}" + (f"\n          e.g. {example}" if example else ""))
     corpus_figures(trees)
+    with_stub_packages(ns, folder, results, dict(zip(paths, trees, strict=True)))
     return 0
 
 

@@ -11,6 +11,11 @@ Input (a JSON document on stdin)::
                 "args": {"name": "value"},    # as `roslaunch a.launch name:=value`
                 "env": {"NAME": "value"}}]}   # the whole environment $(env) sees
 
+With ``"repeat": N`` in the request, the files are instead loaded N times over and the
+only output is ``{"files": F, "runs": [seconds, ...], "cpu_runs": [seconds, ...]}``: the
+wall-clock and CPU time of each pass over all files, measured in this process (for
+benchmarks).
+
 Output: one JSON object per file and line, in input order::
 
     {"path": P, "ok": false, "error_type": "XmlParseException", "error": "..."}
@@ -172,6 +177,18 @@ def _load(path: str, args: dict[str, str], env: dict[str, str], anon: _StableAno
     return {"path": path, "ok": True, "seconds": round(seconds, 6), "nodes": nodes}
 
 
+def _time_passes(files: list[dict[str, Any]], repeat: int, anon: _StableAnon,
+                 tags: _NodeTags) -> dict[str, Any]:
+    runs, cpu_runs = [], []
+    for _ in range(repeat):
+        started, cpu_started = time.perf_counter(), time.process_time()
+        for item in files:
+            _load(item["path"], item.get("args", {}), item.get("env", {}), anon, tags)
+        runs.append(time.perf_counter() - started)
+        cpu_runs.append(time.process_time() - cpu_started)
+    return {"files": len(files), "runs": runs, "cpu_runs": cpu_runs}
+
+
 def main() -> int:
     request = json.load(sys.stdin)
     saved_env = dict(os.environ)
@@ -181,6 +198,12 @@ def main() -> int:
     tags = _NodeTags(positions)
     tags.install()
     out = sys.stdout
+    repeat = int(request.get("repeat", 0))
+    if repeat:
+        out.write(json.dumps(_time_passes(request["files"], repeat, anon, tags)) + "\n")
+        os.environ.clear()
+        os.environ.update(saved_env)
+        return 0
     for item in request["files"]:
         result = _load(item["path"], item.get("args", {}), item.get("env", {}), anon, tags)
         out.write(json.dumps(result) + "\n")

@@ -30,8 +30,22 @@ _NUMBER = re.compile(
 _C_SPACE = " \t\n\v\f\r"
 
 
+_ATOF_MEMO: dict[str, tuple[float, bool]] = {}
+_ATOF_MEMO_SIZE = 4096
+
+
 def atof(text: str) -> tuple[float, bool]:
     """C ``atof``: the longest numeric prefix (0.0 if none), and whether all of it was read."""
+    # The same few numbers ("0", "0.0", "100" …) fill most argument lists.
+    known = _ATOF_MEMO.get(text)
+    if known is None:
+        if len(_ATOF_MEMO) >= _ATOF_MEMO_SIZE:
+            _ATOF_MEMO.clear()
+        known = _ATOF_MEMO[text] = _read_number(text)
+    return known
+
+
+def _read_number(text: str) -> tuple[float, bool]:
     # Python's float() reads the same numbers as strtod from ASCII text without blanks or
     # underscores, except hexadecimal and NaN payloads, which it refuses (then the slow way).
     if text.isascii() and "_" not in text and text == text.strip():
@@ -63,8 +77,10 @@ def is_number(text: str) -> bool:
     return whole
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class Decoded:
+    """What the program makes of the words (treat as read-only)."""
+
     form: str
     parent: str | None
     child: str | None
@@ -80,6 +96,8 @@ class Decoded:
 
 def program_words(tokens: tuple[str, ...]) -> tuple[str, ...]:
     """The words the program counts: ``ros::init`` removes ``name:=value`` remappings."""
+    if not any(":=" in t for t in tokens):
+        return tokens
     return tuple(t for t in tokens if ":=" not in t)
 
 
@@ -88,7 +106,7 @@ def _numbers(words: tuple[str, ...], count: int) -> tuple[list[float], list[Numb
     issues: list[NumberIssue] = []
     for index in range(count):
         value, whole = atof(words[index])
-        if not whole or not math.isfinite(value):
+        if not whole or value - value != 0.0:  # junk, or inf/nan
             issues.append(NumberIssue(index, words[index], value))
         values.append(value)
     return values, issues

@@ -53,6 +53,14 @@ _MACHINE_ATTRS = ("env-loader", "ssh-port", "user", "password", "default", "time
 _PARAM_TYPES = ("auto", "str", "string", "int", "double", "bool", "boolean", "yaml")
 
 
+def relative_to_cwd(path: str) -> str:
+    """``os.path.relpath(path)``, quicker for the usual case of a path below the cwd."""
+    folder = os.getcwd()
+    if path.startswith(folder) and path[len(folder):len(folder) + 1] == os.sep:
+        return os.path.normpath(path[len(folder) + 1:])
+    return os.path.relpath(path)
+
+
 @dataclass(frozen=True, slots=True)
 class LoadOptions:
     """What the command line tells the loader."""
@@ -60,7 +68,7 @@ class LoadOptions:
     args: Mapping[str, str] = field(default_factory=dict)
     env: Mapping[str, str] = field(default_factory=dict)
     packages: PackageIndex = field(default_factory=lambda: PackageIndex([]))
-    display_path: Callable[[str], str] = os.path.relpath
+    display_path: Callable[[str], str] = relative_to_cwd
 
 
 class _AnonNames:
@@ -81,7 +89,7 @@ class _Context:
 
     __slots__ = ("anon", "arg_names", "args", "chain", "condition", "depth", "filename",
                  "include_args", "included_from", "ns", "ns_unresolved", "open_args",
-                 "pass_all_args", "scope")
+                 "pass_all_args", "scope", "side_scope")
 
     def __init__(self, ns: str, filename: str, args: dict[str, Value], open_args: bool) -> None:
         self.ns = ns
@@ -102,6 +110,8 @@ class _Context:
         self.scope: SubstitutionScope | None = None
         """Made on first use; it reads ``args`` and ``anon`` live, so only a change of
         file or of those dicts themselves resets it."""
+        self.side_scope: tuple[dict[str, str], SubstitutionScope] | None = None
+        """The last scope made for another anonymous-name table (a node's children)."""
 
     def copy(self) -> _Context:
         """A child context: roslaunch deep-copies args and anonymous names."""
@@ -268,8 +278,9 @@ class Ros1Loader:
                 f"not well-formed XML: {exc.message}",
             ))
             return None
-        self.comments.extend(Comment(display, line, text) for line, text in document.comments)
-        self.element_lines.extend((display, line) for line in document.element_lines)
+        if document.comments:
+            self.comments += [Comment(display, line, text) for line, text in document.comments]
+        self.element_lines += [(display, line) for line in document.element_lines]
         # roslaunch takes the one <launch> element of the document, wherever it is.
         launches = document.collected
         if len(launches) != 1:
@@ -310,7 +321,10 @@ class Ros1Loader:
             if context.scope is None:
                 context.scope = self._new_scope(context, context.anon)
             return context.scope
-        return self._new_scope(context, anon)
+        side = context.side_scope
+        if side is None or side[0] is not anon:
+            side = context.side_scope = (anon, self._new_scope(context, anon))
+        return side[1]
 
     def _new_scope(self, context: _Context, anon: dict[str, str]) -> SubstitutionScope:
         def missing(name: str) -> str:
@@ -537,12 +551,19 @@ class Ros1Loader:
             target[name] = default
 
     def _arg(self, element: Element, context: _Context) -> None:
-        condition = self._condition(element, context)
+        attrib = element.attrib
+        condition = (
+            self._condition(element, context) if "if" in attrib or "unless" in attrib
+            else ALWAYS
+        )
         if condition is None:
             return
         name_value = self._required(element, "name", context)
-        rest = self._present(element, _ARG_ATTRS[1:], context)
-        value, default = rest.get("value"), rest.get("default")
+        value = self._resolve(element, "value", context)
+        default = self._resolve(element, "default", context)
+        doc = attrib.get("doc")
+        if doc is not None and "$" in doc:
+            self._substitute(doc, element, "doc", context, None)
         if name_value is None:
             return
         if value is not None and default is not None:
@@ -556,21 +577,33 @@ class Ros1Loader:
 
     def _param(self, element: Element, context: _Context,
                anon: dict[str, str] | None = None) -> None:
-        if self._condition(element, context, anon) is None:
+        attrib = element.attrib
+        if ("if" in attrib or "unless" in attrib) and self._condition(
+            element, context, anon
+        ) is None:
             return
-        values = self._present(element, _PARAM_VALUE_ATTRS, context, anon)
-        if len(values) != 1:
+        written = self._resolve(element, "value", context, anon)
+        count = int(written is not None)
+        for key in ("textfile", "binfile", "command"):
+            text = attrib.get(key)
+            if text is not None:
+                count += 1
+                if "$" in text:
+                    self._substitute(text, element, key, context, anon)
+        if count != 1:
             self._error(context, element,
                         "<param> tag must have one and only one of value/textfile/binfile.")
-        name_text = element.get("name")
+        name_text = attrib.get("name")
         if name_text is None:
             self._error(context, element, "<param> tag is missing required attribute: 'name'")
             return
-        self._resolve_text(name_text.strip(), element, "name", context, anon)
-        written = values.get("value")
-        value = resolved_text(written) if written is not None else None
-        if value is not None and "type" in element.attrib:
-            problem = _param_value_problem(value.strip(), element.get("type") or "auto")
+        if "$" in name_text:
+            self._substitute(name_text.strip(), element, "name", context, anon)
+        param_type = attrib.get("type")
+        if written is not None and param_type is not None:
+            value = resolved_text(written)
+            problem = (None if value is None
+                       else _param_value_problem(value.strip(), param_type or "auto"))
             if problem is not None:
                 self._error(context, element, f"Invalid <param> tag: {problem}")
 
@@ -675,15 +708,23 @@ class Ros1Loader:
         if namespace is None:
             return
         ns, ns_unresolved = namespace
-        if len(late) > 1 or "args" not in late:
+        if len(late) > ("args" in late):
             self._validate_node(element, context, late)
-        self._validate_names(element, context, name_value, package, node_type)
-        ns = _COLLAPSE_SLASHES.sub("/", ns) if "//" in ns else ns
-        if not is_test:
-            self._register_name(element, context, name_value, ns, ns_unresolved)
+        name_text = None if name_value is None else resolved_text(name_value)
+        package_text = None if package is None else resolved_text(package)
+        type_text = None if node_type is None else resolved_text(node_type)
+        if name_text and "/" in name_text:
+            self._error(context, element, f"node name cannot contain a namespace: {name_text}")
+        if package_text is not None and not package_text.strip():
+            self._error(context, element, "package must be non-empty")
+        if type_text is not None and not type_text.strip():
+            self._error(context, element, "type must be non-empty")
+        if "//" in ns:
+            ns = _COLLAPSE_SLASHES.sub("/", ns)
+        if not is_test and name_text and not ns_unresolved:
+            self._register_name(element, context, name_text, ns)
         if is_test or package is None or node_type is None:
             return
-        package_text, type_text = resolved_text(package), resolved_text(node_type)
         if type_text is not None and type_text != STATIC_TF_TYPE:
             return
         if package_text is not None and package_text not in TF_PACKAGES:
@@ -731,32 +772,19 @@ class Ros1Loader:
         if cwd_text is not None and cwd_text not in ("ROS_HOME", "ros_home", "node"):
             self._error(context, element, "cwd must be one of 'ROS_HOME', 'node'")
 
-    def _validate_names(self, element: Element, context: _Context, name: Value | None,
-                        package: Value | None, node_type: Value | None) -> None:
-        name_text = resolved_text(name) if name is not None else None
-        if name_text and "/" in name_text:
-            self._error(context, element, f"node name cannot contain a namespace: {name_text}")
-        for label, value in (("package", package), ("type", node_type)):
-            text = resolved_text(value) if value is not None else None
-            if text is not None and not text.strip():
-                self._error(context, element, f"{label} must be non-empty")
-
-    def _register_name(self, element: Element, context: _Context, name: Value | None,
-                       namespace: str, ns_unresolved: bool) -> None:
+    def _register_name(self, element: Element, context: _Context, name: str,
+                       namespace: str) -> None:
         """roslaunch refuses two nodes with the same resolved name in one launch tree."""
-        text = resolved_text(name) if name is not None else None
-        if not text or ns_unresolved:
-            return
-        resolved_name = ns_join(namespace, text)
-        here = Location(self._display(context.filename), element.line, element.column)
+        resolved_name = ns_join(namespace, name)
         first = self.node_names.get(resolved_name)
+        here = Location(self._display(context.filename), element.line, element.column)
         if first is None:
             self.node_names[resolved_name] = here
             return
         self._report(
             "roslaunch_error", context.filename, element,
             f"roslaunch file contains multiple nodes named [{resolved_name}]",
-            node=text, related=(first,),
+            node=name, related=(first,),
         )
 
     def _include(self, element: Element, context: _Context) -> None:
@@ -791,7 +819,7 @@ class Ros1Loader:
                 self._error(context, element, f"include args must have declared values ({name})")
         args_passed = list(passed)
         child.args, child.include_args, child.arg_names, child.anon = dict(passed), None, {}, {}
-        child.scope = None
+        child.scope = child.side_scope = None
         child.open_args = pass_all and context.open_args
         self._follow_include(element, context, child, file_value, args_passed, pass_all)
 
@@ -826,7 +854,7 @@ class Ros1Loader:
         if root is None:
             return
         child.filename = absolute
-        child.scope = None
+        child.scope = child.side_scope = None
         child.chain = (*context.chain, absolute)
         child.included_from = (self._display(context.filename), element.line)
         self._launch_conditions(root, child)
@@ -892,9 +920,14 @@ class Ros1Loader:
                     and decoded.numeric_indices[-1] in indices,
                 }
             unresolved.extend(k for k, v in fields.items() if v)
-        number_issues = tuple(n for n in decoded.number_issues if n.index not in words.unresolved)
-        all_holes = (*holes(name_value), *holes(args_value), *holes(package), *holes(node_type))
-        reasons = tuple(dict.fromkeys(f"{h.text}: {h.reason}" for h in all_holes))
+        if words.unresolved or unresolved:
+            number_issues = tuple(n for n in decoded.number_issues
+                                  if n.index not in words.unresolved)
+            all_holes = (*holes(name_value), *holes(args_value), *holes(package),
+                         *holes(node_type))
+            reasons = tuple(dict.fromkeys(f"{h.text}: {h.reason}" for h in all_holes))
+        else:
+            number_issues, reasons = decoded.number_issues, ()
         known = form != "unknown"
         transform = StaticTransform(
             path=self._display(context.filename),

@@ -15,8 +15,13 @@ _SHLEX_WORD = re.compile(r"[^ \t\r\n]+")
 _SHLEX_SPECIAL = re.compile(r"[\"'\\]")
 
 
-@dataclass(frozen=True, slots=True)
+_NO_HOLES: frozenset[int] = frozenset()
+
+
+@dataclass(slots=True)
 class Words:
+    """The argv words of one ``args`` value (treat as read-only)."""
+
     words: tuple[str, ...]
     """Each word as text; a hole is shown as the substitution that was written."""
     unresolved: frozenset[int]
@@ -41,7 +46,7 @@ def split_args(value: Value) -> Words:
     """Split like roslaunch does (``shlex.split``), with holes counted as part of one word."""
     if len(value) == 1 and isinstance(value[0], str):
         plain, error = shell_words(value[0])
-        return Words(tuple(plain), frozenset(), (), error)
+        return Words(tuple(plain), _NO_HOLES, (), error)
     holes: list[Hole] = []
     marked: list[str] = []
     for part in value:

@@ -26,9 +26,9 @@ class SubstitutionError(Exception):
     """roslaunch refuses this value; the message is close to roslaunch's own."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class SubstitutionScope:
-    """What a substitution can see at one place of a launch file.
+    """What a substitution can see at one place of a launch file (treat as read-only).
 
     ``missing_arg`` is called with the name of an arg that is not set at all and returns
     the reason for the hole (it may raise :class:`SubstitutionError` to refuse the value).
@@ -107,7 +107,6 @@ def _words(body: str) -> list[str]:
 
 
 def _first_pass_value(command: str, body: str, words: list[str], scope: SubstitutionScope) -> Value:
-    written = f"$({body})"
     if command == "arg":
         if not words:
             raise SubstitutionError(f"$(arg var) must specify a variable name [{body}]")
@@ -118,13 +117,14 @@ def _first_pass_value(command: str, body: str, words: list[str], scope: Substitu
         reason = (
             scope.missing_arg(words[0]) if scope.missing_arg else f"arg '{words[0]}' is not set"
         )
-        return (Hole(written, reason),)
+        return (Hole(f"$({body})", reason),)
     if command == "env":
         if len(words) != 1:
             raise SubstitutionError(f"$(env var) command only accepts one argument [{body}]")
         if words[0] in scope.env:
             return (scope.env[words[0]],)
-        return (Hole(written, f"environment variable '{words[0]}' is not given (use --env)"),)
+        reason = f"environment variable '{words[0]}' is not given (use --env)"
+        return (Hole(f"$({body})", reason),)
     if command == "optenv":
         if not words:
             raise SubstitutionError(f"$(optenv var) must specify an environment variable [{body}]")
@@ -151,7 +151,12 @@ def _find_pass(parts: list[Part], scope: SubstitutionScope) -> list[Part]:
     flat = "".join(p if isinstance(p, str) else _HOLE_MARK for p in parts)
     if "$" not in flat:
         return parts
-    for body in collect_commands(flat):
+    return _find_commands(parts, collect_commands(flat), scope)
+
+
+def _find_commands(parts: list[Part], commands: list[str], scope: SubstitutionScope
+                   ) -> list[Part]:
+    for body in commands:
         words = _check_command(body)
         if words[0] != "find":
             continue
@@ -217,11 +222,22 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
         return (text,) if text else ()
     if text.startswith("$(eval ") and text.endswith(")"):
         return _evaluate(text[7:-1], text, scope)
+    if text.startswith("$(arg ") and text.endswith(")"):
+        # A whole-value $(arg NAME), half of all substitutions: the general path gives
+        # the same result when the value is plain text.
+        name = text[6:-1].strip(" ")
+        if name and not any(c in name for c in " $()"):
+            value = scope.args.get(name)
+            if value is not None and (
+                not value or (len(value) == 1 and type(value[0]) is str and "$" not in value[0])
+            ):
+                return value
     # ``current`` holds the text while every replacement so far was plain text; ``parts``
     # takes over once a hole appears.
     current = text
     parts: list[Part] | None = None
-    for body in collect_commands(text):
+    commands = collect_commands(text)
+    for body in commands:
         words = _check_command(body)
         if words[0] == "find":
             continue
@@ -239,6 +255,9 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
     if parts is None:
         if "$" not in current:
             return (current,) if current else ()
+        if current is text:
+            # Only $(find) in the text: the second pass sees the same commands.
+            return join(_find_commands([text], commands, scope))
         parts = [current]
     return join(_find_pass(parts, scope))
 
