@@ -48,15 +48,28 @@ def _pairs(values: list[str] | None, separator: str, what: str) -> dict[str, str
 
 def _add_resolution_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("paths", nargs="*", metavar="PATH", help="launch files or folders")
-    parser.add_argument("--arg", action="append", metavar="NAME:=VALUE",
-                        help="set a launch argument, as on the roslaunch command line")
-    parser.add_argument("--package-path", action="append", metavar="DIR",
-                        help="folder to search for packages for $(find) (repeatable)")
-    parser.add_argument("--env", action="append", metavar="NAME=VALUE",
-                        help="environment variable for $(env)/$(optenv) (repeatable)")
+    parser.add_argument(
+        "--arg",
+        action="append",
+        metavar="NAME:=VALUE",
+        help="set a launch argument, as on the roslaunch command line",
+    )
+    parser.add_argument(
+        "--package-path",
+        action="append",
+        metavar="DIR",
+        help="folder to search for packages for $(find) (repeatable)",
+    )
+    parser.add_argument(
+        "--env",
+        action="append",
+        metavar="NAME=VALUE",
+        help="environment variable for $(env)/$(optenv) (repeatable)",
+    )
     parser.add_argument("--config", metavar="FILE", help="configuration file")
-    parser.add_argument("--jobs", type=int, default=None, metavar="N",
-                        help="lint files in N processes")
+    parser.add_argument(
+        "--jobs", type=int, default=None, metavar="N", help="lint files in N processes"
+    )
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -70,16 +83,37 @@ def build_parser() -> argparse.ArgumentParser:
     check = sub.add_parser("check", help="lint launch files")
     _add_resolution_options(check)
     check.add_argument("--format", choices=("text", "json", "sarif", "github"), default=None)
-    check.add_argument("--select", action="append", metavar="IDS",
-                       help="only these rules or categories (comma-separated)")
-    check.add_argument("--ignore", action="append", metavar="IDS",
-                       help="skip these rules or categories (comma-separated)")
-    check.add_argument("--beliefs", default=None, metavar="bundled|study|none|FILE",
-                       help="mined beliefs for the may_implied rules (default: bundled)")
-    check.add_argument("--min-z", type=float, default=None, metavar="Z",
-                       help="minimum z-score of a belief (default 1.0)")
-    check.add_argument("--fail-on", choices=("error", "warning", "info"), default=None,
-                       help="lowest severity that makes the exit status 1 (default warning)")
+    check.add_argument(
+        "--select",
+        action="append",
+        metavar="IDS",
+        help="only these rules or categories (comma-separated)",
+    )
+    check.add_argument(
+        "--ignore",
+        action="append",
+        metavar="IDS",
+        help="skip these rules or categories (comma-separated)",
+    )
+    check.add_argument(
+        "--beliefs",
+        default=None,
+        metavar="bundled|study|none|FILE",
+        help="mined beliefs for the may_implied rules (default: bundled)",
+    )
+    check.add_argument(
+        "--min-z",
+        type=float,
+        default=None,
+        metavar="Z",
+        help="minimum z-score of a belief (default 1.0)",
+    )
+    check.add_argument(
+        "--fail-on",
+        choices=("error", "warning", "info"),
+        default=None,
+        help="lowest severity that makes the exit status 1 (default warning)",
+    )
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
 
     transforms = sub.add_parser("transforms", help="print every static transform found")
@@ -95,8 +129,12 @@ def build_parser() -> argparse.ArgumentParser:
     mine.add_argument("--db", required=True)
     mine.add_argument("--p0", type=float, default=0.9)
     mine.add_argument("--mature-commits", type=int, default=30)
-    mine.add_argument("--mature", action="append", metavar="REPO",
-                      help="treat this repository folder as mature (plain folders)")
+    mine.add_argument(
+        "--mature",
+        action="append",
+        metavar="REPO",
+        help="treat this repository folder as mature (plain folders)",
+    )
     mine.add_argument("--jobs", type=int, default=None)
 
     beliefs = sub.add_parser("beliefs", help="list mined beliefs or write a beliefs file")
@@ -125,8 +163,12 @@ def build_parser() -> argparse.ArgumentParser:
     graph.add_argument("--package-path", action="append", metavar="DIR")
     graph.add_argument("--env", action="append", metavar="NAME=VALUE")
     graph.add_argument("--config", metavar="FILE", help="configuration file")
-    graph.add_argument("--beliefs", default=None, metavar="bundled|study|none|FILE",
-                       help="mined beliefs for the may_implied rules (default: bundled)")
+    graph.add_argument(
+        "--beliefs",
+        default=None,
+        metavar="bundled|study|none|FILE",
+        help="mined beliefs for the may_implied rules (default: bundled)",
+    )
     return parser
 
 
@@ -184,7 +226,9 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
 
 def _exit_status(result: LintResult, fail_on: str) -> int:
     threshold = Severity(fail_on).rank
-    return EXIT_FINDINGS if any(d.severity.rank >= threshold for d in result.diagnostics) else EXIT_OK
+    return (
+        EXIT_FINDINGS if any(d.severity.rank >= threshold for d in result.diagnostics) else EXIT_OK
+    )
 
 
 def _use_colour(choice: str) -> bool:
@@ -203,7 +247,10 @@ def run_check(ns: argparse.Namespace) -> int:
     result = lint_paths(ns.paths, options)
     fmt = ns.format or "text"
     if fmt == "json":
-        sys.stdout.write(json_report.dumps(json_report.check_document(result, options.beliefs, __version__)) + "\n")
+        sys.stdout.write(
+            json_report.dumps(json_report.check_document(result, options.beliefs, __version__))
+            + "\n"
+        )
     elif fmt in ("sarif", "github"):
         from launch_linter.report import formats
 
@@ -240,9 +287,7 @@ def run_explain(ns: argparse.Namespace) -> int:
     rule = RULES_BY_ID.get(ns.rule)
     if rule is None:
         raise UsageError(f"unknown rule {ns.rule!r} (see 'launch-linter rules')")
-    sys.stdout.write(
-        f"{rule.id} ({rule.category.value}, {rule.severity.value})\n\n{rule.doc}\n"
-    )
+    sys.stdout.write(f"{rule.id} ({rule.category.value}, {rule.severity.value})\n\n{rule.doc}\n")
     return EXIT_OK
 
 

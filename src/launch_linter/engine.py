@@ -121,9 +121,13 @@ def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
     )
 
 
-def load_options_for(item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]) -> LoadOptions:
-    roots = tuple(options.package_paths) if options.package_paths is not None else tuple(
-        default_package_roots(item.path)
+def load_options_for(
+    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+) -> LoadOptions:
+    roots = (
+        tuple(options.package_paths)
+        if options.package_paths is not None
+        else tuple(default_package_roots(item.path))
     )
     if roots not in cache:
         cache[roots] = PackageIndex(list(roots))
@@ -232,7 +236,9 @@ def lint_paths(paths: Sequence[str], options: LintOptions | None = None) -> Lint
     return lint_files(discover(paths), options or LintOptions())
 
 
-def lint_text(text: str, path: str = "<string>.launch", options: LintOptions | None = None) -> LintResult:
+def lint_text(
+    text: str, path: str = "<string>.launch", options: LintOptions | None = None
+) -> LintResult:
     """Lint launch-file text as if it were the file ``path`` (which need not exist)."""
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)

@@ -22,7 +22,11 @@ def check_document(result: LintResult, beliefs: BeliefSet, version: str) -> dict
     return {
         "version": JSON_VERSION,
         "tool": {"name": "launch-linter", "version": version},
-        "beliefs": {"source": beliefs.source, "min_z": beliefs.min_z, "count": len(beliefs.beliefs)},
+        "beliefs": {
+            "source": beliefs.source,
+            "min_z": beliefs.min_z,
+            "count": len(beliefs.beliefs),
+        },
         "files": _files(result),
         "diagnostics": [d.to_json() for d in result.diagnostics],
     }
