@@ -13,10 +13,15 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from xml.sax.saxutils import escape
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from launch_linter.engine import LintResult, lint_paths
+from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.ros1 import LoadOptions
 
 TF2 = 'pkg="tf2_ros" type="static_transform_publisher"'
 SECRET = "S3CRET-CONTENT-0f9a"
@@ -152,3 +157,66 @@ def test_command_line_survives(corpus: tuple[Path, dict[str, str]], command: str
     document = json.loads(done.stdout)
     assert [f["path"] for f in document["files"]] == paths
     assert SECRET not in done.stdout
+
+
+# --- random launch files -------------------------------------------------------------------
+
+_COMMON = ("if", "unless")
+_TAGS = {
+    "node": ("name", "pkg", "type", "args", "ns", "output", "respawn", "required",
+             "respawn_delay", "cwd", "clear_params", *_COMMON),
+    "test": ("test-name", "name", "pkg", "type", "args", "ns", "time-limit", *_COMMON),
+    "group": ("ns", "clear_params", *_COMMON),
+    "arg": ("name", "value", "default", "doc", *_COMMON),
+    "include": ("file", "ns", "pass_all_args", "clear_params", *_COMMON),
+    "param": ("name", "value", "type", "command", "textfile", *_COMMON),
+    "rosparam": ("command", "param", "file", "subst_value", *_COMMON),
+    "remap": ("from", "to", *_COMMON),
+    "env": ("name", "value", *_COMMON),
+    "machine": ("name", "address", "default", "ssh-port", "timeout", *_COMMON),
+    "launch": ("if", "deprecated"),
+    "bogus": ("name",),
+}
+# Hypothesis favours the first entries: the trickiest come first.
+_PIECES = ("~", "$(", ")", "/", "$(arg a)", "$(eval arg('a') * 3)", "$(foo)", "yes", "true",
+           "0 0 0 0 0 0 a b", "tf2_ros", "static_transform_publisher", "$(dirname)/t.launch",
+           "$(anon n)", "a:=b", "'", "//", "$", "(", "$(arg b)", "$(arg)", "$(find p)",
+           "$(find p)/x", "$(env E)", "$(optenv E d f)", "$(dirname)", "$(eval 1+1)",
+           "$(eval )", "false", "1", "0", "tf", " ", "100", '"', "&", "<", "\u00e9", "\t", "a")
+_VALUES = st.one_of(st.sampled_from(_PIECES),
+                    st.lists(st.sampled_from(_PIECES), max_size=3).map("".join))
+
+
+def _element(draw: st.DrawFn, depth: int) -> str:
+    tag = draw(st.sampled_from(sorted(_TAGS)))
+    names = draw(st.lists(st.sampled_from(_TAGS[tag]), max_size=6, unique=True))
+    attributes = "".join(
+        f' {name}="{escape(draw(_VALUES), {chr(34): "&quot;"})}"' for name in names
+    )
+    count = draw(st.integers(0, 3)) if depth < 4 else 0
+    inner = "".join(_element(draw, depth + 1) for _ in range(count))
+    return f"<{tag}{attributes}>{inner}</{tag}>"
+
+
+@st.composite
+def launch_files(draw: st.DrawFn) -> str:
+    body = "".join(_element(draw, 1) for _ in range(draw(st.integers(0, 5))))
+    return f"<launch>{body}</launch>"
+
+
+@pytest.fixture(scope="module")
+def scratch(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return tmp_path_factory.mktemp("random")
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(text=launch_files(), args=st.dictionaries(st.sampled_from(["a", "b", "_p", "__ns"]),
+                                                 st.sampled_from(["1", "x", "", "/r", "~"])))
+def test_random_launch_files_never_crash(scratch: Path, text: str, args: dict[str, str]) -> None:
+    # The file is on disk so that "$(dirname)/t.launch" includes it (a cycle).
+    path = scratch / "t.launch"
+    path.write_text(text, encoding="utf-8")
+    tree = load_tree(str(path), LoadOptions(args=args))
+    assert tree.root
+    for transform in tree.transforms:
+        assert transform.line >= 1 and transform.column >= 1
