@@ -144,10 +144,12 @@ def test_isinstance_unions_become_tuples() -> None:
 
 
         def g(node):
-            return issubclass(type(node), ast.stmt | ast.expr)
+            return issubclass(type(node), ast.stmt | ast.expr) or isinstance(
+                node, (int | str, float))
         """
     )
     assert "issubclass(type(node), (ast.stmt, ast.expr))" in result
+    assert "isinstance(\n        node, (int, str, float))" in result
     assert "isinstance(value, (str, int, None))" in result
     assert "isinstance(node, (ast.Tuple, ast.List))" in result
     assert f"from {COMPAT_MODULE} import ast" in result
@@ -200,6 +202,7 @@ def test_removeprefix_calls_become_compat_calls() -> None:
         ("from enum import IntEnum\n", "differs between Python 3.8 and 3.11"),
         ("def f(x):\n    return isinstance(x, dict[str, int])\n", "generic needs Python 3.9"),
         ("print(int | None)\n", "run-time 'X | Y' type union"),
+        ("import imp\n", "module imp was removed in Python 3.12"),
     ],
 )
 def test_what_cannot_be_rewritten_is_named_with_its_line(source: str, problem: str) -> None:

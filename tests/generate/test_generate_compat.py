@@ -48,7 +48,7 @@ def test_enum_stand_in_formats_as_python_3_11_does() -> None:
     class Colour(str, compat.EnumBefore311):
         RED = "red"
 
-    class Real(str, Enum):  # noqa: UP042 - the package's enums are written this way
+    class Real(str, Enum):
         RED = "red"
 
     assert f"{Colour.RED}" == "Colour.RED" and f"{Real.RED}" == "Real.RED"

@@ -188,6 +188,25 @@ def test_a_pruned_belief_is_no_longer_checked(standalone: Generated, tmp_path: P
     assert sorted(before) == sorted([*after, "sig_null_disp"])
 
 
+@pytest.mark.parametrize(
+    ("row", "message"),
+    [
+        ("    (('world', 'map'), 30, 3.16),\n", "SIG_NULL_DISP has a row that is not"),
+        ("    (('world', 'map'), 30, 30, 'high'),\n", "malformed belief"),
+    ],
+)
+def test_a_table_broken_by_hand_is_a_usage_error(
+    standalone: Generated, tmp_path: Path, row: str, message: str
+) -> None:
+    edited = tmp_path / "edited.py"
+    edited.write_text(
+        standalone.text.replace("    (('world', 'map'), 30, 30, 3.16),\n", row), encoding="utf-8"
+    )
+    done = run_standalone(edited, [CLEAN])
+    assert done.returncode == 2 and message in done.stderr
+    assert "Traceback" not in done.stderr
+
+
 def test_an_internal_failure_exits_2(standalone: Generated, tmp_path: Path) -> None:
     broken = tmp_path / "broken.py"
     broken.write_text(

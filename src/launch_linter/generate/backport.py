@@ -90,6 +90,16 @@ MODULE_NEWER = {
     ("dataclasses", "KW_ONLY"): "3.10",
 }
 MODULES_NEWER = {"graphlib": "3.9", "zoneinfo": "3.9", "tomllib": "3.11"}
+MODULES_REMOVED = {
+    **dict.fromkeys(("asynchat", "asyncore", "distutils", "imp", "smtpd"), "3.12"),
+    **dict.fromkeys(
+        ("aifc", "audioop", "cgi", "cgitb", "chunk", "crypt", "imghdr", "mailcap", "msilib",
+         "nis", "nntplib", "ossaudiodev", "pipes", "sndhdr", "spwd", "sunau", "telnetlib", "uu",
+         "xdrlib", "lib2to3"),
+        "3.13",
+    ),
+}
+"""Standard modules that newer Pythons, which the standalone linter also runs on, lack."""
 METHODS_NEWER = {
     "removeprefix": "3.9", "removesuffix": "3.9", "bit_count": "3.10",
     "is_relative_to": "3.9", "with_stem": "3.9", "hardlink_to": "3.10",
@@ -567,23 +577,19 @@ def backport(source: str, path: str, types: Types) -> str:
         members = _union_members(expression)
         if class_argument:
             # The class argument of isinstance() is a type or a tuple of them, so ``|``
-            # there can only be a union, whatever its members look like.
-            if len(members) == 1 and isinstance(expression, ast.Tuple):
-                members = expression.elts
-            elif len(members) == 1 and not (
-                isinstance(expression, ast.Name) and expression.id in names.unions
-            ):
-                continue
-            rewritten = [_TypingSpelling(names).visit(m) for m in members]
-            needs_typing = needs_typing or any(names.needs_rewrite(m) for m in members)
+            # there can only be a union, whatever its members look like; a tuple of
+            # classes is what every Python takes.
+            parts = expression.elts if isinstance(expression, ast.Tuple) else [expression]
+            members = [m for part in parts for m in _union_members(part)]
+            changed = len(members) != len(parts)
             texts = []
-            for member in rewritten:
+            for member in members:
                 if isinstance(member, ast.Name) and member.id in names.unions:
                     texts.append(f"*_typing.get_args({member.id})")
-                    needs_typing = True
+                    changed = needs_typing = True
                 else:
-                    texts.append(ast.unparse(member))
-            if texts == [ast.unparse(m) for m in members] and isinstance(expression, ast.Tuple):
+                    texts.append(positions.text(member))
+            if not changed:
                 continue
             text = "(" + ", ".join(texts) + ("," if len(texts) == 1 else "") + ")"
         elif names.needs_rewrite(expression):
@@ -646,6 +652,14 @@ def _node_problems(node: ast.AST, names: _Names, allowed: tuple[str, ...]) -> It
         yield "a run-time 'X | Y' type union needs Python 3.10 (use a tuple or typing.Union)"
     if isinstance(node, ast.Subscript) and names.generic(node.value) is not None:
         yield "a run-time subscripted builtin or collections.abc generic needs Python 3.9"
+    if isinstance(node, ast.Import | ast.ImportFrom):
+        modules = [a.name for a in node.names] if isinstance(node, ast.Import) else [
+            node.module or ""
+        ]
+        for name in modules:
+            top = name.split(".")[0]
+            if top in MODULES_REMOVED and not (isinstance(node, ast.ImportFrom) and node.level):
+                yield f"module {top} was removed in Python {MODULES_REMOVED[top]}"
     if isinstance(node, ast.Import):
         for alias in node.names:
             top = alias.name.split(".")[0]
