@@ -200,6 +200,8 @@ def test_removeprefix_calls_become_compat_calls() -> None:
         ("import importlib\nimportlib.import_module('x')\n", "plain import statements"),
         ("from importlib import resources\n", "no package data"),
         ("from enum import IntEnum\n", "differs between Python 3.8 and 3.11"),
+        ("import pkgutil\n", "cannot be listed"),
+        ("import typing\ntyping.get_type_hints(int)\n", "evaluates annotations"),
         ("def f(x):\n    return isinstance(x, dict[str, int])\n", "generic needs Python 3.9"),
         ("print(int | None)\n", "run-time 'X | Y' type union"),
         ("import imp\n", "module imp was removed in Python 3.12"),

@@ -1,0 +1,1 @@
+"""The linter generator: a standalone linter rendered from the package's own modules and beliefs."""

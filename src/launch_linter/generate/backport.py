@@ -110,14 +110,15 @@ BUILTINS_NEWER = {
 }
 NOT_STANDALONE = {
     "__file__": "embedded modules have no file",
-    "pkgutil": "embedded modules cannot be listed",
-    "import_module": "embedded modules are found only through plain import statements",
     "__import__": "embedded modules are found only through plain import statements",
-    "resources": "embedded modules have no package data (importlib.resources)",
-    "get_type_hints": "it evaluates annotations, which use Python 3.10 syntax",
-    "IntEnum": "str() of its members differs between Python 3.8 and 3.11",
-    "IntFlag": "str() of its members differs between Python 3.8 and 3.11",
+    "pkgutil": "embedded modules cannot be listed",
+    "importlib.import_module": "embedded modules are found only through plain import statements",
+    "importlib.resources": "embedded modules have no package data",
+    "typing.get_type_hints": "it evaluates annotations, which use Python 3.10 syntax",
+    "enum.IntEnum": "str() of its members differs between Python 3.8 and 3.11",
+    "enum.IntFlag": "str() of its members differs between Python 3.8 and 3.11",
 }
+"""What embedded modules cannot use (names, modules and ``module.name``), and why."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -665,9 +666,8 @@ def _node_problems(node: ast.AST, names: _Names, allowed: tuple[str, ...]) -> It
             top = alias.name.split(".")[0]
             if top in MODULES_NEWER:
                 yield f"module {top} needs Python {MODULES_NEWER[top]}"
-            last = alias.name.split(".")[-1]
-            if alias.name in ("pkgutil", "importlib.resources") and last in blocked:
-                yield f"{alias.name}: {blocked[last]}"
+            if alias.name in blocked:
+                yield f"{alias.name}: {blocked[alias.name]}"
     if isinstance(node, ast.ImportFrom) and node.module:
         top = node.module.split(".")[0]
         if top in MODULES_NEWER and node.module != COMPAT_MODULE:
@@ -678,8 +678,9 @@ def _node_problems(node: ast.AST, names: _Names, allowed: tuple[str, ...]) -> It
             newer = MODULE_NEWER.get((node.module, alias.name))
             if newer is not None:
                 yield f"{node.module}.{alias.name} needs Python {newer}"
-            if alias.name in blocked and node.module != COMPAT_MODULE:
-                yield f"{node.module}.{alias.name}: {blocked[alias.name]}"
+            qualified = f"{node.module}.{alias.name}"
+            if qualified in blocked or node.module in blocked:
+                yield f"{qualified}: {blocked.get(qualified) or blocked[node.module]}"
     if isinstance(node, ast.Attribute):
         if isinstance(node.value, ast.Name):
             key = (node.value.id, node.attr)
@@ -687,10 +688,11 @@ def _node_problems(node: ast.AST, names: _Names, allowed: tuple[str, ...]) -> It
                 yield f"{key[0]}.{key[1]} needs Python {MODULE_NEWER[key]}"
             if node.value.id == "typing" and node.attr in TYPING_NEWER:
                 yield f"typing.{node.attr} needs Python {TYPING_NEWER[node.attr]}"
+            qualified = f"{node.value.id}.{node.attr}"
+            if qualified in blocked:
+                yield f"{qualified}: {blocked[qualified]}"
         if node.attr in METHODS_NEWER:
             yield f".{node.attr}() needs Python {METHODS_NEWER[node.attr]}"
-        if node.attr in blocked:
-            yield f"{node.attr}: {blocked[node.attr]}"
     if isinstance(node, ast.Name):
         if node.id in BUILTINS_NEWER:
             yield f"builtin {node.id} needs Python {BUILTINS_NEWER[node.id]}"

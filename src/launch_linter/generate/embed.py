@@ -187,8 +187,6 @@ class _Closure:
     def __init__(self, package: _Package) -> None:
         self.package = package
         self.imports: dict[str, list[_Import]] = {}
-        self.blocked: dict[str, str] = {}
-        """Module → why it cannot be embedded."""
 
     def imports_of(self, name: str) -> list[_Import]:
         if name not in self.imports:
@@ -266,7 +264,6 @@ def collect(root: Path) -> Embedding:
                 found, trouble = closure.eager(item.target)
                 if trouble:
                     notes.append(f"{where}: {item.target} left out: " + "; ".join(trouble))
-                    closure.blocked[item.target] = "; ".join(trouble)
                     continue
                 chosen |= found
                 pending = True
@@ -294,7 +291,7 @@ def _rewrite(package: _Package, names: list[str], notes: tuple[str, ...]) -> Emb
         except backport.BackportError as exc:
             problems.extend(exc.problems)
             continue
-        allowed = ("resources",) if name in DATA_READERS else ()
+        allowed = ("importlib.resources",) if name in DATA_READERS else ()
         problems.extend(backport.python38_problems(source, path, types, allowed))
         found = package.file_of(name)
         assert found is not None
