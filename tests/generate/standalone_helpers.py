@@ -88,14 +88,20 @@ def _version_of(python: Path) -> tuple[int, int] | None:
     return (int(words[0]), int(words[1])) if done.returncode == 0 and len(words) == 2 else None
 
 
+NEWEST_MINOR = 13
+"""The newest Python 3 the tests look for."""
+
+
 @functools.cache
-def old_pythons() -> tuple[str, ...]:
-    """Working interpreters from Python 3.8 to the one before this one (pyenv's, then those
+def other_pythons() -> tuple[str, ...]:
+    """Working interpreters of Python 3.8 to 3.13 other than this one (pyenv's, then those
     on PATH), oldest first."""
     found: dict[tuple[int, int], str] = {}
     versions = Path(os.environ.get("PYENV_ROOT", Path.home() / ".pyenv")) / "versions"
     folders = [p for p in os.environ.get("PATH", "").split(os.pathsep) if p]
-    for minor in range(8, sys.version_info[1]):
+    for minor in range(8, NEWEST_MINOR + 1):
+        if minor == sys.version_info[1]:
+            continue
         name = f"python3.{minor}"
         paths = sorted(versions.glob(f"3.{minor}.*/bin/{name}")) if versions.is_dir() else []
         paths.extend(Path(d) / name for d in folders)
@@ -108,7 +114,7 @@ def old_pythons() -> tuple[str, ...]:
 
 def oldest_python() -> str | None:
     """A Python 3.8 interpreter, if one can be found."""
-    pythons = old_pythons()
+    pythons = other_pythons()
     return pythons[0] if pythons and _version_of(Path(pythons[0])) == (3, 8) else None
 
 
