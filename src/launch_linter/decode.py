@@ -96,7 +96,7 @@ class Decoded:
 
 def program_words(tokens: tuple[str, ...]) -> tuple[str, ...]:
     """The words the program counts: ``ros::init`` removes ``name:=value`` remappings."""
-    if not any(":=" in t for t in tokens):
+    if ":=" not in " ".join(tokens):
         return tokens
     return tuple(t for t in tokens if ":=" not in t)
 

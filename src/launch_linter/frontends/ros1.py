@@ -184,7 +184,8 @@ class Ros1Loader:
         self.element_lines: list[tuple[str, int]] = []
         self.anon = _AnonNames()
         self.root_display = ""
-        self.node_names: dict[str, Location] = {}
+        self.node_names: dict[str, tuple[str, Element]] = {}
+        """Resolved node name -> (file, element) of its first node."""
         self._displays: dict[str, str] = {}
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
@@ -777,14 +778,14 @@ class Ros1Loader:
         """roslaunch refuses two nodes with the same resolved name in one launch tree."""
         resolved_name = ns_join(namespace, name)
         first = self.node_names.get(resolved_name)
-        here = Location(self._display(context.filename), element.line, element.column)
         if first is None:
-            self.node_names[resolved_name] = here
+            self.node_names[resolved_name] = (context.filename, element)
             return
+        where = Location(self._display(first[0]), first[1].line, first[1].column)
         self._report(
             "roslaunch_error", context.filename, element,
             f"roslaunch file contains multiple nodes named [{resolved_name}]",
-            node=name, related=(first,),
+            node=name, related=(where,),
         )
 
     def _include(self, element: Element, context: _Context) -> None:

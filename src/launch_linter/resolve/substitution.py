@@ -103,6 +103,9 @@ def _replace_all(parts: list[Part], needle: str, replacement: Value) -> list[Par
 
 
 def _words(body: str) -> list[str]:
+    """roslaunch splits a command on single spaces and drops the empty pieces."""
+    if "  " not in body and body[:1] != " " and body[-1:] != " ":
+        return body.split(" ")
     return [w for w in body.split(" ") if w]
 
 
@@ -226,7 +229,7 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
         # A whole-value $(arg NAME), half of all substitutions: the general path gives
         # the same result when the value is plain text.
         name = text[6:-1].strip(" ")
-        if name and not any(c in name for c in " $()"):
+        if name and " " not in name and "$" not in name and "(" not in name and ")" not in name:
             value = scope.args.get(name)
             if value is not None and (
                 not value or (len(value) == 1 and type(value[0]) is str and "$" not in value[0])

@@ -43,6 +43,8 @@ def is_resolved(value: Value) -> bool:
 
 def text_of(value: Value) -> str:
     """The value as text, holes shown as the substitution that was written."""
+    if len(value) == 1 and type(value[0]) is str:
+        return value[0]
     return "".join(p if isinstance(p, str) else p.text for p in value)
 
 
