@@ -71,10 +71,10 @@ def run_oracle(tool: str, files: Sequence[str], cwd: str, batch: int, jobs: int,
     return results
 
 
-def oracle_keys(row: dict[str, Any]) -> dict[Key, int | None]:
-    """Static transform nodes of one oracle row: key -> line."""
+def oracle_keys(row: dict[str, Any]) -> dict[Key, int]:
+    """Static transform nodes of one oracle row: key -> line (0 if the tool has none)."""
     return {
-        (n["resolved_name"], n["namespace"], n["package"], n["type"], n["args"]): n["line"]
+        (n["resolved_name"], n["namespace"], n["package"], n["type"], n["args"]): n["line"] or 0
         for n in row.get("static_tf", [])
         if n["package"] in TF_PACKAGES
     }

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from launch_linter.frontends.tokens import shell_words, split_args
 from launch_linter.resolve.value import Hole
 
-WORD_TEXT = st.text(alphabet=st.characters(blacklist_categories=("Cs",)), max_size=40)
+WORD_TEXT = st.text(alphabet=st.characters(exclude_categories=["Cs"]), max_size=40)
 
 
 @given(WORD_TEXT)
