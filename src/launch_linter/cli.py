@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from launch_linter import __version__
 from launch_linter.config import Config, ConfigError, config_for
@@ -278,7 +278,8 @@ def run_rules(ns: argparse.Namespace) -> int:
     width = max(len(r.id) for r in RULES)
     for rule in RULES:
         sys.stdout.write(
-            f"{rule.id:<{width}}  {rule.category.value:<12}  {rule.severity.value:<7}  {rule.summary}\n"
+            f"{rule.id:<{width}}  {rule.category.value:<12}  "
+            f"{rule.severity.value:<7}  {rule.summary}\n"
         )
     return EXIT_OK
 
@@ -297,30 +298,39 @@ def main(argv: Sequence[str] | None = None) -> int:
     if ns.command is None:
         parser.print_help()
         return EXIT_USAGE
-    handlers = {
+    handlers: dict[str, Callable[[argparse.Namespace], int]] = {
         "check": run_check,
         "transforms": run_transforms,
         "rules": run_rules,
         "explain": run_explain,
     }
     try:
-        handler = handlers.get(ns.command)
-        if handler is None:
-            handler = _extension_handler(ns.command)
+        handler = handlers.get(ns.command) or _extension_handler(ns.command)
         return handler(ns)
     except UsageError as exc:
         sys.stderr.write(f"launch-linter: error: {exc}\n")
         return EXIT_USAGE
     except BrokenPipeError:
         return EXIT_OK
+    except KeyboardInterrupt:
+        sys.stderr.write("launch-linter: interrupted\n")
+        return EXIT_USAGE
+    except Exception as exc:  # the contract: an internal failure is exit 2, never exit 1
+        if os.environ.get("LAUNCH_LINTER_DEBUG"):
+            raise
+        sys.stderr.write(
+            f"launch-linter: internal error: {type(exc).__name__}: {exc}\n"
+            "(set LAUNCH_LINTER_DEBUG=1 for the traceback, and please report it)\n"
+        )
+        return EXIT_USAGE
 
 
-def _extension_handler(command: str):  # type: ignore[no-untyped-def]
+def _extension_handler(command: str) -> Callable[[argparse.Namespace], int]:
     """Commands that need the heavier libraries import them only when used."""
     if command in ("mine", "beliefs"):
         from launch_linter.mining import commands as mining_commands
 
-        return getattr(mining_commands, f"run_{command}")
+        return mining_commands.run_mine if command == "mine" else mining_commands.run_beliefs
     if command == "generate":
         from launch_linter.generate import commands as generate_commands
 
