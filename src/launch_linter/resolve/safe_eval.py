@@ -287,6 +287,29 @@ _ORDERING: Final[dict[type[ast.cmpop], Callable[[Any, Any], object]]] = {
     ast.GtE: operator.ge,
 }
 
+# The str methods seen in launch files (joining and splitting names, case): none of them
+# can grow its input by more than replace() or join() can, and those two are sized first.
+_STRING_METHODS: Final = frozenset(
+    {
+        "join",
+        "split",
+        "rsplit",
+        "replace",
+        "strip",
+        "lstrip",
+        "rstrip",
+        "lower",
+        "upper",
+        "startswith",
+        "endswith",
+        "find",
+        "rfind",
+        "count",
+        "capitalize",
+        "title",
+    }
+)
+
 _REFUSED: Final[dict[type[ast.AST], str]] = {
     ast.Attribute: "attribute access (x.y) is",
     ast.Lambda: "lambda expressions are",
@@ -655,13 +678,48 @@ class _Interpreter:
         return _attempt(None, operator.getitem, container, index)
 
     def _call(self, node: ast.Call) -> object:
-        function = self.eval(node.func)
         if node.keywords:
             raise EvalError("keyword arguments are not supported in $(eval)")
+        if isinstance(node.func, ast.Attribute):
+            return self._string_method(node.func, node.args)
+        function = self.eval(node.func)
         args = tuple(self.eval(arg) for arg in node.args)
         if not isinstance(function, _Function):
             raise EvalError(f"{_type_name(function)!r} object is not callable")
         return self.call(function, args)
+
+    def _string_method(self, attribute: ast.Attribute, arg_nodes: list[ast.expr]) -> object:
+        """``text.method(...)`` for the few ``str`` methods launch files use on names.
+
+        Attribute access stays refused everywhere else: only a call of a whitelisted
+        method on a value that is already a ``str`` gets here, and every result is sized
+        before it is built.
+        """
+        receiver = self.eval(attribute.value)
+        name = attribute.attr
+        if not isinstance(receiver, str) or name not in _STRING_METHODS:
+            raise EvalError(f"attribute access (x.{name}) is not allowed in $(eval)")
+        args = tuple(self.eval(arg) for arg in arg_nodes)
+        self.charge(1 + len(receiver) // 64)
+        if name != "join" and not all(
+            isinstance(a, str | int) and not isinstance(a, bool) for a in args
+        ):
+            raise EvalError(f"str.{name}() takes only text or integer arguments here")
+        if name == "join":
+            if len(args) != 1:
+                raise EvalError("str.join() takes exactly one argument")
+            items = self.items(args[0], "str.join()")
+            if not all(isinstance(i, str) for i in items):
+                raise EvalError("str.join() needs a sequence of strings")
+            size = sum(len(i) for i in items if isinstance(i, str))
+            if size + len(receiver) * max(0, len(items) - 1) > MAX_ITEMS:
+                raise EvalError(f"str.join() result longer than {MAX_ITEMS} characters")
+            return self.checked(receiver.join(i for i in items if isinstance(i, str)))
+        if name == "replace" and len(args) >= 2 and isinstance(args[0], str):
+            grown = len(str(args[1])) - len(args[0])
+            if grown > 0 and len(receiver) + receiver.count(args[0]) * grown > MAX_ITEMS:
+                raise EvalError(f"str.replace() result longer than {MAX_ITEMS} characters")
+        return self.checked(_attempt(f"str.{name}()", getattr(str, name), receiver, *args))
 
     def call(self, function: _Function, args: tuple[object, ...]) -> object:
         self.charge(1)
