@@ -86,42 +86,53 @@ def _numbers(values: tuple[float, ...]) -> str:
     return "(" + ", ".join(f"{v:g}" for v in values) + ")"
 
 
-def null_displacements(
-    context: RuleContext, rule_id: str, key_of: KeyOf, what: str
+def _non_null(
+    context: RuleContext,
+    rule_id: str,
+    key_of: KeyOf,
+    what: str,
+    quantity: str,
+    values_of: Callable[[StaticTransform], str | None],
 ) -> Iterator[Diagnostic]:
-    """A transform whose key usually has zero displacement, with a non-zero one."""
+    """Transforms whose key usually has a zero ``quantity`` but whose own is not zero;
+    ``values_of`` gives the written values, or None when they are unknown or zero."""
     index = context.beliefs.by_antecedent(rule_id)
     if not index:
         return
     for transform in context.tree.transforms:
-        key, translation = key_of(transform), transform.translation
-        if key is None or translation is None or transform.null_displacement is not False:
+        key, values = key_of(transform), values_of(transform)
+        if key is None or values is None:
             continue
         for belief in index.get(key, ()):
             yield diagnostic_at(
                 rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
-                f"{what} {describe(key)} usually has zero displacement, this one has "
-                f"{_numbers(translation)} ({evidence(belief)})",
+                f"{what} {describe(key)} usually has zero {quantity}, this one has "
+                f"{values} ({evidence(belief)})",
                 belief=belief,
             )
+
+
+def _displacement(transform: StaticTransform) -> str | None:
+    if transform.translation is None or transform.null_displacement is not False:
+        return None
+    return _numbers(transform.translation)
+
+
+def _rotation(transform: StaticTransform) -> str | None:
+    if transform.rotation is None or transform.null_rotation is not False:
+        return None
+    return f"{transform.rotation.kind.value} {_numbers(transform.rotation.values)}"
+
+
+def null_displacements(
+    context: RuleContext, rule_id: str, key_of: KeyOf, what: str
+) -> Iterator[Diagnostic]:
+    """A transform whose key usually has zero displacement, with a non-zero one."""
+    return _non_null(context, rule_id, key_of, what, "displacement", _displacement)
 
 
 def null_rotations(
     context: RuleContext, rule_id: str, key_of: KeyOf, what: str
 ) -> Iterator[Diagnostic]:
     """A transform whose key usually has zero rotation, with a non-zero one."""
-    index = context.beliefs.by_antecedent(rule_id)
-    if not index:
-        return
-    for transform in context.tree.transforms:
-        key, rotation = key_of(transform), transform.rotation
-        if key is None or rotation is None or transform.null_rotation is not False:
-            continue
-        for belief in index.get(key, ()):
-            yield diagnostic_at(
-                rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
-                f"{what} {describe(key)} usually has zero rotation, this one has "
-                f"{rotation.kind.value} {_numbers(rotation.values)} "
-                f"({evidence(belief)})",
-                belief=belief,
-            )
+    return _non_null(context, rule_id, key_of, what, "rotation", _rotation)
