@@ -375,3 +375,18 @@ def test_unreadable_file(tmp_path: Path) -> None:
     tree = load_tree(str(tmp_path / "missing.launch"), LoadOptions())
     assert tree.status is FileStatus.UNREADABLE
     assert tree.diagnostics[0].rule == "parse_error"
+
+
+def test_an_unresolved_namespace_names_the_substitution_that_blocks_it() -> None:
+    from launch_linter import lint_text
+
+    result = lint_text(
+        '<launch><arg name="robot"/><group ns="$(arg robot)">'
+        '<node pkg="tf2_ros" type="static_transform_publisher" name="t" '
+        'args="0 0 0 0 0 0 a b"/></group></launch>'
+    )
+    (transform,) = result.transforms
+    assert transform.unresolved == ("namespace",)
+    assert any("$(arg robot)" in reason for reason in transform.unresolved_reasons)
+    (diagnostic,) = [d for d in result.diagnostics if d.rule == "unresolved"]
+    assert "$(arg robot)" in diagnostic.message

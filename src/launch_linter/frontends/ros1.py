@@ -93,7 +93,8 @@ class _Context:
 
     def __init__(self, ns: str, filename: str, args: dict[str, Value], open_args: bool) -> None:
         self.ns = ns
-        self.ns_unresolved = False
+        self.ns_unresolved = ""
+        """Why the namespace is unknown (the blocking substitutions); empty when known."""
         self.filename = filename
         self.args = args
         self.open_args = open_args
@@ -459,9 +460,9 @@ class Ros1Loader:
             elif tag == "test":
                 self._node(element, context, is_test=True)
 
-    def _namespace(self, element: Element, context: _Context) -> tuple[str, bool] | None:
-        """The namespace inside ``element`` and whether it is unresolved; None when
-        roslaunch refuses it (``~`` names)."""
+    def _namespace(self, element: Element, context: _Context) -> tuple[str, str] | None:
+        """The namespace inside ``element`` and why it is unresolved ("" when it is not);
+        None when roslaunch refuses it (``~`` names)."""
         if "ns" not in element.attrib:
             return context.ns, context.ns_unresolved
         ns_value = self._resolve(element, "ns", context) or ()
@@ -474,7 +475,7 @@ class Ros1Loader:
         except ValueError as exc:
             self._error(context, element, str(exc))
             return None
-        return joined, context.ns_unresolved or not is_resolved(ns_value)
+        return joined, context.ns_unresolved or _reasons(ns_value)
 
     def _child_namespace(self, element: Element, context: _Context) -> _Context | None:
         """roslaunch's ``_ns_clear_params_attr`` up to the new context (``clear_params``,
@@ -879,7 +880,7 @@ class Ros1Loader:
         return None
 
     def _transform(self, element: Element, context: _Context, condition: Condition,
-                   name_value: Value, namespace: str, ns_unresolved: bool, package: Value,
+                   name_value: Value, namespace: str, ns_unresolved: str, package: Value,
                    node_type: Value, args_value: Value) -> None:
         package_text, type_text = resolved_text(package), resolved_text(node_type)
         name = text_of(name_value) or None
@@ -927,6 +928,8 @@ class Ros1Loader:
             all_holes = (*holes(name_value), *holes(args_value), *holes(package),
                          *holes(node_type))
             reasons = tuple(dict.fromkeys(f"{h.text}: {h.reason}" for h in all_holes))
+            if ns_unresolved:
+                reasons = (*reasons, f"namespace {namespace!r}: {ns_unresolved}")
         else:
             number_issues, reasons = decoded.number_issues, ()
         known = form != "unknown"
@@ -963,6 +966,11 @@ class Ros1Loader:
                 + (f": {'; '.join(reasons)}" if reasons else ""),
                 node=name,
             )
+
+
+def _reasons(value: Value) -> str:
+    """The substitutions that leave ``value`` unresolved, with why; "" when resolved."""
+    return "; ".join(f"{h.text}: {h.reason}" for h in holes(value))
 
 
 def _single_command(text: str) -> bool:
