@@ -109,14 +109,41 @@ def _words(body: str) -> list[str]:
     return [w for w in body.split(" ") if w]
 
 
-def _first_pass_value(command: str, body: str, words: list[str], scope: SubstitutionScope) -> Value:
+Command = tuple[str, str, tuple[str, ...] | None]
+"""A ``$(…)`` of a text: its body, the text it replaces (``$(body)``) and its words, or
+None when roslaunch refuses the command (:func:`_check_command` says why)."""
+
+_LEXED: dict[str, tuple[Command, ...]] = {}
+_LEXED_SIZE = 4096
+
+
+def _commands(text: str) -> tuple[Command, ...]:
+    """:func:`collect_commands` with each command split into words, remembered by text:
+    the same attribute values come back element after element and file after file."""
+    known = _LEXED.get(text)
+    if known is None:
+        commands = []
+        for body in collect_commands(text):
+            words = _words(body)
+            valid = bool(words) and words[0] in VALID_COMMANDS
+            commands.append((body, f"$({body})", tuple(words) if valid else None))
+        if len(_LEXED) >= _LEXED_SIZE:
+            _LEXED.clear()
+        known = _LEXED[text] = tuple(commands)
+    return known
+
+
+def _first_pass_value(command: str, body: str, words: tuple[str, ...],
+                      scope: SubstitutionScope) -> Value:
+    """The value of ``$(body)``; ``words`` are the words after the command's name."""
     if command == "arg":
         if not words:
             raise SubstitutionError(f"$(arg var) must specify a variable name [{body}]")
         if len(words) > 1:
             raise SubstitutionError(f"$(arg var) may only specify one arg [{body}]")
-        if words[0] in scope.args:
-            return scope.args[words[0]]
+        value = scope.args.get(words[0])
+        if value is not None:
+            return value
         reason = (
             scope.missing_arg(words[0]) if scope.missing_arg else f"arg '{words[0]}' is not set"
         )
@@ -154,18 +181,20 @@ def _find_pass(parts: list[Part], scope: SubstitutionScope) -> list[Part]:
     flat = "".join(p if isinstance(p, str) else _HOLE_MARK for p in parts)
     if "$" not in flat:
         return parts
-    return _find_commands(parts, collect_commands(flat), scope)
+    return _find_commands(parts, _commands(flat), scope)
 
 
-def _find_commands(parts: list[Part], commands: list[str], scope: SubstitutionScope
+def _find_commands(parts: list[Part], commands: tuple[Command, ...], scope: SubstitutionScope
                    ) -> list[Part]:
-    for body in commands:
-        words = _check_command(body)
+    for body, needle, words in commands:
+        if words is None:
+            _check_command(body)
+            continue
         if words[0] != "find":
             continue
         if len(words) != 2:
             raise SubstitutionError(f"$(find pkg) command only accepts one argument [{body}]")
-        parts = _replace_find(parts, f"$({body})", words[1], scope)
+        parts = _replace_find(parts, needle, words[1], scope)
     return parts
 
 
@@ -239,13 +268,15 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
     # takes over once a hole appears.
     current = text
     parts: list[Part] | None = None
-    commands = collect_commands(text)
-    for body in commands:
-        words = _check_command(body)
-        if words[0] == "find":
+    commands = _commands(text)
+    for body, needle, words in commands:
+        if words is None:
+            _check_command(body)
             continue
-        replacement = _first_pass_value(words[0], body, words[1:], scope)
-        needle = f"$({body})"
+        command = words[0]
+        if command == "find":
+            continue
+        replacement = _first_pass_value(command, body, words[1:], scope)
         if parts is None:
             if not replacement:
                 current = current.replace(needle, "")
