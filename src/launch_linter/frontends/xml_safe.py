@@ -21,6 +21,10 @@ MAX_TEXT = 1024 * 1024
 """Most characters of text kept per element."""
 
 
+_HANDLERS = ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
+             "CommentHandler", "EntityDeclHandler", "ExternalEntityRefHandler")
+
+
 class XmlError(Exception):
     """The text is not acceptable XML; ``line``/``column`` are 1-based."""
 
@@ -155,6 +159,12 @@ def parse_xml(
         raise XmlError(message, exc.lineno, exc.offset + 1) from None
     except RecursionError:
         raise XmlError("document too deeply nested") from None
+    finally:
+        # The handlers refer to the parser: without this cycle the parser and everything
+        # the handlers hold (the whole tree) are freed at once, not by a later garbage
+        # collection, whose passes over them cost more than the parsing.
+        for handler in _HANDLERS:
+            setattr(parser, handler, None)
     if not roots:
         raise XmlError("no root element")
     return XmlDocument(roots[0], comments, element_lines, collected)
