@@ -329,15 +329,19 @@ class Ros1Loader:
         return side[1]
 
     def _new_scope(self, context: _Context, anon: dict[str, str]) -> SubstitutionScope:
+        # The scope is kept in the context, so what it holds must not lead back to the
+        # context: a reference cycle would leave the whole load to the garbage collector.
+        filename, open_args = context.filename, context.open_args
+
         def missing(name: str) -> str:
-            if context.open_args:
+            if open_args:
                 return f"arg '{name}' is not set (give it with --arg {name}:=VALUE)"
             # Only the args passed to an included file exist there: roslaunch fails.
-            message = (f"included file [{self._display(context.filename)}] requires the "
+            message = (f"included file [{self._display(filename)}] requires the "
                        f"'{name}' arg to be set")
-            if (context.filename, name) not in self._missing_reported:
-                self._missing_reported.add((context.filename, name))
-                self._error(context, self._element, message)
+            if (filename, name) not in self._missing_reported:
+                self._missing_reported.add((filename, name))
+                self._report("roslaunch_error", filename, self._element, message)
             return message
 
         return SubstitutionScope(
@@ -345,7 +349,7 @@ class Ros1Loader:
             env=self.options.env,
             find=self.options.packages.find,
             anon=lambda anon_id: self.anon.make(anon, anon_id),
-            filename=context.filename,
+            filename=filename,
             missing_arg=missing,
         )
 
@@ -358,8 +362,9 @@ class Ros1Loader:
     def _substitute(self, text: str, element: Element, label: str, context: _Context,
                     anon: dict[str, str] | None) -> Value:
         self._element = element
+        scope = context.scope if anon is None else None
         try:
-            return resolve(text, self._scope(context, anon))
+            return resolve(text, scope or self._scope(context, anon))
         except SubstitutionError as exc:
             self._error(context, element, f"<{element.tag}> {label}: {exc}")
             return (Hole(text, str(exc)),)
@@ -394,11 +399,14 @@ class Ros1Loader:
 
     def _required(self, element: Element, attribute: str, context: _Context,
                   anon: dict[str, str] | None = None) -> Value | None:
-        value = self._resolve(element, attribute, context, anon)
-        if value is None:
+        text = element.attrib.get(attribute)
+        if text is None:
             self._error(context, element,
                         f"<{element.tag}> tag is missing required attribute: '{attribute}'")
-        return value
+            return None
+        if "$" not in text:
+            return (text,) if text else ()
+        return self._substitute(text, element, attribute, context, anon)
 
     def _condition(self, element: Element, context: _Context,
                    anon: dict[str, str] | None = None) -> Condition | None:
