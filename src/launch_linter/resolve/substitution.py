@@ -133,6 +133,22 @@ def _commands(text: str) -> tuple[Command, ...]:
     return known
 
 
+_WHOLE_ARG: dict[str, str] = {}
+"""Text -> NAME when the text is exactly ``$(arg NAME)``, else ""."""
+
+
+def _whole_arg(text: str) -> str:
+    name = ""
+    if text.startswith("$(arg ") and text.endswith(")"):
+        inner = text[6:-1].strip(" ")
+        if inner and not any(mark in inner for mark in " $()"):
+            name = inner
+    if len(_WHOLE_ARG) >= _LEXED_SIZE:
+        _WHOLE_ARG.clear()
+    _WHOLE_ARG[text] = name
+    return name
+
+
 def _first_pass_value(command: str, body: str, words: tuple[str, ...],
                       scope: SubstitutionScope) -> Value:
     """The value of ``$(body)``; ``words`` are the words after the command's name."""
@@ -252,18 +268,19 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
     """Resolve one attribute value; raise :class:`SubstitutionError` where roslaunch would."""
     if "$" not in text:
         return (text,) if text else ()
-    if text.startswith("$(eval ") and text.endswith(")"):
+    # A whole-value $(arg NAME) is half of all substitutions: the general path gives the
+    # same result when the value is plain text.
+    name = _WHOLE_ARG.get(text)
+    if name is None:
+        name = _whole_arg(text)
+    if name:
+        value = scope.args.get(name)
+        if value is not None and (
+            not value or (len(value) == 1 and type(value[0]) is str and "$" not in value[0])
+        ):
+            return value
+    elif text.startswith("$(eval ") and text.endswith(")"):
         return _evaluate(text[7:-1], text, scope)
-    if text.startswith("$(arg ") and text.endswith(")"):
-        # A whole-value $(arg NAME), half of all substitutions: the general path gives
-        # the same result when the value is plain text.
-        name = text[6:-1].strip(" ")
-        if name and " " not in name and "$" not in name and "(" not in name and ")" not in name:
-            value = scope.args.get(name)
-            if value is not None and (
-                not value or (len(value) == 1 and type(value[0]) is str and "$" not in value[0])
-            ):
-                return value
     # ``current`` holds the text while every replacement so far was plain text; ``parts``
     # takes over once a hole appears.
     current = text
@@ -286,21 +303,26 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
                 continue
             parts = [current]
         parts = _replace_all(parts, needle, replacement)
+    # Every list of parts here is already joined (one non-empty text, or the output of
+    # ``join``), so the result is that list as a tuple.
     if parts is None:
         if "$" not in current:
             return (current,) if current else ()
         if current is text:
             # Only $(find) in the text: the second pass sees the same commands.
-            return join(_find_commands([text], commands, scope))
+            return tuple(_find_commands([text], commands, scope))
         parts = [current]
-    return join(_find_pass(parts, scope))
+    return tuple(_find_pass(parts, scope))
 
 
 def to_bool(value: Value) -> bool | None:
     """roslaunch's if/unless truth rule; None when unresolved; ValueError when not a bool."""
-    if not is_resolved(value):
+    if len(value) == 1 and type(value[0]) is str:
+        text = value[0].lower().strip()
+    elif is_resolved(value):
+        text = "".join(p for p in value if isinstance(p, str)).lower().strip()
+    else:
         return None
-    text = "".join(p for p in value if isinstance(p, str)).lower().strip()
     if text in ("true", "1"):
         return True
     if text in ("false", "0"):

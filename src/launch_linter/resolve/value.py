@@ -24,14 +24,18 @@ def literal(text: str) -> Value:
 def join(parts: list[Part] | tuple[Part, ...]) -> Value:
     """Concatenate parts, merging adjacent strings and dropping empty ones."""
     out: list[Part] = []
+    text = ""
+    """The run of strings since the last hole."""
     for part in parts:
         if isinstance(part, str):
-            if not part:
-                continue
-            if out and isinstance(out[-1], str):
-                out[-1] = out[-1] + part
-                continue
+            text += part
+            continue
+        if text:
+            out.append(text)
+            text = ""
         out.append(part)
+    if text:
+        out.append(text)
     return tuple(out)
 
 
