@@ -105,11 +105,19 @@ def _numbers(words: tuple[str, ...], count: int) -> tuple[list[float], list[Numb
     values: list[float] = []
     issues: list[NumberIssue] = []
     for index in range(count):
-        value, whole = atof(words[index])
+        word = words[index]
+        value, whole = _ATOF_MEMO.get(word) or atof(word)
         if not whole or value - value != 0.0:  # junk, or inf/nan
-            issues.append(NumberIssue(index, words[index], value))
+            issues.append(NumberIssue(index, word, value))
         values.append(value)
     return values, issues
+
+
+# Which words are numbers, by (rotation size, whether a period follows the frames).
+_NUMERIC_INDICES = {
+    (size, with_period): tuple(range(3 + size)) + ((5 + size,) if with_period else ())
+    for size in (3, 4) for with_period in (False, True)
+}
 
 
 def _layout(
@@ -132,7 +140,7 @@ def _layout(
         period_ms=period,
         arity_issue=issue,
         number_issues=tuple(issues),
-        numeric_indices=tuple(range(numeric)) + ((numeric + 2,) if with_period else ()),
+        numeric_indices=_NUMERIC_INDICES[rotation_size, with_period],
         parent_index=numeric,
         child_index=numeric + 1,
     )

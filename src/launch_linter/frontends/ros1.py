@@ -50,7 +50,8 @@ _PARAM_VALUE_ATTRS = ("value", "textfile", "binfile", "command")
 _ROSPARAM_ATTRS = ("command", "ns", "file", "param", "subst_value")
 _MACHINE_OLD_ATTRS = ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")
 _MACHINE_ATTRS = ("env-loader", "ssh-port", "user", "password", "default", "timeout")
-_PARAM_TYPES = ("auto", "str", "string", "int", "double", "bool", "boolean", "yaml")
+_UNCHECKED_PARAM_TYPES = ("str", "string", "auto", "yaml")
+"""The ``<param>`` types whose values roslaunch takes as they are (YAML is not checked)."""
 
 
 def relative_to_cwd(path: str) -> str:
@@ -414,9 +415,8 @@ class Ros1Loader:
         attrib = element.attrib
         if "if" not in attrib and "unless" not in attrib:
             return ALWAYS
-        if_value, unless_value = self._resolve_all(element, ("if", "unless"), context, anon)
-        if if_value is None and unless_value is None:
-            return ALWAYS
+        if_value = self._resolve(element, "if", context, anon)
+        unless_value = self._resolve(element, "unless", context, anon)
         if if_value is not None and unless_value is not None:
             self._error(context, element, "cannot set both 'if' and 'unless' on the same tag")
         positive = if_value is not None
@@ -1009,8 +1009,8 @@ def _is_positive_number(text: str) -> bool:
 def _param_value_problem(value: str, param_type: str) -> str | None:
     """What roslaunch's ``convert_value`` refuses (YAML is not checked)."""
     kind = param_type.lower().strip()
-    if kind not in _PARAM_TYPES:
-        return f"Unknown type '{kind}'"
+    if kind in _UNCHECKED_PARAM_TYPES:
+        return None
     try:
         if kind == "int":
             int(value)
@@ -1018,6 +1018,8 @@ def _param_value_problem(value: str, param_type: str) -> str | None:
             float(value)
         elif kind in ("bool", "boolean"):
             to_bool((value,))
+        else:
+            return f"Unknown type '{kind}'"
     except ValueError as exc:
         return str(exc)
     return None
