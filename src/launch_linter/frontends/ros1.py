@@ -30,7 +30,7 @@ from launch_linter.resolve.substitution import (
     resolve,
     to_bool,
 )
-from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+from launch_linter.resolve.value import Hole, Value, holes, resolved_text, text_of
 
 STATIC_TF_TYPE = "static_transform_publisher"
 TF_PACKAGES = ("tf", "tf2_ros")
@@ -891,10 +891,11 @@ class Ros1Loader:
                    name_value: Value, namespace: str, ns_unresolved: str, package: Value,
                    node_type: Value, args_value: Value) -> None:
         package_text, type_text = resolved_text(package), resolved_text(node_type)
-        name = text_of(name_value) or None
+        name_text = resolved_text(name_value)
+        name = name_text or text_of(name_value) or None
         words = split_args(args_value)
         unresolved: list[str] = []
-        if not is_resolved(name_value) or name is None:
+        if name_text is None or name is None:
             unresolved.append("name")
         if ns_unresolved:
             unresolved.append("namespace")
@@ -949,9 +950,9 @@ class Ros1Loader:
             included_from=context.included_from,
             name=name,
             namespace=namespace,
-            package=text_of(package),
-            executable=text_of(node_type),
-            args_written=element.get("args") or "",
+            package=text_of(package) if package_text is None else package_text,
+            executable=text_of(node_type) if type_text is None else type_text,
+            args_written=element.attrib.get("args") or "",
             args=text_of(args_value),
             tokens=words.words,
             parent_written=decoded.parent if known else None,
@@ -963,7 +964,7 @@ class Ros1Loader:
             arity_issue=arity_issue,
             number_issues=number_issues,
             condition=_conjoin(context.condition, condition),
-            unresolved=tuple(dict.fromkeys(unresolved)),
+            unresolved=tuple(dict.fromkeys(unresolved)) if unresolved else (),
             unresolved_reasons=reasons,
         )
         self.transforms.append(transform)
