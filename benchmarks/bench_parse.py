@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """How fast launch-linter reads ROS 1 launch files, against the floor and against roslaunch.
 
-    python benchmarks/bench_parse.py [--corpus DIR] [--runs 5]
+    python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--profile N]
 
 Over the latest version of every corpus file (``manifest.jsonl``, ``latest: true``;
 ``../shared/corpus`` relative to the repository root by default), with every file's bytes
@@ -19,13 +19,18 @@ already in memory, it reports files per second (median of ``--runs`` passes) for
 and the ratios, all from the same run. Each figure is given twice: from wall-clock time,
 and from the CPU time of the process (steadier when other work shares the machine).
 (a) and (b) alternate pass by pass so that a change of machine load affects both alike.
+
+``--profile N`` instead runs one pass of (b) under ``cProfile`` and prints its N costliest
+functions by own time (the profiler slows everything down: compare shares, not times).
 """
 
 from __future__ import annotations
 
 import argparse
+import cProfile
 import json
 import os
+import pstats
 import statistics
 import subprocess
 import sys
@@ -102,6 +107,8 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
     parser.add_argument("--corpus", default=CORPUS)
     parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--profile", type=int, metavar="N", default=0,
+                        help="profile one pass of launch-linter and show N functions")
     ns = parser.parse_args()
     if not os.path.exists(os.path.join(ns.corpus, "manifest.jsonl")):
         print(f"no corpus at {ns.corpus}", file=sys.stderr)
@@ -117,6 +124,11 @@ def main() -> int:
     # Input files are shown as given, as the engine shows them.
     ours_pass = make_ours_pass(LoadOptions(packages=PackageIndex([]), display_path=str))
     ours_pass(items)  # warm-up: imports, regular expressions
+    if ns.profile:
+        profiler = cProfile.Profile()
+        profiler.runcall(ours_pass, items)
+        pstats.Stats(profiler).sort_stats("tottime").print_stats(ns.profile)
+        return 0
     floor_times, ours_times = [], []
     for _ in range(ns.runs):
         floor_times.append(timed(floor_pass, items))
