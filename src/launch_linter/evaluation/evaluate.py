@@ -24,7 +24,7 @@ from launch_linter.evaluation.lint import Linted, LintOutcome, Version, lint_byt
 from launch_linter.evaluation.study import STUDY_FILES
 from launch_linter.evaluation.table import FaultTable, fault_table, is_fault_rule, render_csv
 from launch_linter.evaluation.table import render_markdown as render_table
-from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.mining.ingest import MANIFEST, CorpusEntry, CorpusError, read_corpus
 from launch_linter.mining.store import Store, StoredVersion, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES, BeliefSet
@@ -91,8 +91,7 @@ def _manifest_head_paths(root: str) -> dict[tuple[str, str, str], tuple[str, ...
 def _read(entry: CorpusEntry, sha256: str) -> bytes | str:
     """The bytes of ``entry``, or why they cannot be used."""
     try:
-        with open(entry.source, "rb") as handle:
-            data = handle.read(MAX_BYTES + 1)
+        data = read_launch_bytes(entry.source)
     except OSError as exc:
         return f"cannot read {entry.source}: {exc.strerror or exc}"
     if hashlib.sha256(data).hexdigest() != sha256:

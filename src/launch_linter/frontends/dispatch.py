@@ -14,7 +14,7 @@ import re
 
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
 from launch_linter.frontends.ros2_launch import load_ros2
-from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.launch import LaunchTree
 
 LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.yaml", ".launch.yml", ".launch.py")
@@ -64,8 +64,7 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
     """Read the launch tree rooted at ``path`` with the front-end its format needs."""
     if data is None and not path.lower().endswith((".py", ".yaml", ".yml")):
         try:
-            with open(path, "rb") as handle:
-                data = handle.read(MAX_BYTES + 1)
+            data = read_launch_bytes(path)
         except OSError:
             # The ROS 1 loader reports the file as unreadable.
             return load_ros1(path, options, None)

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
-from launch_linter.frontends.xml_safe import MAX_BYTES, Element, XmlError, parse_xml
+from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
@@ -169,10 +169,6 @@ def _bool_attribute(value: str, label: str) -> str | None:
     return f"invalid bool value for {label}: {value}"
 
 
-def _read(path: str) -> bytes:
-    with open(path, "rb") as handle:
-        return handle.read(MAX_BYTES + 1)
-
 
 class Ros1Loader:
     """Loads one root file (and its includes) into a :class:`LaunchTree`."""
@@ -220,7 +216,7 @@ class Ros1Loader:
         self.root_display = self._display(absolute)
         if data is None:
             try:
-                data = _read(absolute)
+                data = read_launch_bytes(absolute)
             except OSError as exc:
                 self._report("parse_error", absolute, None,
                              f"cannot read file: {exc.strerror or exc}")
@@ -855,7 +851,7 @@ class Ros1Loader:
                          f"{MAX_FILES_PER_TREE} files in the tree; not followed")
             return
         try:
-            data = _read(absolute)
+            data = read_launch_bytes(absolute)
         except OSError as exc:
             self._error(context, element,
                         f"cannot read included file {path}: {exc.strerror or exc}")

@@ -44,7 +44,7 @@ from launch_linter.frontends.ros2_actions import (
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
-from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
@@ -159,7 +159,7 @@ class Ros2Loader:
         self.root_display = self._display(absolute)
         if data is None:
             try:
-                data = _read(absolute)
+                data = read_launch_bytes(absolute)
             except OSError as exc:
                 if self.root_display not in self.files:
                     self.files.append(self.root_display)
@@ -404,7 +404,7 @@ class Ros2Loader:
                          f"includes nested deeper than {MAX_INCLUDE_DEPTH} levels; not followed")
             return
         try:
-            data = _read(absolute)
+            data = read_launch_bytes(absolute)
         except OSError as exc:
             self._report("roslaunch_error", action.where,
                          f"cannot read included file {path}: {exc.strerror or exc}")
@@ -596,10 +596,6 @@ def _locate(path: str, including_file: str) -> str | None:
             return os.path.abspath(candidate)
     return None
 
-
-def _read(path: str) -> bytes:
-    with open(path, "rb") as handle:
-        return handle.read(MAX_BYTES + 1)
 
 
 def load_ros2(path: str, options: LoadOptions, data: bytes | None = None) -> LaunchTree:

@@ -25,6 +25,13 @@ _HANDLERS = ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
              "CommentHandler", "EntityDeclHandler", "ExternalEntityRefHandler")
 
 
+def read_launch_bytes(path: str) -> bytes:
+    """A launch file's bytes, one byte past the size limit at most (so that an oversized
+    file is reported as such without being read whole)."""
+    with open(path, "rb") as handle:
+        return handle.read(MAX_BYTES + 1)
+
+
 class XmlError(Exception):
     """The text is not acceptable XML; ``line``/``column`` are 1-based."""
 

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from launch_linter.engine import discover
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
-from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.mining.progress import Progress
 from launch_linter.mining.store import FileRef, ParsedContent, RepoInfo, Store, transform_row
 from launch_linter.model.launch import FileStatus
@@ -209,15 +209,10 @@ def _identity(path: str) -> str:
     return path
 
 
-def _read_bounded(path: str) -> bytes:
-    with open(path, "rb") as handle:
-        return handle.read(MAX_BYTES + 1)
-
-
 def parse_job(job: ParseJob) -> ParsedContent:
     """Parse one distinct content (runs in a worker process)."""
     try:
-        data = _read_bounded(job.source)
+        data = read_launch_bytes(job.source)
     except OSError as exc:
         return ParsedContent(job.sha256, 0, "unreadable", f"cannot read: {exc.strerror or exc}", ())
     if hashlib.sha256(data).hexdigest() != job.sha256:
@@ -289,7 +284,7 @@ def ingest(
             unreadable.append((entry.ref, "outside the corpus folder"))
             continue
         try:
-            data = _read_bounded(entry.source)
+            data = read_launch_bytes(entry.source)
         except OSError as exc:
             unreadable.append((entry.ref, f"cannot read: {exc.strerror or exc}"))
             continue
