@@ -1159,27 +1159,29 @@ class Interpreter:
                           self.subs(name, node, "argument name"),
                           self.optional_subs(default, node, "default value"))
 
+    def _assignment(self, action: type[SetVar] | type[SetEnv], args: list[object],
+                    kwargs: dict[str, object], node: ast.Call, sets: bool) -> object:
+        """``Set…(name, value)`` or, with ``sets`` false, ``Unset…(name)``."""
+        where, condition = self.where(node), self.condition(kwargs, node)
+        name = self.subs(self.arg(args, kwargs, 0, "name"), node, "name")
+        value = self.subs(self.arg(args, kwargs, 1, "value"), node, "value") if sets else None
+        return action(where, condition, name, value)
+
     def launch_SetLaunchConfiguration(self, args: list[object], kwargs: dict[str, object],
                                       node: ast.Call) -> object:
-        return SetVar(self.where(node), self.condition(kwargs, node),
-                      self.subs(self.arg(args, kwargs, 0, "name"), node, "name"),
-                      self.subs(self.arg(args, kwargs, 1, "value"), node, "value"))
+        return self._assignment(SetVar, args, kwargs, node, sets=True)
 
     def launch_UnsetLaunchConfiguration(self, args: list[object], kwargs: dict[str, object],
                                         node: ast.Call) -> object:
-        return SetVar(self.where(node), self.condition(kwargs, node),
-                      self.subs(self.arg(args, kwargs, 0, "name"), node, "name"), None)
+        return self._assignment(SetVar, args, kwargs, node, sets=False)
 
     def launch_SetEnvironmentVariable(self, args: list[object], kwargs: dict[str, object],
                                       node: ast.Call) -> object:
-        return SetEnv(self.where(node), self.condition(kwargs, node),
-                      self.subs(self.arg(args, kwargs, 0, "name"), node, "name"),
-                      self.subs(self.arg(args, kwargs, 1, "value"), node, "value"))
+        return self._assignment(SetEnv, args, kwargs, node, sets=True)
 
     def launch_UnsetEnvironmentVariable(self, args: list[object], kwargs: dict[str, object],
                                         node: ast.Call) -> object:
-        return SetEnv(self.where(node), self.condition(kwargs, node),
-                      self.subs(self.arg(args, kwargs, 0, "name"), node, "name"), None)
+        return self._assignment(SetEnv, args, kwargs, node, sets=False)
 
     def launch_PushRosNamespace(self, args: list[object], kwargs: dict[str, object],
                                 node: ast.Call) -> object:

@@ -167,40 +167,23 @@ class _Parser:
         return Call(name, tuple(args), self.source[start : self.pos])
 
     def argument(self, depth: int) -> Subs:
+        """One argument of a substitution: a quoted text, or a bare word that ends at a
+        space or the closing parenthesis. Both may hold nested substitutions and ``\\``
+        escapes."""
+        quote = None
         if self.pos < len(self.source) and self.source[self.pos] in "'\"":
-            return self.quoted(self.source[self.pos], depth)
-        parts: list[Sub] = []
-        text: list[str] = []
-        while self.pos < len(self.source):
-            char = self.source[self.pos]
-            if char in " )":
-                break
-            if self.source.startswith("$(", self.pos):
-                if text:
-                    parts.append(Text("".join(text)))
-                    text.clear()
-                parts.append(self.call(depth + 1))
-                continue
-            if char == "\\" and self.pos + 1 < len(self.source):
-                text.append(self.source[self.pos + 1])
-                self.pos += 2
-                continue
-            if char in "'\"($":
-                raise self.error(f"unexpected {char!r} in a substitution argument")
-            text.append(char)
+            quote = self.source[self.pos]
             self.pos += 1
-        if text:
-            parts.append(Text("".join(text)))
-        return tuple(parts)
-
-    def quoted(self, quote: str, depth: int) -> Subs:
-        self.pos += 1
         parts: list[Sub] = []
         text: list[str] = []
         while True:
             if self.pos >= len(self.source):
-                raise self.error(f"quoted argument is not closed by {quote}")
+                if quote is not None:
+                    raise self.error(f"quoted argument is not closed by {quote}")
+                break
             char = self.source[self.pos]
+            if quote is None and char in " )":
+                break
             if char == quote:
                 self.pos += 1
                 break
@@ -214,12 +197,13 @@ class _Parser:
                 text.append(self.source[self.pos + 1])
                 self.pos += 2
                 continue
+            if quote is None and char in "'\"($":
+                raise self.error(f"unexpected {char!r} in a substitution argument")
             text.append(char)
             self.pos += 1
         if text:
             parts.append(Text("".join(text)))
         return tuple(parts)
-
 
 def parse(text: str) -> Subs:
     """Parse an attribute value; raise :class:`SubstitutionSyntaxError` if launch would."""
