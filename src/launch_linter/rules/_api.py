@@ -7,7 +7,15 @@ from dataclasses import dataclass, field
 from types import ModuleType
 
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Location, Severity
+from launch_linter.model.diagnostic import (
+    Applicability,
+    Belief,
+    Category,
+    Diagnostic,
+    Fix,
+    Location,
+    Severity,
+)
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
 
@@ -31,6 +39,8 @@ class Rule:
     summary: str
     doc: str
     check: Check
+    fix: Applicability | None = None
+    """The kind of fix the rule offers (its module's ``FIX``), None for none."""
 
 
 def diagnostic_at(
@@ -41,6 +51,7 @@ def diagnostic_at(
     message: str,
     related: Iterable[StaticTransform | Location] = (),
     belief: Belief | None = None,
+    fix: Fix | None = None,
 ) -> Diagnostic:
     """A diagnostic located at ``transform``'s node, ``related`` pointing at other places."""
     locations = tuple(
@@ -57,6 +68,7 @@ def diagnostic_at(
         node=transform.name,
         related=locations,
         belief=belief,
+        fix=fix,
     )
 
 
@@ -76,6 +88,7 @@ def rule_from_module(module: ModuleType) -> Rule:
         summary=doc.splitlines()[0] if doc else module.ID,
         doc=doc,
         check=module.check,
+        fix=getattr(module, "FIX", None),
     )
 
 

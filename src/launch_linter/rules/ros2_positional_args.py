@@ -29,20 +29,64 @@ is easy to get wrong.
         args="--z 0.2 --frame-id base_link --child-frame-id laser"/>
 </launch>
 ```
+
+## Fix
+Unsafe, or safe when `--ros-distro` (or the `ros-distro` configuration key) names Humble
+or a newer distribution: rewrites the positional arguments to the flags. Foxy and older
+have no flags, so there the rewrite would break the node.
 """
 
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Applicability, Fix
+from launch_linter.model.transform import RotationKind, StaticTransform
 from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.rules._fixes import (
+    FLAGS_FROM,
+    QUATERNION_FLAGS,
+    YPR_FLAGS,
+    fixable,
+    replace_words,
+)
 
 ID = "ros2_positional_args"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
+FIX = Applicability.UNSAFE
+
+
+def _flags_fix(transform: StaticTransform) -> Fix | None:
+    tokens = transform.tokens
+    if not fixable(transform) or any(":=" in t or t.startswith("-") and not _number(t)
+                                     for t in tokens):
+        return None
+    rotation = transform.rotation
+    if rotation is None:
+        return None
+    flags = YPR_FLAGS if rotation.kind is RotationKind.YPR else QUATERNION_FLAGS
+    if len(tokens) != len(flags) + 2:
+        return None
+    words = [f"{flag} {value}" for flag, value in zip(flags, tokens)]
+    words.append(f"--frame-id {tokens[-2]} --child-frame-id {tokens[-1]}")
+    text = " ".join(words)
+    return replace_words(
+        transform, FIX, f"write: {text}", [(0, len(tokens), text)], safe_from_distro=FLAGS_FROM
+    )
+
+
+def _number(word: str) -> bool:
+    try:
+        float(word)
+    except ValueError:
+        return False
+    return True
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
             if issue.kind == "positional":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+                yield diagnostic_at(
+                    ID, CATEGORY, SEVERITY, transform, issue.message, fix=_flags_fix(transform)
+                )
