@@ -457,10 +457,8 @@ def run_check(ns: argparse.Namespace) -> int:
         return _fix_stdin(ns, options)
     if ns.diff:
         return _print_diff(ns, lint_command_paths(ns, options, config))
-    if ns.fix:
-        result = _run_fixes(ns, options, config)
-    else:
-        result = lint_command_paths(ns, options, config)
+    fixing = ns.fix
+    result = _run_fixes(ns, options, config) if fixing else lint_command_paths(ns, options, config)
     _write_output(ns, _report(ns, result, options))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")

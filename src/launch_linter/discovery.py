@@ -18,8 +18,9 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Callable, List, Optional, Sequence, Tuple
+from typing import Callable  # noqa: UP035 (subscripted at run time: Python 3.8)
 
 LAUNCH_SUFFIXES = (
     ".launch",
@@ -33,7 +34,7 @@ LAUNCH_SUFFIXES = (
     "_launch.py",
 )
 VCS_FOLDERS = (".git", ".hg", ".svn", ".bzr", "_darcs", "CVS", ".jj", ".pijul")
-DEFAULT_EXCLUDE: Tuple[str, ...] = (
+DEFAULT_EXCLUDE: tuple[str, ...] = (
     *VCS_FOLDERS,
     ".*",  # hidden folders (editor and tool caches); the walk always skipped them
     "__pycache__",
@@ -120,13 +121,13 @@ class Exclusions:
     """Glob patterns (ruff's ``exclude``/``extend-exclude``) matched against a path's
     base name, its path relative to ``base`` and its absolute path."""
 
-    patterns: Tuple[str, ...] = DEFAULT_EXCLUDE
+    patterns: tuple[str, ...] = DEFAULT_EXCLUDE
     base: str = "."
 
     @classmethod
     def of(
         cls,
-        exclude: Optional[Sequence[str]] = None,
+        exclude: Sequence[str] | None = None,
         extend_exclude: Sequence[str] = (),
         base: str = ".",
     ) -> Exclusions:
@@ -151,13 +152,13 @@ class Exclusions:
 
 def discover(
     paths: Sequence[str],
-    exclusions: Optional[Exclusions] = None,
-    ignored: Optional[Ignored] = None,
-) -> List[InputFile]:
+    exclusions: Exclusions | None = None,
+    ignored: Ignored | None = None,
+) -> list[InputFile]:
     """Input files: each file named, and launch files found under each folder named."""
     rules = exclusions if exclusions is not None else Exclusions()
-    found: List[InputFile] = []
-    seen: set = set()
+    found: list[InputFile] = []
+    seen: set[str] = set()
 
     def add(path: str) -> None:
         real = os.path.realpath(path)
@@ -172,7 +173,7 @@ def discover(
         if not os.path.isdir(given):
             add(given)
             continue
-        visited: set = set()
+        visited: set[str] = set()
         for directory, subdirs, files in os.walk(given, followlinks=False):
             real_dir = os.path.realpath(directory)
             if real_dir in visited:

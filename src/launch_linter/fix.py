@@ -13,8 +13,8 @@ from __future__ import annotations
 import ast
 import difflib
 import re
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
-from typing import Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
 from launch_linter.rules._fixes import distro_at_least
@@ -25,10 +25,10 @@ MAX_FIX_PASSES = 8
 _ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _WORD = re.compile(rb"[^ \t\r\n]+")
 
-Span = Tuple[int, int]
+Span = tuple[int, int]
 
 
-def _line_starts(data: bytes) -> List[int]:
+def _line_starts(data: bytes) -> list[int]:
     starts = [0]
     index = data.find(b"\n")
     while index >= 0:
@@ -37,7 +37,7 @@ def _line_starts(data: bytes) -> List[int]:
     return starts
 
 
-def _xml_word_spans(data: bytes, line: int, column: int) -> Optional[List[Span]]:
+def _xml_word_spans(data: bytes, line: int, column: int) -> list[Span] | None:
     """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
     starts = _line_starts(data)
     if not 1 <= line <= len(starts):
@@ -60,7 +60,7 @@ def _xml_word_spans(data: bytes, line: int, column: int) -> Optional[List[Span]]
         elif byte == ord(">"):
             break
         end += 1
-    found: Optional[Span] = None
+    found: Span | None = None
     for match in _ATTRIBUTE.finditer(data, position, end):
         if match.group(1) == b"args":
             group = 2 if match.group(2) is not None else 3
@@ -73,7 +73,7 @@ def _xml_word_spans(data: bytes, line: int, column: int) -> Optional[List[Span]]
     return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
 
 
-def _python_word_spans(data: bytes, line: int, column: int) -> Optional[List[Span]]:
+def _python_word_spans(data: bytes, line: int, column: int) -> list[Span] | None:
     """Byte spans (quotes included) of the string items of ``arguments=[...]`` of the call
     at line:column; None unless every item is a plain one-line string literal."""
     try:
@@ -87,7 +87,7 @@ def _python_word_spans(data: bytes, line: int, column: int) -> Optional[List[Spa
         for keyword in node.keywords:
             if keyword.arg != "arguments" or not isinstance(keyword.value, (ast.List, ast.Tuple)):
                 continue
-            spans: List[Span] = []
+            spans: list[Span] = []
             for item in keyword.value.elts:
                 if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
                     return None
@@ -104,7 +104,7 @@ def _python_literal(text: str, like: bytes) -> str:
     return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
 
 
-def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> Tuple[Edit, ...]:
+def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
     """The byte edits of ``fix`` in ``data`` (the file ``path``); () when not found."""
     python = path.endswith(".py")
     spans = (
@@ -130,7 +130,7 @@ def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> Tuple[Ed
         written = tuple(w.decode("utf-8", "replace") for w in words)
     if written != fix.tokens:
         return ()
-    edits: List[Edit] = []
+    edits: list[Edit] = []
     for token_edit in fix.token_edits:
         first, last = token_edit.start, token_edit.end - 1
         if not 0 <= first <= last < len(spans):
@@ -152,7 +152,7 @@ def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> Tuple[Ed
     return tuple(edits)
 
 
-def read_bytes(path: str) -> Optional[bytes]:
+def read_bytes(path: str) -> bytes | None:
     try:
         with open(path, "rb") as handle:
             data = handle.read(MAX_FIX_BYTES + 1)
@@ -163,13 +163,13 @@ def read_bytes(path: str) -> Optional[bytes]:
 
 def with_located_fixes(
     diagnostics: Sequence[Diagnostic],
-    distro: Optional[str] = None,
-    sources: Optional[Mapping[str, bytes]] = None,
-) -> Tuple[Diagnostic, ...]:
+    distro: str | None = None,
+    sources: Mapping[str, bytes] | None = None,
+) -> tuple[Diagnostic, ...]:
     """Each diagnostic with its fix located in its file (or without a fix when it cannot
     be), a fix that is safe for the target distribution marked safe."""
-    cache: Dict[str, Optional[bytes]] = dict(sources or {})
-    out: List[Diagnostic] = []
+    cache: dict[str, bytes | None] = dict(sources or {})
+    out: list[Diagnostic] = []
     for diagnostic in diagnostics:
         fix = diagnostic.fix
         if fix is None:
@@ -202,15 +202,15 @@ def wanted(diagnostic: Diagnostic, unsafe: bool) -> bool:
     )
 
 
-def apply_edits(data: bytes, fixes: Iterable[Fix]) -> Tuple[bytes, List[Fix]]:
+def apply_edits(data: bytes, fixes: Iterable[Fix]) -> tuple[bytes, list[Fix]]:
     """``data`` with every fix whose edits overlap no earlier fix's applied; the fixes
     applied. A fix is all or nothing."""
-    taken: List[Tuple[int, int]] = []
-    applied: List[Fix] = []
-    chosen: List[Edit] = []
+    taken: list[tuple[int, int]] = []
+    applied: list[Fix] = []
+    chosen: list[Edit] = []
     for fix in fixes:
         spans = [(e.start, e.end) for e in fix.edits]
-        if any(a < d and c < b or a == b == c == d for a, b in spans for c, d in taken):
+        if any((a < d and c < b) or a == b == c == d for a, b in spans for c, d in taken):
             continue
         taken.extend(spans)
         chosen.extend(fix.edits)
@@ -221,12 +221,14 @@ def apply_edits(data: bytes, fixes: Iterable[Fix]) -> Tuple[bytes, List[Fix]]:
     return out, applied
 
 
-def fixes_by_file(diagnostics: Iterable[Diagnostic], unsafe: bool) -> Dict[str, List[Fix]]:
-    grouped: Dict[str, List[Fix]] = {}
+def fixes_by_file(diagnostics: Iterable[Diagnostic], unsafe: bool) -> dict[str, list[Fix]]:
+    grouped: dict[str, list[Fix]] = {}
     for diagnostic in diagnostics:
-        if wanted(diagnostic, unsafe) and diagnostic.fix is not None:
-            if diagnostic.fix not in grouped.setdefault(diagnostic.path, []):
-                grouped[diagnostic.path].append(diagnostic.fix)
+        fix = diagnostic.fix
+        if wanted(diagnostic, unsafe) and fix is not None:
+            listed = grouped.setdefault(diagnostic.path, [])
+            if fix not in listed:
+                listed.append(fix)
     return grouped
 
 
@@ -240,11 +242,11 @@ def fix_until_stable(
     lint: Callable[[], Sequence[Diagnostic]],
     unsafe: bool,
     write: Callable[[str, bytes], None],
-    read: Callable[[str], Optional[bytes]] = read_bytes,
-) -> Tuple[Dict[str, int], Sequence[Diagnostic]]:
+    read: Callable[[str], bytes | None] = read_bytes,
+) -> tuple[dict[str, int], Sequence[Diagnostic]]:
     """Apply fixes, lint again, repeat while something changes (bounded). Returns the
     count of fixes applied per rule and the diagnostics of the last lint."""
-    counts: Dict[str, int] = {}
+    counts: dict[str, int] = {}
     diagnostics = lint()
     for _ in range(MAX_FIX_PASSES):
         grouped = fixes_by_file(diagnostics, unsafe)

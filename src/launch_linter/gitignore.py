@@ -10,7 +10,6 @@ git does. A folder that is ignored is not entered.
 from __future__ import annotations
 
 import os
-from typing import Dict, List, Optional
 
 import pathspec
 
@@ -22,10 +21,10 @@ class GitIgnore:
     """The ``.gitignore`` files met so far, read once each."""
 
     def __init__(self) -> None:
-        self._specs: Dict[str, Optional[pathspec.GitIgnoreSpec]] = {}
-        self._tops: Dict[str, str] = {}
+        self._specs: dict[str, pathspec.GitIgnoreSpec | None] = {}
+        self._tops: dict[str, str] = {}
 
-    def _spec(self, directory: str) -> Optional[pathspec.GitIgnoreSpec]:
+    def _spec(self, directory: str) -> pathspec.GitIgnoreSpec | None:
         if directory not in self._specs:
             spec = None
             try:
@@ -59,7 +58,7 @@ class GitIgnore:
         path = os.path.abspath(path)
         directory = os.path.dirname(path)
         top = self._top(directory)
-        chain: List[str] = []
+        chain: list[str] = []
         current = directory
         for _ in range(MAX_WALK_UP):
             chain.append(current)
@@ -83,7 +82,7 @@ class GitIgnore:
         return verdict
 
 
-def _check(spec: pathspec.GitIgnoreSpec, relative: str) -> Optional[bool]:
+def _check(spec: pathspec.GitIgnoreSpec, relative: str) -> bool | None:
     """True (ignored), False (re-included by a ``!`` pattern) or None (no pattern)."""
     check_file = getattr(spec, "check_file", None)
     if check_file is not None:

@@ -17,7 +17,6 @@ from launch_linter.frontends.ros2_launch import load_ros2
 from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.launch import LaunchTree
 
-
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 # What only ROS 2 launch XML has. Every file is tested, so the tests are ordered by cost:
 # one pattern for the tags only ROS 2 has and one for its substitutions (a regular

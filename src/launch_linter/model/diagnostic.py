@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
-from typing import Optional, Tuple
 
 
 class Severity(str, Enum):
@@ -98,10 +97,10 @@ class Fix:
 
     applicability: Applicability
     message: str
-    tokens: Tuple[str, ...] = ()
-    token_edits: Tuple[TokenEdit, ...] = ()
-    edits: Tuple[Edit, ...] = ()
-    safe_from_distro: Optional[str] = None
+    tokens: tuple[str, ...] = ()
+    token_edits: tuple[TokenEdit, ...] = ()
+    edits: tuple[Edit, ...] = ()
+    safe_from_distro: str | None = None
 
     def to_json(self) -> dict:  # type: ignore[type-arg]
         return {

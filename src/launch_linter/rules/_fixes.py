@@ -7,7 +7,7 @@ when the attribute is not plain text (a substitution, an entity) or reads differ
 
 from __future__ import annotations
 
-from typing import Optional, Sequence, Tuple
+from collections.abc import Sequence
 
 from launch_linter.model.diagnostic import Applicability, Fix, TokenEdit
 from launch_linter.model.transform import StaticTransform
@@ -27,7 +27,7 @@ PARENT_FLAGS = ("--frame-id",)
 CHILD_FLAGS = ("--child-frame-id",)
 
 
-def distro_at_least(distro: Optional[str], oldest: str) -> bool:
+def distro_at_least(distro: str | None, oldest: str) -> bool:
     """Whether the ROS 2 distribution ``distro`` is ``oldest`` or newer (unknown: no)."""
     if distro is None or distro not in ROS2_DISTROS:
         return False
@@ -39,14 +39,14 @@ def fixable(transform: StaticTransform) -> bool:
     return bool(transform.tokens) and not any("$(" in t for t in transform.tokens)
 
 
-def _positional_indices(tokens: Sequence[str]) -> Optional[Tuple[int, ...]]:
+def _positional_indices(tokens: Sequence[str]) -> tuple[int, ...] | None:
     """Indices of the words that are not ROS remappings; None when flags are used."""
     if any(t.startswith("--") for t in tokens):
         return None
     return tuple(i for i, t in enumerate(tokens) if ":=" not in t)
 
 
-def value_index(transform: StaticTransform, position: int) -> Optional[int]:
+def value_index(transform: StaticTransform, position: int) -> int | None:
     """The index in ``tokens`` of the ``position``-th number of the transform (0-2 the
     translation, then yaw/pitch/roll or qx/qy/qz/qw), positional or after its flag."""
     tokens = transform.tokens
@@ -60,12 +60,12 @@ def value_index(transform: StaticTransform, position: int) -> Optional[int]:
     return _after_flag(tokens, (flags[position],))
 
 
-def _after_flag(tokens: Sequence[str], flags: Sequence[str]) -> Optional[int]:
+def _after_flag(tokens: Sequence[str], flags: Sequence[str]) -> int | None:
     found = [i + 1 for i, t in enumerate(tokens[:-1]) if t in flags]
     return found[0] if len(found) == 1 else None
 
 
-def frame_index(transform: StaticTransform, role: str) -> Optional[int]:
+def frame_index(transform: StaticTransform, role: str) -> int | None:
     """The index in ``tokens`` of the parent or child frame id."""
     tokens = transform.tokens
     positional = _positional_indices(tokens)
@@ -83,8 +83,8 @@ def replace_words(
     transform: StaticTransform,
     applicability: Applicability,
     message: str,
-    replacements: Sequence[Tuple[int, int, str]],
-    safe_from_distro: Optional[str] = None,
+    replacements: Sequence[tuple[int, int, str]],
+    safe_from_distro: str | None = None,
 ) -> Fix:
     """A fix replacing ``tokens[start:end]`` by text, for each (start, end, text)."""
     return Fix(

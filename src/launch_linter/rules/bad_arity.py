@@ -36,11 +36,12 @@ Safe: removes the period given to ROS 1 `tf2_ros`, which then reads the transfor
 was meant.
 """
 
+from __future__ import annotations
+
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.model.diagnostic import Applicability, Fix
 from launch_linter.rules._api import RuleContext, diagnostic_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words
 
@@ -69,9 +70,8 @@ def _period_fix(transform: StaticTransform) -> Fix | None:
             return None
     except ValueError:
         return None
-    return replace_words(
-        transform, FIX, f"remove the period {number_text(transform.period_ms)}", [(last, last + 1, "")]
-    )
+    message = f"remove the period {number_text(transform.period_ms)}"
+    return replace_words(transform, FIX, message, [(last, last + 1, "")])
 
 
 def _fix(transform: StaticTransform) -> str:

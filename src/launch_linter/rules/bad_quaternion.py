@@ -33,13 +33,13 @@ by its normalised form; whether the direction written is the one meant is for a 
 judge.
 """
 
+from __future__ import annotations
+
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, RotationKind
-from launch_linter.model.diagnostic import Applicability, Fix
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, RotationKind, StaticTransform
 from launch_linter.rules._api import RuleContext, diagnostic_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 

@@ -32,10 +32,11 @@ Safe: strips one leading `/` from the frame id (tf2 strips exactly one, so the f
 is the same).
 """
 
+from __future__ import annotations
+
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.diagnostic import Applicability, Fix
+from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
 from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import RuleContext, diagnostic_at
 from launch_linter.rules._fixes import fixable, frame_index, replace_words
@@ -50,7 +51,8 @@ def _fix(transform: StaticTransform, role: str, written: str) -> Fix | None:
     index = frame_index(transform, role) if fixable(transform) else None
     if index is None or transform.tokens[index] != written:
         return None
-    return replace_words(transform, FIX, f"write '{written[1:]}'", [(index, index + 1, written[1:])])
+    stripped = written[1:]
+    return replace_words(transform, FIX, f"write '{stripped}'", [(index, index + 1, stripped)])
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:

@@ -36,10 +36,11 @@ or a newer distribution: rewrites the positional arguments to the flags. Foxy an
 have no flags, so there the rewrite would break the node.
 """
 
+from __future__ import annotations
+
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.diagnostic import Applicability, Fix
+from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
 from launch_linter.model.transform import RotationKind, StaticTransform
 from launch_linter.rules._api import RuleContext, diagnostic_at
 from launch_linter.rules._fixes import (
@@ -58,7 +59,7 @@ FIX = Applicability.UNSAFE
 
 def _flags_fix(transform: StaticTransform) -> Fix | None:
     tokens = transform.tokens
-    if not fixable(transform) or any(":=" in t or t.startswith("-") and not _number(t)
+    if not fixable(transform) or any(":=" in t or (t.startswith("-") and not _number(t))
                                      for t in tokens):
         return None
     rotation = transform.rotation
@@ -67,7 +68,7 @@ def _flags_fix(transform: StaticTransform) -> Fix | None:
     flags = YPR_FLAGS if rotation.kind is RotationKind.YPR else QUATERNION_FLAGS
     if len(tokens) != len(flags) + 2:
         return None
-    words = [f"{flag} {value}" for flag, value in zip(flags, tokens)]
+    words = [f"{flag} {tokens[i]}" for i, flag in enumerate(flags)]
     words.append(f"--frame-id {tokens[-2]} --child-frame-id {tokens[-1]}")
     text = " ".join(words)
     return replace_words(

@@ -36,13 +36,13 @@ An angle in degrees between -2π and 2π (such as `5`) cannot be told from radia
 not reported.
 """
 
+from __future__ import annotations
+
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import RotationKind
-from launch_linter.model.diagnostic import Applicability, Fix
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
+from launch_linter.model.transform import RotationKind, StaticTransform
 from launch_linter.rules._api import RuleContext, diagnostic_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
