@@ -213,3 +213,17 @@ def test_lint_paths_fix_edits_point_into_the_file(tmp_path: Path) -> None:
     assert diagnostic.fix is not None
     (edit,) = diagnostic.fix.edits
     assert path.read_bytes()[edit.start : edit.end] == b"/b"
+
+
+def test_sarif_carries_the_fix(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "a.launch"
+    path.write_text(launch(NODE.format(pkg="tf", name="a", args="0 0 0 0 0 0 a /b 100")))
+    main(["check", str(path), "--format", "sarif", "--exit-zero"])
+    (result,) = json.loads(capsys.readouterr().out)["runs"][0]["results"]
+    ((change,),) = [fix["artifactChanges"] for fix in result["fixes"]]
+    (replacement,) = change["replacements"]
+    region = replacement["deletedRegion"]
+    start, length = region["byteOffset"], region["byteLength"]
+    assert path.read_bytes()[start : start + length] == b"/b"
+    assert replacement["insertedContent"]["text"] == "b"
+    assert result["properties"]["fixApplicability"] == "safe"
