@@ -406,8 +406,6 @@ def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
 
     out: list[str] = []
     for path, fixes in fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).items():
-        if path == (getattr(ns, "stdin_filename", None) or "stdin.launch") and "-" in ns.paths:
-            continue  # stdin is not re-read here; see lint_command_paths
         before = fixing.read_bytes(path)
         if before is None:
             continue

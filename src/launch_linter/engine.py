@@ -136,13 +136,12 @@ def load_options_for(
     )
     if roots not in cache:
         cache[roots] = PackageIndex(list(roots))
-    versions: dict[str, int | None] = {}
     return LoadOptions(
         args=options.args,
         env=options.env,
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
-        ros_version=ros_version_for(item.path, options, versions),
+        ros_version=ros_version_for(item.path, options, {}),
     )
 
 
