@@ -32,7 +32,7 @@ def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:
 
 
 def messages(tree: LaunchTree, rule: str) -> list[str]:
-    return [d.message for d in tree.diagnostics if d.rule == rule]
+    return [d.message for d in tree.problems if d.rule == rule]
 
 
 # --- if / unless -------------------------------------------------------------------------
@@ -50,7 +50,7 @@ def test_if_unless_truthiness(tmp_path: Path) -> None:
         </launch>""")
     assert [t.name for t in tree.transforms] == ["a", "c", "f"]
     assert all(t.condition.always for t in tree.transforms)
-    assert tree.diagnostics == ()
+    assert tree.problems == ()
 
 
 def test_if_that_is_not_a_boolean_is_a_roslaunch_error(tmp_path: Path) -> None:
@@ -170,7 +170,7 @@ def test_duplicate_node_names_are_a_roslaunch_error(tmp_path: Path) -> None:
           <group ns="other"><node {TF2} name="same" args="0 0 0 0 0 0 p c"/></group>
           <node if="false" {TF2} name="same" args="0 0 0 0 0 0 p d"/>
         </launch>""")
-    (duplicate,) = [d for d in tree.diagnostics if d.rule == "roslaunch_error"]
+    (duplicate,) = [d for d in tree.problems if d.rule == "roslaunch_error"]
     assert duplicate.message == "roslaunch file contains multiple nodes named [/same]"
     assert duplicate.line == 3
     assert [(r.line, r.column) for r in duplicate.related] == [(2, 3)]
@@ -320,7 +320,7 @@ def test_unresolved_fields_reasons_and_condition(tmp_path: Path) -> None:
         "$(arg name)", "$(arg x)", "$(env CHILD)", "$(arg tf_pkg)",
     ]
     assert transform.condition.describe() == "if='$(arg use)'"
-    (info,) = [d for d in tree.diagnostics if d.rule == "unresolved"]
+    (info,) = [d for d in tree.problems if d.rule == "unresolved"]
     assert "$(env CHILD)" in info.message and info.node == "$(arg name)"
     assert transform.parent == "base"
 
@@ -366,7 +366,7 @@ def test_launch_element_conditions(tmp_path: Path) -> None:
     node = f'<node {TF2} name="n" args="0 0 0 0 0 0 a b"/>'
     ignored = load(tmp_path, f'<launch if="false">{node}</launch>')
     assert [t.name for t in ignored.transforms] == ["n"]
-    assert ignored.diagnostics == ()
+    assert ignored.problems == ()
     substituted = load(tmp_path, '<launch if="$(arg x)"/>')
     assert messages(substituted, "roslaunch_error")
 
@@ -374,7 +374,7 @@ def test_launch_element_conditions(tmp_path: Path) -> None:
 def test_unreadable_file(tmp_path: Path) -> None:
     tree = load_tree(str(tmp_path / "missing.launch"), LoadOptions())
     assert tree.status is FileStatus.UNREADABLE
-    assert tree.diagnostics[0].rule == "parse_error"
+    assert tree.problems[0].rule == "parse_error"
 
 
 def test_an_unresolved_namespace_names_the_substitution_that_blocks_it() -> None:

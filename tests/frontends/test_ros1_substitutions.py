@@ -26,7 +26,7 @@ def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:
 
 
 def rules(tree: LaunchTree) -> list[str]:
-    return [d.rule for d in tree.diagnostics]
+    return [d.rule for d in tree.problems]
 
 
 def test_arg_default_is_used_when_no_value_is_given(tmp_path: Path) -> None:
@@ -67,7 +67,7 @@ def test_arg_value_cannot_be_overridden(tmp_path: Path) -> None:
         </launch>"""
     tree = load(tmp_path, xml, args={"child": "other"})
     assert by_name(tree)["n"].child == "other"
-    assert any("cannot override arg 'child'" in d.message for d in tree.diagnostics)
+    assert any("cannot override arg 'child'" in d.message for d in tree.problems)
 
 
 def test_required_arg_without_default_is_unresolved_until_given(tmp_path: Path) -> None:
@@ -140,7 +140,7 @@ def test_find_without_package_roots_is_unresolved(tmp_path: Path) -> None:
         <launch>
           <include file="$(find my_robot)/launch/inc.launch"/>
         </launch>""")
-    (diagnostic,) = tree.diagnostics
+    (diagnostic,) = tree.problems
     assert diagnostic.rule == "unresolved"
     assert "not followed" in diagnostic.message and "my_robot" in diagnostic.message
 
@@ -224,7 +224,7 @@ def test_lexer_errors_are_roslaunch_errors_and_leave_holes(tmp_path: Path) -> No
           <node {TF2} name="n" args="0 0 0 0 0 0 a $(arg $(arg x))"/>
           <node {TF2} name="m" args="0 0 0 0 0 0 a $(unknown x)"/>
         </launch>""")
-    messages = [d.message for d in tree.diagnostics if d.rule == "roslaunch_error"]
+    messages = [d.message for d in tree.problems if d.rule == "roslaunch_error"]
     assert any("Dollar signs" in m for m in messages)
     assert any("Unknown substitution command [unknown x]" in m for m in messages)
     for transform in tree.transforms:

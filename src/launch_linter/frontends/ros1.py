@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
-from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
+from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.packages import PackageIndex
@@ -176,7 +176,7 @@ class Ros1Loader:
     def __init__(self, options: LoadOptions) -> None:
         self.options = options
         self.transforms: list[StaticTransform] = []
-        self.diagnostics: list[Diagnostic] = []
+        self.problems: list[Problem] = []
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -194,12 +194,10 @@ class Ros1Loader:
         self, rule: str, path: str, element: Element | None, message: str,
         node: str | None = None, related: tuple[Location, ...] = (),
     ) -> None:
-        severity = Severity.INFO if rule == "unresolved" else Severity.ERROR
         line, column = (element.line, element.column) if element else (1, 1)
-        self.diagnostics.append(Diagnostic(
-            rule, Category.LAUNCH, severity, self._display(path), line, column, message, node,
-            related,
-        ))
+        self.problems.append(
+            Problem(rule, self._display(path), line, column, message, node, related)
+        )
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         self._report("roslaunch_error", context.filename, element, message)
@@ -239,7 +237,7 @@ class Ros1Loader:
             root=self.root_display,
             status=status,
             transforms=tuple(self.transforms),
-            diagnostics=tuple(self.diagnostics),
+            problems=tuple(self.problems),
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
@@ -272,8 +270,8 @@ class Ros1Loader:
         try:
             document = parse_xml(data, text_tags=("rosparam",), collect=("launch",))
         except XmlError as exc:
-            self.diagnostics.append(Diagnostic(
-                "parse_error", Category.LAUNCH, Severity.ERROR, display, exc.line, exc.column,
+            self.problems.append(Problem(
+                "parse_error", display, exc.line, exc.column,
                 f"not well-formed XML: {exc.message}",
             ))
             return None
@@ -288,10 +286,7 @@ class Ros1Loader:
                 f"no <launch> element (the root element is <{document.root.tag}>)"
                 if not launches else "more than one <launch> element"
             )
-            self.diagnostics.append(Diagnostic(
-                "parse_error", Category.LAUNCH, Severity.ERROR, display, where.line,
-                where.column, message,
-            ))
+            self.problems.append(Problem("parse_error", display, where.line, where.column, message))
             return None
         return launches[0]
 

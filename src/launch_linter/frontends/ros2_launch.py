@@ -45,7 +45,7 @@ from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.ros2_substitution import (
@@ -67,13 +67,6 @@ MAX_FILES_PER_TREE = 2_000
 MAX_ACTIONS_PER_TREE = 200_000
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
-
-_SEVERITY = {
-    "parse_error": (Category.LAUNCH, Severity.ERROR),
-    "roslaunch_error": (Category.LAUNCH, Severity.ERROR),
-    "unresolved": (Category.LAUNCH, Severity.INFO),
-}
-
 
 @dataclass(slots=True)
 class _Scope:
@@ -135,7 +128,7 @@ class Ros2Loader:
     def __init__(self, options: LoadOptions) -> None:
         self.options = options
         self.transforms: list[StaticTransform] = []
-        self.diagnostics: list[Diagnostic] = []
+        self.problems: list[Problem] = []
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -147,10 +140,8 @@ class Ros2Loader:
         return self.options.display_path(path)
 
     def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
-        category, severity = _SEVERITY[rule]
-        self.diagnostics.append(Diagnostic(
-            rule, category, severity, self._display(where.path), where.line, where.column,
-            message, node,
+        self.problems.append(Problem(
+            rule, self._display(where.path), where.line, where.column, message, node
         ))
 
     # -- files -------------------------------------------------------------------------
@@ -182,7 +173,7 @@ class Ros2Loader:
             root=self.root_display,
             status=status,
             transforms=tuple(self.transforms),
-            diagnostics=tuple(self.diagnostics),
+            problems=tuple(self.problems),
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),

@@ -230,7 +230,7 @@ def parse_job(job: ParseJob) -> ParsedContent:
         return ParsedContent(job.sha256, len(data), FileStatus.PARSE_ERROR.value, reason, ())
     failure: str | None = None
     if tree.status is not FileStatus.OK:
-        first = next((d for d in tree.diagnostics if d.rule == "parse_error"), None)
+        first = next((d for d in tree.problems if d.rule == "parse_error"), None)
         failure = first.message if first else tree.status.value
     own = [t for t in tree.transforms if t.path == job.parse_path]
     rows = tuple(transform_row(i, t) for i, t in enumerate(own))

@@ -34,9 +34,9 @@ rejects. Nothing in the launch output points at the cause.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "bad_arity"
 CATEGORY = Category.TF
@@ -54,10 +54,9 @@ def _fix(transform: StaticTransform) -> str:
     return ""
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         if transform.arity_issue is None or "arity" in transform.unresolved:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform, transform.arity_issue + _fix(transform)
+        yield finding_at(transform, transform.arity_issue + _fix(transform)
         )

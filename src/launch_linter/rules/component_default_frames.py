@@ -41,16 +41,16 @@ leading `/` tf2 rejects on lookup), while the frames that were meant stay unconn
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "component_default_frames"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
             if issue.kind == "default_frames":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+                yield finding_at(transform, issue.message)

@@ -44,9 +44,9 @@ import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
+from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 ID = "int_suffix"
 CATEGORY = Category.MAY_SEMANTIC
@@ -108,7 +108,7 @@ def _unresolved_values(transforms: list[StaticTransform], kind: _Kind) -> list[s
     ]
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transforms in by_file(context.tree.transforms).values():
         for kind in KINDS:
             blocked = _unresolved_values(transforms, kind)
@@ -125,8 +125,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
                 gap = [_spell(stem, n, width if padded else 0) for n in missing]
                 after = min(n for n in present if n > missing[0])
                 before = max(n for n in present if n < missing[0])
-                yield diagnostic_at(
-                    ID, CATEGORY, SEVERITY, numbers[after][1],
+                yield finding_at(numbers[after][1],
                     f"{kind.label} {_listed(spellings)} skip {_listed(gap)}: "
                     f"a transform of the series may be missing or misnumbered",
                     (numbers[before][1],),

@@ -40,16 +40,16 @@ Node(package='tf2_ros', executable='static_transform_publisher',
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "py_arguments_single_string"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
             if issue.kind == "single_string":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+                yield finding_at(transform, issue.message)

@@ -33,8 +33,8 @@ points at the node that died.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ros2_bad_flag"
 CATEGORY = Category.TF
@@ -43,10 +43,10 @@ KINDS = ("unknown_flag", "mixed_styles", "rpy_and_quaternion", "partial_quaterni
          "missing_frame")
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         if "arity" in transform.unresolved:
             continue
         for issue in transform.arg_issues:
             if issue.kind in KINDS:
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+                yield finding_at(transform, issue.message)

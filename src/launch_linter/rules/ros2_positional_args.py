@@ -33,16 +33,16 @@ is easy to get wrong.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ros2_positional_args"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
             if issue.kind == "positional":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+                yield finding_at(transform, issue.message)

@@ -54,7 +54,7 @@ def test_a_node_with_a_list_of_arguments(load: Load) -> None:
     )
     assert (transform.ros_version, transform.launch_format) == (2, "ros2-python")
     assert transform.args_written.startswith("['--x'")
-    assert tree.diagnostics == ()
+    assert tree.problems == ()
 
 
 def test_arguments_and_configurations(load: Load) -> None:
@@ -231,7 +231,7 @@ def test_includes_of_every_form(load: Load) -> None:
     assert (nodes["from_xml"].child, nodes["from_xml"].launch_format) == ("gps", "ros2-xml")
     assert (nodes["from_py"].child, nodes["from_py"].path) == ("imu",
                                                                 "ws/robot/launch/c.launch.py")
-    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.diagnostics,
+    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.problems,
                                                                 strict=True)] == [
         ("roslaunch_error", True),
     ]
