@@ -105,7 +105,7 @@ def test_same_static_transforms_as_roslaunch(name: str, oracle: dict[str, dict[s
     )
     assert ours == theirs
     for transform in tree.transforms:
-        assert transform.unresolved == (), transform
+        assert transform.unresolved_names == (), transform
         assert transform.condition.always, transform
     errors = [d for d in tree.problems if d.rule in ("parse_error", "roslaunch_error")]
     assert errors == []

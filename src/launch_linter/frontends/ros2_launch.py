@@ -47,7 +47,15 @@ from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
-from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
+from launch_linter.model.transform import (
+    DECODED_FIELDS,
+    ArgForm,
+    Condition,
+    ConditionLiteral,
+    Field,
+    LaunchFormat,
+    StaticTransform,
+)
 from launch_linter.resolve.ros2_substitution import (
     Ros2Scope,
     Subs,
@@ -86,7 +94,7 @@ class _Frame:
     """Where the actions being run come from."""
 
     filename: str
-    launch_format: str
+    launch_format: LaunchFormat
     chain: tuple[str, ...]
     included_from: tuple[str, int] | None
     condition: Condition
@@ -484,26 +492,26 @@ class Ros2Loader:
             self._report("roslaunch_error", where,
                          f"node name cannot contain a namespace: {name}", node=name)
         namespace, namespace_holes = self._namespace(namespace_subs, scope, frame, where)
-        unresolved: list[str] = []
+        unresolved: set[Field] = set()
         if name_value is not None and not is_resolved(name_value):
-            unresolved.append("name")
+            unresolved.add(Field.NAME)
         if namespace_holes:
-            unresolved.append("namespace")
+            unresolved.add(Field.NAMESPACE)
         if not is_resolved(package):
-            unresolved.append("package")
+            unresolved.add(Field.PACKAGE)
         if not is_resolved(executable):
-            unresolved.append("executable")
+            unresolved.add(Field.EXECUTABLE)
         if decoded is None:
-            unresolved.extend(("translation", "rotation", "parent", "child", "arity"))
+            unresolved.update((*DECODED_FIELDS, Field.ARITY))
         else:
-            unresolved.extend(decoded.unresolved)
+            unresolved.update(decoded.unresolved)
         all_holes = (*holes(name_value or ()), *namespace_holes, *holes(package),
                      *holes(executable), *(h for value in values for h in holes(value)))
         reasons = [f"{h.text}: {h.reason}" for h in all_holes]
         if unknown:
             reasons.append(unknown)
         reasons = list(dict.fromkeys(reasons))
-        known = decoded is not None and decoded.form != "invalid"
+        known = decoded is not None and decoded.form is not ArgForm.INVALID
         transform = StaticTransform(
             path=self._display(frame.filename),
             line=where.line,
@@ -522,11 +530,11 @@ class Ros2Loader:
             translation=decoded.translation if known and decoded is not None else None,
             rotation=decoded.rotation if known and decoded is not None else None,
             period_ms=None,
-            form="unknown" if decoded is None else decoded.form,
+            form=ArgForm.UNKNOWN if decoded is None else decoded.form,
             arity_issue=None if decoded is None else decoded.arity_issue,
             number_issues=() if decoded is None else decoded.number_issues,
             condition=frame.condition,
-            unresolved=tuple(dict.fromkeys(unresolved)),
+            unresolved=frozenset(unresolved),
             unresolved_reasons=tuple(reasons),
             ros_version=2,
             launch_format=frame.launch_format,
@@ -536,7 +544,7 @@ class Ros2Loader:
         if transform.unresolved:
             self._report(
                 "unresolved", where,
-                f"cannot resolve {', '.join(transform.unresolved)} statically"
+                f"cannot resolve {', '.join(transform.unresolved_names)} statically"
                 + (f": {'; '.join(reasons)}" if reasons else ""),
                 node=name,
             )

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from launch_linter.model.diagnostic import Belief
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 Key = tuple[str, ...] | str
@@ -23,17 +23,17 @@ def signature_of(transform: StaticTransform) -> Key | None:
 
 
 def signature_unresolved(transform: StaticTransform) -> bool:
-    return "parent" in transform.unresolved or "child" in transform.unresolved
+    return transform.is_unresolved(Field.PARENT, Field.CHILD)
 
 
 def name_of(transform: StaticTransform) -> Key | None:
-    if transform.name and "name" not in transform.unresolved:
+    if transform.name and transform.knows(Field.NAME):
         return transform.name
     return None
 
 
 def name_unresolved(transform: StaticTransform) -> bool:
-    return "name" in transform.unresolved
+    return transform.is_unresolved(Field.NAME)
 
 
 def describe(key: Key | None) -> str:

@@ -32,7 +32,7 @@ import math
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, RotationKind
+from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "bad_quaternion"
@@ -79,7 +79,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.QUATERNION:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         found = _problem(rotation.values)
         if found is None:

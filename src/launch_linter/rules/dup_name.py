@@ -44,7 +44,7 @@ name with another kind of node is not seen.
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import (
     Finding,
     RuleContext,
@@ -92,8 +92,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
     seen: dict[str, list[StaticTransform]] = {}
     for transform in context.tree.transforms:
         qualified = transform.qualified_name
-        if qualified is None or "name" in transform.unresolved or (
-            "namespace" in transform.unresolved
+        if qualified is None or transform.is_unresolved(Field.NAME) or (
+            transform.is_unresolved(Field.NAMESPACE)
         ):
             continue
         earlier = seen.setdefault(qualified, [])

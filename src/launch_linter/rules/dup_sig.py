@@ -35,7 +35,7 @@ next time someone edits only one of them.
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import (
     Finding,
     RuleContext,
@@ -52,8 +52,7 @@ SEVERITY = Severity.ERROR
 
 
 def _agreement(a: StaticTransform, b: StaticTransform) -> str:
-    known = ("translation", "rotation")
-    if any(field in t.unresolved for t in (a, b) for field in known):
+    if any(t.is_unresolved(Field.TRANSLATION, Field.ROTATION) for t in (a, b)):
         return "tf2 keeps only one of them"
     if a.translation == b.translation and a.rotation == b.rotation:
         return "with the same values, so one of them is a redundant copy"

@@ -32,6 +32,7 @@ not the same place seen in NED axes.
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ned_transform"
@@ -44,7 +45,7 @@ SUFFIX = "_ned"
 def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         child = transform.child
-        if child is None or "child" in transform.unresolved:
+        if child is None or transform.is_unresolved(Field.CHILD):
             continue
         if not child.lower().endswith(SUFFIX):
             continue

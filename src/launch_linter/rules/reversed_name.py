@@ -31,6 +31,7 @@ next reader, or the frames were swapped and the transform is the inverse of the 
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "reversed_name"
@@ -51,7 +52,7 @@ def _joins(name: str, first: str, second: str) -> str | None:
 def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         signature = transform.signature
-        if signature is None or transform.name is None or "name" in transform.unresolved:
+        if signature is None or transform.name is None or transform.is_unresolved(Field.NAME):
             continue
         parent, child = (frame.lower() for frame in signature)
         name = transform.name.lower()

@@ -36,7 +36,7 @@ import math
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import RotationKind
+from launch_linter.model.transform import Field, RotationKind
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "rot_degrees"
@@ -66,7 +66,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.YPR:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         suspects = [
             f"{name} {value:g} ({value:g}° is {math.radians(value):.6g} rad)"

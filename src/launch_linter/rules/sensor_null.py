@@ -36,6 +36,7 @@ import re
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "sensor_null"
@@ -59,11 +60,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
         labels = [
             text
             for text, field in (
-                (transform.name, "name"),
-                (transform.parent, "parent"),
-                (transform.child, "child"),
+                (transform.name, Field.NAME),
+                (transform.parent, Field.PARENT),
+                (transform.child, Field.CHILD),
             )
-            if text is not None and field not in transform.unresolved
+            if text is not None and transform.knows(field)
         ]
         sensors = sorted(set().union(*(sensor_words(text) for text in labels)))
         if not sensors:

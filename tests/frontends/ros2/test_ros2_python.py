@@ -136,7 +136,7 @@ def test_unknown_values_are_unresolved_with_their_line(load: Load) -> None:
         "    ])\n"
     )}, "a.launch.py")
     nodes = by_name(tree)
-    assert nodes["a"].unresolved == ("child",)
+    assert nodes["a"].unresolved_names == ("child",)
     assert nodes["a"].parent == "base"
     (reason,) = nodes["a"].unresolved_reasons
     assert reason.startswith(f"laser_frame(): line {HEADER_LINES + 3}:")
@@ -404,5 +404,5 @@ def test_text_bombs_are_refused(load: Load) -> None:
                                               "b + c + d + e + f]") + "])\n"
     )}, "a.launch.py")
     (transform,) = tree.transforms
-    assert transform.unresolved == ("child",)
+    assert transform.unresolved_names == ("child",)
     assert "too long" in transform.unresolved_reasons[0]

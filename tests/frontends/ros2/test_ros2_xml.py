@@ -56,7 +56,7 @@ def test_an_unset_argument_is_unresolved_with_its_reason(load: Load) -> None:
         f'  <node {TF} name="t" args="--frame-id base --child-frame-id $(var child)"/>'
     )}, "a.launch.xml")
     (transform,) = tree.transforms
-    assert transform.unresolved == ("child",) and transform.parent == "base"
+    assert transform.unresolved_names == ("child",) and transform.parent == "base"
     assert rules(tree) == [("unresolved", 3)]
     assert "$(var child)" in tree.problems[0].message
 
@@ -123,7 +123,7 @@ def test_a_value_set_under_an_unknown_condition_is_unknown_after_it(load: Load) 
         '  <group if="$(var flag)" scoped="false"><let name="c" value="two"/></group>\n'
         f'  <node {TF} name="t" args="--frame-id a --child-frame-id $(var c)"/>'
     )}, "a.launch.xml")
-    assert tree.transforms[0].unresolved == ("child",)
+    assert tree.transforms[0].unresolved_names == ("child",)
 
 
 def test_a_value_set_in_a_conditional_scoped_group_is_known_inside(load: Load) -> None:
@@ -292,5 +292,5 @@ def test_set_env_and_forwarding(load: Load) -> None:
         f'  <node {TF} name="b" args="--frame-id $(var parent) --child-frame-id $(env ROBOT x)"/>'
     )}, "a.launch.xml", env={"ROBOT": "r1"})
     nodes = by_name(tree)
-    assert (nodes["a"].child, nodes["a"].unresolved) == ("r2", ("parent",))
+    assert (nodes["a"].child, nodes["a"].unresolved_names) == ("r2", ("parent",))
     assert (nodes["b"].parent, nodes["b"].child) == ("base", "x")
