@@ -19,7 +19,6 @@ from dataclasses import dataclass, field
 
 from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
-from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import (
@@ -39,6 +38,7 @@ from launch_linter.resolve.substitution import (
     to_bool,
 )
 from launch_linter.resolve.value import Hole, Value, holes, resolved_text, text_of
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
 STATIC_TF_TYPE = "static_transform_publisher"
 TF_PACKAGES = ("tf", "tf2_ros")

@@ -44,7 +44,6 @@ from launch_linter.frontends.ros2_actions import (
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
-from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import (
@@ -66,6 +65,7 @@ from launch_linter.resolve.ros2_substitution import (
     written,
 )
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+from launch_linter.resolve.xml_safe import read_launch_bytes
 
 STATIC_TF_EXECUTABLE = "static_transform_publisher"
 STATIC_TF_PACKAGE = "tf2_ros"

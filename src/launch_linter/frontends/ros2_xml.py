@@ -31,7 +31,6 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Where,
 )
-from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import (
     Opaque,
@@ -40,6 +39,7 @@ from launch_linter.resolve.ros2_substitution import (
     parse,
     split_command_line,
 )
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
 
 @dataclass(slots=True)

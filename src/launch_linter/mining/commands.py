@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, TextIO
 
+from launch_linter.commands.common import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from launch_linter.mining.beliefs import (
     belief_order,
     beliefs_document,
@@ -24,8 +25,6 @@ from launch_linter.mining.stats import check_p0
 from launch_linter.mining.store import Store, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES
 from launch_linter.model.diagnostic import Belief
-
-EXIT_OK, EXIT_USAGE, EXIT_INTERRUPTED = 0, 2, 130
 
 
 @dataclass(frozen=True, slots=True)
@@ -88,6 +87,31 @@ def mine_corpus(
 def _error(message: str) -> int:
     sys.stderr.write(f"launch-linter: error: {message}\n")
     return EXIT_USAGE
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Two commands: ``mine`` (ingest and mine a corpus) and ``beliefs`` (list or write)."""
+    mine = subparsers.add_parser("mine", help="ingest a corpus into a database and mine beliefs")
+    mine.add_argument("corpus")
+    mine.add_argument("--db", required=True)
+    mine.add_argument("--p0", type=float, default=0.9)
+    mine.add_argument("--mature-commits", type=int, default=30)
+    mine.add_argument(
+        "--mature",
+        action="append",
+        metavar="REPO",
+        help="treat this repository folder as mature (plain folders)",
+    )
+    mine.add_argument("--jobs", type=int, default=None)
+    mine.set_defaults(handler=run_mine)
+
+    beliefs = subparsers.add_parser("beliefs", help="list mined beliefs or write a beliefs file")
+    beliefs.add_argument("--db", required=True)
+    beliefs.add_argument("--min-z", type=float, default=None)
+    beliefs.add_argument("--class", dest="classes", action="append", metavar="CLASS")
+    beliefs.add_argument("--format", choices=("table", "json"), default="table")
+    beliefs.add_argument("-o", "--output", metavar="FILE")
+    beliefs.set_defaults(handler=run_beliefs)
 
 
 def run_mine(ns: argparse.Namespace) -> int:
