@@ -7,7 +7,6 @@ import sqlite3
 import sys
 
 from launch_linter.commands.common import EXIT_OK, EXIT_USAGE
-from launch_linter.evaluation.evaluate import EvaluationError, evaluate, write_outputs
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -22,6 +21,9 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(ns: argparse.Namespace) -> int:
+    # Imported here: every command line builds this parser, few evaluate.
+    from launch_linter.evaluation.evaluate import EvaluationError, evaluate, write_outputs
+
     try:
         evaluation = evaluate(ns.db, ns.min_z, ns.beliefs)
         paths = write_outputs(evaluation, ns.out)

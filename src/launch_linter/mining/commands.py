@@ -10,7 +10,7 @@ import sys
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from launch_linter.commands.common import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from launch_linter.mining.beliefs import (
@@ -20,11 +20,13 @@ from launch_linter.mining.beliefs import (
     encode_key,
     mine,
 )
-from launch_linter.mining.ingest import CorpusError, IngestReport, ingest, read_corpus
 from launch_linter.mining.stats import check_p0
 from launch_linter.mining.store import Store, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES
 from launch_linter.model.diagnostic import Belief
+
+if TYPE_CHECKING:
+    from launch_linter.mining.ingest import IngestReport
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,6 +78,10 @@ def mine_corpus(
     jobs: int = 1,
 ) -> tuple[IngestReport, MineReport, dict[str, int]]:
     """Ingest ``corpus_path`` into ``db`` and mine it: (ingest, mining, database counts)."""
+    # Imported here (the front-ends and multiprocessing): every command line builds the
+    # parser of this module, few mine.
+    from launch_linter.mining.ingest import ingest, read_corpus
+
     check_p0(p0)
     corpus = read_corpus(corpus_path, mature)
     with Store(db) as store:
@@ -115,6 +121,8 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run_mine(ns: argparse.Namespace) -> int:
+    from launch_linter.mining.ingest import CorpusError
+
     if ns.mature_commits < 0:
         return _error("--mature-commits must not be negative")
     if ns.jobs is not None and ns.jobs < 1:
