@@ -71,3 +71,14 @@ def test_unresolved_fields_are_typed() -> None:
     assert transform.knows(Field.PARENT) and not transform.knows(Field.PARENT, Field.CHILD)
     assert transform.unresolved_names == ("name", "child")
     assert transform.signature is None
+
+
+def test_unresolved_names_keep_each_front_end_s_order() -> None:
+    hidden = frozenset({Field.ARITY, Field.TRANSLATION, Field.ROTATION, Field.PARENT,
+                        Field.CHILD})
+    assert _transform(unresolved=hidden).unresolved_names == (
+        "arity", "translation", "rotation", "parent", "child"
+    )
+    assert _transform(unresolved=hidden, ros_version=2).unresolved_names == (
+        "translation", "rotation", "parent", "child", "arity"
+    )

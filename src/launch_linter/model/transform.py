@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import Enum
 
@@ -28,14 +28,19 @@ class Field(str, Enum):
 
 
 FIELD_ORDER = {f: position for position, f in enumerate(Field)}
+ROS2_FIELD_ORDER = {**FIELD_ORDER, Field.ARITY: len(FIELD_ORDER)}
+"""The ROS 2 front-end has always listed ``arity`` after the fields it hides (the ROS 1
+front-end before them); output keeps each order."""
 
 DECODED_FIELDS = (Field.TRANSLATION, Field.ROTATION, Field.PARENT, Field.CHILD)
 """The fields the argument decoders give, in record order."""
 
 
-def field_names(fields: Iterable[Field]) -> tuple[str, ...]:
+def field_names(
+    fields: Iterable[Field], order: Mapping[Field, int] = FIELD_ORDER
+) -> tuple[str, ...]:
     """The fields' names in record order (how JSON, text and messages list them)."""
-    return tuple(f.value for f in sorted(set(fields), key=FIELD_ORDER.__getitem__))
+    return tuple(f.value for f in sorted(set(fields), key=order.__getitem__))
 
 
 class ArgForm(str, Enum):
@@ -224,7 +229,9 @@ class StaticTransform:
     @property
     def unresolved_names(self) -> tuple[str, ...]:
         """The unresolved fields' names in record order (as JSON and messages list them)."""
-        return field_names(self.unresolved)
+        return field_names(
+            self.unresolved, ROS2_FIELD_ORDER if self.ros_version == 2 else FIELD_ORDER
+        )
 
     @property
     def parent(self) -> str | None:
