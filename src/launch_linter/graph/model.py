@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from launch_linter.engine import LintResult
 from launch_linter.model.diagnostic import Diagnostic, Severity
-from launch_linter.model.transform import RotationKind, StaticTransform
+from launch_linter.model.transform import Field, RotationKind, StaticTransform
 
 MAX_NOTES = 12
 
@@ -78,7 +78,7 @@ def _frame_key(
     normalised = transform.parent if which == "parent" else transform.child
     written = transform.parent_written if which == "parent" else transform.child_written
     prefix = f"{cluster}|" if cluster else ""
-    if normalised is not None and which not in transform.unresolved:
+    if normalised is not None and transform.knows(Field(which)):
         return prefix + normalised, normalised, True
     # Unresolved frames are distinct vertices: two unknowns need not be the same frame.
     return f"{prefix}?{index}:{which}", written or "?", False
@@ -91,12 +91,12 @@ def _edge_label(
     # among the unnamed nodes of its tree.
     name = transform.qualified_name or f"{transform.executable or 'node'} #{unnamed}"
     lines = [name]
-    if transform.translation is None or "translation" in transform.unresolved:
+    if transform.translation is None or transform.is_unresolved(Field.TRANSLATION):
         lines.append("xyz ?")
     else:
         lines.append(f"xyz {_numbers(transform.translation)}")
     rotation = transform.rotation
-    if rotation is None or "rotation" in transform.unresolved:
+    if rotation is None or transform.is_unresolved(Field.ROTATION):
         lines.append("rotation ?")
     elif rotation.kind is RotationKind.YPR:
         lines.append(f"ypr {_numbers(rotation.values)}")

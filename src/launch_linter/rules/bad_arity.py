@@ -40,9 +40,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
-from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import ArgForm, Field, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words
 
 ID = "bad_arity"
@@ -56,7 +56,7 @@ def _period_fix(transform: StaticTransform) -> Fix | None:
     if not (
         transform.ros_version == 1
         and transform.package == "tf2_ros"
-        and transform.form in ("ypr", "quaternion")
+        and transform.form in (ArgForm.YPR, ArgForm.QUATERNION)
         and transform.period_ms is not None
         and fixable(transform)
     ):
@@ -76,7 +76,7 @@ def _period_fix(transform: StaticTransform) -> Fix | None:
 
 def _fix(transform: StaticTransform) -> str:
     """What to write instead, for the ROS 1 forms whose intent is clear."""
-    if transform.ros_version != 1 or transform.form not in ("ypr", "quaternion"):
+    if transform.ros_version != 1 or transform.form not in (ArgForm.YPR, ArgForm.QUATERNION):
         return ""
     if transform.package == "tf2_ros" and transform.period_ms is not None:
         return f"; remove the period '{transform.period_ms:g}' (tf2_ros publishes once, latched)"
@@ -85,11 +85,10 @@ def _fix(transform: StaticTransform) -> str:
     return ""
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
-        if transform.arity_issue is None or "arity" in transform.unresolved:
+        if transform.arity_issue is None or transform.is_unresolved(Field.ARITY):
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform, transform.arity_issue + _fix(transform),
-            fix=_period_fix(transform),
+        yield finding_at(
+            transform, transform.arity_issue + _fix(transform), fix=_period_fix(transform)
         )

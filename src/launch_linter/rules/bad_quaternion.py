@@ -38,9 +38,9 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, RotationKind, StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
 ID = "bad_quaternion"
@@ -107,19 +107,20 @@ def _problem(values: tuple[float, ...]) -> tuple[Severity, str] | None:
     return None
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.QUATERNION:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         found = _problem(rotation.values)
         if found is None:
             continue
         severity, problem = found
-        yield diagnostic_at(
-            ID, CATEGORY, severity, transform,
+        yield finding_at(
+            transform,
             f"quaternion (qx, qy, qz, qw) = {_written(rotation.values)} {problem}",
+            severity=severity,
             fix=_normalise_fix(transform, rotation.values),
         )

@@ -36,9 +36,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, frame_index, replace_words
 
 ID = "leading_slash"
@@ -55,7 +55,7 @@ def _fix(transform: StaticTransform, role: str, written: str) -> Fix | None:
     return replace_words(transform, FIX, f"write '{stripped}'", [(index, index + 1, stripped)])
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for role, written in (
             ("parent", transform.parent_written),
@@ -63,8 +63,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         ):
             if written is None or not written.startswith("/"):
                 continue
-            yield diagnostic_at(
-                ID, CATEGORY, SEVERITY, transform,
+            yield finding_at(transform,
                 f"{role} frame '{written}' starts with '/': tf2 names it '{written[1:]}' "
                 f"and rejects lookups of '{written}'; write '{written.lstrip('/')}'",
                 fix=_fix(transform, role, written),

@@ -36,9 +36,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, RotationKind, StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
 ID = "quaternion_w_first"
@@ -70,15 +70,15 @@ def _reorder_fix(transform: StaticTransform, values: tuple[float, ...]) -> Fix |
     return replace_words(transform, FIX, "read the quaternion as w x y z", edits)
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.QUATERNION:
             continue
-        if "rotation" in transform.unresolved or not _is_w_first_identity(rotation.values):
+        if transform.is_unresolved(Field.ROTATION) or not _is_w_first_identity(rotation.values):
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(
+            transform,
             "quaternion (qx, qy, qz, qw) = (1, 0, 0, 0) is a half turn about x (the child "
             "is upside down); if it was meant as the identity written w x y z, write 0 0 0 1",
             fix=_reorder_fix(transform, rotation.values),

@@ -41,9 +41,9 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Applicability, Category, Diagnostic, Fix, Severity
-from launch_linter.model.transform import RotationKind, StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
 ID = "rot_degrees"
@@ -92,12 +92,12 @@ def _reads_as(word: str, value: float) -> bool:
         return False
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.YPR:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         suspects = [
             f"{name} {value:g} ({value:g}° is {math.radians(value):.6g} rad)"
@@ -106,8 +106,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         ]
         if not suspects:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"{', '.join(suspects)}: static_transform_publisher reads yaw, pitch and roll in "
             f"radians, and an angle above 2π is probably in degrees",
             fix=_radians_fix(transform, rotation.values),
