@@ -71,6 +71,7 @@ NAMESPACE_KEY = "ros_namespace"
 _SEVERITY = {
     "parse_error": (Category.LAUNCH, Severity.ERROR),
     "roslaunch_error": (Category.LAUNCH, Severity.ERROR),
+    "ros2_schema": (Category.LAUNCH, Severity.ERROR),
     "unresolved": (Category.LAUNCH, Severity.INFO),
 }
 

@@ -31,6 +31,7 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Where,
 )
+from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
 from launch_linter.resolve.ros2_substitution import (
     Opaque,
@@ -53,6 +54,9 @@ class Entity:
     """Attributes that hold entities (``param``, ``arg`` of an include, ...)."""
     children: list[Entity] = field(default_factory=list)
     """Nested actions (of ``launch``, ``group``, ``timer``)."""
+    other_keys: list[str] = field(default_factory=list)
+    """YAML keys written but kept neither as attributes nor as nested entities (a null
+    value, a list of scalars, a mapping): the schema check still sees their names."""
 
 
 def normalise_tag(tag: str) -> str:
@@ -220,10 +224,46 @@ class _Reader:
             items.append((prefix + name, value))
 
 
-def actions_of(path: str, root: Entity) -> tuple[tuple[Action, ...], tuple[Problem, ...]]:
-    """The actions of a ``launch`` root entity read from ``path``, and the problems seen."""
+def _schema_entity(entity: Entity, xml: bool) -> SchemaEntity:
+    if xml:
+        # An XML entity's children are its nested tags, in order, whatever they are.
+        nested = entity.children
+    else:
+        # YAML nests entities as list-valued keys, and actions under ``children``.
+        nested = [item for items in entity.lists.values() for item in items]
+        nested.extend(entity.children)
+    names = (*entity.attrs, *entity.other_keys)
+    return SchemaEntity(
+        entity.tag, entity.line, entity.column, tuple(dict.fromkeys(names)),
+        tuple(_schema_entity(child, xml) for child in nested),
+    )
+
+
+def schema_problems(root: Entity, launch_format: str) -> tuple[Problem, ...]:
+    """What launch's front-end refuses under ``root`` (``ros2_schema`` problems), and the
+    actions it may not know (``unresolved``)."""
+    xml = launch_format == "xml"
+    children = tuple(_schema_entity(child, xml) for child in root.children)
+    return tuple(
+        Problem("ros2_schema" if found.refused else "unresolved", found.line, found.column,
+                found.message)
+        for found in check_launch(children, launch_format)
+    )
+
+
+def actions_of(path: str, root: Entity, launch_format: str = "xml"
+               ) -> tuple[tuple[Action, ...] | None, tuple[Problem, ...]]:
+    """The actions of a ``launch`` root entity read from ``path``, and the problems seen.
+
+    The actions are None when launch refuses the file (a ``ros2_schema`` problem): it
+    starts none of its nodes, so none of its transforms are published.
+    """
+    schema = schema_problems(root, launch_format)
     reader = _Reader(path)
-    return reader.actions(root.children), tuple(reader.problems)
+    actions = reader.actions(root.children)
+    if any(problem.rule == "ros2_schema" for problem in schema):
+        return None, (*schema, *reader.problems)
+    return actions, (*schema, *reader.problems)
 
 
 def _entity(element: Element) -> Entity:
@@ -250,5 +290,5 @@ def read_xml(path: str, data: bytes) -> FileRead:
             f"root element is <{document.root.tag}>, not <launch>",
         )
         return FileRead("ros2-xml", None, comments, lines, (problem,))
-    actions, problems = actions_of(path, _entity(document.root))
+    actions, problems = actions_of(path, _entity(document.root), "xml")
     return FileRead("ros2-xml", actions, comments, lines, problems)

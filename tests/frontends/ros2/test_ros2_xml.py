@@ -234,8 +234,8 @@ def test_ros1_type_in_ros2_xml(load: Load) -> None:
         '  <let name="x" value="1"/>\n'
         '  <node pkg="tf" type="static_transform_publisher" name="t" args="0 0 0 0 0 0 a b 100"/>'
     )}, "a.launch.xml")
-    assert rules(tree) == [("roslaunch_error", 3)]
-    assert "'type' 'exec'" in tree.diagnostics[0].message
+    assert rules(tree) == [("ros2_schema", 3), ("roslaunch_error", 3)]
+    assert "'type' 'exec'" in tree.diagnostics[1].message
 
 
 def test_parse_errors(load: Load) -> None:
