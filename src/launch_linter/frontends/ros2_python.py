@@ -1001,6 +1001,9 @@ class Interpreter:
             return self.ament(name, args, node)
         if module.root not in LAUNCH_ROOTS:
             return self.unknown(node, f"calls '{dotted}', which the linter does not model")
+        if name == "Parameter" and ".substitutions" in dotted:
+            # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
+            return _substitution("param", 2)(self, args, kwargs, node)
         handler = getattr(self, f"launch_{name}", None)
         if handler is None:
             if name in ("ParameterValue", "ParameterFile") and args:
@@ -1310,6 +1313,7 @@ class Interpreter:
     launch_EqualsSubstitution = _substitution("equals", 2)
     launch_NotEqualsSubstitution = _substitution("not-equals", 2)
     launch_IfElseSubstitution = _substitution("if", 3)
+    launch_LaunchLogDir = _substitution("launch_log_dir", 0)
 
     def launch_TextSubstitution(self, args: list[object], kwargs: dict[str, object],
                                 node: ast.Call) -> object:

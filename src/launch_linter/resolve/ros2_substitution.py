@@ -236,6 +236,9 @@ _ARITY: dict[str, tuple[int, int]] = {
     "not-equals": (2, 2),
     "if": (2, 3),
     "path-join": (0, 64),
+    "param": (1, 2),
+    "launch_log_dir": (0, 0),
+    "log_dir": (0, 0),
 }
 """Substitutions that ROS 2 launch (or our Python front-end) knows, with their arity."""
 
@@ -245,6 +248,11 @@ _RUNTIME_ONLY = {
     "exec-in-pkg": "the location of an executable is only known in a built workspace",
     "command": "$(command) runs a program, which the linter never does",
     "file-content": "the linter does not read files named by substitutions",
+    # launch_ros (Humble+): a global parameter set by <set_parameter> or given at run time.
+    "param": "a ROS parameter's value is only known when the launch runs",
+    # launch: the folder of this run's logs, made when the launch starts.
+    "launch_log_dir": "the launch log folder is only known when the launch runs",
+    "log_dir": "the launch log folder is only known when the launch runs",
 }
 
 _TRUE_WORDS = ("true", "1", "yes", "on")

@@ -406,3 +406,16 @@ def test_text_bombs_are_refused(load: Load) -> None:
     (transform,) = tree.transforms
     assert transform.unresolved == ("child",)
     assert "too long" in transform.unresolved_reasons[0]
+
+
+def test_parameter_and_log_dir_substitutions_are_unresolved(load: Load) -> None:
+    tree = load({"a.launch.py": HEADER
+        + "from launch_ros.substitutions import Parameter\n"
+        + "from launch.substitutions import LaunchLogDir\n"
+        + launch_file("    return LaunchDescription([\n        "
+                      + tf("['--frame-id', Parameter('base'), '--child-frame-id', 'laser']",
+                           ", cwd=LaunchLogDir()")
+                      + "])\n").replace(HEADER, "", 1)}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert "parent" in transform.unresolved and transform.child == "laser"
+    assert [rule for rule, _ in rules(tree)] == ["unresolved"]

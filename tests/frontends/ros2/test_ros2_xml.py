@@ -294,3 +294,14 @@ def test_set_env_and_forwarding(load: Load) -> None:
     nodes = by_name(tree)
     assert (nodes["a"].child, nodes["a"].unresolved) == ("r2", ("parent",))
     assert (nodes["b"].parent, nodes["b"].child) == ("base", "x")
+
+
+def test_run_time_substitutions_are_unresolved_not_errors(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <node pkg="tf2_ros" exec="static_transform_publisher" name="t"'
+        ' args="--frame-id $(param base_frame) --child-frame-id laser"'
+        ' cwd="$(launch_log_dir)" output="$(log_dir)"/>'
+    )}, "a.launch.xml")
+    assert [rule for rule, _ in rules(tree)] == ["unresolved"]
+    (transform,) = tree.transforms
+    assert "parent" in transform.unresolved and transform.child == "laser"
