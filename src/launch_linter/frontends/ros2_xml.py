@@ -35,6 +35,7 @@ from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
 from launch_linter.resolve.ros2_substitution import (
     Opaque,
+    CommandLineError,
     Subs,
     SubstitutionSyntaxError,
     parse,
@@ -176,6 +177,13 @@ class _Reader:
             )
             return None
         args = self.subs(entity, "args")
+        try:
+            arguments = () if args is None else tuple(split_command_line(args))
+        except CommandLineError as exc:
+            self.report("parse_error", entity,
+                        f"args: {exc}: launch's command-line parser (shlex) refuses it, "
+                        f"and with it the whole file")
+            return None
         return RunNode(
             where=where,
             condition=condition,
@@ -183,7 +191,7 @@ class _Reader:
             executable=executable,
             name=self.subs(entity, "name") or self.subs(entity, "node-name"),
             namespace=self.subs(entity, "namespace"),
-            arguments=() if args is None else tuple(split_command_line(args)),
+            arguments=arguments,
             args_written=entity.attrs.get("args", ""),
         )
 
@@ -261,7 +269,8 @@ def actions_of(path: str, root: Entity, launch_format: str = "xml"
     schema = schema_problems(root, launch_format)
     reader = _Reader(path)
     actions = reader.actions(root.children)
-    if any(problem.rule == "ros2_schema" for problem in schema):
+    if any(problem.rule in ("ros2_schema", "parse_error")
+           for problem in (*schema, *reader.problems)):
         return None, (*schema, *reader.problems)
     return actions, (*schema, *reader.problems)
 
