@@ -51,6 +51,7 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Unfollowed,
     Where,
+    ros2_run,
 )
 from launch_linter.frontends.xml_safe import MAX_BYTES
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
@@ -61,7 +62,9 @@ MAX_STEPS = 200_000
 MAX_CALL_DEPTH = 16
 MAX_ITEMS = 10_000
 MAX_TEXT = 100_000
-LAUNCH_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml")
+LAUNCH_ROOTS = (
+    "launch", "launch_ros", "launch_xml", "launch_yaml", "launch_testing", "launch_pytest",
+)
 ACTION_NAMES = frozenset({
     "Node", "IncludeLaunchDescription", "ComposableNodeContainer", "LoadComposableNodes",
     "ComposableNode", "GroupAction", "OpaqueFunction", "TimerAction", "LaunchDescription",
@@ -1154,6 +1157,23 @@ class Interpreter:
             unknown=unknown,
         )
 
+    def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
+                              node: ast.Call) -> object:
+        """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
+        other processes are not transforms."""
+        cmd = self.arg(args, kwargs, 0, "cmd")
+        if not isinstance(cmd, list | tuple) or kwargs.get("shell") is True:
+            return LaunchObject("ExecuteProcess")
+        run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
+        if run is None:
+            return LaunchObject("ExecuteProcess")
+        package, executable, arguments = run
+        return RunNode(
+            where=self.where(node), condition=self.condition(kwargs, node), package=package,
+            executable=executable, name=None, namespace=None, arguments=arguments,
+            args_written=self.segment(_keyword(node, "cmd") or node), pushed_namespace=False,
+        )
+
     def launch_DeclareLaunchArgument(self, args: list[object], kwargs: dict[str, object],
                                      node: ast.Call) -> object:
         name = self.arg(args, kwargs, 0, "name")
@@ -1496,20 +1516,79 @@ def read_python(path: str, data: bytes) -> FileRead:
     return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
 
 
+ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
+"""What ``ros2 launch`` and ``launch_testing`` call; ``launch_pytest`` fixtures next."""
+
+
+def _is_launch_pytest_fixture(decorator: ast.expr) -> bool:
+    """``@launch_pytest.fixture``, ``@launch_pytest.fixture(...)`` or a bare ``@fixture``
+    imported from it (checked by the caller)."""
+    target = decorator.func if isinstance(decorator, ast.Call) else decorator
+    return (
+        isinstance(target, ast.Attribute) and target.attr == "fixture"
+        and isinstance(target.value, ast.Name) and target.value.id == "launch_pytest"
+    )
+
+
+def _entry_point(tree: ast.Module, module: Env) -> tuple[str, FuncVal] | None:
+    for name in ENTRY_POINTS:
+        found, function = module.lookup(name)
+        if found and isinstance(function, FuncVal):
+            return name, function
+    fixture_imported = any(
+        isinstance(statement, ast.ImportFrom) and statement.module == "launch_pytest"
+        and any(alias.name == "fixture" and alias.asname is None for alias in statement.names)
+        for statement in tree.body
+    )
+    for statement in tree.body:
+        if not isinstance(statement, ast.FunctionDef):
+            continue
+        for decorator in statement.decorator_list:
+            bare = decorator.func if isinstance(decorator, ast.Call) else decorator
+            if _is_launch_pytest_fixture(decorator) or (
+                fixture_imported and isinstance(bare, ast.Name) and bare.id == "fixture"
+            ):
+                found, function = module.lookup(statement.name)
+                if found and isinstance(function, FuncVal):
+                    return statement.name, function
+    return None
+
+
+def _fixture_arguments(interpreter: Interpreter, function: FuncVal, module: Env
+                       ) -> dict[str, object]:
+    """pytest passes a fixture's parameters from the fixtures of the same name: the
+    module's own functions of those names are called (without arguments)."""
+    values: dict[str, object] = {}
+    for parameter in function.node.args.args:
+        found, fixture = module.lookup(parameter.arg)
+        if found and isinstance(fixture, FuncVal) and fixture is not function:
+            values[parameter.arg] = interpreter.call_function(fixture, [], {}, fixture.node)
+    return values
+
+
 def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
     module = Env()
     top = Where(interpreter.path, 1, 1)
     try:
         interpreter.run_block(tree.body, module)
-        found, function = module.lookup("generate_launch_description")
-        if not found or not isinstance(function, FuncVal):
+        entry = _entry_point(tree, module)
+        if entry is None:
             interpreter.problems.append(Problem(
-                "roslaunch_error", 1, 1,
-                "no generate_launch_description() function: ros2 launch cannot load this file",
+                "unresolved", 1, 1,
+                "no generate_launch_description(), generate_test_description() or "
+                "launch_pytest fixture: not a launch file ros2 launch can load; not read",
             ))
             return ()
+        entry_name, function = entry
         node = function.node
-        result = interpreter.call_function(function, [], {}, node)
+        arguments = (_fixture_arguments(interpreter, function, module)
+                     if entry_name not in ENTRY_POINTS else {})
+        result = interpreter.call_function(function, [], arguments, node)
+        if isinstance(result, (tuple, list)) and result and isinstance(
+            result[0], LaunchDescriptionVal
+        ):
+            # launch_testing's (LaunchDescription, {name: process, ...}) form.
+            result = result[0]
     except _OutOfSteps:
         return (Unfollowed(top, f"stopped interpreting after {MAX_STEPS} steps: the launch "
                                 f"description is not followed"),)

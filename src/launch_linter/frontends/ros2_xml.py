@@ -30,12 +30,13 @@ from launch_linter.frontends.ros2_actions import (
     SetEnv,
     SetVar,
     Where,
+    ros2_run,
 )
 from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
 from launch_linter.resolve.ros2_substitution import (
-    Opaque,
     CommandLineError,
+    Opaque,
     Subs,
     SubstitutionSyntaxError,
     parse,
@@ -148,6 +149,8 @@ class _Reader:
             return self.include(entity, where, condition)
         if tag == "node":
             return self.node(entity, where, condition)
+        if tag == "executable":
+            return self.executable(entity, where, condition)
         if tag in ("node_container", "load_composable_node"):
             components = tuple(
                 self.component(child) for child in entity.lists.get("composable_node", [])
@@ -193,6 +196,29 @@ class _Reader:
             namespace=self.subs(entity, "namespace"),
             arguments=arguments,
             args_written=entity.attrs.get("args", ""),
+        )
+
+    def executable(self, entity: Entity, where: Where, condition: Predicate | None
+                   ) -> RunNode | None:
+        """``<executable cmd="ros2 run PKG EXEC ARGS">`` starts that node."""
+        cmd = self.required(entity, "cmd")
+        if cmd is None:
+            return None
+        try:
+            items = split_command_line(cmd)
+        except CommandLineError as exc:
+            self.report("parse_error", entity,
+                        f"cmd: {exc}: launch's command-line parser (shlex) refuses it, "
+                        f"and with it the whole file")
+            return None
+        run = ros2_run(items)
+        if run is None:
+            return None
+        package, executable, arguments = run
+        return RunNode(
+            where=where, condition=condition, package=package, executable=executable,
+            name=None, namespace=None, arguments=arguments,
+            args_written=entity.attrs.get("cmd", ""), pushed_namespace=False,
         )
 
     def component(self, entity: Entity) -> Component:

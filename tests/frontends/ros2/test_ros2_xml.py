@@ -305,3 +305,16 @@ def test_run_time_substitutions_are_unresolved_not_errors(load: Load) -> None:
     assert [rule for rule, _ in rules(tree)] == ["unresolved"]
     (transform,) = tree.transforms
     assert "parent" in transform.unresolved and transform.child == "laser"
+
+
+def test_executable_ros2_run_is_a_node(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <push-ros-namespace namespace="r"/>\n'
+        '  <executable cmd="ros2 run tf2_ros static_transform_publisher --frame-id base'
+        ' --child-frame-id cam" output="screen"/>\n'
+        '  <executable cmd="ls -l"/>'
+    )}, "a.launch.xml")
+    (transform,) = tree.transforms
+    assert (transform.package, transform.executable) == ("tf2_ros", "static_transform_publisher")
+    assert (transform.namespace, transform.parent, transform.child) == ("/", "base", "cam")
+    assert transform.line == 3
