@@ -199,6 +199,8 @@ def decode_ros2(items: Sequence[str], unresolved: frozenset[int] = frozenset()) 
                     f"with 'Not enough arguments for {word}'"
                 )
                 break
+            if word in flags:
+                _overwritten(reader, word, *flags[word])
             flags[word] = words[position + 1]
             position += 2
             continue
@@ -236,6 +238,23 @@ def decode_ros2(items: Sequence[str], unresolved: frozenset[int] = frozenset()) 
             f"'Extra unparsed arguments on command-line'"
         )
     return _flags(reader, flags)
+
+
+_FLAG_SLOTS = {
+    "--x": 0, "--y": 1, "--z": 2, "--yaw": 3, "--pitch": 4, "--roll": 5,
+    "--qx": 3, "--qy": 4, "--qz": 5, "--qw": 6,
+}
+
+
+def _overwritten(reader: _Reader, flag: str, index: int, word: str) -> None:
+    """A flag given again: the program still parses the earlier value when it meets it
+    (``std::stod`` in ``DoubleOption::visit``), so a bad one stops it even though a later
+    occurrence would be good. Text after a number is ignored, and the value is replaced."""
+    slot = _FLAG_SLOTS.get(flag)
+    if slot is None or not reader.resolved(index):
+        return
+    if stod(word)[1] in ("invalid", "range"):
+        reader.numbers.append(NumberIssue(slot, word, None))
 
 
 def _drop_unknown_flags(reader: _Reader, bare: list[tuple[int, str]]) -> list[tuple[int, str]]:
@@ -336,6 +355,14 @@ def _layout(reader: _Reader, positional: list[tuple[int, str]], rotation_size: i
         for slot, (index, word) in enumerate(positional[:numeric])
     ]
     kind = RotationKind.YPR if rotation_size == 3 else RotationKind.QUATERNION
+    for offset, (who, what) in enumerate((("parent", "Frame id"), ("child", "Child frame id"))):
+        index, word = positional[numeric + offset]
+        if word == "" and reader.resolved(index):
+            reader.issues.append(ArgIssue(
+                "missing_frame",
+                f"the {who} frame id (argument {numeric + offset + 1}) is empty: the program "
+                f"stops with '{what} must not be empty'",
+            ))
     return _result(
         reader, kind.value, positional[numeric][1], positional[numeric + 1][1],
         (values[0], values[1], values[2]), Rotation(kind, tuple(values[3:numeric])),
@@ -390,9 +417,9 @@ def _flags(reader: _Reader, flags: dict[str, tuple[int, str]]) -> Ros2Decoded:
     for flag, what in zip(FRAME_FLAGS, ("Frame id", "Child frame id"), strict=True):
         value = flags[flag][1] if flag in flags else None
         if value is None or (value == "" and reader.resolved(flags[flag][0])):
+            said = f"no {flag}" if value is None else f"{flag} is empty"
             reader.issues.append(ArgIssue(
-                "missing_frame",
-                f"no {flag}: the program stops with '{what} must not be empty'",
+                "missing_frame", f"{said}: the program stops with '{what} must not be empty'",
             ))
             value = None
         frames.append(value)
@@ -464,6 +491,14 @@ def decode_component(params: Mapping[str, ComponentParam], complete: bool = True
         params[name].text if name in params else default
         for name, default in zip(COMPONENT_PARAMS[7:], COMPONENT_DEFAULT_FRAMES, strict=True)
     ]
+    for name in COMPONENT_PARAMS[7:]:
+        param = params.get(name)
+        if param is not None and param.resolved and param.text == "":
+            reader.issues.append(ArgIssue(
+                "missing_frame",
+                f"the {name} parameter is empty: tf2 rejects a transform without a frame id "
+                f"(TF_NO_{'CHILD_' if name.startswith('child') else ''}FRAME_ID)",
+            ))
     absent = [name for name in COMPONENT_PARAMS[7:] if name not in params]
     if absent and complete:
         reader.issues.append(ArgIssue(
