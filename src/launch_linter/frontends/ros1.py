@@ -625,8 +625,25 @@ class Ros1Loader:
             self._error(context, element, "command must be 'load', 'dump', or 'delete'")
         if file is not None and command_text == "delete":
             self._error(context, element, "'file' attribute is invalid with 'delete' command.")
+        file_text = None if file is None else resolved_text(file)
+        if file is not None and (command_text or "load") == "load" and file_text is not None and (
+            file_text == "" or _checkable_path(element.attrib.get("file", ""), file_text)
+        ) and not os.path.isfile(file_text):
+            self._error(context, element,
+                        f"error loading <rosparam> tag: file does not exist [{file_text}]")
+        body: Value | None = (element.text,) if element.text else ()
         if substitute:
-            self._resolve_text(element.text, element, "text", context, anon)
+            body = self._resolve_text(element.text, element, "text", context, anon)
+        if file is None and (command_text or "load") == "load" and body is not None:
+            text = resolved_text(body)
+            # An unresolved param=/ns= may well be set: only a certain absence counts.
+            has_param = any(
+                value is not None and (resolved_text(value) is None or bool(text_of(value)))
+                for value in (_param, _ns)
+            )
+            problem = None if text is None else rosparam_body_problem(text, has_param)
+            if problem is not None:
+                self._error(context, element, f"error loading <rosparam> tag: {problem}")
 
     def _remap(self, element: Element, context: _Context) -> None:
         if self._condition(element, context) is None:
@@ -695,7 +712,9 @@ class Ros1Loader:
                                 f"<test> tags cannot have '{attribute}' attribute")
             name_value = self._resolve(element, "name", context)
             test_name = self._required(element, "test-name", context)
-            self._present(element, ("time-limit", "retry"), context)
+            limits = self._present(element, ("time-limit", "retry"), context)
+            for message in _test_limit_problems(limits):
+                self._error(context, element, f"Invalid <node> tag: {message}")
             if not (name_value and text_of(name_value)):
                 name_value = test_name
         else:
@@ -994,6 +1013,54 @@ def _is_int(text: str) -> bool:
     except ValueError:
         return False
     return True
+
+
+def _test_limit_problems(values: dict[str, Value]) -> list[str]:
+    """What roslaunch's ``_test_attrs`` refuses: ``float(time-limit)`` must work and be
+    positive, ``int(retry)`` must work (empty values are not checked)."""
+    problems: list[str] = []
+    limit = resolved_text(values["time-limit"]) if "time-limit" in values else None
+    if limit:
+        try:
+            if float(limit) <= 0.0:
+                problems.append("'time-limit' must be a positive number")
+        except ValueError:
+            problems.append(f"'time-limit' must be a number: [{limit}]")
+    retry = resolved_text(values["retry"]) if "retry" in values else None
+    if retry:
+        try:
+            int(retry)
+        except ValueError:
+            problems.append(f"'retry' must be a number: [{retry}]")
+    return problems
+
+
+def _checkable_path(written: str, path: str) -> bool:
+    """Whether a missing file means the same on every machine: an absolute path found
+    through ``$(find pkg)`` (the package exists) or ``$(dirname)``."""
+    return os.path.isabs(path) and ("$(find " in written or "$(dirname)" in written)
+
+
+def rosparam_body_problem(text: str, has_param: bool) -> str | None:
+    """What roslaunch's ``load_rosparam`` refuses in a ``<rosparam>`` body: YAML it cannot
+    parse, or a value that is not a mapping without ``param=``. The YAML is only composed
+    (no object is built, so rosparam's ``!degrees``/``deg()`` tags need no support); this
+    needs PyYAML, imported on use, and is skipped without it."""
+    try:
+        import yaml  # type: ignore[import-untyped]
+    except ImportError:
+        return None
+    if len(text) > 1_000_000:
+        return None
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.YAMLError as exc:
+        return f"Error within YAML block: {str(exc).splitlines()[0]}"
+    except RecursionError:
+        return None
+    if root is None or isinstance(root, yaml.MappingNode) or has_param:
+        return None
+    return "'param' attribute must be set for non-dictionary values"
 
 
 def _is_positive_number(text: str) -> bool:
