@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import argparse
 import io
+import json
 import os
 import subprocess
 import sys
@@ -83,8 +84,10 @@ def export(repo: str, commit: str, target: str) -> None:
     archive = subprocess.run(["git", "-C", repo, "archive", "--format=tar", commit],
                              capture_output=True, check=True).stdout
     with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
-        members = [m for m in tar.getmembers() if m.isfile() or m.isdir()]
-        tar.extractall(target, members=members)  # noqa: S202 - our own git export
+        # Plain files and folders inside the target only (no links, no absolute or '..').
+        members = [m for m in tar.getmembers() if (m.isfile() or m.isdir())
+                   and not os.path.isabs(m.name) and ".." not in m.name.split("/")]
+        tar.extractall(target, members=members)
 
 
 def test_launch_files(root: str) -> list[str]:
@@ -114,8 +117,6 @@ def run_oracle(tool: str, files: Sequence[str], root: str) -> dict[str, dict[str
         )
         for line in done.stdout.splitlines():
             if line.startswith("{"):
-                import json  # noqa: PLC0415 - only here
-
                 row = json.loads(line)
                 rows[row["file"]] = row
     return rows
