@@ -191,6 +191,8 @@ def main(argv: Sequence[str] | None = None) -> int:
                 kind = "refused: we report an error" if errors else (
                     "refused: we report no error")
                 refused_error += bool(errors)
+                if ns.verbose and not errors:
+                    print(f"  refused, no error from us: {name}")
                 classes[kind] += 1
                 examples.setdefault(kind, f"{name}: {str(row['error'])[:150]!r}")
                 continue
