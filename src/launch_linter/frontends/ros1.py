@@ -1042,25 +1042,68 @@ def _checkable_path(written: str, path: str) -> bool:
 
 
 def rosparam_body_problem(text: str, has_param: bool) -> str | None:
-    """What roslaunch's ``load_rosparam`` refuses in a ``<rosparam>`` body: YAML it cannot
-    parse, or a value that is not a mapping without ``param=``. The YAML is only composed
-    (no object is built, so rosparam's ``!degrees``/``deg()`` tags need no support); this
-    needs PyYAML, imported on use, and is skipped without it."""
-    try:
-        import yaml  # type: ignore[import-untyped]
-    except ImportError:
-        return None
-    if len(text) > 1_000_000:
-        return None
-    try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
-    except yaml.YAMLError as exc:
-        return f"Error within YAML block: {str(exc).splitlines()[0]}"
-    except RecursionError:
-        return None
-    if root is None or isinstance(root, yaml.MappingNode) or has_param:
+    """What roslaunch's ``load_rosparam`` refuses in a ``<rosparam>`` body: a YAML value
+    that is not a mapping, without ``param=``."""
+    if has_param or yaml_root_kind(text) != "other":
         return None
     return "'param' attribute must be set for non-dictionary values"
+
+
+def yaml_root_kind(text: str) -> str | None:
+    """Whether a YAML document's root is a ``mapping``, ``other`` (a sequence or a
+    scalar), or None when that is not plain from its first lines (tags, anchors, block
+    scalars, several documents, or nothing at all). Standard library only, and never a
+    guess: the core does not depend on PyYAML, and a body it cannot classify is left
+    alone."""
+    lines = []
+    for raw in text[:100_000].splitlines():
+        stripped = raw.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        if stripped.startswith(("%", "---", "...")):
+            return None
+        lines.append(raw)
+    if not lines:
+        return None  # empty: roslaunch takes it as {}
+    first = lines[0].strip()
+    if first[0] in "!&*|>?@`":
+        return None
+    if first.startswith("{"):
+        return "mapping"
+    if first.startswith("[") or first == "-" or first.startswith(("- ", "-\t")):
+        return "other"
+    key_end = _plain_key_end(first)
+    if key_end is not None:
+        return "mapping"
+    if any(_plain_key_end(line.strip()) is not None for line in lines[1:]):
+        return None  # not a plain single value: YAML may refuse it; leave it
+    return "other"
+
+
+def _plain_key_end(line: str) -> int | None:
+    """Where a ``key:`` ends on a line (``: ``, ``:\t`` or ``:`` at its end, outside
+    quotes), or None."""
+    quote = ""
+    index = 0
+    if line[:1] in "'\"":
+        quote = line[0]
+        index = 1
+        while index < len(line):
+            if line[index] == quote:
+                if quote == "'" and line[index + 1:index + 2] == "'":
+                    index += 2
+                    continue
+                break
+            index += 2 if quote == '"' and line[index] == "\\" else 1
+        index += 1
+        rest = line[index:].lstrip()
+        return index if rest.startswith(":") and (rest == ":" or rest[1] in " \t") else None
+    for index, char in enumerate(line):
+        if char == "#" and index and line[index - 1] in " \t":
+            return None
+        if char == ":" and (index + 1 == len(line) or line[index + 1] in " \t"):
+            return index
+    return None
 
 
 def _is_positive_number(text: str) -> bool:

@@ -34,6 +34,9 @@ class Nested:
     attributes: frozenset[str]
     nested: tuple[tuple[str, Nested], ...] = ()
     checked: bool = True
+    required: tuple[str, ...] = ()
+    """Attributes ``parse`` reads without ``optional=True`` (missing: AttributeError),
+    those the action reader does not already report."""
 
     def child(self, tag: str) -> Nested | None:
         for name, spec in self.nested:
@@ -53,6 +56,8 @@ class ActionSpec:
     has_actions: bool
     repo: str
     source: str
+    required: tuple[str, ...] = ()
+    """As :attr:`Nested.required`: only those the action reader does not report itself."""
 
     def child(self, tag: str) -> Nested | None:
         for name, spec in self.nested:
@@ -68,8 +73,9 @@ def _attrs(*names: str) -> frozenset[str]:
 CONDITION = _attrs("if", "unless")
 """``launch.Action.parse``: every action reads its condition."""
 
-_NAME_VALUE = Nested(_attrs("name", "value"))
-_REMAP = Nested(_attrs("from", "to"))
+_NAME_VALUE = Nested(_attrs("name", "value"), required=("name", "value"))
+_INCLUDE_ARG = Nested(_attrs("name", "value"))  # the action reader reports missing ones
+_REMAP = Nested(_attrs("from", "to"), required=("from", "to"))
 # launch_ros Node.parse_nested_parameters: a top-level <param> reads from, allow_substs and
 # name, then name, type, value and nested <param>; a nested one reads name, type, value,
 # param. Both are checked completely.
@@ -91,6 +97,7 @@ _NODE_NESTED = (("env", _NAME_VALUE), ("remap", _REMAP), ("param", _PARAM))
 _COMPOSABLE_NODE = Nested(
     _attrs("pkg", "plugin", "name", "if", "unless", "namespace"),
     (("param", _PARAM), ("remap", _REMAP), ("extra_arg", _NAME_VALUE)),
+    required=("pkg", "name"),  # 'plugin' is reported by the action reader
 )
 
 _ACTIONS_PATH = "launch/launch/actions/"
@@ -99,10 +106,10 @@ _ROS_PATH = "launch_ros/launch_ros/actions/"
 ACTIONS: dict[str, ActionSpec] = {
     "append_env": ActionSpec(
         CONDITION | _attrs("name", "value", "prepend", "separator"), (), False,
-        LAUNCH, _ACTIONS_PATH + "append_environment_variable.py"),
+        LAUNCH, _ACTIONS_PATH + "append_environment_variable.py", required=("name", "value")),
     "arg": ActionSpec(
         CONDITION | _attrs("name", "default", "description"),
-        (("choice", Nested(_attrs("value"), checked=False)),), False,
+        (("choice", Nested(_attrs("value"), checked=False, required=("value",))),), False,
         LAUNCH, _ACTIONS_PATH + "declare_launch_argument.py"),
     "executable": ActionSpec(
         CONDITION | _EXECUTE_PROCESS, (("env", _NAME_VALUE),), False,
@@ -111,11 +118,11 @@ ACTIONS: dict[str, ActionSpec] = {
         CONDITION | _attrs("scoped", "forwarding"), (("keep", _NAME_VALUE),), True,
         LAUNCH, _ACTIONS_PATH + "group_action.py"),
     "include": ActionSpec(
-        CONDITION | _attrs("file"), (("arg", _NAME_VALUE),), False,
+        CONDITION | _attrs("file"), (("arg", _INCLUDE_ARG),), False,
         LAUNCH, _ACTIONS_PATH + "include_launch_description.py"),
     "log": ActionSpec(
         CONDITION | _attrs("message"), (), False,
-        LAUNCH, _ACTIONS_PATH + "log_info.py"),
+        LAUNCH, _ACTIONS_PATH + "log_info.py", required=("message",)),
     "reset_env": ActionSpec(
         CONDITION, (), False,
         LAUNCH, _ACTIONS_PATH + "reset_environment.py"),
@@ -133,7 +140,7 @@ ACTIONS: dict[str, ActionSpec] = {
         LAUNCH, _ACTIONS_PATH + "shutdown_action.py"),
     "timer": ActionSpec(
         CONDITION | _attrs("period", "cancel_on_shutdown"), (), True,
-        LAUNCH, _ACTIONS_PATH + "timer_action.py"),
+        LAUNCH, _ACTIONS_PATH + "timer_action.py", required=("period",)),
     "unset_env": ActionSpec(
         CONDITION | _attrs("name"), (), False,
         LAUNCH, _ACTIONS_PATH + "unset_environment_variable.py"),
@@ -145,7 +152,7 @@ ACTIONS: dict[str, ActionSpec] = {
         LAUNCH_ROS, _ROS_PATH + "composable_node_container.py"),
     "load_composable_node": ActionSpec(
         CONDITION | _attrs("target"), (("composable_node", _COMPOSABLE_NODE),), False,
-        LAUNCH_ROS, _ROS_PATH + "load_composable_nodes.py"),
+        LAUNCH_ROS, _ROS_PATH + "load_composable_nodes.py", required=("target",)),
     "push_ros_namespace": ActionSpec(
         CONDITION | _attrs("namespace"), (), False,
         LAUNCH_ROS, _ROS_PATH + "push_ros_namespace.py"),
@@ -154,22 +161,22 @@ ACTIONS: dict[str, ActionSpec] = {
         LAUNCH_ROS, _ROS_PATH + "push_ros_namespace.py"),
     "ros_timer": ActionSpec(
         CONDITION | _attrs("period"), (), True,
-        LAUNCH_ROS, _ROS_PATH + "ros_timer.py"),
+        LAUNCH_ROS, _ROS_PATH + "ros_timer.py", required=("period",)),
     "set_parameter": ActionSpec(
         CONDITION | _attrs("name", "value"), (), False,
-        LAUNCH_ROS, _ROS_PATH + "set_parameter.py"),
+        LAUNCH_ROS, _ROS_PATH + "set_parameter.py", required=("name", "value")),
     "set_parameters_from_file": ActionSpec(
         CONDITION | _attrs("filename"), (), False,
-        LAUNCH_ROS, _ROS_PATH + "set_parameters_from_file.py"),
+        LAUNCH_ROS, _ROS_PATH + "set_parameters_from_file.py", required=("filename",)),
     "set_remap": ActionSpec(
         CONDITION | _attrs("from", "to"), (), False,
-        LAUNCH_ROS, _ROS_PATH + "set_remap.py"),
+        LAUNCH_ROS, _ROS_PATH + "set_remap.py", required=("from", "to")),
     "set_ros_log_dir": ActionSpec(
         CONDITION | _attrs("new_log_dir"), (), False,
-        LAUNCH_ROS, _ROS_PATH + "set_ros_log_dir.py"),
+        LAUNCH_ROS, _ROS_PATH + "set_ros_log_dir.py", required=("new_log_dir",)),
     "set_use_sim_time": ActionSpec(
         CONDITION | _attrs("value"), (), False,
-        LAUNCH_ROS, _ROS_PATH + "set_use_sim_time.py"),
+        LAUNCH_ROS, _ROS_PATH + "set_use_sim_time.py", required=("value",)),
 }
 """Every action tag launch and launch_ros expose, as written (tags are not normalised:
 ``set-env`` is not ``set_env``; only the namespace action is exposed under both)."""
@@ -250,6 +257,12 @@ class _Checker:
             True,
         ))
 
+    def missing(self, entity: SchemaEntity, required: tuple[str, ...]) -> None:
+        for name in required:
+            if name not in entity.attributes:
+                self.refuse(entity, f"<{entity.tag}> is missing the required {self.word}"
+                                    f" '{name}'")
+
     def actions(self, entities: tuple[SchemaEntity, ...]) -> None:
         for entity in entities:
             self.action(entity)
@@ -259,6 +272,7 @@ class _Checker:
         if spec is None:
             self.unknown_action(entity)
             return
+        self.missing(entity, spec.required)
         for name in _unread_attributes(entity, spec.attributes, self.xml):
             self.refuse(entity, f"<{entity.tag}> has the {self.word} '{name}' that launch does"
                                 f" not accept{_hint(name, spec.attributes)}")
@@ -274,6 +288,7 @@ class _Checker:
                                    f" launch does not accept{_hint(child.tag, names)}")
 
     def nested(self, entity: SchemaEntity, spec: Nested) -> None:
+        self.missing(entity, spec.required)
         if not spec.checked:
             return
         for name in _unread_attributes(entity, spec.attributes, self.xml):

@@ -155,3 +155,25 @@ def test_refused_include_is_not_followed(load: Load) -> None:
     assert [t.name for t in tree.transforms] == ["o"]
     assert any(d.rule == "ros2_schema" and d.path == "inner.launch.xml"
                for d in tree.diagnostics)
+
+
+@pytest.mark.parametrize(("body", "line"), [
+    ("<log/>", 2), ("<set_parameter name='a'/>", 2),
+    ("<timer><let name='a' value='b'/></timer>", 2),
+    ("<node pkg='p' exec='e'><remap from='a'/></node>", 2),
+    ("<arg name='a'><choice/></arg>", 2),
+    ("<load_composable_node target='c'><composable_node pkg='p' plugin='q'/>"
+     "</load_composable_node>", 2),
+])
+def test_missing_required_attributes(load: Load, body: str, line: int) -> None:
+    # <let> makes the file ROS 2 for the dispatcher.
+    tree = load({"a.launch.xml": f"<launch>\n{body}\n<let name='z' value='1'/>\n</launch>\n"},
+                "a.launch.xml")
+    assert ("ros2_schema", line) in rules(tree)
+    assert any("is missing the required" in d.message for d in tree.diagnostics)
+
+
+def test_required_attributes_the_reader_reports_are_not_doubled(load: Load) -> None:
+    tree = load({"a.launch.xml": "<launch>\n<let name='a'/>\n<include file='x.xml'>"
+                                 "<arg name='b'/></include>\n</launch>\n"}, "a.launch.xml")
+    assert "ros2_schema" not in [rule for rule, _ in rules(tree)]
