@@ -10,7 +10,8 @@ Nothing is launched: the texts are only parsed (``Parser.load`` and
 The texts are (1) every XML and YAML launch text written in launch_xml's and
 launch_yaml's own tests (string constants read from the test sources with ``ast``, never
 run), and (2) probes made here: each launch action with every attribute and nested tag
-our table accepts, then with one misspelled; and ``<executable cmd="...">`` command lines
+our table accepts, then with one misspelled, without each required attribute, and with
+an unknown nested tag; and ``<executable cmd="...">`` command lines
 (fixed tricky ones and seeded random ones) whose argv items are compared item by item.
 
 Agreement: launch refuses a text exactly when our front-end reports an error-level
@@ -143,6 +144,11 @@ def schema_probes() -> list[tuple[str, str, str]]:
                                                  f"</launch>\n"))
         probes.append((f"{tag}/misspelled", "xml",
                        f'<launch><{tag} {written} namespce="x">{nested}</{tag}></launch>\n'))
+        for required in spec.required:
+            without = " ".join(f'{a}="{_attribute_value(a)}"' for a in attributes
+                               if a != required)
+            probes.append((f"{tag}/without-{required}", "xml",
+                           f"<launch><{tag} {without}>{nested}</{tag}></launch>\n"))
         if not spec.has_actions:
             probes.append((f"{tag}/unknown-nested", "xml",
                            f"<launch><{tag} {written}><remapp/></{tag}></launch>\n"))
