@@ -1554,6 +1554,24 @@ def _entry_point(tree: ast.Module, module: Env) -> tuple[str, FuncVal] | None:
     return None
 
 
+def _yield_as_return(function: FuncVal) -> FuncVal:
+    """A fixture that ``yield``s its launch description (then cleans up) gives what it
+    yields first: its body up to that statement, with the ``yield`` read as ``return``."""
+    node = function.node
+    if not isinstance(node, ast.FunctionDef):
+        return function
+    for index, statement in enumerate(node.body):
+        if isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Yield):
+            returned = ast.copy_location(ast.Return(value=statement.value.value), statement)
+            body = [*node.body[:index], returned]
+            copy = ast.copy_location(ast.FunctionDef(
+                name=node.name, args=node.args, body=body, decorator_list=[],
+                returns=None, type_comment=None,
+            ), node)
+            return FuncVal(copy, function.closure, function.defaults)
+    return function
+
+
 def _fixture_arguments(interpreter: Interpreter, function: FuncVal, module: Env
                        ) -> dict[str, object]:
     """pytest passes a fixture's parameters from the fixtures of the same name: the
@@ -1583,6 +1601,7 @@ def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Act
         node = function.node
         arguments = (_fixture_arguments(interpreter, function, module)
                      if entry_name not in ENTRY_POINTS else {})
+        function = _yield_as_return(function)
         result = interpreter.call_function(function, [], arguments, node)
         if isinstance(result, (tuple, list)) and result and isinstance(
             result[0], LaunchDescriptionVal

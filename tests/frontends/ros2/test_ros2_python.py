@@ -462,3 +462,15 @@ def test_execute_process_ros2_run_is_a_node_outside_the_pushed_namespace(load: L
         "a.launch.py")
     (transform,) = tree.transforms
     assert (transform.namespace, transform.parent, transform.child) == ("/", "a", "b")
+
+
+def test_launch_pytest_fixture_that_yields(load: Load) -> None:
+    tree = load({"test_c.py": HEADER + "import launch_pytest\n\n"
+        "@launch_pytest.fixture\n"
+        "def launch_description():\n"
+        "    frames = ['map', 'odom']\n"
+        "    yield LaunchDescription([" + tf("['--frame-id', frames[0], '--child-frame-id',"
+                                            " frames[1]]") + "])\n"
+        "    print('cleanup')\n"
+    }, "test_c.py")
+    assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
