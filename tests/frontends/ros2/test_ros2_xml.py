@@ -218,13 +218,14 @@ def test_composable_node(load: Load) -> None:
 def test_composable_node_parameters_from_a_file(load: Load) -> None:
     tree = load({"a.launch.xml": launch(
         '  <load_composable_node target="/c">\n'
-        '    <composable_node pkg="tf2_ros" plugin="tf2_ros::StaticTransformBroadcasterNode">\n'
+        '    <composable_node pkg="tf2_ros" plugin="tf2_ros::StaticTransformBroadcasterNode"'
+        ' name="t">\n'
         '      <param from="$(dirname)/tf.yaml"/>\n'
         '    </composable_node>\n'
         '  </load_composable_node>'
     )}, "a.launch.xml")
     (transform,) = tree.transforms
-    assert transform.name is None
+    assert transform.name == "t"  # launch_ros requires it (ComposableNode.parse)
     assert set(transform.unresolved) == {"translation", "rotation", "parent", "child"}
     assert transform.arg_issues == ()
 
