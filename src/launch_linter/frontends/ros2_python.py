@@ -255,6 +255,8 @@ class Interpreter:
     call_sites: list[ast.AST] = field(default_factory=list)
     """Calls of the file's own functions being run, outermost first."""
     lines: list[str] = field(default_factory=list)
+    served: list[object] = field(default_factory=list)
+    """What a script gives ``LaunchService.include_launch_description``."""
 
     # -- helpers -------------------------------------------------------------------------
     def step(self) -> None:
@@ -590,6 +592,10 @@ class Interpreter:
         if isinstance(base, list | dict | str | SubsVal | LazyStr | LaunchDescriptionVal |
                       ConfigsVal):
             return BoundMethod(base, name)
+        if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
+            name == "include_launch_description"
+        ):
+            return BoundMethod(base, name)
         return self.unknown(node, f"attribute '{name}' is not interpreted")
 
     def fstring(self, node: ast.JoinedStr, env: Env) -> object:
@@ -897,6 +903,12 @@ class Interpreter:
             if name == "insert" and len(args) == 2 and isinstance(args[0], int):
                 target.insert(args[0], self.guard(args[1]))
                 return None
+        if isinstance(target, LaunchObject) and target.name == "LaunchService" and (
+            name == "include_launch_description" and len(args) == 1
+        ):
+            # A script-style file: what it would serve is its launch description.
+            self.served.append(args[0])
+            return None
         if isinstance(target, LaunchDescriptionVal) and name in ("add_action", "add_entity"):
             if len(args) == 1:
                 target.items.append(self.guard(args[0]))
@@ -1572,6 +1584,24 @@ def _yield_as_return(function: FuncVal) -> FuncVal:
     return function
 
 
+def _served(interpreter: Interpreter, module: Env) -> LaunchDescriptionVal | None:
+    """A script's launch description: what its module code, or else its ``main()``,
+    gives ``LaunchService().include_launch_description``."""
+    if not interpreter.served:
+        found, main = module.lookup("main")
+        if found and isinstance(main, FuncVal):
+            interpreter.call_function(main, [], {}, main.node)
+    if not interpreter.served:
+        return None
+    items: list[object] = []
+    for description in interpreter.served:
+        if isinstance(description, LaunchDescriptionVal):
+            items.extend(description.items)
+        else:
+            items.append(description)
+    return LaunchDescriptionVal(items)
+
+
 def _fixture_arguments(interpreter: Interpreter, function: FuncVal, module: Env
                        ) -> dict[str, object]:
     """pytest passes a fixture's parameters from the fixtures of the same name: the
@@ -1591,6 +1621,9 @@ def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Act
         interpreter.run_block(tree.body, module)
         entry = _entry_point(tree, module)
         if entry is None:
+            served = _served(interpreter, module)
+            if served is not None:
+                return interpreter.actions(served.items, tree)
             interpreter.problems.append(Problem(
                 "unresolved", 1, 1,
                 "no generate_launch_description(), generate_test_description() or "

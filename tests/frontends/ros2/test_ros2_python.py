@@ -474,3 +474,17 @@ def test_launch_pytest_fixture_that_yields(load: Load) -> None:
         "    print('cleanup')\n"
     }, "test_c.py")
     assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
+
+
+def test_script_style_file_reads_what_it_serves(load: Load) -> None:
+    tree = load({"run.launch.py": HEADER + "import sys\nfrom launch import LaunchService\n\n"
+        "def main(argv=sys.argv[1:]):\n"
+        "    ld = LaunchDescription([" + tf("['--frame-id', 'map', '--child-frame-id', 'odom']")
+        + "])\n"
+        "    ls = LaunchService(argv=argv)\n"
+        "    ls.include_launch_description(ld)\n"
+        "    return ls.run()\n\n"
+        "if __name__ == '__main__':\n"
+        "    sys.exit(main())\n"
+    }, "run.launch.py")
+    assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
