@@ -40,7 +40,6 @@ from typing import Any
 from launch_linter.frontends.ros2_schema import ACTIONS, LAUNCH
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
-from launch_linter.frontends.xml_safe import parse_xml
 from launch_linter.resolve.ros2_substitution import (
     Call,
     CommandLineError,
@@ -48,6 +47,7 @@ from launch_linter.resolve.ros2_substitution import (
     parse,
     split_command_line,
 )
+from launch_linter.resolve.xml_safe import parse_xml
 
 DEFAULT_SOURCES = "/work/.mirror/ros2+launch/repo"
 ERRORS = ("ros2_schema", "parse_error", "roslaunch_error")

@@ -172,7 +172,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             row = rows.get(path)
             name = os.path.relpath(path, root)
             tree = load_tree(path, options)
-            errors = [d for d in tree.diagnostics if d.rule in ("parse_error", "roslaunch_error")]
+            errors = [d for d in tree.problems if d.rule in ("parse_error", "roslaunch_error")]
             if row is None:
                 classes["oracle gave no answer"] += 1
                 examples.setdefault("oracle gave no answer", name)

@@ -20,7 +20,7 @@ def errors(tmp_path: Path, body: str) -> list[str]:
     path = package / "t.launch"
     path.write_text("<launch>\n" + textwrap.dedent(body).strip() + "\n</launch>\n")
     tree = load_tree(str(path), LoadOptions(packages=PackageIndex([str(tmp_path / "src")])))
-    return [d.message for d in tree.diagnostics if d.rule == "roslaunch_error"]
+    return [d.message for d in tree.problems if d.rule == "roslaunch_error"]
 
 
 TEST = '<test test-name="t" pkg="rostest" type="x" {}/>'

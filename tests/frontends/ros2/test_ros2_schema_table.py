@@ -154,7 +154,7 @@ def test_refused_include_is_not_followed(load: Load) -> None:
     tree = load({"inner.launch.xml": inner, "outer.launch.xml": outer}, "outer.launch.xml")
     assert [t.name for t in tree.transforms] == ["o"]
     assert any(d.rule == "ros2_schema" and d.path == "inner.launch.xml"
-               for d in tree.diagnostics)
+               for d in tree.problems)
 
 
 @pytest.mark.parametrize(("body", "line"), [
@@ -170,7 +170,7 @@ def test_missing_required_attributes(load: Load, body: str, line: int) -> None:
     tree = load({"a.launch.xml": f"<launch>\n{body}\n<let name='z' value='1'/>\n</launch>\n"},
                 "a.launch.xml")
     assert ("ros2_schema", line) in rules(tree)
-    assert any("is missing the required" in d.message for d in tree.diagnostics)
+    assert any("is missing the required" in d.message for d in tree.problems)
 
 
 def test_required_attributes_the_reader_reports_are_not_doubled(load: Load) -> None:
