@@ -22,6 +22,7 @@ from launch_linter.rules import (
     reversed_name,
     ros2_bad_flag,
     ros2_positional_args,
+    ros2_schema,
     roslaunch_error,
     rot_degrees,
     self_transform,
@@ -64,6 +65,7 @@ RULE_MODULES = (
     ros2_bad_flag,
     py_arguments_single_string,
     component_default_frames,
+    ros2_schema,
     quaternion_w_first,
 )
 
