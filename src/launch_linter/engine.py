@@ -8,6 +8,7 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
+from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
@@ -122,7 +123,8 @@ def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
 
 
 def load_options_for(
-    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
+    robots: RobotCache | None = None,
 ) -> LoadOptions:
     roots = (
         tuple(options.package_paths)
@@ -136,6 +138,7 @@ def load_options_for(
         env=options.env,
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
+        robots=robots,
     )
 
 
@@ -191,8 +194,10 @@ def _lint_chunk(
 ) -> list[Linted]:
     rules = selected_rules(options)
     out: list[Linted] = []
+    # One cache per chunk: a description included by many launch files is expanded once.
+    robots = RobotCache()
     for item in items:
-        tree = load_tree(item.path, load_options_for(item, options, cache))
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
         out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
     return out
 

@@ -1,0 +1,94 @@
+"""Robot-description sources and frame-relevant nodes, as the launch front-ends see them.
+
+The front-ends hand over resolved values (``Value``s, holes included); this module decides
+whether they give a ``robot_description`` and how (xacro command, URDF file, literal text)
+and keeps the node parameters that the frame-authority rule reads.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from typing import Dict, List, Optional, Tuple
+
+from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
+from launch_linter.model.robot import DescriptionKind, DescriptionSource
+from launch_linter.model.transform import Condition
+from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
+
+DESCRIPTION_PARAM = "robot_description"
+FRAME_NODE_PACKAGES = frozenset({
+    "robot_state_publisher", "amcl", "nav2_amcl", "slam_toolbox", "gmapping",
+    "slam_gmapping", "cartographer_ros", "hector_mapping", "robot_localization",
+    "fuse_optimizers", "rtabmap_ros", "rtabmap_slam", "diff_drive_controller",
+    "controller_manager", "husky_base", "jackal_base", "turtlebot3_bringup",
+    "turtlebot3_node", "kobuki_node", "rf2o_laser_odometry", "laser_scan_matcher",
+    "map_server", "nav2_map_server", "karto", "slam_karto", "lama_ros", "iris_lama_ros",
+})
+FRAME_PARAMS = ("world_frame", "map_frame", "odom_frame", "base_link_frame", "publish_tf",
+                "tf_broadcast", "enable_odom_tf", "publish_odom_tf", "provide_odom_frame",
+                "publish_frame_projected_to_2d", "two_d_mode", "mode", "transform_publish_period")
+_YAML_LINE = re.compile(r"^\s*([A-Za-z_][\w/]*)\s*:\s*([^#\n]*?)\s*(?:#.*)?$", re.MULTILINE)
+
+
+def is_description_name(name: Optional[str]) -> bool:
+    return name is not None and (name == DESCRIPTION_PARAM
+                                 or name.endswith("/" + DESCRIPTION_PARAM))
+
+
+def words_of(value: Value) -> List[Word]:
+    """The whitespace-separated words of a command, each with whether it is resolved."""
+    marked = "".join(p if isinstance(p, str) else "\x00" + p.text for p in value)
+    words: List[Word] = []
+    for word in marked.split():
+        words.append((word.replace("\x00", ""), "\x00" not in word))
+    return words
+
+
+def from_ros1_param(values: Dict[str, Value], path: str, line: int, column: int,
+                    condition: Condition, directory: str) -> Optional[DescriptionSource]:
+    """The description a ROS 1 ``<param name="robot_description" ...>`` gives."""
+    command = values.get("command")
+    if command is not None:
+        parsed = xacro_command(words_of(command))
+        if parsed is None:
+            return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
+                                     condition=condition,
+                                     reason=f"command {text_of(command)!r} is not a xacro call")
+        file, args, reason = parsed
+        return DescriptionSource(path, line, column, DescriptionKind.XACRO,
+                                 _absolute(file, directory), args, condition, reason=reason)
+    textfile = values.get("textfile")
+    if textfile is not None:
+        file = resolved_text(textfile)
+        return DescriptionSource(path, line, column, DescriptionKind.FILE,
+                                 _absolute(file, directory), condition=condition,
+                                 reason=None if file else _why(textfile))
+    value = values.get("value")
+    if value is not None:
+        text = resolved_text(value)
+        if text is not None and literal_kind(text):
+            return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
+                                     condition=condition, text=text)
+    return None
+
+
+def _absolute(file: Optional[str], directory: str) -> Optional[str]:
+    if file is None:
+        return None
+    return file if os.path.isabs(file) else os.path.normpath(os.path.join(directory, file))
+
+
+def _why(value: Value) -> str:
+    reasons = [p.reason for p in value if isinstance(p, Hole)]
+    return "; ".join(reasons) or "unresolved"
+
+
+def params_from_yaml(text: str) -> List[Tuple[str, str]]:
+    """The frame parameters set in ``<rosparam>`` text (flat ``key: value`` lines only)."""
+    found: List[Tuple[str, str]] = []
+    for match in _YAML_LINE.finditer(text):
+        key = match.group(1).rsplit("/", 1)[-1]
+        if key in FRAME_PARAMS:
+            found.append((key, match.group(2).strip("'\"")))
+    return found
