@@ -102,6 +102,9 @@ class RunNode:
     arguments: tuple[Subs, ...] | None
     args_written: str
     unknown: str = ""
+    parameters: tuple[Params | ParamsUnknown, ...] = ()
+    """Kept for the nodes that tf rules need (robot_state_publisher's description,
+    localization and odometry frame parameters)."""
 
 
 @dataclass(frozen=True, slots=True)

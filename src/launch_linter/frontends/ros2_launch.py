@@ -41,14 +41,22 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Where,
 )
+from launch_linter.frontends.robot.sources import (
+    FRAME_NODE_PACKAGES,
+    FRAME_PARAMS,
+    from_ros2_value,
+    is_description_name,
+)
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.ros2_substitution import (
+    Call,
     Ros2Scope,
     Subs,
     SubstitutionError,
@@ -139,6 +147,8 @@ class Ros2Loader:
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
+        self.descriptions: list[DescriptionSource] = []
+        self.nodes: list[NodeRecord] = []
         self.budget = _Budget()
         self.root_display = ""
 
@@ -186,6 +196,8 @@ class Ros2Loader:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
+            descriptions=tuple(self.descriptions),
+            nodes=tuple(self.nodes),
         )
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:
@@ -440,6 +452,9 @@ class Ros2Loader:
             return
         package = self._resolve(action.package, scope, frame, action.where)
         executable = self._resolve(action.executable, scope, frame, action.where)
+        package_text = resolved_text(package)
+        if package_text in FRAME_NODE_PACKAGES:
+            self._frame_node(action, scope, frame, package_text, resolved_text(executable))
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return
@@ -453,6 +468,44 @@ class Ros2Loader:
             decoded = decode_ros2(items, unresolved)
         self._emit(action.where, scope, frame, package, executable, action.name,
                    action.namespace, decoded, values, action.args_written, action.unknown)
+
+    def _frame_node(self, action: RunNode, scope: _Scope, frame: _Frame, package: str,
+                    executable: str | None) -> None:
+        """Keep a node that tf rules need, with its frame parameters and, for
+        robot_state_publisher, its ``robot_description``."""
+        where = action.where
+        name_value = (None if action.name is None
+                      else self._resolve(action.name, scope, frame, where))
+        name = None if name_value is None else resolved_text(name_value)
+        params: list[tuple[str, str]] = []
+        for group in action.parameters:
+            if not isinstance(group, Params):
+                continue
+            for key, subs in group.items:
+                short = key.rsplit(".", 1)[-1]
+                if is_description_name(short):
+                    self._ros2_description(subs, scope, frame, where, name)
+                elif short in FRAME_PARAMS:
+                    text = resolved_text(self._resolve(subs, scope, frame, where))
+                    if text is not None:
+                        params.append((short, text))
+        self.nodes.append(NodeRecord(
+            self._display(frame.filename), where.line, where.column, package,
+            executable or "", name, tuple(params), frame.condition,
+        ))
+
+    def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
+                          node: str | None) -> None:
+        command = None
+        for sub in subs:
+            if isinstance(sub, Call) and sub.name == "command" and sub.args:
+                command = self._resolve(sub.args[0], scope, frame, where)
+                break
+        value = self._resolve(subs, scope, frame, where) if command is None else ()
+        source = from_ros2_value(value, command, self._display(frame.filename), where.line,
+                                 where.column, frame.condition, node)
+        if source is not None:
+            self.descriptions.append(source)
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)

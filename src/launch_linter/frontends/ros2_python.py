@@ -1149,6 +1149,7 @@ class Interpreter:
             arguments=items,
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
+            parameters=self.parameters(pick("parameters"), node),
         )
 
     def launch_DeclareLaunchArgument(self, args: list[object], kwargs: dict[str, object],

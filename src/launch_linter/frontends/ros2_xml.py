@@ -181,6 +181,7 @@ class _Reader:
             namespace=self.subs(entity, "namespace"),
             arguments=() if args is None else tuple(split_command_line(args)),
             args_written=entity.attrs.get("args", ""),
+            parameters=self.params(entity.lists.get("param", [])),
         )
 
     def component(self, entity: Entity) -> Component:

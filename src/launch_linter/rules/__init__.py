@@ -7,7 +7,9 @@ from launch_linter.rules import (
     bad_number,
     bad_quaternion,
     component_default_frames,
+    conflicting_transform,
     dup_name,
+    frame_authority,
     dup_sig,
     int_suffix,
     leading_slash,
@@ -16,7 +18,10 @@ from launch_linter.rules import (
     name_null_disp,
     name_null_rot,
     ned_transform,
+    optical_frame_rotation,
     parse_error,
+    quaternion_order,
+    rep105_order,
     py_arguments_single_string,
     reversed_name,
     ros2_bad_flag,
@@ -63,6 +68,11 @@ RULE_MODULES = (
     ros2_bad_flag,
     py_arguments_single_string,
     component_default_frames,
+    conflicting_transform,
+    optical_frame_rotation,
+    frame_authority,
+    rep105_order,
+    quaternion_order,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

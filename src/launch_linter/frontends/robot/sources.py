@@ -92,3 +92,24 @@ def params_from_yaml(text: str) -> List[Tuple[str, str]]:
         if key in FRAME_PARAMS:
             found.append((key, match.group(2).strip("'\"")))
     return found
+
+
+def from_ros2_value(value: Value, command: Optional[Value], path: str, line: int,
+                    column: int, condition: Condition, node: Optional[str]
+                    ) -> Optional[DescriptionSource]:
+    """The description a ROS 2 ``robot_description`` parameter gives: ``command`` is the
+    resolved text of its ``Command``/``$(command ...)`` when it has one."""
+    if command is not None:
+        parsed = xacro_command(words_of(command))
+        if parsed is None:
+            return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
+                                     condition=condition, node=node,
+                                     reason=f"command {text_of(command)!r} is not a xacro call")
+        file, args, reason = parsed
+        return DescriptionSource(path, line, column, DescriptionKind.XACRO,
+                                 _absolute(file, "/"), args, condition, node, reason=reason)
+    text = resolved_text(value)
+    if text is not None and literal_kind(text):
+        return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
+                                 condition=condition, node=node, text=text)
+    return None

@@ -1,0 +1,67 @@
+"""An optical frame published without REP 103's rotation from its body frame.
+
+## What it does
+Reports a static transform or fixed URDF joint whose child is named `*_optical_frame` or
+`*_optical` and whose parent is a body frame (a name without `optical`), when its rotation
+is not REP 103's optical rotation: yaw −π/2, pitch 0, roll −π/2, the quaternion
+(−0.5, 0.5, −0.5, 0.5) (either sign; within 1e-3).
+
+## Why is this bad?
+REP 103 gives camera data its own convention: z forward, x right, y down, in a frame
+suffixed `_optical`, rotated from the body frame (x forward, y left, z up) by exactly that
+rotation. Image pipelines, point clouds and AR markers assume it; without the rotation a
+depth cloud points into the floor and detected objects land in the wrong place.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="camera_optical_tf"
+        args="0 0 0 0 0 0 camera_link camera_optical_frame"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="camera_optical_tf"
+        args="0 0 0 -1.5707963 0 -1.5707963 camera_link camera_optical_frame"/>
+</launch>
+```
+
+## Known problems
+A frame named `*_optical` that deliberately follows another convention is reported; the
+parent is taken to be a body frame from its name alone.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.rules._api import RuleContext
+from launch_linter.rules._tree import diagnostic_on, same_rotation, tree_edges
+
+ID = "optical_frame_rotation"
+CATEGORY = Category.TF
+SEVERITY = Severity.WARNING
+
+OPTICAL_ROTATION = (-0.5, 0.5, -0.5, 0.5)
+
+
+def is_optical(frame: str) -> bool:
+    return frame.endswith(("_optical_frame", "_optical"))
+
+
+def check(context: RuleContext) -> Iterator[Diagnostic]:
+    for edge in tree_edges(context.tree):
+        if edge.dynamic or not is_optical(edge.child) or "optical" in edge.parent:
+            continue
+        if edge.rotation is None or same_rotation(edge.rotation, OPTICAL_ROTATION, 1e-3):
+            continue
+        x, y, z, w = edge.rotation
+        yield diagnostic_on(
+            ID, CATEGORY, SEVERITY, edge,
+            f"optical frame '{edge.child}' is rotated ({x:.3g}, {y:.3g}, {z:.3g}, {w:.3g}) "
+            f"from body frame '{edge.parent}'; REP 103 optical frames are rotated yaw -pi/2, "
+            f"pitch 0, roll -pi/2 (quaternion -0.5 0.5 -0.5 0.5) so that z looks forward",
+        )
