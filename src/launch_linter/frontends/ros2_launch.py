@@ -22,6 +22,12 @@ import shlex
 from dataclasses import dataclass, field
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.robot.sources import (
+    FRAME_NODE_PACKAGES,
+    FRAME_PARAMS,
+    from_ros2_value,
+    is_description_name,
+)
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
     Action,
@@ -40,12 +46,6 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Unfollowed,
     Where,
-)
-from launch_linter.frontends.robot.sources import (
-    FRAME_NODE_PACKAGES,
-    FRAME_PARAMS,
-    from_ros2_value,
-    is_description_name,
 )
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import Enum
-from typing import Optional, Tuple
 
 from launch_linter.model.transform import Condition
 
@@ -35,12 +34,12 @@ class DescriptionSource:
     line: int
     column: int
     kind: DescriptionKind
-    file: Optional[str]
-    args: Tuple[Tuple[str, Optional[str]], ...] = ()
+    file: str | None
+    args: tuple[tuple[str, str | None], ...] = ()
     condition: Condition = field(default_factory=Condition)
-    node: Optional[str] = None
-    text: Optional[str] = None
-    reason: Optional[str] = None
+    node: str | None = None
+    text: str | None = None
+    reason: str | None = None
 
 
 @dataclass(frozen=True)
@@ -59,21 +58,21 @@ class RobotJoint:
     column: int
     name: str
     joint_type: str
-    parent: Optional[str]
-    child: Optional[str]
-    translation: Optional[Tuple[float, float, float]]
-    rpy: Optional[Tuple[float, float, float]]
+    parent: str | None
+    child: str | None
+    translation: tuple[float, float, float] | None
+    rpy: tuple[float, float, float] | None
     source: DescriptionSource
     condition: Condition = field(default_factory=Condition)
-    unresolved: Tuple[str, ...] = ()
-    reasons: Tuple[str, ...] = ()
+    unresolved: tuple[str, ...] = ()
+    reasons: tuple[str, ...] = ()
 
     @property
     def dynamic(self) -> bool:
         return self.joint_type in MOVABLE_JOINTS
 
     @property
-    def signature(self) -> Optional[Tuple[str, str]]:
+    def signature(self) -> tuple[str, str] | None:
         if self.parent is None or self.child is None:
             return None
         return (self.parent, self.child)
@@ -89,11 +88,11 @@ class NodeRecord:
     column: int
     package: str
     executable: str
-    name: Optional[str] = None
-    params: Tuple[Tuple[str, str], ...] = ()
+    name: str | None = None
+    params: tuple[tuple[str, str], ...] = ()
     condition: Condition = field(default_factory=Condition)
 
-    def param(self, name: str) -> Optional[str]:
+    def param(self, name: str) -> str | None:
         for key, value in self.params:
             if key == name or key.endswith("/" + name):
                 return value

@@ -4,15 +4,15 @@ and URDF joints as one list of edges, each with its source."""
 from __future__ import annotations
 
 import math
+import typing
 from dataclasses import dataclass
-from typing import List, Optional, Tuple
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, RotationKind, StaticTransform
 
-Quaternion = Tuple[float, float, float, float]
+Quaternion = typing.Tuple[float, float, float, float]  # noqa: UP006 - a run-time alias (3.8)
 """(x, y, z, w)."""
 
 
@@ -29,7 +29,7 @@ def quaternion_from_ypr(yaw: float, pitch: float, roll: float) -> Quaternion:
     )
 
 
-def normalised(q: Quaternion) -> Optional[Quaternion]:
+def normalised(q: Quaternion) -> Quaternion | None:
     norm = math.sqrt(sum(v * v for v in q))
     if not math.isfinite(norm) or norm < 1e-9:
         return None
@@ -38,7 +38,7 @@ def normalised(q: Quaternion) -> Optional[Quaternion]:
 
 def same_rotation(a: Quaternion, b: Quaternion, tolerance: float = 1e-4) -> bool:
     """Equal rotations (q and -q are the same rotation)."""
-    dot = abs(sum(x * y for x, y in zip(a, b)))
+    dot = abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3])
     return dot >= 1.0 - tolerance
 
 
@@ -48,12 +48,12 @@ class Edge:
 
     parent: str
     child: str
-    translation: Optional[Tuple[float, float, float]]
-    rotation: Optional[Quaternion]
+    translation: tuple[float, float, float] | None
+    rotation: Quaternion | None
     condition: Condition
     location: Location
-    transform: Optional[StaticTransform] = None
-    joint: Optional[RobotJoint] = None
+    transform: StaticTransform | None = None
+    joint: RobotJoint | None = None
 
     @property
     def kind(self) -> str:
@@ -64,7 +64,7 @@ class Edge:
         return self.joint is not None and self.joint.dynamic
 
     @property
-    def node(self) -> Optional[str]:
+    def node(self) -> str | None:
         return self.transform.name if self.transform is not None else None
 
     def describe(self) -> str:
@@ -77,20 +77,21 @@ class Edge:
         shown = f"static transform '{name}'" if name else "static transform"
         return f"{shown} ({self.location.path}:{self.location.line})"
 
-    def same_values(self, other: Edge) -> Optional[bool]:
+    def same_values(self, other: Edge) -> bool | None:
         """Whether the two edges carry the same transform; None when either is unknown."""
         if (self.translation is None or other.translation is None or self.rotation is None
                 or other.rotation is None):
             return None
-        close = all(abs(a - b) <= 1e-6 for a, b in zip(self.translation, other.translation))
+        mine, theirs = self.translation, other.translation
+        close = all(abs(mine[i] - theirs[i]) <= 1e-6 for i in range(3))
         return close and same_rotation(self.rotation, other.rotation, 1e-9)
 
 
-def _transform_edge(t: StaticTransform) -> Optional[Edge]:
+def _transform_edge(t: StaticTransform) -> Edge | None:
     signature = t.signature
     if signature is None:
         return None
-    rotation: Optional[Quaternion] = None
+    rotation: Quaternion | None = None
     if t.rotation is not None and "rotation" not in t.unresolved:
         values = t.rotation.values
         if t.rotation.kind is RotationKind.YPR and len(values) == 3:
@@ -102,7 +103,7 @@ def _transform_edge(t: StaticTransform) -> Optional[Edge]:
                 Location(t.path, t.line, t.column), transform=t)
 
 
-def _joint_edge(j: RobotJoint) -> Optional[Edge]:
+def _joint_edge(j: RobotJoint) -> Edge | None:
     if j.parent is None or j.child is None:
         return None
     rotation = None if j.rpy is None else quaternion_from_ypr(j.rpy[2], j.rpy[1], j.rpy[0])
@@ -110,10 +111,10 @@ def _joint_edge(j: RobotJoint) -> Optional[Edge]:
                 Location(j.path, j.line, j.column), joint=j)
 
 
-def tree_edges(tree: LaunchTree) -> List[Edge]:
+def tree_edges(tree: LaunchTree) -> list[Edge]:
     """URDF joints first (the robot's own structure), then launch static transforms in
     tree order, so that a finding lands on the launch file that adds to the robot."""
-    edges: List[Edge] = []
+    edges: list[Edge] = []
     for joint in tree.joints:
         edge = _joint_edge(joint)
         if edge is not None:
@@ -136,7 +137,7 @@ def place(edge: Edge, seen_from: Edge) -> str:
 
 
 def diagnostic_on(rule: str, category: Category, severity: Severity, edge: Edge,
-                  message: str, related: Tuple[Edge, ...] = ()) -> Diagnostic:
+                  message: str, related: tuple[Edge, ...] = ()) -> Diagnostic:
     """A diagnostic at an edge (a launch node or a URDF joint)."""
     return Diagnostic(
         rule=rule, category=category, severity=severity, path=edge.location.path,

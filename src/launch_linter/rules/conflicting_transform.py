@@ -18,7 +18,11 @@ sensors file (or the URDF) that both describe the same mount, one of them out of
 ## Example
 ```xml
 <launch>
-  <param name="robot_description" value="&lt;robot name='r'&gt;&lt;link name='base_link'/&gt;&lt;link name='laser'/&gt;&lt;joint name='laser_joint' type='fixed'&gt;&lt;parent link='base_link'/&gt;&lt;child link='laser'/&gt;&lt;origin xyz='0.1 0 0.2'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/>
+  <param name="robot_description" value="&lt;robot name='r'&gt;
+    &lt;joint name='laser_joint' type='fixed'&gt;
+      &lt;parent link='base_link'/&gt;&lt;child link='laser'/&gt;
+      &lt;origin xyz='0.1 0 0.2'/&gt;
+    &lt;/joint&gt;&lt;/robot&gt;"/>
   <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
   <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
         args="0.1 0 0.3 0 0 0 base_link laser"/>
@@ -28,7 +32,11 @@ sensors file (or the URDF) that both describe the same mount, one of them out of
 ## Use instead
 ```xml
 <launch>
-  <param name="robot_description" value="&lt;robot name='r'&gt;&lt;link name='base_link'/&gt;&lt;link name='laser'/&gt;&lt;joint name='laser_joint' type='fixed'&gt;&lt;parent link='base_link'/&gt;&lt;child link='laser'/&gt;&lt;origin xyz='0.1 0 0.2'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/>
+  <param name="robot_description" value="&lt;robot name='r'&gt;
+    &lt;joint name='laser_joint' type='fixed'&gt;
+      &lt;parent link='base_link'/&gt;&lt;child link='laser'/&gt;
+      &lt;origin xyz='0.1 0 0.2'/&gt;
+    &lt;/joint&gt;&lt;/robot&gt;"/>
   <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
 </launch>
 ```
@@ -40,7 +48,7 @@ copy is redundant, not wrong). Values that are not resolved are not compared.
 
 from __future__ import annotations
 
-from typing import Dict, Iterator, List, Tuple
+from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.rules._api import RuleContext
@@ -68,7 +76,7 @@ def _conflict(a: Edge, b: Edge) -> str:
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
-    seen: Dict[Tuple[str, str], List[Edge]] = {}
+    seen: dict[tuple[str, str], list[Edge]] = {}
     for edge in tree_edges(context.tree):
         earlier = seen.setdefault((edge.parent, edge.child), [])
         for other in earlier:

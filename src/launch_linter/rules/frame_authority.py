@@ -47,7 +47,7 @@ configured in a YAML file not to publish tf is still counted.
 
 from __future__ import annotations
 
-from typing import Iterator, Optional
+from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.robot import NodeRecord
@@ -71,11 +71,11 @@ FILTERS = ("ekf_localization_node", "ukf_localization_node", "ekf_node", "ukf_no
 BASES = ("base_link", "base_footprint")
 
 
-def _false(value: Optional[str]) -> bool:
+def _false(value: str | None) -> bool:
     return value is not None and value.strip().lower() in ("false", "0")
 
 
-def role(node: NodeRecord) -> Optional[str]:
+def role(node: NodeRecord) -> str | None:
     """``map`` or ``odom``: the edge this node publishes, if it is one of the list."""
     if _false(node.param("publish_tf")) or _false(node.param("tf_broadcast")):
         return None

@@ -43,7 +43,7 @@ by a node that publishes tf at run time (odometry, localization) is not seen.
 
 from __future__ import annotations
 
-from typing import Dict, Iterator, List, Tuple
+from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.rules._api import RuleContext
@@ -55,13 +55,13 @@ SEVERITY = Severity.ERROR
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
-    by_child: Dict[str, List[Tuple[str, Edge]]] = {}
+    by_child: dict[str, list[tuple[str, Edge]]] = {}
     for edge in tree_edges(context.tree):
         parent, child = edge.parent, edge.child
         if parent == child:
             continue
         earlier = by_child.setdefault(child, [])
-        rivals: Dict[str, Edge] = {}
+        rivals: dict[str, Edge] = {}
         for other_parent, other in earlier:
             if other_parent != parent and coexist(other, edge):
                 rivals.setdefault(other_parent, other)

@@ -3,8 +3,8 @@
 ## What it does
 Reports a static transform or fixed URDF joint whose child is named `*_optical_frame` or
 `*_optical` and whose parent is a body frame (a name without `optical`), when its rotation
-is not REP 103's optical rotation: yaw −π/2, pitch 0, roll −π/2, the quaternion
-(−0.5, 0.5, −0.5, 0.5) (either sign; within 1e-3).
+is not REP 103's optical rotation: yaw -π/2, pitch 0, roll -π/2, the quaternion
+(-0.5, 0.5, -0.5, 0.5) (either sign; within 1e-3).
 
 ## Why is this bad?
 REP 103 gives camera data its own convention: z forward, x right, y down, in a frame
@@ -35,7 +35,7 @@ parent is taken to be a body frame from its name alone.
 
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.rules._api import RuleContext

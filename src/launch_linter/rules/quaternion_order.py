@@ -33,7 +33,7 @@ A deliberate half turn about x written as a quaternion is reported too; write it
 
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.transform import RotationKind

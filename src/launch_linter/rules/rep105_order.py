@@ -31,7 +31,7 @@ fail.
 
 from __future__ import annotations
 
-from typing import Iterator
+from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.rules._api import RuleContext

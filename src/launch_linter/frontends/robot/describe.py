@@ -9,8 +9,9 @@ to the tree, so rules see launch static transforms and URDF joints together.
 from __future__ import annotations
 
 import os
+import typing
+from collections.abc import Callable, Sequence
 from dataclasses import replace
-from typing import Callable, Dict, List, Optional, Sequence, Tuple
 
 from launch_linter.frontends.robot.urdf import joints_of, literal_root
 from launch_linter.frontends.robot.xacro import Expansion, expand
@@ -22,7 +23,8 @@ from launch_linter.resolve.packages import PackageIndex
 RSP_PACKAGE = "robot_state_publisher"
 MAX_DESCRIPTIONS_PER_TREE = 50
 
-Word = Tuple[str, bool]
+# Aliases are evaluated at run time: typing's spelling keeps them working on Python 3.8.
+Word = typing.Tuple[str, bool]  # noqa: UP006
 """A command word and whether it is fully resolved."""
 
 
@@ -30,10 +32,10 @@ class RobotCache:
     """Expansions made in one run, keyed by (file, args, package roots)."""
 
     def __init__(self) -> None:
-        self._expansions: Dict[Tuple[object, ...], Expansion] = {}
+        self._expansions: dict[tuple[object, ...], Expansion] = {}
 
-    def expansion(self, file: str, args: Tuple[Tuple[str, Optional[str]], ...],
-                  packages: PackageIndex, env: Dict[str, str]) -> Expansion:
+    def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
+                  packages: PackageIndex, env: dict[str, str]) -> Expansion:
         key = (file, args, tuple(packages.roots), tuple(sorted(env.items())))
         found = self._expansions.get(key)
         if found is None:
@@ -44,9 +46,13 @@ class RobotCache:
         return len(self._expansions)
 
 
-def xacro_command(words: Sequence[Word]) -> Optional[Tuple[Optional[str],
-                                                           Tuple[Tuple[str, Optional[str]], ...],
-                                                           Optional[str]]]:
+XacroCall = typing.Tuple[  # noqa: UP006 - a run-time alias (3.8)
+    typing.Optional[str], typing.Tuple[typing.Tuple[str, typing.Optional[str]], ...],  # noqa: UP006, UP045
+    typing.Optional[str],  # noqa: UP045
+]
+
+
+def xacro_command(words: Sequence[Word]) -> XacroCall | None:
     """``(file, args, reason)`` when ``words`` run xacro (``xacro``, ``xacro.py``,
     ``$(find xacro)/xacro``, ``rosrun xacro xacro``, ``--inorder`` and other options
     skipped); None when the command is not xacro. ``file`` is None when unresolved."""
@@ -60,10 +66,10 @@ def xacro_command(words: Sequence[Word]) -> Optional[Tuple[Optional[str],
             break
     if start is None:
         return None
-    file: Optional[str] = None
-    reason: Optional[str] = None
+    file: str | None = None
+    reason: str | None = None
     seen_file = False
-    args: List[Tuple[str, Optional[str]]] = []
+    args: list[tuple[str, str | None]] = []
     skip = False
     for text, resolved in words[start:]:
         if skip:
@@ -94,8 +100,8 @@ def literal_kind(text: str) -> bool:
     return "<robot" in text[:4096]
 
 
-def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: Optional[RobotCache],
-                 display: Callable[[str], str], env: Dict[str, str]) -> LaunchTree:
+def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | None,
+                 display: Callable[[str], str], env: dict[str, str]) -> LaunchTree:
     """The tree with the joints of the descriptions that a robot_state_publisher of the
     tree publishes (in ROS 1 a ``robot_description`` parameter without one is not
     published by this tree), and an ``unresolved`` diagnostic per problem."""
@@ -105,8 +111,8 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: Optional[Robot
     if not publishes:
         return tree
     cache = cache if cache is not None else RobotCache()
-    joints: List[RobotJoint] = []
-    diagnostics: List[Diagnostic] = []
+    joints: list[RobotJoint] = []
+    diagnostics: list[Diagnostic] = []
     for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
         if source.kind is DescriptionKind.LITERAL:
             root, problems = literal_root(source.text or "", source.path, source.line)
@@ -127,7 +133,17 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: Optional[Robot
                 + ("; its joints are not read" if problem.fatal else ""),
             ))
         if root is not None:
-            joints.extend(joints_of(root, source, display, source.condition))
+            found = joints_of(root, source, display, source.condition)
+            joints.extend(found)
+            unknown = [j for j in found if j.reasons]
+            for joint in unknown[:20]:
+                diagnostics.append(Diagnostic(
+                    "unresolved", Category.LAUNCH, Severity.INFO, joint.path, joint.line,
+                    joint.column,
+                    f"URDF joint '{joint.name}' (robot_description at {source.path}:"
+                    f"{source.line}): {', '.join(joint.unresolved)} not known: "
+                    f"{'; '.join(joint.reasons)[:300]}",
+                ))
     return replace(tree, joints=tuple(joints), diagnostics=tree.diagnostics + tuple(diagnostics))
 
 
@@ -136,5 +152,5 @@ def _unresolved(source: DescriptionSource, message: str) -> Diagnostic:
                       source.column, message)
 
 
-def robot_nodes(nodes: Sequence[NodeRecord]) -> List[NodeRecord]:
+def robot_nodes(nodes: Sequence[NodeRecord]) -> list[NodeRecord]:
     return [n for n in nodes if n.package == RSP_PACKAGE]

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import re
-from typing import Dict, List, Optional, Tuple
 
 from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
 from launch_linter.model.robot import DescriptionKind, DescriptionSource
@@ -31,22 +30,22 @@ FRAME_PARAMS = ("world_frame", "map_frame", "odom_frame", "base_link_frame", "pu
 _YAML_LINE = re.compile(r"^\s*([A-Za-z_][\w/]*)\s*:\s*([^#\n]*?)\s*(?:#.*)?$", re.MULTILINE)
 
 
-def is_description_name(name: Optional[str]) -> bool:
+def is_description_name(name: str | None) -> bool:
     return name is not None and (name == DESCRIPTION_PARAM
                                  or name.endswith("/" + DESCRIPTION_PARAM))
 
 
-def words_of(value: Value) -> List[Word]:
+def words_of(value: Value) -> list[Word]:
     """The whitespace-separated words of a command, each with whether it is resolved."""
     marked = "".join(p if isinstance(p, str) else "\x00" + p.text for p in value)
-    words: List[Word] = []
+    words: list[Word] = []
     for word in marked.split():
         words.append((word.replace("\x00", ""), "\x00" not in word))
     return words
 
 
-def from_ros1_param(values: Dict[str, Value], path: str, line: int, column: int,
-                    condition: Condition, directory: str) -> Optional[DescriptionSource]:
+def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
+                    condition: Condition, directory: str) -> DescriptionSource | None:
     """The description a ROS 1 ``<param name="robot_description" ...>`` gives."""
     command = values.get("command")
     if command is not None:
@@ -73,7 +72,7 @@ def from_ros1_param(values: Dict[str, Value], path: str, line: int, column: int,
     return None
 
 
-def _absolute(file: Optional[str], directory: str) -> Optional[str]:
+def _absolute(file: str | None, directory: str) -> str | None:
     if file is None:
         return None
     return file if os.path.isabs(file) else os.path.normpath(os.path.join(directory, file))
@@ -84,9 +83,9 @@ def _why(value: Value) -> str:
     return "; ".join(reasons) or "unresolved"
 
 
-def params_from_yaml(text: str) -> List[Tuple[str, str]]:
+def params_from_yaml(text: str) -> list[tuple[str, str]]:
     """The frame parameters set in ``<rosparam>`` text (flat ``key: value`` lines only)."""
-    found: List[Tuple[str, str]] = []
+    found: list[tuple[str, str]] = []
     for match in _YAML_LINE.finditer(text):
         key = match.group(1).rsplit("/", 1)[-1]
         if key in FRAME_PARAMS:
@@ -94,9 +93,9 @@ def params_from_yaml(text: str) -> List[Tuple[str, str]]:
     return found
 
 
-def from_ros2_value(value: Value, command: Optional[Value], path: str, line: int,
-                    column: int, condition: Condition, node: Optional[str]
-                    ) -> Optional[DescriptionSource]:
+def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
+                    column: int, condition: Condition, node: str | None
+                    ) -> DescriptionSource | None:
     """The description a ROS 2 ``robot_description`` parameter gives: ``command`` is the
     resolved text of its ``Command``/``$(command ...)`` when it has one."""
     if command is not None:

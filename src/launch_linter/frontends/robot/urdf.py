@@ -4,18 +4,18 @@ file expands to itself)."""
 from __future__ import annotations
 
 import math
-from typing import Callable, Dict, List, Optional, Tuple
+import typing
 
 from launch_linter.frontends.robot.xacro import ExpandedNode, XacroProblem
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
 from launch_linter.model.robot import DescriptionSource, RobotJoint
 from launch_linter.model.transform import Condition, ConditionLiteral
 
-Display = Callable[[str], str]
+Display = typing.Callable[[str], str]  # typing's Callable: a run-time alias (3.8)
 
 
-def _vector(node: Optional[ExpandedNode], name: str) -> Tuple[Optional[Tuple[float, float, float]],
-                                                            Optional[str]]:
+def _vector(node: ExpandedNode | None, name: str) -> tuple[tuple[float, float, float] | None,
+                                                            str | None]:
     """An origin's ``xyz``/``rpy`` (0 0 0 when absent), or None and why."""
     if node is None or name not in node.attrib:
         return (0.0, 0.0, 0.0), None
@@ -33,14 +33,14 @@ def _vector(node: Optional[ExpandedNode], name: str) -> Tuple[Optional[Tuple[flo
     return (values[0], values[1], values[2]), None
 
 
-def _first(node: ExpandedNode, tag: str) -> Optional[ExpandedNode]:
+def _first(node: ExpandedNode, tag: str) -> ExpandedNode | None:
     for child in node.children:
         if child.tag == tag:
             return child
     return None
 
 
-def _condition(marks: Tuple[str, ...]) -> Condition:
+def _condition(marks: tuple[str, ...]) -> Condition:
     literals = tuple(
         ConditionLiteral("xacro:" + mark[1:], False) if mark.startswith("!")
         else ConditionLiteral("xacro:" + mark, True)
@@ -50,17 +50,17 @@ def _condition(marks: Tuple[str, ...]) -> Condition:
 
 
 def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
-              outer: Condition) -> List[RobotJoint]:
+              outer: Condition) -> list[RobotJoint]:
     """The joints directly under ``<robot>``, as edges of the tf tree."""
-    out: List[RobotJoint] = []
+    out: list[RobotJoint] = []
     if root.tag != "robot":
         return out
     for joint in root.children:
         if joint.tag != "joint":
             continue
-        unresolved: List[str] = []
-        reasons: List[str] = []
-        frames: Dict[str, Optional[str]] = {}
+        unresolved: list[str] = []
+        reasons: list[str] = []
+        frames: dict[str, str | None] = {}
         for end in ("parent", "child"):
             element = _first(joint, end)
             if element is None or "link" not in element.attrib:
@@ -92,8 +92,8 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
     return out
 
 
-def literal_root(text: str, path: str, line: int) -> Tuple[Optional[ExpandedNode],
-                                                           List[XacroProblem]]:
+def literal_root(text: str, path: str, line: int) -> tuple[ExpandedNode | None,
+                                                           list[XacroProblem]]:
     """A URDF written in a launch file, as an expanded tree (no xacro in it)."""
     try:
         document = parse_xml(text.encode("utf-8"))

@@ -23,8 +23,9 @@ from __future__ import annotations
 
 import os
 import re
+import typing
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
-from typing import Callable, Dict, Iterator, List, Mapping, Optional, Tuple
 
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
@@ -40,7 +41,9 @@ MAX_TEXT = 65_536
 """Longest attribute value an expansion may produce."""
 
 _PREFIX = "xacro:"
-_TOKEN = re.compile(r"\$\$[{(]|\$\{[^}]*\}|\$\([^)]*\)")
+# xacro's lexer: ``$${``/``$$(`` escapes, ``${expr}``, and ``$(...)`` whose words may hold
+# ``${expr}`` (evaluated first, as xacro does).
+_TOKEN = re.compile(r"\$\$[{(]|\$\{[^}]*\}|\$\((?:[^$)]|\$\{[^}]*\})*\)")
 _IDENTIFIER = re.compile(r"[A-Za-z_]\w*\Z")
 _MATH_PREFIX = re.compile(r"\bmath\.")
 _GLOB = re.compile(r"[*?\[]")
@@ -82,15 +85,15 @@ class ExpandedNode:
                  "unknown")
 
     def __init__(self, tag: str, path: str, line: int, column: int,
-                 conditions: Tuple[str, ...]) -> None:
+                 conditions: tuple[str, ...]) -> None:
         self.tag = tag
         self.path = path
         self.line = line
         self.column = column
-        self.attrib: Dict[str, str] = {}
-        self.unknown: Dict[str, str] = {}
+        self.attrib: dict[str, str] = {}
+        self.unknown: dict[str, str] = {}
         """Attribute name -> why its value is unknown."""
-        self.children: List[ExpandedNode] = []
+        self.children: list[ExpandedNode] = []
         self.conditions = conditions
         """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
         (``unless`` texts start with ``!``)."""
@@ -100,26 +103,26 @@ class ExpandedNode:
 class Expansion:
     """The result of expanding one description file with some args."""
 
-    root: Optional[ExpandedNode]
-    problems: List[XacroProblem]
-    files: List[str]
+    root: ExpandedNode | None
+    problems: list[XacroProblem]
+    files: list[str]
 
 
 @dataclass
 class _Property:
-    text: Optional[str]
+    text: str | None
     """Unevaluated text, or None once evaluated."""
-    value: Optional[str]
+    value: str | None
     """Evaluated text; None while unevaluated or when unknown."""
-    reason: Optional[str] = None
-    block: Optional[Tuple[Element, str]] = None
+    reason: str | None = None
+    block: tuple[Element, str] | None = None
     """For a block property: the ``xacro:property`` element and its file."""
 
 
 @dataclass
 class _Macro:
-    params: List[str]
-    defaults: Dict[str, Tuple[Optional[str], Optional[str]]]
+    params: list[str]
+    defaults: dict[str, tuple[str | None, str | None]]
     """param -> (forwarded name, default text)."""
     body: Element
     path: str
@@ -136,14 +139,14 @@ class _Block:
 class _Table:
     """A scope of properties (and, separately, macros) with a parent, like xacro's Table."""
 
-    def __init__(self, parent: Optional[_Table] = None) -> None:
+    def __init__(self, parent: _Table | None = None) -> None:
         self.parent = parent
-        self.properties: Dict[str, _Property] = {}
-        self.macros: Dict[str, _Macro] = {}
-        self.blocks: Dict[str, _Block] = {}
+        self.properties: dict[str, _Property] = {}
+        self.macros: dict[str, _Macro] = {}
+        self.blocks: dict[str, _Block] = {}
 
-    def find_property(self, name: str) -> Optional[Tuple[_Table, _Property]]:
-        table: Optional[_Table] = self
+    def find_property(self, name: str) -> tuple[_Table, _Property] | None:
+        table: _Table | None = self
         while table is not None:
             found = table.properties.get(name)
             if found is not None:
@@ -151,8 +154,8 @@ class _Table:
             table = table.parent
         return None
 
-    def find_macro(self, name: str) -> Optional[_Macro]:
-        table: Optional[_Table] = self
+    def find_macro(self, name: str) -> _Macro | None:
+        table: _Table | None = self
         while table is not None:
             found = table.macros.get(name)
             if found is not None:
@@ -160,8 +163,8 @@ class _Table:
             table = table.parent
         return None
 
-    def find_block(self, name: str) -> Optional[_Block]:
-        table: Optional[_Table] = self
+    def find_block(self, name: str) -> _Block | None:
+        table: _Table | None = self
         while table is not None:
             found = table.blocks.get(name)
             if found is not None:
@@ -189,7 +192,7 @@ def _literal(text: str) -> str:
     return shown if "." in shown else text
 
 
-class _Symbols(Mapping[str, Optional[str]]):
+class _Symbols(typing.Mapping[str, typing.Optional[str]]):  # noqa: UP045 - a base class (3.8)
     """The properties visible from a table, evaluated on demand, as the evaluator's args."""
 
     def __init__(self, expander: XacroExpander, table: _Table) -> None:
@@ -199,7 +202,7 @@ class _Symbols(Mapping[str, Optional[str]]):
     def __contains__(self, name: object) -> bool:
         return isinstance(name, str) and self._table.find_property(name) is not None
 
-    def __getitem__(self, name: str) -> Optional[str]:
+    def __getitem__(self, name: str) -> str | None:
         found = self._table.find_property(name)
         if found is None:
             raise KeyError(name)
@@ -218,28 +221,28 @@ class XacroExpander:
 
     def __init__(
         self,
-        args: Mapping[str, Optional[str]],
-        find: Callable[[str], Optional[str]],
-        env: Optional[Mapping[str, str]] = None,
+        args: Mapping[str, str | None],
+        find: Callable[[str], str | None],
+        env: Mapping[str, str] | None = None,
     ) -> None:
-        self.args: Dict[str, Optional[str]] = dict(args)
+        self.args: dict[str, str | None] = dict(args)
         """xacro args; None is an arg given with a value the linter does not know."""
         self.find = find
         self.env = dict(env or {})
-        self.problems: List[XacroProblem] = []
-        self.files: List[str] = []
-        self._include_stack: List[str] = []
+        self.problems: list[XacroProblem] = []
+        self.files: list[str] = []
+        self._include_stack: list[str] = []
         self._macro_depth = 0
         self._work = 0
         self._made = 0
-        self._resolving: List[str] = []
+        self._resolving: list[str] = []
         self._path = ""
         self._line = 1
 
     # -- entry -------------------------------------------------------------------------
     def expand(self, path: str) -> Expansion:
         absolute = os.path.abspath(path)
-        root: Optional[ExpandedNode] = None
+        root: ExpandedNode | None = None
         try:
             element = self._read(absolute, None)
             if element is not None:
@@ -266,7 +269,7 @@ class XacroExpander:
         if len(self.problems) < 1000:
             self.problems.append(XacroProblem(path, line, message))
 
-    def _read(self, absolute: str, at: Optional[Tuple[str, int]]) -> Optional[Element]:
+    def _read(self, absolute: str, at: tuple[str, int] | None) -> Element | None:
         where = at or (absolute, 1)
         if absolute not in self.files:
             if len(self.files) >= MAX_FILES:
@@ -295,7 +298,7 @@ class XacroExpander:
         if "$" not in text:
             return text
         self._charge()
-        parts: List[str] = []
+        parts: list[str] = []
         position = 0
         for match in _TOKEN.finditer(text):
             parts.append(text[position:match.start()])
@@ -306,7 +309,10 @@ class XacroExpander:
             elif token.startswith("${"):
                 parts.append(self._expression(token[2:-1], table))
             else:
-                parts.append(self._extension(token[2:-1].strip(), table))
+                inner = token[2:-1]
+                if "${" in inner:
+                    inner = self.evaluate_text(inner, table)
+                parts.append(self._extension(inner.strip(), table))
             if sum(len(p) for p in parts) > MAX_TEXT:
                 raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path,
                              self._line)
@@ -353,7 +359,7 @@ class XacroExpander:
             return self._expression(body[len("eval"):], table)
         raise _Unknown(f"$({body}) is not supported")
 
-    def property_value(self, name: str, table: _Table, prop: _Property) -> Optional[str]:
+    def property_value(self, name: str, table: _Table, prop: _Property) -> str | None:
         if prop.block is not None:
             raise _Unknown(f"block property '{name}' used as a value")
         if prop.text is None:
@@ -361,7 +367,7 @@ class XacroExpander:
                 raise _Unknown(prop.reason)
             return prop.value
         if name in self._resolving:
-            chain = " -> ".join(self._resolving + [name])
+            chain = " -> ".join([*self._resolving, name])
             prop.text, prop.reason = None, f"circular property definition: {chain}"
             raise _Unknown(prop.reason)
         self._resolving.append(name)
@@ -376,8 +382,8 @@ class XacroExpander:
         return prop.value
 
     # -- elements ----------------------------------------------------------------------
-    def _node(self, element: Element, path: str, conditions: Tuple[str, ...],
-              tag: Optional[str] = None) -> ExpandedNode:
+    def _node(self, element: Element, path: str, conditions: tuple[str, ...],
+              tag: str | None = None) -> ExpandedNode:
         self._made += 1
         if self._made > MAX_OUTPUT_ELEMENTS:
             raise _Abort(f"expansion makes more than {MAX_OUTPUT_ELEMENTS:,} elements", path,
@@ -394,8 +400,8 @@ class XacroExpander:
                 node.attrib[name] = text
                 node.unknown[name] = unknown.reason
 
-    def _children(self, elements: List[Element], path: str, table: _Table,
-                  out: ExpandedNode, conditions: Tuple[str, ...]) -> None:
+    def _children(self, elements: list[Element], path: str, table: _Table,
+                  out: ExpandedNode, conditions: tuple[str, ...]) -> None:
         for element in elements:
             self._charge()
             self._path, self._line = path, element.line
@@ -412,7 +418,7 @@ class XacroExpander:
                 self._problem(path, element.line, f"<{tag}>: {unknown.reason}")
 
     def _directive(self, element: Element, what: str, path: str, table: _Table,
-                   out: ExpandedNode, conditions: Tuple[str, ...]) -> None:
+                   out: ExpandedNode, conditions: tuple[str, ...]) -> None:
         attrib = element.attrib
         if what == "property":
             self._property(element, path, table)
@@ -433,7 +439,7 @@ class XacroExpander:
         elif what in ("if", "unless"):
             text = attrib.get("value", "")
             try:
-                keep: Optional[bool] = _boolean(self.evaluate_text(text, table))
+                keep: bool | None = _boolean(self.evaluate_text(text, table))
             except _Unknown as unknown:
                 self._problem(path, element.line,
                               f"<xacro:{what} value={text!r}>: {unknown.reason}; "
@@ -441,7 +447,7 @@ class XacroExpander:
                 keep = None
             if keep is None:
                 mark = text if what == "if" else "!" + text
-                self._children(element.children, path, table, out, conditions + (mark,))
+                self._children(element.children, path, table, out, (*conditions, mark))
             elif keep == (what == "if"):
                 self._children(element.children, path, table, out, conditions)
         elif what == "insert_block":
@@ -497,8 +503,8 @@ class XacroExpander:
         name = element.attrib.get("name", "")
         if name.startswith(_PREFIX):
             name = name[len(_PREFIX):]
-        params: List[str] = []
-        defaults: Dict[str, Tuple[Optional[str], Optional[str]]] = {}
+        params: list[str] = []
+        defaults: dict[str, tuple[str | None, str | None]] = {}
         for word in element.attrib.get("params", "").split():
             param, sep, default = word.partition(":=")
             if not sep:
@@ -514,7 +520,7 @@ class XacroExpander:
         table.macros[name] = _Macro(params, defaults, element, path)
 
     def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
-                 conditions: Tuple[str, ...]) -> None:
+                 conditions: tuple[str, ...]) -> None:
         if "ns" in element.attrib:
             raise _Unknown("xacro:include with ns= is not supported")
         filename = self.evaluate_text(element.attrib.get("filename", ""), table)
@@ -522,8 +528,8 @@ class XacroExpander:
             raise _Unknown(f"include pattern {filename!r} is not followed")
         target = os.path.normpath(os.path.join(os.path.dirname(path), filename))
         if target in self._include_stack:
-            raise _Abort(f"include cycle: {' -> '.join(self._include_stack + [target])}",
-                         path, element.line)
+            chain = [os.path.basename(p) for p in [*self._include_stack, target]]
+            raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
         if not os.path.isfile(target):
@@ -540,7 +546,7 @@ class XacroExpander:
             self._include_stack.pop()
 
     def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
-                      conditions: Tuple[str, ...]) -> None:
+                      conditions: tuple[str, ...]) -> None:
         name = self.evaluate_text(element.attrib.get("name", ""), table)
         block = table.find_block(name)
         if block is None:
@@ -557,7 +563,7 @@ class XacroExpander:
             self._children([block.element], block.path, block.scope, out, conditions)
 
     def _call(self, element: Element, name: str, path: str, table: _Table,
-              out: ExpandedNode, conditions: Tuple[str, ...]) -> None:
+              out: ExpandedNode, conditions: tuple[str, ...]) -> None:
         macro = table.find_macro(name)
         if macro is None:
             raise _Unknown(f"unknown macro '{name}'")
@@ -613,7 +619,7 @@ class XacroExpander:
             return _Property(None, None, unknown.reason)
 
 
-def _boolean(value: str) -> Optional[bool]:
+def _boolean(value: str) -> bool | None:
     """xacro's ``get_boolean_value``; None when the text is not a boolean."""
     if value in ("true", "True"):
         return True
@@ -629,8 +635,8 @@ def _boolean(value: str) -> Optional[bool]:
         raise _Unknown(f"conditional value {value!r} is not a boolean") from None
 
 
-def expand(path: str, args: Mapping[str, Optional[str]],
-           find: Callable[[str], Optional[str]],
-           env: Optional[Mapping[str, str]] = None) -> Expansion:
+def expand(path: str, args: Mapping[str, str | None],
+           find: Callable[[str], str | None],
+           env: Mapping[str, str] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``)."""
     return XacroExpander(args, find, env).expand(path)
