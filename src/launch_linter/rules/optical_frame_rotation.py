@@ -29,17 +29,26 @@ depth cloud points into the floor and detected objects land in the wrong place.
 ```
 
 ## Known problems
+Angles that are REP 103's rotation written in degrees are left to `rot_degrees`.
 A frame named `*_optical` that deliberately follows another convention is reported; the
 parent is taken to be a body frame from its name alone.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.transform import RotationKind
 from launch_linter.rules._api import RuleContext
-from launch_linter.rules._tree import diagnostic_on, same_rotation, tree_edges
+from launch_linter.rules._tree import (
+    Edge,
+    diagnostic_on,
+    quaternion_from_ypr,
+    same_rotation,
+    tree_edges,
+)
 
 ID = "optical_frame_rotation"
 CATEGORY = Category.TF
@@ -52,12 +61,24 @@ def is_optical(frame: str) -> bool:
     return frame.endswith(("_optical_frame", "_optical"))
 
 
+def _right_in_degrees(edge: Edge) -> bool:
+    transform = edge.transform
+    if transform is None or transform.rotation is None:
+        return False
+    if transform.rotation.kind is not RotationKind.YPR:
+        return False
+    yaw, pitch, roll = (math.radians(v) for v in transform.rotation.values)
+    return same_rotation(quaternion_from_ypr(yaw, pitch, roll), OPTICAL_ROTATION, 1e-3)
+
+
 def check(context: RuleContext) -> Iterator[Diagnostic]:
     for edge in tree_edges(context.tree):
         if edge.dynamic or not is_optical(edge.child) or "optical" in edge.parent:
             continue
         if edge.rotation is None or same_rotation(edge.rotation, OPTICAL_ROTATION, 1e-3):
             continue
+        if _right_in_degrees(edge):
+            continue  # rot_degrees reports it: the angles are the right ones, in degrees
         x, y, z, w = edge.rotation
         yield diagnostic_on(
             ID, CATEGORY, SEVERITY, edge,
