@@ -165,13 +165,33 @@ def test_images_without_graphviz_say_what_to_install(
     assert not (tmp_path / "t.png").exists()
 
 
-@pytest.mark.parametrize("target", ["folder", "t.jpg"])
+@pytest.mark.parametrize("target", ["missing", "t.jpg"])
 def test_usage_errors(
     launch_file: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str], target: str
 ) -> None:
-    if target == "folder":
-        argv = ["graph", str(tmp_path)]
+    if target == "missing":
+        argv = ["graph", str(tmp_path / "no such folder")]
     else:
         argv = ["graph", str(launch_file), "-o", str(tmp_path / target)]
     assert main(argv) == 2
     assert "error" in capsys.readouterr().err
+
+
+WS = Path(__file__).resolve().parent / "fixtures" / "robot_ws"
+
+
+def test_whole_tree_of_a_workspace_folder(capsys: pytest.CaptureFixture[str]) -> None:
+    """URDF joints in blue with their joint in the label, movable ones dashed, findings red."""
+    launch = WS / "src" / "demo_bringup" / "launch" / "robot.launch"
+    assert main(["graph", "--beliefs", "none", "--package-path", str(WS), str(launch)]) == 0
+    dot = capsys.readouterr().out
+    lines = dot.splitlines()
+    wheel = next(line for line in lines if "left_wheel_joint" in line)
+    assert "style=dashed" in wheel and "#1565c0" in wheel
+    base = next(line for line in lines if "URDF fixed joint base_joint" in line)
+    assert "style=dashed" not in base and "#1565c0" in base
+    laser = next(line for line in lines if "laser_tf" in line)
+    assert "#c62828" in laser and "multiple_parents" in laser
+    assert main(["graph", "--beliefs", "none", "--package-path", str(WS),
+                 str(WS / "src" / "demo_bringup")]) == 0
+    assert "URDF fixed joint base_joint" in capsys.readouterr().out

@@ -271,6 +271,8 @@ def run_transforms(ns: argparse.Namespace) -> int:
     else:
         for transform in result.transforms:
             sys.stdout.write(text.format_transform(transform) + "\n")
+        for _, joint in result.joints:
+            sys.stdout.write(text.format_joint(joint) + "\n")
     return EXIT_OK
 
 

@@ -13,6 +13,7 @@ from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import PackageIndex, default_package_roots
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
@@ -51,6 +52,11 @@ class LintResult:
     @property
     def transforms(self) -> tuple[StaticTransform, ...]:
         return tuple(t for tree in self.trees for t in tree.transforms)
+
+    @property
+    def joints(self) -> tuple[tuple[str, RobotJoint], ...]:
+        """(root, joint) for every URDF joint a tree's robot_state_publisher publishes."""
+        return tuple((tree.root, j) for tree in self.trees for j in tree.joints)
 
 
 @dataclass(frozen=True, slots=True)

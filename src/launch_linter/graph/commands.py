@@ -45,8 +45,8 @@ def _render_image(dot_text: str, image_format: str, output: str) -> None:
 
 
 def run_graph(ns: argparse.Namespace) -> int:
-    if not os.path.isfile(ns.path):
-        raise UsageError(f"graph needs one launch file; {ns.path!r} is not a file")
+    if not os.path.exists(ns.path):
+        raise UsageError(f"graph needs a launch file or a folder; {ns.path!r} does not exist")
     output: str | None = ns.output
     extension = os.path.splitext(output)[1].lower() if output else ".dot"
     if extension not in TEXT_FORMATS and extension not in IMAGE_FORMATS:
@@ -67,6 +67,6 @@ def run_graph(ns: argparse.Namespace) -> int:
         except OSError as exc:
             raise UsageError(f"cannot write {output}: {exc.strerror or exc}") from None
     sys.stderr.write(
-        f"wrote {output}: {len(graph.edges)} static transform(s), {len(graph.frames)} frame(s)\n"
+        f"wrote {output}: {len(graph.edges)} edge(s), {len(graph.frames)} frame(s)\n"
     )
     return EXIT_OK
