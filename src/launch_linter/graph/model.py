@@ -136,11 +136,11 @@ def build_graph(result: LintResult) -> TfGraph:
             )
         )
     for _, joint in result.joints:
-        key = (joint.path, joint.line, joint.column, joint.parent, joint.child,
-               joint.translation, joint.rpy, joint.condition)
-        if key in seen:
+        drawn = (joint.path, joint.line, joint.column, joint.parent, joint.child,
+                 joint.translation, joint.rpy, joint.condition)
+        if drawn in seen:
             continue
-        seen.add(key)
+        seen.add(drawn)
         where = (joint.path, joint.line, joint.column)
         placed.add(where)
         found = at.get(where, [])
