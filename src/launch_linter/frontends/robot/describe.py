@@ -9,6 +9,7 @@ to the tree, so rules see launch static transforms and URDF joints together.
 from __future__ import annotations
 
 import os
+import re
 import typing
 from collections.abc import Callable, Sequence
 from dataclasses import replace
@@ -21,6 +22,7 @@ from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRe
 from launch_linter.resolve.packages import PackageIndex
 
 RSP_PACKAGE = "robot_state_publisher"
+_XACRO_NAMED = re.compile(r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]""")
 MAX_DESCRIPTIONS_PER_TREE = 50
 
 # Aliases are evaluated at run time: typing's spelling keeps them working on Python 3.8.
@@ -57,9 +59,11 @@ def xacro_command(words: Sequence[Word]) -> XacroCall | None:
     ``$(find xacro)/xacro``, ``rosrun xacro xacro``, ``--inorder`` and other options
     skipped); None when the command is not xacro. ``file`` is None when unresolved."""
     start = None
-    for index, (text, _) in enumerate(words[:4]):
+    for index, (text, resolved) in enumerate(words[:4]):
         base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
-        if base in ("xacro", "xacro.py"):
+        # An unresolved word that names xacro: FindExecutable(name='xacro') in ROS 2.
+        named = not resolved and _XACRO_NAMED.search(text) is not None
+        if base in ("xacro", "xacro.py") or named:
             start = index + 1
             if index + 1 < len(words) and words[index + 1][0] in ("xacro", "xacro.py"):
                 start = index + 2

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 import re
+import shlex
 
 from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
 from launch_linter.model.robot import DescriptionKind, DescriptionSource
@@ -27,6 +28,7 @@ FRAME_NODE_PACKAGES = frozenset({
 FRAME_PARAMS = ("world_frame", "map_frame", "odom_frame", "base_link_frame", "publish_tf",
                 "tf_broadcast", "enable_odom_tf", "publish_odom_tf", "provide_odom_frame",
                 "publish_frame_projected_to_2d", "two_d_mode", "mode", "transform_publish_period")
+_PLACEHOLDER = re.compile("\x00([0-9]+)\x00")
 _YAML_LINE = re.compile(r"^\s*([A-Za-z_][\w/]*)\s*:\s*([^#\n]*?)\s*(?:#.*)?$", re.MULTILINE)
 
 
@@ -36,12 +38,24 @@ def is_description_name(name: str | None) -> bool:
 
 
 def words_of(value: Value) -> list[Word]:
-    """The whitespace-separated words of a command, each with whether it is resolved."""
-    marked = "".join(p if isinstance(p, str) else "\x00" + p.text for p in value)
-    words: list[Word] = []
-    for word in marked.split():
-        words.append((word.replace("\x00", ""), "\x00" not in word))
-    return words
+    """The words of a command as the shell splits them (roslaunch uses ``shlex``), each
+    with whether it is resolved. A hole stands in as a placeholder without spaces, so
+    that the spaces of a ``$(find pkg)`` written in it do not split it."""
+    written: list[str] = []
+    pieces: list[str] = []
+    for part in value:
+        if isinstance(part, str):
+            pieces.append(part)
+        else:
+            pieces.append(f"\x00{len(written)}\x00")
+            written.append(part.text)
+    marked = "".join(pieces)
+    try:
+        split = shlex.split(marked)
+    except ValueError:
+        split = marked.split()
+    return [(_PLACEHOLDER.sub(lambda m: written[int(m.group(1))], word), "\x00" not in word)
+            for word in split]
 
 
 def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
@@ -49,7 +63,13 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
     """The description a ROS 1 ``<param name="robot_description" ...>`` gives."""
     command = values.get("command")
     if command is not None:
-        parsed = xacro_command(words_of(command))
+        words = words_of(command)
+        if len(words) == 2 and words[0][0].rsplit("/", 1)[-1] == "cat":
+            file = words[1][0] if words[1][1] else None
+            return DescriptionSource(path, line, column, DescriptionKind.FILE,
+                                     _absolute(file, directory), condition=condition,
+                                     reason=None if file else f"{words[1][0]!r} is not resolved")
+        parsed = xacro_command(words)
         if parsed is None:
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition,
