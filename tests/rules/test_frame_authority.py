@@ -49,3 +49,19 @@ def test_ros2_amcl(lint: Lint) -> None:
            '<node pkg="tf2_ros" exec="static_transform_publisher" '
            'args="--frame-id map --child-frame-id odom"/></launch>')
     assert lint(xml, RULE) == [(RULE, 2)]
+
+
+def test_hector_with_odom_frame_set_to_the_base_publishes_another_edge(lint: Lint) -> None:
+    xml = ('<launch><arg name="odom_frame" default="base_link"/>'
+           '<node pkg="hector_mapping" type="hector_mapping" name="hector">'
+           '<param name="odom_frame" value="$(arg odom_frame)"/></node>\n'
+           f'{MAP_ODOM}</launch>')
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"odom_frame": "odom"}) == [(RULE, 2)]
+
+
+def test_unknown_frame_parameter_leaves_the_node_out(lint: Lint) -> None:
+    xml = ('<launch><arg name="f"/><node pkg="slam_toolbox" type="sync_slam_toolbox_node" '
+           'name="slam"><param name="odom_frame" value="$(arg f)"/></node>\n'
+           f'{MAP_ODOM}</launch>')
+    assert lint(xml, RULE) == []

@@ -39,3 +39,14 @@ def test_optical_parent_is_not_a_body_frame(lint: Lint) -> None:
 
 def test_other_names_are_not_optical(lint: Lint) -> None:
     assert lint(static("0 0 0 0 0 0 camera_link camera_optics"), RULE) == []
+
+
+def test_calibrated_pose_from_another_frame_is_not_checked(lint: Lint) -> None:
+    assert lint(static("0.1 0 1 0.3 0.2 0.1 base head_kinect_rgb_optical_frame"), RULE) == []
+    assert lint(static("0 0 0.1 0 0 0 left_hand left_hand_camera_depth_optical_frame"),
+                RULE) == []
+
+
+def test_stream_word_after_the_body_stem(lint: Lint) -> None:
+    assert lint(static("0 0 0 0 0 0 camera_link camera_color_optical_frame"), RULE) == [
+        (RULE, 1)]

@@ -22,6 +22,7 @@ from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,
     FRAME_NODE_PACKAGES,
+    FRAME_PARAMS,
     from_ros1_param,
     is_description_name,
     params_from_yaml,
@@ -30,7 +31,7 @@ from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
-from launch_linter.model.robot import DescriptionSource, NodeRecord
+from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.packages import PackageIndex
 from launch_linter.resolve.substitution import (
@@ -644,13 +645,19 @@ class Ros1Loader:
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str) -> None:
-        """Keep a node that publishes tf or owns a frame, with its literal frame params."""
+        """Keep a node that publishes tf or owns a frame, with its frame params."""
         params: list[tuple[str, str]] = []
         for sub in element.children:
             if sub.tag == "param":
                 key, value = sub.attrib.get("name"), sub.attrib.get("value")
-                if key and value is not None and "$" not in value + key:
-                    params.append((key, value))
+                if not key or value is None or key.rsplit("/", 1)[-1] not in FRAME_PARAMS:
+                    continue
+                known: str | None = value
+                if "$" in value:
+                    # Anonymous names are left alone: resolving one here would renumber.
+                    known = None if "$(anon" in value else resolved_text(self._resolve_text(
+                        value, sub, "value", context, dict(context.anon)))
+                params.append((key, UNKNOWN_VALUE if known is None else known))
             elif sub.tag == "rosparam" and sub.text:
                 params.extend(params_from_yaml(sub.text))
         self.nodes.append(NodeRecord(

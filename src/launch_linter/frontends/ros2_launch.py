@@ -53,7 +53,7 @@ from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
-from launch_linter.model.robot import DescriptionSource, NodeRecord
+from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.ros2_substitution import (
     Call,
@@ -487,8 +487,7 @@ class Ros2Loader:
                     self._ros2_description(subs, scope, frame, where, name)
                 elif short in FRAME_PARAMS:
                     text = resolved_text(self._resolve(subs, scope, frame, where))
-                    if text is not None:
-                        params.append((short, text))
+                    params.append((short, UNKNOWN_VALUE if text is None else text))
         self.nodes.append(NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
             executable or "", name, tuple(params), frame.condition,

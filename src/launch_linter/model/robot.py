@@ -7,6 +7,8 @@ from enum import Enum
 
 from launch_linter.model.transform import Condition
 
+UNKNOWN_VALUE = "\x00unknown"
+"""The value recorded for a node's frame parameter that the linter cannot resolve."""
 MOVABLE_JOINTS = ("revolute", "continuous", "prismatic", "floating", "planar")
 
 

@@ -12,9 +12,14 @@ nodes (package, executable):
   `robot_localization`'s `ekf_localization_node`, `ukf_localization_node`, `ekf_node`,
   `ukf_node` with `world_frame` `map`;
 - odometry (publishes `odom → base`): `robot_localization`'s filters with `world_frame`
-  `odom` or unset (its default), `rf2o_laser_odometry`/any, `laser_scan_matcher`/any.
+  `odom` or unset (its default), `rf2o_laser_odometry`/any.
 
-A node given `publish_tf` (or `tf_broadcast`) false is left out. Node and transform under
+The edge is the one the node's frame parameters name (`map_frame`/`global_frame_id`,
+`odom_frame`/`odom_frame_id`, `base_link_frame`/`base_frame_id`/`base_frame`, with
+REP 105's names by default): hector_mapping with `odom_frame` set to `base_link`
+publishes `map → base_link`, not `map → odom`. A node given `publish_tf`,
+`tf_broadcast` or `pub_map_odom_transform` false, or a frame parameter the linter cannot
+resolve, is left out. Node and transform under
 mutually exclusive conditions are not compared.
 
 ## Why is this bad?
@@ -47,10 +52,11 @@ configured in a YAML file not to publish tf is still counted.
 
 from __future__ import annotations
 
+import typing
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.robot import NodeRecord
+from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._api import RuleContext
 from launch_linter.rules._tree import diagnostic_on, tree_edges
 
@@ -66,44 +72,70 @@ LOCALIZATION = {
     ("slam_karto", ANY), ("karto", ANY), ("rtabmap_ros", "rtabmap"),
     ("rtabmap_slam", "rtabmap"),
 }
-ODOMETRY = {("rf2o_laser_odometry", ANY), ("laser_scan_matcher", ANY)}
+ODOMETRY = {("rf2o_laser_odometry", ANY)}
 FILTERS = ("ekf_localization_node", "ukf_localization_node", "ekf_node", "ukf_node")
 BASES = ("base_link", "base_footprint")
+Published = typing.Tuple[str, typing.Tuple[str, ...]]  # noqa: UP006 - run-time alias (3.8)
+"""A parent frame and the child frames it may publish."""
 
 
 def _false(value: str | None) -> bool:
     return value is not None and value.strip().lower() in ("false", "0")
 
 
-def role(node: NodeRecord) -> str | None:
-    """``map`` or ``odom``: the edge this node publishes, if it is one of the list."""
-    if _false(node.param("publish_tf")) or _false(node.param("tf_broadcast")):
-        return None
+def _frame(node: NodeRecord, names: tuple[str, ...], default: str) -> str | None:
+    """The first of the parameters ``names`` that is set, else ``default``; None when the
+    one that is set has a value the linter does not know."""
+    for name in names:
+        value = node.param(name)
+        if value is not None:
+            return None if value == UNKNOWN_VALUE else value
+    return default
+
+
+def publishes(node: NodeRecord) -> tuple[str, Published] | None:
+    """(``localization`` or ``odometry``, the edge it publishes), for the listed nodes
+    whose frame parameters are known (a parameter such as hector_mapping's
+    ``odom_frame`` set to the base frame moves the edge it publishes)."""
+    for switch in ("publish_tf", "tf_broadcast", "pub_map_odom_transform"):
+        value = node.param(switch)
+        if value == UNKNOWN_VALUE or _false(value):
+            return None
+    what: str | None = None
     if node.package == "robot_localization" and node.executable in FILTERS:
-        world = node.param("world_frame") or node.param("odom_frame") or "odom"
-        return "map" if world == (node.param("map_frame") or "map") else "odom"
-    for table, name in ((LOCALIZATION, "map"), (ODOMETRY, "odom")):
-        if (node.package, node.executable) in table or (node.package, ANY) in table:
-            return name
-    return None
+        world = _frame(node, ("world_frame",), "") or None
+        map_frame = _frame(node, ("map_frame",), "map")
+        odom = _frame(node, ("odom_frame",), "odom")
+        if world is None and node.param("world_frame") is not None:
+            return None
+        what = "localization" if world is not None and world == map_frame else "odometry"
+    else:
+        for table, name in ((LOCALIZATION, "localization"), (ODOMETRY, "odometry")):
+            if (node.package, node.executable) in table or (node.package, ANY) in table:
+                what = name
+        map_frame = _frame(node, ("map_frame", "global_frame_id"), "map")
+        odom = _frame(node, ("odom_frame", "odom_frame_id"), "odom")
+    if what is None or map_frame is None or odom is None:
+        return None
+    if what == "localization":
+        return what, (map_frame, (odom,))
+    base = _frame(node, ("base_link_frame", "base_frame_id", "base_frame"), "")
+    if base is None:
+        return None
+    return what, (odom, (base,) if base else BASES)
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
-    nodes = [(n, role(n)) for n in context.tree.nodes]
-    publishers = [(n, r) for n, r in nodes if r is not None]
+    publishers = [(n, p) for n in context.tree.nodes if (p := publishes(n)) is not None]
     if not publishers:
         return
     for edge in tree_edges(context.tree):
         if edge.joint is not None:
             continue
-        wanted = "map" if (edge.parent, edge.child) == ("map", "odom") else (
-            "odom" if edge.parent == "odom" and edge.child in BASES else None)
-        if wanted is None:
-            continue
-        for node, publishes in publishers:
-            if publishes != wanted or node.condition.excludes(edge.condition):
+        for node, (what, (parent, children)) in publishers:
+            if (edge.parent != parent or edge.child not in children
+                    or node.condition.excludes(edge.condition)):
                 continue
-            what = "localization" if wanted == "map" else "odometry"
             yield diagnostic_on(
                 ID, CATEGORY, SEVERITY, edge,
                 f"static '{edge.parent}' -> '{edge.child}' while the {what} node "

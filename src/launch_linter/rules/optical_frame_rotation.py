@@ -2,7 +2,8 @@
 
 ## What it does
 Reports a static transform or fixed URDF joint whose child is named `*_optical_frame` or
-`*_optical` and whose parent is a body frame (a name without `optical`), when its rotation
+`*_optical` and whose parent is the camera's own body frame (`camera_link` or
+`camera_frame` for `camera_optical_frame` or `camera_rgb_optical_frame`), when its rotation
 is not REP 103's optical rotation: yaw -π/2, pitch 0, roll -π/2, the quaternion
 (-0.5, 0.5, -0.5, 0.5) (either sign; within 1e-3).
 
@@ -31,7 +32,9 @@ depth cloud points into the floor and detected objects land in the wrong place.
 ## Known problems
 Angles that are REP 103's rotation written in degrees are left to `rot_degrees`.
 A frame named `*_optical` that deliberately follows another convention is reported; the
-parent is taken to be a body frame from its name alone.
+parent is taken to be the camera's body frame from the names alone. A camera pose
+calibrated directly from another frame (`base_link → camera_rgb_optical_frame`) is not
+checked.
 """
 
 from __future__ import annotations
@@ -61,6 +64,26 @@ def is_optical(frame: str) -> bool:
     return frame.endswith(("_optical_frame", "_optical"))
 
 
+def _stem(frame: str, suffixes: tuple[str, ...]) -> str:
+    name = frame.rsplit("/", 1)[-1]
+    for suffix in suffixes:
+        if name.endswith(suffix):
+            name = name[: -len(suffix)]
+    return name
+
+
+def own_body(parent: str, child: str) -> bool:
+    """Whether ``parent`` is the camera's own body frame: ``camera_link`` for
+    ``camera_optical_frame`` or ``camera_rgb_optical_frame`` (one stream word more).
+    A pose calibrated from another frame (``base``, ``map``, a hand) has any rotation."""
+    body = _stem(parent, ("_link", "_frame"))
+    optical = _stem(child, ("_optical_frame", "_optical", "_frame"))
+    if not body or not optical.startswith(body):
+        return False
+    rest = optical[len(body):]
+    return rest == "" or (rest.startswith("_") and "_" not in rest[1:])
+
+
 def _right_in_degrees(edge: Edge) -> bool:
     transform = edge.transform
     if transform is None or transform.rotation is None:
@@ -74,6 +97,8 @@ def _right_in_degrees(edge: Edge) -> bool:
 def check(context: RuleContext) -> Iterator[Diagnostic]:
     for edge in tree_edges(context.tree):
         if edge.dynamic or not is_optical(edge.child) or "optical" in edge.parent:
+            continue
+        if not own_body(edge.parent, edge.child):
             continue
         if edge.rotation is None or same_rotation(edge.rotation, OPTICAL_ROTATION, 1e-3):
             continue

@@ -27,7 +27,10 @@ FRAME_NODE_PACKAGES = frozenset({
 })
 FRAME_PARAMS = ("world_frame", "map_frame", "odom_frame", "base_link_frame", "publish_tf",
                 "tf_broadcast", "enable_odom_tf", "publish_odom_tf", "provide_odom_frame",
-                "publish_frame_projected_to_2d", "two_d_mode", "mode", "transform_publish_period")
+                "publish_frame_projected_to_2d", "two_d_mode", "mode", "transform_publish_period",
+                "global_frame_id", "odom_frame_id", "base_frame_id", "base_frame",
+                "pub_map_odom_transform")
+
 _PLACEHOLDER = re.compile("\x00([0-9]+)\x00")
 _YAML_LINE = re.compile(r"^\s*([A-Za-z_][\w/]*)\s*:\s*([^#\n]*?)\s*(?:#.*)?$", re.MULTILINE)
 
