@@ -65,3 +65,12 @@ def test_unknown_frame_parameter_leaves_the_node_out(lint: Lint) -> None:
            'name="slam"><param name="odom_frame" value="$(arg f)"/></node>\n'
            f'{MAP_ODOM}</launch>')
     assert lint(xml, RULE) == []
+
+
+def test_switch_set_beside_the_node_by_its_private_name(lint: Lint) -> None:
+    xml = ('<launch><node pkg="hector_mapping" type="hector_mapping" name="hector_mapping"/>'
+           '<arg name="off" default="true"/><group if="$(arg off)">'
+           '<param name="hector_mapping/pub_map_odom_transform" value="false"/></group>\n'
+           f'{MAP_ODOM}</launch>')
+    assert lint(xml, RULE) == []
+    assert lint(xml, RULE, {"off": "false"}) == [(RULE, 2)]

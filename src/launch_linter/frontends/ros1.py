@@ -26,6 +26,7 @@ from launch_linter.frontends.robot.sources import (
     from_ros1_param,
     is_description_name,
     params_from_yaml,
+    with_node_params,
 )
 from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
@@ -194,6 +195,8 @@ class Ros1Loader:
         self.element_lines: list[tuple[str, int]] = []
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
+        self.node_params: list[tuple[str, str]] = []
+        """Frame parameters set beside a node (``NODE/param``): full name, value."""
         self.anon = _AnonNames()
         self.root_display = ""
         self.node_names: dict[str, tuple[str, Element]] = {}
@@ -258,7 +261,7 @@ class Ros1Loader:
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
             descriptions=tuple(self.descriptions),
-            nodes=tuple(self.nodes),
+            nodes=tuple(with_node_params(self.nodes, self.node_params)),
         )
 
     def _command_line_args(self) -> dict[str, Value]:
@@ -628,6 +631,14 @@ class Ros1Loader:
             if written is not None:
                 sources["value"] = written
             self._description(element, context, _conjoin(context.condition, condition), sources)
+        elif "/" in name_text and name_text.rsplit("/", 1)[-1] in FRAME_PARAMS and anon is None:
+            # ``<param name="hector_mapping/pub_map_odom_transform" .../>`` beside the node.
+            full = resolved_text(name_value)
+            text = None if written is None else resolved_text(written)
+            if full is not None:
+                always = _conjoin(context.condition, condition).always
+                self.node_params.append((full, text if text is not None and always
+                                         else UNKNOWN_VALUE))
         param_type = attrib.get("type")
         if written is not None and param_type is not None:
             value = resolved_text(written)

@@ -10,9 +10,11 @@ from __future__ import annotations
 import os
 import re
 import shlex
+from collections.abc import Sequence
+from dataclasses import replace
 
 from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
-from launch_linter.model.robot import DescriptionKind, DescriptionSource
+from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 
@@ -135,3 +137,19 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
                                  condition=condition, node=node, text=text)
     return None
+
+
+def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, str]]
+                     ) -> list[NodeRecord]:
+    """``nodes`` with the frame parameters set outside them by their private name
+    (``NODE/param``, any namespace before it); a node's own ``<param>`` comes first."""
+    if not params:
+        return list(nodes)
+    out: list[NodeRecord] = []
+    for node in nodes:
+        extra = tuple(
+            (key.rsplit("/", 1)[-1], value) for key, value in params
+            if node.name is not None and key.rstrip("/").rsplit("/", 2)[-2:-1] == [node.name]
+        )
+        out.append(replace(node, params=node.params + extra) if extra else node)
+    return out
