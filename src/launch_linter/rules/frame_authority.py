@@ -46,7 +46,8 @@ after amcl was added.
 ```
 
 ## Known problems
-Node parameters are read from `<param>` and inline `<rosparam>` text only; a node
+Node parameters are read from `<param>` (inside the node, or beside it as `NODE/param`) and
+inline `<rosparam>` text only; a node
 configured in a YAML file not to publish tf is still counted.
 """
 
