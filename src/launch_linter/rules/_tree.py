@@ -7,10 +7,11 @@ import math
 import typing
 from dataclasses import dataclass
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
+from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
-from launch_linter.model.transform import Condition, RotationKind, StaticTransform
+from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding
 
 Quaternion = typing.Tuple[float, float, float, float]  # noqa: UP006 - a run-time alias (3.8)
 """(x, y, z, w)."""
@@ -92,13 +93,13 @@ def _transform_edge(t: StaticTransform) -> Edge | None:
     if signature is None:
         return None
     rotation: Quaternion | None = None
-    if t.rotation is not None and "rotation" not in t.unresolved:
+    if t.rotation is not None and not t.is_unresolved(Field.ROTATION):
         values = t.rotation.values
         if t.rotation.kind is RotationKind.YPR and len(values) == 3:
             rotation = quaternion_from_ypr(values[0], values[1], values[2])
         elif len(values) == 4:
             rotation = normalised((values[0], values[1], values[2], values[3]))
-    translation = None if "translation" in t.unresolved else t.translation
+    translation = None if t.is_unresolved(Field.TRANSLATION) else t.translation
     return Edge(signature[0], signature[1], translation, rotation, t.condition,
                 Location(t.path, t.line, t.column), transform=t)
 
@@ -136,12 +137,10 @@ def place(edge: Edge, seen_from: Edge) -> str:
     return f"{edge.location.path}:{edge.location.line}"
 
 
-def diagnostic_on(rule: str, category: Category, severity: Severity, edge: Edge,
-                  message: str, related: tuple[Edge, ...] = ()) -> Diagnostic:
-    """A diagnostic at an edge (a launch node or a URDF joint)."""
-    return Diagnostic(
-        rule=rule, category=category, severity=severity, path=edge.location.path,
-        line=edge.location.line, column=edge.location.column, message=message,
-        node=edge.node if edge.joint is None else edge.joint.name,
+def finding_on(edge: Edge, message: str, related: tuple[Edge, ...] = ()) -> Finding:
+    """A finding at an edge (a launch node or a URDF joint)."""
+    return Finding(
+        path=edge.location.path, line=edge.location.line, column=edge.location.column,
+        message=message, node=edge.node if edge.joint is None else edge.joint.name,
         related=tuple(r.location for r in related),
     )

@@ -50,9 +50,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
-from launch_linter.rules._tree import Edge, coexist, diagnostic_on, tree_edges
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._tree import Edge, coexist, finding_on, tree_edges
 
 ID = "conflicting_transform"
 CATEGORY = Category.TF
@@ -75,7 +75,7 @@ def _conflict(a: Edge, b: Edge) -> str:
     return "with different values; tf2 keeps whichever arrives last"
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     seen: dict[tuple[str, str], list[Edge]] = {}
     for edge in tree_edges(context.tree):
         earlier = seen.setdefault((edge.parent, edge.child), [])
@@ -84,8 +84,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
                 continue
             why = _conflict(other, edge)
             if why:
-                yield diagnostic_on(
-                    ID, CATEGORY, SEVERITY, edge,
+                yield finding_on(
+                    edge,
                     f"'{edge.parent}' -> '{edge.child}' is also published by "
                     f"{other.describe()}, {why}",
                     (other,),

@@ -56,10 +56,10 @@ from __future__ import annotations
 import typing
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
-from launch_linter.rules._api import RuleContext
-from launch_linter.rules._tree import diagnostic_on, tree_edges
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._tree import finding_on, tree_edges
 
 ID = "frame_authority"
 CATEGORY = Category.TF
@@ -126,7 +126,7 @@ def publishes(node: NodeRecord) -> tuple[str, Published] | None:
     return what, (odom, (base,) if base else BASES)
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     publishers = [(n, p) for n in context.tree.nodes if (p := publishes(n)) is not None]
     if not publishers:
         return
@@ -137,8 +137,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             if (edge.parent != parent or edge.child not in children
                     or node.condition.excludes(edge.condition)):
                 continue
-            yield diagnostic_on(
-                ID, CATEGORY, SEVERITY, edge,
+            yield finding_on(
+                edge,
                 f"static '{edge.parent}' -> '{edge.child}' while the {what} node "
                 f"{node.package}/{node.executable} ({node.path}:{node.line}) publishes it; "
                 f"REP 105 gives this edge to {what} alone",

@@ -45,16 +45,16 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
-from launch_linter.rules._tree import Edge, coexist, diagnostic_on, place, tree_edges
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._tree import Edge, coexist, finding_on, place, tree_edges
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     by_child: dict[str, list[tuple[str, Edge]]] = {}
     for edge in tree_edges(context.tree):
         parent, child = edge.parent, edge.child
@@ -72,8 +72,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         conditional = any(not t.condition.always for t in (edge, *rivals.values()))
         gets = "may get" if conditional else "gets"
         here = "here" if edge.joint is None else f"here (URDF joint '{edge.joint.name}')"
-        yield diagnostic_on(
-            ID, CATEGORY, SEVERITY, edge,
+        yield finding_on(
+            edge,
             f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' {here} and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",

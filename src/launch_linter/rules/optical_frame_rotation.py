@@ -42,12 +42,12 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import RotationKind
-from launch_linter.rules._api import RuleContext
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._tree import (
     Edge,
-    diagnostic_on,
+    finding_on,
     quaternion_from_ypr,
     same_rotation,
     tree_edges,
@@ -94,7 +94,7 @@ def _right_in_degrees(edge: Edge) -> bool:
     return same_rotation(quaternion_from_ypr(yaw, pitch, roll), OPTICAL_ROTATION, 1e-3)
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for edge in tree_edges(context.tree):
         if edge.dynamic or not is_optical(edge.child) or "optical" in edge.parent:
             continue
@@ -105,8 +105,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         if _right_in_degrees(edge):
             continue  # rot_degrees reports it: the angles are the right ones, in degrees
         x, y, z, w = edge.rotation
-        yield diagnostic_on(
-            ID, CATEGORY, SEVERITY, edge,
+        yield finding_on(
+            edge,
             f"optical frame '{edge.child}' is rotated ({x:.3g}, {y:.3g}, {z:.3g}, {w:.3g}) "
             f"from body frame '{edge.parent}'; REP 103 optical frames are rotated yaw -pi/2, "
             f"pitch 0, roll -pi/2 (quaternion -0.5 0.5 -0.5 0.5) so that z looks forward",

@@ -35,9 +35,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import RotationKind
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, RotationKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "quaternion_order"
 CATEGORY = Category.TF
@@ -46,17 +46,17 @@ SEVERITY = Severity.INFO
 _TOLERANCE = 1e-9
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if (rotation is None or rotation.kind is not RotationKind.QUATERNION
-                or "rotation" in transform.unresolved or len(rotation.values) != 4):
+                or transform.is_unresolved(Field.ROTATION) or len(rotation.values) != 4):
             continue
         qx, qy, qz, qw = rotation.values
         if abs(abs(qx) - 1.0) > _TOLERANCE or any(abs(v) > _TOLERANCE for v in (qy, qz, qw)):
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(
+            transform,
             "quaternion qx qy qz qw = 1 0 0 0 is a half turn about x; if the identity was "
             "meant, it is written w-first: static_transform_publisher reads x y z w, so the "
             "identity is 0 0 0 1",

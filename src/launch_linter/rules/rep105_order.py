@@ -33,9 +33,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
-from launch_linter.rules._tree import diagnostic_on, tree_edges
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._tree import finding_on, tree_edges
 
 ID = "rep105_order"
 CATEGORY = Category.TF
@@ -44,13 +44,13 @@ SEVERITY = Severity.WARNING
 CHAIN = {"earth": 0, "map": 1, "odom": 2, "base_link": 3, "base_footprint": 3}
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for edge in tree_edges(context.tree):
         parent, child = CHAIN.get(edge.parent), CHAIN.get(edge.child)
         if parent is None or child is None or parent <= child:
             continue
-        yield diagnostic_on(
-            ID, CATEGORY, SEVERITY, edge,
+        yield finding_on(
+            edge,
             f"'{edge.parent}' -> '{edge.child}' inverts REP 105's chain "
             f"earth -> map -> odom -> base_link: '{edge.child}' should be the parent of "
             f"'{edge.parent}'",

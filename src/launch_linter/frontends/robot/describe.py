@@ -16,7 +16,7 @@ from dataclasses import replace
 
 from launch_linter.frontends.robot.urdf import joints_of, literal_root
 from launch_linter.frontends.robot.xacro import Expansion, expand
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.resolve.packages import PackageIndex
@@ -116,12 +116,12 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         return tree
     cache = cache if cache is not None else RobotCache()
     joints: list[RobotJoint] = []
-    diagnostics: list[Diagnostic] = []
+    problems_found: list[Problem] = []
     for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
         if source.kind is DescriptionKind.LITERAL:
             root, problems = literal_root(source.text or "", source.path, source.line)
         elif source.file is None:
-            diagnostics.append(_unresolved(source, f"robot description not read: "
+            problems_found.append(_unresolved(source, f"robot description not read: "
                                            f"{source.reason or 'unknown file'}"))
             continue
         else:
@@ -130,9 +130,8 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
             root, problems = expansion.root, expansion.problems
         for problem in problems[:20]:
             where = display(problem.path)
-            diagnostics.append(Diagnostic(
-                "unresolved", Category.LAUNCH, Severity.INFO, source.path, source.line,
-                source.column,
+            problems_found.append(Problem(
+                "unresolved", source.path, source.line, source.column,
                 f"robot description {where}:{problem.line}: {problem.message}"
                 + ("; its joints are not read" if problem.fatal else ""),
             ))
@@ -141,19 +140,17 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
             joints.extend(found)
             unknown = [j for j in found if j.reasons]
             for joint in unknown[:20]:
-                diagnostics.append(Diagnostic(
-                    "unresolved", Category.LAUNCH, Severity.INFO, joint.path, joint.line,
-                    joint.column,
+                problems_found.append(Problem(
+                    "unresolved", joint.path, joint.line, joint.column,
                     f"URDF joint '{joint.name}' (robot_description at {source.path}:"
                     f"{source.line}): {', '.join(joint.unresolved)} not known: "
                     f"{'; '.join(joint.reasons)[:300]}",
                 ))
-    return replace(tree, joints=tuple(joints), diagnostics=tree.diagnostics + tuple(diagnostics))
+    return replace(tree, joints=tuple(joints), problems=tree.problems + tuple(problems_found))
 
 
-def _unresolved(source: DescriptionSource, message: str) -> Diagnostic:
-    return Diagnostic("unresolved", Category.LAUNCH, Severity.INFO, source.path, source.line,
-                      source.column, message)
+def _unresolved(source: DescriptionSource, message: str) -> Problem:
+    return Problem("unresolved", source.path, source.line, source.column, message)
 
 
 def robot_nodes(nodes: Sequence[NodeRecord]) -> list[NodeRecord]:

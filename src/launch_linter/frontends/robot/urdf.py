@@ -7,9 +7,9 @@ import math
 import typing
 
 from launch_linter.frontends.robot.xacro import ExpandedNode, XacroProblem
-from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
 from launch_linter.model.robot import DescriptionSource, RobotJoint
 from launch_linter.model.transform import Condition, ConditionLiteral
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
 Display = typing.Callable[[str], str]  # typing's Callable: a run-time alias (3.8)
 

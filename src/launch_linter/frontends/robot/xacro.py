@@ -27,8 +27,8 @@ import typing
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 
-from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
 MAX_FILES = 200
 """Most distinct files one description may read."""
