@@ -86,3 +86,29 @@ def test_ros2_python_command_with_launch_configuration() -> None:
     assert source.args == (("use_lidar", "false"),)
     assert {"sonar", "arm_link"} <= {j.child for j in found.joints}
     assert not any(j.child == "laser" for j in found.joints)
+
+
+@pytest.mark.parametrize("read", [
+    "description = open(urdf).read()",
+    "with open(urdf, 'r') as handle:\n        description = handle.read()",
+])
+def test_ros2_python_urdf_file_read(tmp_path: Path, read: str) -> None:
+    text = f'''import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    urdf = os.path.join(get_package_share_directory("demo_description"), "urdf", "plain.urdf")
+    {read}
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{{"robot_description": description}}]),
+    ])
+'''
+    found = tree(tmp_path, "a.launch.py", text)
+    (source,) = found.descriptions
+    assert source.kind is DescriptionKind.FILE
+    assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]
+    assert not found.problems

@@ -25,6 +25,7 @@ from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_compon
 from launch_linter.frontends.robot.sources import (
     FRAME_NODE_PACKAGES,
     FRAME_PARAMS,
+    from_file_value,
     from_ros2_value,
     is_description_name,
 )
@@ -499,6 +500,13 @@ class Ros2Loader:
             if isinstance(sub, Call) and sub.name == "command" and sub.args:
                 command = self._resolve(sub.args[0], scope, frame, where)
                 break
+            if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
+                # open(path).read() or $(file-content path): a URDF file read as it is.
+                path = self._resolve(sub.args[0], scope, frame, where)
+                self.descriptions.append(from_file_value(
+                    path, self._display(frame.filename), where.line, where.column,
+                    frame.condition, node, os.path.dirname(frame.filename)))
+                return
         value = self._resolve(subs, scope, frame, where) if command is None else ()
         source = from_ros2_value(value, command, self._display(frame.filename), where.line,
                                  where.column, frame.condition, node)

@@ -153,3 +153,12 @@ def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, st
         )
         out.append(replace(node, params=node.params + extra) if extra else node)
     return out
+
+
+def from_file_value(value: Value, path: str, line: int, column: int, condition: Condition,
+                    node: str | None, directory: str) -> DescriptionSource:
+    """A description read from the URDF file that ``value`` names."""
+    file = resolved_text(value)
+    return DescriptionSource(path, line, column, DescriptionKind.FILE,
+                             _absolute(file, directory), condition=condition, node=node,
+                             reason=None if file else _why(value))
