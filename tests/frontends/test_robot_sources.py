@@ -112,3 +112,11 @@ def generate_launch_description():
     assert source.kind is DescriptionKind.FILE
     assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]
     assert not found.problems
+
+
+def test_ros2_xml_file_content(tmp_path: Path) -> None:
+    text = ('<launch><node pkg="robot_state_publisher" exec="robot_state_publisher">'
+            '<param name="robot_description" value="$(file-content $(find-pkg-share '
+            'demo_description)/urdf/plain.urdf)"/></node></launch>')
+    found = tree(tmp_path, "a.launch.xml", text)
+    assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]
