@@ -26,6 +26,7 @@ from launch_linter.rules import (
     reversed_name,
     ros2_bad_flag,
     ros2_positional_args,
+    ros2_schema,
     roslaunch_error,
     rot_degrees,
     self_transform,
@@ -73,6 +74,7 @@ RULE_MODULES = (
     frame_authority,
     rep105_order,
     quaternion_order,
+    ros2_schema,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)
