@@ -16,10 +16,12 @@ from launch_linter.discovery import (
 )
 from launch_linter.fix import with_located_fixes
 from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import (
     PackageIndex,
@@ -80,6 +82,11 @@ class LintResult:
     def transforms(self) -> tuple[StaticTransform, ...]:
         return tuple(t for tree in self.trees for t in tree.transforms)
 
+    @property
+    def joints(self) -> tuple[tuple[str, RobotJoint], ...]:
+        """(root, joint) for every URDF joint a tree's robot_state_publisher publishes."""
+        return tuple((tree.root, j) for tree in self.trees for j in tree.joints)
+
 
 def _display_function(item: InputFile) -> object:
     relative = not os.path.isabs(item.display)
@@ -128,7 +135,8 @@ def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None
 
 
 def load_options_for(
-    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
+    robots: RobotCache | None = None,
 ) -> LoadOptions:
     roots = (
         tuple(options.package_paths)
@@ -143,6 +151,7 @@ def load_options_for(
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
         ros_version=ros_version_for(item.path, options, {}),
+        robots=robots,
     )
 
 
@@ -192,8 +201,10 @@ def _lint_chunk(
 ) -> list[Linted]:
     rules = selected_rules(options)
     out: list[Linted] = []
+    # One cache per chunk: a description included by many launch files is expanded once.
+    robots = RobotCache()
     for item in items:
-        tree = load_tree(item.path, load_options_for(item, options, cache))
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
         out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
     return out
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import re
 
+from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
 from launch_linter.frontends.ros2_launch import load_ros2
 from launch_linter.model.launch import LaunchTree
@@ -71,5 +72,10 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
             # The ROS 1 loader reports the file as unreadable.
             return load_ros1(path, options, None)
     if front_end(path, data, options.ros_version) == "ros2":
-        return load_ros2(path, options, data)
-    return load_ros1(path, options, data)
+        tree = load_ros2(path, options, data)
+    else:
+        tree = load_ros1(path, options, data)
+    if tree.descriptions:
+        tree = attach_robot(tree, options.packages, options.robots, options.display_path,
+                            dict(options.env))
+    return tree
