@@ -44,7 +44,15 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, can_coexist, diagnostic_at, place
+from launch_linter.rules._api import (
+    MAX_LISTED,
+    MAX_RELATED,
+    RuleContext,
+    can_coexist,
+    diagnostic_at,
+    place,
+    summarised,
+)
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
@@ -66,7 +74,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         earlier.append((parent, transform))
         if not rivals:
             continue
-        others = " and ".join(f"'{p}' ({place(t, transform)})" for p, t in rivals.items())
+        others = " and ".join(summarised(
+            [f"'{p}' ({place(t, transform)})" for p, t in rivals.items()], MAX_LISTED))
         conditional = any(not t.condition.always for t in (transform, *rivals.values()))
         gets = "may get" if conditional else "gets"
         yield diagnostic_at(
@@ -74,5 +83,5 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' here and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",
-            rivals.values(),
+            list(rivals.values())[:MAX_RELATED],
         )
