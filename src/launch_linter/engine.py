@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
+from launch_linter.frontends.xml_safe import open_regular_file
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import FileRecord, LaunchTree
@@ -60,13 +61,27 @@ class InputFile:
     """As the user gave it (relative stays relative)."""
 
 
+MAX_SNIFF_BYTES = 1024 * 1024
+"""How far into a ``.xml`` file discovery looks for ``<launch`` (licence headers and long
+comments come first in some files)."""
+_SNIFF_CHUNK = 64 * 1024
+
+
 def _is_launch_xml(path: str) -> bool:
     try:
-        with open(path, "rb") as handle:
-            head = handle.read(4096)
+        with open_regular_file(path) as handle:
+            tail = b""
+            for _ in range(MAX_SNIFF_BYTES // _SNIFF_CHUNK):
+                chunk = handle.read(_SNIFF_CHUNK)
+                if not chunk:
+                    return False
+                # The few bytes kept from the last chunk find a "<launch" cut in two.
+                if b"<launch" in tail + chunk:
+                    return True
+                tail = chunk[-7:]
     except OSError:
         return False
-    return b"<launch" in head
+    return False
 
 
 def discover(paths: Sequence[str]) -> list[InputFile]:

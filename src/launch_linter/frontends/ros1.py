@@ -897,6 +897,10 @@ class Ros1Loader:
         for candidate in candidates:
             if os.path.isfile(candidate):
                 return os.path.abspath(candidate)
+        # A folder, device or FIFO of that name is found, so that reading it says what it is.
+        for candidate in candidates:
+            if os.path.exists(candidate):
+                return os.path.abspath(candidate)
         return None
 
     def _transform(self, element: Element, context: _Context, condition: Condition,

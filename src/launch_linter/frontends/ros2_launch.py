@@ -607,6 +607,10 @@ def _locate(path: str, including_file: str) -> str | None:
     for candidate in candidates:
         if os.path.isfile(candidate):
             return os.path.abspath(candidate)
+    # A folder, device or FIFO of that name is found, so that reading it says what it is.
+    for candidate in candidates:
+        if os.path.exists(candidate):
+            return os.path.abspath(candidate)
     return None
 
 
