@@ -8,6 +8,7 @@ from typing import Any
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.transform import StaticTransform
+from launch_linter.report.escape import json_safe
 
 JSON_VERSION = 1
 
@@ -67,4 +68,5 @@ def transforms_document(result: LintResult) -> dict[str, Any]:
 
 
 def dumps(document: dict[str, Any]) -> str:
-    return json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False, default=str)
+    return json.dumps(json_safe(document), indent=2, ensure_ascii=False, allow_nan=False,
+                      default=str)
