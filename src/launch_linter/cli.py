@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 from collections.abc import Callable, Sequence
@@ -20,6 +21,28 @@ EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
 class UsageError(Exception):
     """A command-line mistake: reported on stderr, exit status 2."""
+
+
+MAX_NUMBER = 1e6
+"""Largest magnitude of a number on the command line (real z-scores are below 100)."""
+MAX_JOBS = 1024
+
+
+def check_numbers(ns: argparse.Namespace) -> None:
+    """Refuse NaN, infinities and out-of-range numbers, naming the option."""
+    for attribute, option in (("min_z", "--min-z"), ("p0", "--p0")):
+        value = getattr(ns, attribute, None)
+        if value is not None and (not math.isfinite(value) or abs(value) > MAX_NUMBER):
+            raise UsageError(f"{option} must be a finite number, not {value!r}")
+    p0 = getattr(ns, "p0", None)
+    if p0 is not None and not 0.0 < p0 < 1.0:
+        raise UsageError(f"--p0 must be between 0 and 1 (exclusive), not {p0!r}")
+    commits = getattr(ns, "mature_commits", None)
+    if commits is not None and not 0 <= commits <= 10**9:
+        raise UsageError(f"--mature-commits must be between 0 and 10^9, not {commits}")
+    jobs = getattr(ns, "jobs", None)
+    if jobs is not None and jobs > MAX_JOBS:
+        raise UsageError(f"--jobs must be at most {MAX_JOBS}, not {jobs}")
 
 
 def _split_ids(values: list[str] | None) -> list[str]:
@@ -305,6 +328,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         "explain": run_explain,
     }
     try:
+        check_numbers(ns)
         handler = handlers.get(ns.command) or _extension_handler(ns.command)
         return handler(ns)
     except UsageError as exc:
