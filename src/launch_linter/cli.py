@@ -34,12 +34,9 @@ def check_numbers(ns: argparse.Namespace) -> None:
         value = getattr(ns, attribute, None)
         if value is not None and (not math.isfinite(value) or abs(value) > MAX_NUMBER):
             raise UsageError(f"{option} must be a finite number, not {value!r}")
-    p0 = getattr(ns, "p0", None)
-    if p0 is not None and not 0.0 < p0 < 1.0:
-        raise UsageError(f"--p0 must be between 0 and 1 (exclusive), not {p0!r}")
     commits = getattr(ns, "mature_commits", None)
-    if commits is not None and not 0 <= commits <= 10**9:
-        raise UsageError(f"--mature-commits must be between 0 and 10^9, not {commits}")
+    if commits is not None and commits > 10**9:
+        raise UsageError(f"--mature-commits must be at most 10^9, not {commits}")
     jobs = getattr(ns, "jobs", None)
     if jobs is not None and jobs > MAX_JOBS:
         raise UsageError(f"--jobs must be at most {MAX_JOBS}, not {jobs}")
