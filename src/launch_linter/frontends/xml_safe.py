@@ -26,7 +26,8 @@ MAX_TEXT = 1024 * 1024
 
 
 _HANDLERS = ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
-             "CommentHandler", "EntityDeclHandler", "ExternalEntityRefHandler")
+             "CommentHandler", "EntityDeclHandler", "ExternalEntityRefHandler",
+             "AttlistDeclHandler")
 
 
 def read_launch_bytes(path: str) -> bytes:
@@ -211,6 +212,14 @@ def parse_xml(
             parser.CurrentLineNumber, parser.CurrentColumnNumber + 1,
         )
 
+    def attlist_decl(element: str, name: str, *rest: object) -> None:
+        # A default attribute value is copied into every element of that tag: one
+        # declaration multiplies the document's size without any entity.
+        raise XmlError(
+            f"attribute-list declaration for <{element}> refused (DTD declarations are not "
+            "allowed)", parser.CurrentLineNumber, parser.CurrentColumnNumber + 1,
+        )
+
     def external_ref(*rest: object) -> int:
         raise XmlError("external entity reference refused",
                        parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
@@ -219,6 +228,7 @@ def parse_xml(
     parser.EndElementHandler = end
     parser.CommentHandler = comment
     parser.EntityDeclHandler = entity_decl
+    parser.AttlistDeclHandler = attlist_decl
     parser.ExternalEntityRefHandler = external_ref
     try:
         parser.Parse(data, True)
