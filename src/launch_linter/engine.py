@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 from collections.abc import Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
@@ -224,7 +225,7 @@ def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
         return tree, _file_record(item, tree), check_tree(tree, rules, options)
     except (KeyboardInterrupt, SystemExit):
         raise
-    except BaseException as exc:  # noqa: BLE001 - one bad file never loses a run
+    except BaseException as exc:  # one bad file never loses a run
         line = _line_of(exc, item.path)
         tree = internal_error_tree(item, f"{type(exc).__name__}: {exc}", line)
         return tree, _file_record(item, tree), list(tree.diagnostics)
@@ -265,16 +266,16 @@ def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Li
     with ProcessPoolExecutor(max_workers=min(options.jobs, len(chunks))) as pool:
         futures = [pool.submit(_lint_chunk_in_worker, chunk, options) for chunk in chunks]
         for index, future in enumerate(futures):
-            try:
+            with contextlib.suppress(BrokenProcessPool):
                 results[index] = future.result()
-            except BrokenProcessPool:
-                pass
     # A worker that died (killed, out of memory, a crash in C code) breaks the pool and
     # takes the unfinished chunks with it: their files are tried again one by one.
-    lost = [item for chunk, result in zip(chunks, results) if result is None for item in chunk]
+    lost = [item for index, chunk in enumerate(chunks) if results[index] is None
+            for item in chunk]
     retried = _lint_alone(lost, options) if lost else {}
     out: list[Linted] = []
-    for chunk, result in zip(chunks, results):
+    for index, chunk in enumerate(chunks):
+        result = results[index]
         out.extend(result if result is not None else [retried[item.path] for item in chunk])
     return out
 
@@ -288,7 +289,8 @@ def _lint_alone(items: Sequence[InputFile], options: LintOptions) -> dict[str, L
         again: list[InputFile] = []
         with ProcessPoolExecutor(max_workers=1) as pool:
             futures = [pool.submit(_lint_chunk_in_worker, [item], options) for item in remaining]
-            for position, (item, future) in enumerate(zip(remaining, futures)):
+            for position, item in enumerate(remaining):
+                future = futures[position]
                 try:
                     out[item.path] = future.result()[0]
                 except BrokenProcessPool:

@@ -22,7 +22,6 @@ import os
 import re
 from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Tuple
 from functools import lru_cache
 
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
@@ -82,14 +81,11 @@ class PathIgnore:
         return glob_match(self.pattern.removeprefix("./"), relative)
 
 
-Token = Tuple[str, str]
-
-
 @lru_cache(maxsize=256)
-def _glob_tokens(pattern: str) -> tuple[Token, ...]:
+def _glob_tokens(pattern: str) -> tuple[tuple[str, str], ...]:
     """The pattern as tokens: ``lit`` (one character), ``one`` (``?``), ``star`` (``*``),
     ``any`` (``**``) and ``dirs`` (``**/``: nothing, or anything that ends with ``/``)."""
-    tokens: list[Token] = []
+    tokens: list[tuple[str, str]] = []
     i = 0
     while i < len(pattern):
         if pattern.startswith("**/", i):
@@ -113,7 +109,7 @@ def _glob_tokens(pattern: str) -> tuple[Token, ...]:
 _SKIPPABLE = ("star", "any", "dirs")
 
 
-def _closure(tokens: tuple[Token, ...], states: set[int]) -> set[int]:
+def _closure(tokens: tuple[tuple[str, str], ...], states: set[int]) -> set[int]:
     out: set[int] = set()
     stack = list(states)
     while stack:

@@ -11,9 +11,9 @@ for the hostile file, no internal error, every other input reported).
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Dict
 
 TF1 = 'pkg="tf2_ros" type="static_transform_publisher"'
 
@@ -262,7 +262,7 @@ def _long_header(folder: Path) -> str:
     return str(sub)
 
 
-CASES: Dict[str, Case] = {
+CASES: dict[str, Case] = {
     "doubling_args": Case("work", _text("doubling_args.launch", _doubling_args()), "longer than"),
     "doubling_let": Case("work", _text("doubling_let.launch.xml", _doubling_let()), "longer than"),
     "many_includes": Case("work", _many_includes, "work budget"),

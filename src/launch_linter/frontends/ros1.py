@@ -20,8 +20,8 @@ from dataclasses import dataclass, field
 from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
-from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
 from launch_linter.model.budget import Budget, BudgetExceeded
+from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.packages import PackageIndex

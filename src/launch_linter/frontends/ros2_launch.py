@@ -45,8 +45,8 @@ from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.budget import Budget, BudgetExceeded
+from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.ros2_substitution import (

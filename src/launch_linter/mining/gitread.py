@@ -17,7 +17,6 @@ import re
 import shutil
 import subprocess
 import tempfile
-from typing import Dict, Optional, Tuple
 
 GIT_TIMEOUT_S = 120
 MAX_REF_BYTES = 4096
@@ -32,7 +31,7 @@ _SAFE_CONFIG = (
 )
 
 
-def _read_small(path: str, limit: int = MAX_REF_BYTES) -> Optional[str]:
+def _read_small(path: str, limit: int = MAX_REF_BYTES) -> str | None:
     """A small regular file's text, or None (a FIFO or device is never opened)."""
     try:
         if not os.path.isfile(path):
@@ -46,7 +45,7 @@ def _read_small(path: str, limit: int = MAX_REF_BYTES) -> Optional[str]:
     return data.decode("utf-8", "replace")
 
 
-def git_dir(folder: str) -> Optional[str]:
+def git_dir(folder: str) -> str | None:
     """The repository's git folder (``.git``, or where a ``.git`` file points)."""
     dot_git = os.path.join(folder, ".git")
     if os.path.isdir(dot_git):
@@ -68,9 +67,9 @@ def _common_dir(gitdir: str) -> str:
     return common if os.path.isdir(common) else gitdir
 
 
-def _packed_refs(common: str) -> Dict[str, str]:
+def _packed_refs(common: str) -> dict[str, str]:
     text = _read_small(os.path.join(common, "packed-refs"), MAX_PACKED_REFS_BYTES)
-    refs: Dict[str, str] = {}
+    refs: dict[str, str] = {}
     for line in (text or "").splitlines():
         sha, _, name = line.partition(" ")
         if _SHA.match(sha) and name:
@@ -78,7 +77,7 @@ def _packed_refs(common: str) -> Dict[str, str]:
     return refs
 
 
-def head_sha(gitdir: str) -> Optional[str]:
+def head_sha(gitdir: str) -> str | None:
     """HEAD's commit SHA, following symbolic refs (at most a few levels)."""
     common = _common_dir(gitdir)
     text = _read_small(os.path.join(gitdir, "HEAD"))
@@ -98,7 +97,7 @@ def head_sha(gitdir: str) -> Optional[str]:
     return None
 
 
-def safe_environment(home: str) -> Dict[str, str]:
+def safe_environment(home: str) -> dict[str, str]:
     """An environment in which git reads no configuration file but ours."""
     return {
         "PATH": os.environ.get("PATH", os.defpath),
@@ -118,7 +117,7 @@ def safe_environment(home: str) -> Dict[str, str]:
     }
 
 
-def commit_count(folder: str) -> Tuple[Optional[int], str]:
+def commit_count(folder: str) -> tuple[int | None, str]:
     """(number of commits reachable from HEAD, HEAD's SHA); (None, "") when unknown."""
     gitdir = git_dir(folder)
     if gitdir is None:

@@ -161,7 +161,7 @@ def _schema(conn: sqlite3.Connection) -> set[tuple[str, str, str]]:
     return {(kind, name, " ".join(sql.split())) for kind, name, sql in rows}
 
 
-@functools.lru_cache(maxsize=None)
+@functools.lru_cache(maxsize=None)  # noqa: UP033 - Python 3.8 has no functools.cache
 def _expected_schema() -> frozenset[tuple[str, str, str]]:
     conn = sqlite3.connect(":memory:")
     try:

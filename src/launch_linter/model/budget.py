@@ -16,7 +16,7 @@ what hurts a laptop (a second of work and some hundred megabytes at most per fil
 from __future__ import annotations
 
 import time
-from typing import Callable, Optional
+from collections.abc import Callable
 
 MAX_STEPS = 2_000_000
 """Elements, substitutions, syntax nodes and evaluator work units, all files of a tree."""
@@ -47,7 +47,7 @@ class Budget:
         max_steps: int = MAX_STEPS,
         max_bytes: int = MAX_BYTES,
         seconds: float = MAX_SECONDS,
-        clock: Optional[Callable[[], float]] = None,
+        clock: Callable[[], float] | None = None,
     ) -> None:
         self._clock = clock or time.monotonic
         self.max_steps = max_steps

@@ -10,8 +10,8 @@ from urllib.parse import quote
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Location, Severity
-from launch_linter.rules import RULES, Rule
 from launch_linter.report.escape import json_safe, printable
+from launch_linter.rules import RULES, Rule
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 SARIF_VERSION = "2.1.0"
