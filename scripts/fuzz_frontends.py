@@ -19,8 +19,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "hostile"))
 
-from fuzzing import check_case, corpus_seeds, mutated, seeds  # noqa: E402
-from hypothesis import HealthCheck, given, settings  # noqa: E402
+from fuzzing import check_case, corpus_seeds, mutated, seeds
+from hypothesis import HealthCheck, given, settings
 
 
 def main() -> int:
