@@ -6,8 +6,8 @@ import json
 import re
 from importlib import resources
 
-from launch_linter.frontends.xml_safe import read_regular_file
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
+from launch_linter.resolve.xml_safe import read_regular_file
 
 BUNDLED = "beliefs-bundled.json"
 STUDY = "beliefs-study.json"

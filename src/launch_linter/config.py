@@ -18,8 +18,8 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from launch_linter.frontends.xml_safe import read_regular_file
 from launch_linter.model.diagnostic import Severity
+from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules import RULES, RULES_BY_ID
 from launch_linter.suppressions import PathIgnore
 

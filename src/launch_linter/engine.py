@@ -11,13 +11,14 @@ from dataclasses import dataclass, field
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
-from launch_linter.frontends.xml_safe import open_regular_file
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import PackageIndex, default_package_roots
+from launch_linter.resolve.xml_safe import open_regular_file
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+from launch_linter.rules._api import Finding, finding_of
 from launch_linter.suppressions import (
     UNUSED_ID,
     PathIgnore,
@@ -157,22 +158,15 @@ def load_options_for(
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
-    """Run ``rules`` on one tree and apply severity overrides."""
+    """Run ``rules`` on one tree; each finding becomes a diagnostic stamped by its rule."""
     context = RuleContext(tree, options.beliefs)
-    return [_override(d, options) for rule in rules for d in rule.check(context)]
+    return [_stamp(rule, f, options) for rule in rules for f in rule.check(context)]
 
 
-def _override(diagnostic: Diagnostic, options: LintOptions) -> Diagnostic:
-    level = options.severity.get(diagnostic.rule)
-    if level is not None and level is not diagnostic.severity:
-        return _with_severity(diagnostic, level)
-    return diagnostic
-
-
-def _with_severity(diagnostic: Diagnostic, severity: Severity) -> Diagnostic:
-    from dataclasses import replace
-
-    return replace(diagnostic, severity=severity)
+def _stamp(rule: Rule, finding: Finding, options: LintOptions) -> Diagnostic:
+    # The one place where a rule's id, category and severity meet its findings, and where
+    # the configuration's and command line's severity overrides apply.
+    return rule.diagnostic(finding, options.severity.get(rule.id))
 
 
 def _file_record(item: InputFile, tree: LaunchTree) -> FileRecord:
@@ -185,6 +179,7 @@ def finish_diagnostics(
 ) -> tuple[Diagnostic, ...]:
     """Apply inline suppressions and per-path ignores to the rules' diagnostics, and sort."""
     ran = {r.id for r in selected_rules(options)}
+    unused_rule = RULES_BY_ID[UNUSED_ID]
     kept, unused = apply_suppressions(
         trees,
         diagnostics,
@@ -194,7 +189,7 @@ def finish_diagnostics(
     )
     out = [
         d
-        for d in (*kept, *(_override(u, options) for u in unused))
+        for d in (*kept, *(_stamp(unused_rule, finding_of(u), options) for u in unused))
         if not ignored_by_path(d, options.per_path_ignores)
     ]
     return tuple(sorted(out, key=lambda d: d.sort_key))
@@ -207,11 +202,19 @@ REPORT_HINT = "please report it, with the file, at the project's issue tracker"
 
 
 def internal_error_tree(item: InputFile, what: str, line: int = 1) -> LaunchTree:
-    """The tree of a file the linter failed on: its status and one diagnostic saying so."""
+    """The tree of a file the linter failed on: its status and one problem saying so."""
     message = f"internal error while linting this file ({what}); {REPORT_HINT}"
-    diagnostic = Diagnostic("parse_error", Category.LAUNCH, Severity.ERROR, item.display,
-                            line, 1, message[:MAX_INTERNAL_MESSAGE])
-    return LaunchTree(item.display, FileStatus.INTERNAL_ERROR, (), (diagnostic,), (item.display,))
+    problem = Problem("parse_error", item.display, line, 1, message[:MAX_INTERNAL_MESSAGE])
+    return LaunchTree(item.display, FileStatus.INTERNAL_ERROR, (), (problem,), (item.display,))
+
+
+def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
+    """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
+    tree = internal_error_tree(item, what, line)
+    rule = RULES_BY_ID["parse_error"]
+    found = [Diagnostic(p.rule, rule.category, rule.severity, p.path, p.line, p.column,
+                        p.message) for p in tree.problems]
+    return tree, _file_record(item, tree), found
 
 
 MAX_INTERNAL_MESSAGE = 500
@@ -226,9 +229,7 @@ def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
     except (KeyboardInterrupt, SystemExit):
         raise
     except BaseException as exc:  # one bad file never loses a run
-        line = _line_of(exc, item.path)
-        tree = internal_error_tree(item, f"{type(exc).__name__}: {exc}", line)
-        return tree, _file_record(item, tree), list(tree.diagnostics)
+        return _internal_error(item, f"{type(exc).__name__}: {exc}", _line_of(exc, item.path))
 
 
 def _line_of(exc: BaseException, path: str) -> int:
@@ -294,8 +295,7 @@ def _lint_alone(items: Sequence[InputFile], options: LintOptions) -> dict[str, L
                 try:
                     out[item.path] = future.result()[0]
                 except BrokenProcessPool:
-                    tree = internal_error_tree(item, "the worker process linting it died")
-                    out[item.path] = (tree, _file_record(item, tree), list(tree.diagnostics))
+                    out[item.path] = _internal_error(item, "the worker process linting it died")
                     again = remaining[position + 1:]
                     break
         remaining = again

@@ -107,7 +107,9 @@ def check_case(folder: Path, kind: str, data: bytes) -> None:
     tree = load_tree(str(path), LoadOptions(display_path=str), data)
     assert tree.status in FileStatus
     found = engine.check_tree(tree, engine.selected_rules(options), options)
-    for diagnostic in (*tree.diagnostics, *found):
+    for problem in tree.problems:
+        assert problem.line >= 1 and problem.column >= 1, problem
+    for diagnostic in found:
         line = text.format_diagnostic(diagnostic)
         assert "\n" not in line and "\r" not in line and "\x1b" not in line, line
         assert diagnostic.line >= 1 and diagnostic.column >= 1, diagnostic

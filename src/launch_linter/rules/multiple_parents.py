@@ -42,14 +42,15 @@ a node that publishes tf at run time is not.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import (
     MAX_LISTED,
     MAX_RELATED,
+    Finding,
     RuleContext,
     can_coexist,
-    diagnostic_at,
+    finding_at,
     place,
     summarised,
 )
@@ -59,7 +60,7 @@ CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     by_child: dict[str, list[tuple[str, StaticTransform]]] = {}
     for transform in context.tree.transforms:
         signature = transform.signature
@@ -78,8 +79,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             [f"'{p}' ({place(t, transform)})" for p, t in rivals.items()], MAX_LISTED))
         conditional = any(not t.condition.always for t in (transform, *rivals.values()))
         gets = "may get" if conditional else "gets"
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' here and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",
