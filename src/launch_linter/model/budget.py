@@ -8,9 +8,9 @@ When the budget runs out, :class:`BudgetExceeded` is raised; the front-end that 
 reports a diagnostic at the place where it ran out and keeps what it had read, and the run
 goes on with the next file.
 
-The limits are far above what real launch files need (the largest tree of the 350-repository
-corpus takes about 2,000 steps, a few hundred kilobytes and a few milliseconds) and far below
-what hurts a laptop (a second of work and some hundred megabytes at most per file).
+The limits are far above what real launch files need (the costliest of the corpus's 4,084
+files takes 642 steps, produces 10.5 KB and took 0.16 s on a busy machine) and far below what
+hurts a laptop (seconds of work and some hundred megabytes at most per file).
 """
 
 from __future__ import annotations
