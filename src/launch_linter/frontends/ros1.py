@@ -29,6 +29,7 @@ from launch_linter.frontends.robot.sources import (
     with_node_params,
 )
 from launch_linter.frontends.tokens import split_args
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
 from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
@@ -215,6 +216,9 @@ class Ros1Loader:
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
         """The element whose attribute is being resolved (for errors found meanwhile)."""
+        self.budget = Budget()
+        self._path = ""
+        """The file being walked (where the budget ran out, if it does)."""
 
     # -- diagnostics -------------------------------------------------------------------
     def _report(
@@ -250,13 +254,18 @@ class Ros1Loader:
         if root is None:
             return self._tree(FileStatus.PARSE_ERROR)
         context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
-        self._launch_conditions(root, context)
+        self._path = absolute
         try:
+            self._launch_conditions(root, context)
             self._walk(root.children, context)
         except RecursionError:
             # MAX_NESTING keeps real files far from this; it is the last line of defence.
             self._report("unresolved", absolute, root,
                          "launch tree nested too deeply to follow; the rest is not read")
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._path, self._element or root,
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
@@ -372,6 +381,7 @@ class Ros1Loader:
             anon=lambda anon_id: self.anon.make(anon, anon_id),
             filename=filename,
             missing_arg=missing,
+            budget=self.budget,
         )
 
     def _resolve_text(self, text: str, element: Element, label: str, context: _Context,
@@ -465,7 +475,10 @@ class Ros1Loader:
 
     # -- tags --------------------------------------------------------------------------
     def _walk(self, elements: list[Element], context: _Context) -> None:
+        step = self.budget.step
         for element in elements:
+            step()
+            self._element = element
             tag = element.tag
             if tag == "node":
                 self._node(element, context)
@@ -945,15 +958,18 @@ class Ros1Loader:
             self._error(context, element,
                         f"cannot read included file {path}: {exc.strerror or exc}")
             return
+        self.budget.produce(len(data))
         root = self._parse(absolute, data)
         if root is None:
             return
+        self._path = absolute
         child.filename = absolute
         child.scope = child.side_scope = None
         child.chain = (*context.chain, absolute)
         child.included_from = (self._display(context.filename), element.line)
         self._launch_conditions(root, child)
         self._walk(root.children, child)
+        self._path = context.filename
         if not pass_all:
             unused = [name for name in args_passed if name not in child.arg_names]
             if unused:
@@ -969,6 +985,10 @@ class Ros1Loader:
         ]
         for candidate in candidates:
             if os.path.isfile(candidate):
+                return os.path.abspath(candidate)
+        # A folder, device or FIFO of that name is found, so that reading it says what it is.
+        for candidate in candidates:
+            if os.path.exists(candidate):
                 return os.path.abspath(candidate)
         return None
 

@@ -53,6 +53,7 @@ from launch_linter.frontends.ros2_actions import (
     Where,
     ros2_run,
 )
+from launch_linter.model.budget import Budget
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
 from launch_linter.resolve.value import Value, holes, resolved_text
@@ -1547,13 +1548,14 @@ def _comments(data: bytes) -> tuple[tuple[int, str], ...]:
     return tuple(found)
 
 
-def read_python(path: str, data: bytes) -> FileRead:
+def read_python(path: str, data: bytes, budget: Budget | None = None) -> FileRead:
     """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes)."""
     if len(data) > MAX_BYTES:
         message = f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
     try:
-        source = data.decode("utf-8")
+        # A byte order mark is allowed, as Python itself allows it.
+        source = data.decode("utf-8-sig")
         tree = ast.parse(source, filename=path)
     except UnicodeDecodeError as exc:
         message = f"not UTF-8 text: {exc.reason}"
@@ -1568,6 +1570,10 @@ def read_python(path: str, data: bytes) -> FileRead:
     lines = sorted({n.lineno for n in ast.walk(tree) if isinstance(n, ast.stmt | ast.Call)})
     interpreter = Interpreter(path, source)
     actions = _launch_description(interpreter, tree)
+    if budget is not None:
+        # The interpreter's own step limit bounds one file; the root file's budget bounds
+        # a file included many times.
+        budget.step(interpreter.steps)
     return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
 
 

@@ -14,6 +14,8 @@ class FileStatus(str, Enum):
     OK = "ok"
     PARSE_ERROR = "parse_error"
     UNREADABLE = "unreadable"
+    INTERNAL_ERROR = "internal_error"
+    """The linter itself failed on this file (a bug to report); the other files are fine."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -10,6 +10,7 @@ from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.report.escape import json_safe
 
 JSON_VERSION = 1
 
@@ -108,4 +109,5 @@ def transforms_document(result: LintResult) -> dict[str, Any]:
 
 
 def dumps(document: dict[str, Any]) -> str:
-    return json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False, default=str)
+    return json.dumps(json_safe(document), indent=2, ensure_ascii=False, allow_nan=False,
+                      default=str)
