@@ -21,7 +21,7 @@ from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.packages import PackageIndex
 from launch_linter.resolve.substitution import (
@@ -277,9 +277,9 @@ class Ros1Loader:
                 f"not well-formed XML: {exc.message}",
             ))
             return None
-        if document.comments:
+        if document.comments and holds_directive(document.comments):
             self.comments += [Comment(display, line, text) for line, text in document.comments]
-        self.element_lines += [(display, line) for line in document.element_lines]
+            self.element_lines += [(display, line) for line in document.element_lines]
         # roslaunch takes the one <launch> element of the document, wherever it is.
         launches = document.collected
         if len(launches) != 1:

@@ -46,7 +46,7 @@ from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.ros2_substitution import (
     Ros2Scope,
@@ -198,8 +198,9 @@ class Ros2Loader:
             read = read_yaml(absolute, data)
         else:
             read = read_xml(absolute, data)
-        self.comments.extend(Comment(display, line, text) for line, text in read.comments)
-        self.element_lines.extend((display, line) for line in read.element_lines)
+        if holds_directive(read.comments):
+            self.comments.extend(Comment(display, line, text) for line, text in read.comments)
+            self.element_lines.extend((display, line) for line in read.element_lines)
         for problem in read.problems:
             self._report(problem.rule, Where(absolute, problem.line, problem.column),
                          problem.message)

@@ -53,6 +53,7 @@ from launch_linter.frontends.ros2_actions import (
     Where,
 )
 from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.model.launch import DIRECTIVE_MARKER
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
 from launch_linter.resolve.value import Value, holes, resolved_text
 
@@ -1457,7 +1458,10 @@ _PLAIN_BUILTINS: dict[str, Callable[..., object]] = {
 }
 
 
-def _comments(data: bytes) -> tuple[tuple[int, str], ...]:
+def _directive_comments(data: bytes) -> tuple[tuple[int, str], ...]:
+    """The comments of a file that may hold a suppression directive, else none."""
+    if DIRECTIVE_MARKER.encode() not in data:
+        return ()
     found: list[tuple[int, str]] = []
     try:
         for token in tokenize.tokenize(BytesIO(data).readline):
@@ -1482,14 +1486,20 @@ def read_python(path: str, data: bytes) -> FileRead:
     except SyntaxError as exc:
         problem = Problem("parse_error", exc.lineno or 1, (exc.offset or 0) or 1,
                           f"not valid Python: {exc.msg}")
-        return FileRead(FORMAT, None, _comments(data), (), (problem,))
+        return FileRead(FORMAT, None, _directive_comments(data), (), (problem,))
     except (RecursionError, MemoryError, ValueError) as exc:
         message = f"not readable Python: {type(exc).__name__}"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
-    lines = sorted({n.lineno for n in ast.walk(tree) if isinstance(n, ast.stmt | ast.Call)})
+    comments = _directive_comments(data)
+    # Statement lines only place directives: skipped (with the tokenizer) in the many files
+    # that hold none.
+    lines = (
+        sorted({n.lineno for n in ast.walk(tree) if isinstance(n, ast.stmt | ast.Call)})
+        if comments else ()
+    )
     interpreter = Interpreter(path, source)
     actions = _launch_description(interpreter, tree)
-    return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
+    return FileRead(FORMAT, actions, comments, tuple(lines), tuple(interpreter.problems))
 
 
 def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:

@@ -406,3 +406,14 @@ def test_text_bombs_are_refused(load: Load) -> None:
     (transform,) = tree.transforms
     assert transform.unresolved == ("child",)
     assert "too long" in transform.unresolved_reasons[0]
+
+
+def test_comments_and_statement_lines_only_in_files_that_hold_a_directive() -> None:
+    from launch_linter.frontends.ros2_python import read_python
+
+    source = b"# a plain comment\nx = 1\n"
+    plain = read_python("/a.launch.py", source)
+    assert (plain.comments, plain.element_lines) == ((), ())
+    marked = read_python("/a.launch.py", b"# launch-linter: disable=dup_name\n" + source)
+    assert marked.comments == ((1, " launch-linter: disable=dup_name"), (2, " a plain comment"))
+    assert marked.element_lines == (3,)
