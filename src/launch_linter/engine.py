@@ -124,19 +124,33 @@ def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
 def load_options_for(
     item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
 ) -> LoadOptions:
-    roots = (
-        tuple(options.package_paths)
-        if options.package_paths is not None
-        else tuple(default_package_roots(item.path))
-    )
-    if roots not in cache:
-        cache[roots] = PackageIndex(list(roots))
+    if options.package_paths is not None:
+        index = _package_index(tuple(options.package_paths), cache)
+    else:
+        # default_package_roots walks up the folders of a file (to / outside a package):
+        # done once per folder (the real one, for a symbolic link), whose index the cache
+        # keeps under ("", folder), a key that no tuple of roots (absolute paths) can equal.
+        path = os.path.realpath(item.path) if os.path.islink(item.path) else item.path
+        folder = ("", os.path.dirname(path))
+        found = cache.get(folder)
+        if found is None:
+            found = _package_index(tuple(default_package_roots(path)), cache)
+            cache[folder] = found
+        index = found
     return LoadOptions(
         args=options.args,
         env=options.env,
-        packages=cache[roots],
+        packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
     )
+
+
+def _package_index(
+    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex]
+) -> PackageIndex:
+    if roots not in cache:
+        cache[roots] = PackageIndex(list(roots))
+    return cache[roots]
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
