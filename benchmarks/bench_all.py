@@ -17,8 +17,8 @@ process   Whole processes on the ROS 1 files: ``launch-linter check --format jso
           the roslaunch loader driver (``scripts/roslaunch_oracle_driver.py``) loading the
           same files once; start-up included on both sides.
 startup   ``python -c pass``, ``launch-linter --version`` and ``check`` of one small XML file.
-files     ``check`` of synthetic corpora of 1K to 50K files (``synthetic_corpus.build``):
-          time and peak memory of the process.
+files     ``check`` of synthetic corpora of 1K to 50K files (the corpus files, then copies
+          with renamed frames): time and peak memory of the process.
 nodes     One ROS 1 file of 1K to 50K ``static_transform_publisher`` nodes in three shapes:
           independent pairs, a chain of frames, a fan from one frame; roslaunch on the pairs.
 jobs      ``check`` of the corpus with ``--jobs 1``, ``--jobs 2`` and the default.
@@ -216,9 +216,46 @@ def per_file_section(files: list[str], runs: int) -> None:
 # ---------------------------------------------------------------- child processes
 
 
+# A child's ``ru_maxrss`` counts the memory of the process it was forked from (Linux keeps
+# the high-water mark across ``exec``), so a child reports its own peak (``VmHWM``) at exit.
+PEAK = """\
+import atexit, os, runpy, sys
+def _peak():
+    with open("/proc/self/status", encoding="ascii") as status:
+        kib = next(line.split()[1] for line in status if line.startswith("VmHWM"))
+    with open(os.environ["BENCH_PEAK_FILE"], "w", encoding="ascii") as out:
+        out.write(kib)
+atexit.register(_peak)
+target = sys.argv.pop(1)
+if target.endswith(".py"):
+    sys.argv[0] = target
+    runpy.run_path(target, run_name="__main__")
+else:
+    runpy.run_module(target, run_name="__main__", alter_sys=True)
+"""
+
+
+def with_peak(argv: Sequence[str]) -> list[str]:
+    """``argv`` (``python -m MODULE ...`` or ``python FILE ...``) reporting its peak memory."""
+    rest = list(argv[2:]) if argv[1] == "-m" else list(argv[1:])
+    return [argv[0], "-c", PEAK, *rest]
+
+
 def run_child(argv: Sequence[str], stdin: bytes | None = None, env: dict[str, str] | None = None,
               timeout: float = 3600.0) -> tuple[float, float, float, int]:
-    """Wall seconds, CPU seconds (user + system), peak memory (MiB) and status of one child."""
+    """Wall seconds, CPU seconds (user + system), peak memory (MiB) and status of one child.
+
+    The peak is measured only for an ``argv`` made by ``with_peak`` (else it is NaN).
+    """
+    with tempfile.NamedTemporaryFile(prefix="bench-peak-") as peak_file:
+        env = dict(os.environ if env is None else env, BENCH_PEAK_FILE=peak_file.name)
+        wall, cpu, status = _run_child(argv, stdin, env, timeout)
+        text = Path(peak_file.name).read_text(encoding="ascii").strip()
+    return wall, cpu, int(text) / 1024 if text else float("nan"), status
+
+
+def _run_child(argv: Sequence[str], stdin: bytes | None, env: dict[str, str],
+               timeout: float) -> tuple[float, float, int]:
     started = time.perf_counter()
     with tempfile.TemporaryFile() as feed:
         if stdin is not None:
@@ -233,13 +270,13 @@ def run_child(argv: Sequence[str], stdin: bytes | None = None, env: dict[str, st
                 break
             if time.perf_counter() > deadline:
                 child.kill()
-                _, status, usage = os.wait4(child.pid, 0)
+                os.wait4(child.pid, 0)
                 child.returncode = -9
-                return timeout, float("nan"), float("nan"), -9
+                return timeout, float("nan"), -9
             time.sleep(0.002)
     child.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - started
-    return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024, child.returncode
+    return wall, usage.ru_utime + usage.ru_stime, child.returncode
 
 
 def linter(*args: str) -> list[str]:
@@ -269,7 +306,7 @@ def repeated(argv: Sequence[str], runs: int, stdin: bytes | None = None,
 
 def process_section(ros1: list[str], runs: int) -> None:
     print(f"\n== Whole process on the {len(ros1)} ROS 1 XML files (seconds: median [spread])")
-    ours = repeated(linter("check", "--format", "json", "--jobs", "1", *ros1), runs,
+    ours = repeated(with_peak(linter("check", "--format", "json", "--jobs", "1", *ros1)), runs,
                     env=linter_env())
     print(f"{'launch-linter check --jobs 1':34s} CPU {spread(ours[1], digits=2)}  "
           f"wall {spread(ours[0], digits=2)}  peak {spread(ours[2])} MiB")
@@ -277,7 +314,7 @@ def process_section(ros1: list[str], runs: int) -> None:
         return
     request = json.dumps({"package_path": [],
                           "files": [{"path": os.path.abspath(p)} for p in ros1]}).encode()
-    theirs = repeated([SYSTEM_PYTHON, str(DRIVER)], runs, stdin=request, env={})
+    theirs = repeated(with_peak([SYSTEM_PYTHON, str(DRIVER)]), runs, stdin=request, env={})
     if theirs[3] != 0:
         print("roslaunch driver: not measured (it failed)")
         return
@@ -308,19 +345,40 @@ def startup_section(runs: int) -> None:
 # ---------------------------------------------------------------- scaling
 
 
-def files_section(corpus: Path, sizes: Sequence[int], runs: int) -> None:
-    from synthetic_corpus import build
+def build_files(corpus: Path, out: str, count: int) -> None:
+    """``count`` distinct files in folders of 1,000: the corpus files, then renamed copies.
 
+    Copy k >= 1 of a file has ``_k`` appended to its frames (``synthetic_corpus``); every
+    file ends with a comment naming its copy, in its own syntax.
+    """
+    from synthetic_corpus import copy_comment, full_suffix, rename_frames
+
+    names = sorted(os.listdir(corpus / "files"))
+    contents = {name: read(str(corpus / "files" / name)) for name in names[:count]}
+    for number in range(count):
+        copy, index = divmod(number, len(names))
+        name = names[index]
+        data = contents[name]
+        if copy:
+            data = rename_frames(data, f"_{copy}".encode())
+        folder = os.path.join(out, f"{number // 1000:03d}")
+        os.makedirs(folder, exist_ok=True)
+        suffix = full_suffix(name)
+        with open(os.path.join(folder, f"{number:06d}{suffix}"), "wb") as handle:
+            handle.write(data + copy_comment(suffix, copy))
+
+
+def files_section(corpus: Path, sizes: Sequence[int], runs: int) -> None:
     print("\n== check of N synthetic files (one process, --jobs 1)")
     print(f"{'files':>7s} {'CPU s':>20s} {'µs per file (CPU)':>18s} {'wall s':>20s} "
           f"{'peak MiB':>10s} {'KiB per file':>13s}")
     for size in sizes:
         with tempfile.TemporaryDirectory(prefix="bench-files-") as scratch:
-            build(str(corpus), scratch, size)
-            count = len(os.listdir(os.path.join(scratch, "files")))
+            build_files(corpus, scratch, size)
+            count = size
             walls, cpus, mems, status = repeated(
-                linter("check", "--format", "json", "--jobs", "1", "--beliefs", "bundled",
-                       os.path.join(scratch, "files")), runs, env=linter_env())
+                with_peak(linter("check", "--format", "json", "--jobs", "1", "--beliefs",
+                                 "bundled", scratch)), runs, env=linter_env())
         if status not in (0, 1):
             print(f"{count:7d} failed with status {status}")
             continue
@@ -356,7 +414,8 @@ def nodes_section(sizes: Sequence[int], roslaunch_sizes: Sequence[int], runs: in
                 path = os.path.join(scratch, f"{shape}_{size}.launch")
                 Path(path).write_text(nodes_file(size, shape), encoding="utf-8")
                 _, cpus, mems, status = repeated(
-                    linter("check", "--format", "json", "--beliefs", "none", path), runs,
+                    with_peak(linter("check", "--format", "json", "--beliefs", "none", path)),
+                    runs,
                     env=linter_env(), timeout=timeout)
                 note = {0: "ok", 1: "ok (findings)", -9: "TIMEOUT"}.get(status, f"exit {status}")
                 cpu = spread(cpus, digits=2) if status in (0, 1) else "-"
