@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
@@ -220,6 +219,10 @@ def _lint_chunk_in_worker(items: Sequence[InputFile], options: LintOptions) -> l
 
 
 def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Linted]:
+    # Imported here: the process pool (with multiprocessing and logging) costs start-up
+    # time that a serial run does not need.
+    from concurrent.futures import ProcessPoolExecutor
+
     # Several chunks per worker balance uneven files; map() keeps the input order, so the
     # result is the serial one.
     size = max(1, -(-len(inputs) // (options.jobs * 4)))
