@@ -20,24 +20,22 @@ __all__ = [
     "lint_text",
 ]
 
-_LAZY = {
-    "LintOptions": "launch_linter.engine",
-    "LintResult": "launch_linter.engine",
-    "lint_paths": "launch_linter.engine",
-    "lint_text": "launch_linter.engine",
-    "Diagnostic": "launch_linter.model",
-    "StaticTransform": "launch_linter.model",
-}
+_ENGINE = ("LintOptions", "LintResult", "lint_paths", "lint_text")
+_MODEL = ("Diagnostic", "StaticTransform")
 
 
 def __getattr__(name: str) -> Any:
     # The API is imported on first use, so that ``launch-linter --version`` (which reads
     # only ``__version__``) does not load the engine, the front-ends and the rules.
-    module = _LAZY.get(name)
-    if module is None:
-        raise AttributeError(f"module 'launch_linter' has no attribute {name!r}")
-    import importlib
+    if name in _ENGINE:
+        from launch_linter import engine
 
-    value = getattr(importlib.import_module(module), name)
+        value = getattr(engine, name)
+    elif name in _MODEL:
+        from launch_linter import model
+
+        value = getattr(model, name)
+    else:
+        raise AttributeError(f"module 'launch_linter' has no attribute {name!r}")
     globals()[name] = value
     return value
