@@ -253,8 +253,27 @@ class Interpreter:
     call_sites: list[ast.AST] = field(default_factory=list)
     """Calls of the file's own functions being run, outermost first."""
     lines: list[str] = field(default_factory=list)
+    scopes: list[Env] = field(default_factory=list)
+    """Every scope made, emptied at the end: a function and the scope it was defined in
+    refer to each other, a cycle that would keep the file's syntax tree alive until the
+    garbage collector finds it."""
+    deferring: bool = False
+    """Whether an ``OpaqueFunction`` will be run later, in its scopes (then they stay)."""
 
     # -- helpers -------------------------------------------------------------------------
+    def scope(self, parent: Env | None) -> Env:
+        env = Env(parent)
+        self.scopes.append(env)
+        return env
+
+    def forget_scopes(self) -> None:
+        if self.deferring:
+            return
+        for env in self.scopes:
+            env.vars.clear()
+            env.parent = None
+        self.scopes.clear()
+
     def step(self) -> None:
         self.steps += 1
         if self.steps > MAX_STEPS:
@@ -737,7 +756,7 @@ class Interpreter:
         items = self.iterate(self.eval(generator.iter, env), generator.iter)
         if isinstance(items, Unknown):
             return items
-        inner = Env(env)
+        inner = self.scope(env)
         out: list[object] = []
         for item in items:
             self.assign(generator.target, item, inner)
@@ -790,7 +809,7 @@ class Interpreter:
         if self.depth >= MAX_CALL_DEPTH:
             return self.unknown(node, f"calls nested deeper than {MAX_CALL_DEPTH}")
         spec = function.node.args
-        local = Env(function.closure)
+        local = self.scope(function.closure)
         names = [a.arg for a in (*spec.posonlyargs, *spec.args)]
         for name, value in zip(names, args, strict=False):
             local.vars[name] = value
@@ -1279,6 +1298,7 @@ class Interpreter:
             return self.deferred(function, list(extra_args), dict(extra_kwargs), resolver,
                                  node, where)
 
+        self.deferring = True
         return Deferred(where, self.condition(kwargs, node), expand)
 
     def deferred(self, function: FuncVal, args: list[object], kwargs: dict[str, object],
@@ -1503,7 +1523,14 @@ def read_python(path: str, data: bytes) -> FileRead:
 
 
 def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
-    module = Env()
+    try:
+        return _run_launch_description(interpreter, tree)
+    finally:
+        interpreter.forget_scopes()
+
+
+def _run_launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
+    module = interpreter.scope(None)
     top = Where(interpreter.path, 1, 1)
     try:
         interpreter.run_block(tree.body, module)
