@@ -244,7 +244,7 @@ def run_check(ns: argparse.Namespace) -> int:
         raise UsageError("check needs at least one PATH")
     config = load_config(ns)
     options = lint_options(ns, config)
-    result = lint_paths(ns.paths, options)
+    result = lint_paths(ns.paths, options, keep_trees=False)
     fmt = ns.format or "text"
     if fmt == "json":
         sys.stdout.write(

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
+from typing import List, Optional, Tuple  # noqa: UP035 - aliases evaluated at run time (Python 3.8)
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
@@ -44,6 +45,7 @@ class LintOptions:
 class LintResult:
     files: tuple[FileRecord, ...]
     trees: tuple[LaunchTree, ...]
+    """Empty when the run was asked not to keep them (``keep_trees=False``)."""
     diagnostics: tuple[Diagnostic, ...]
 
     @property
@@ -196,17 +198,31 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Linted = tuple[LaunchTree, FileRecord, list[Diagnostic]]
+Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]  # noqa: UP006, UP045
+"""A file's tree (None when not kept and there is no directive), record and diagnostics."""
+
+
+def _directives_only(tree: LaunchTree) -> LaunchTree | None:
+    """What suppressions need of a tree (its comments and element lines), if anything."""
+    if not tree.comments:
+        return None
+    return LaunchTree(tree.root, tree.status, (), (), tree.files, tree.comments,
+                      tree.element_lines)
 
 
 def _lint_chunk(
-    items: Sequence[InputFile], options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    items: Sequence[InputFile],
+    options: LintOptions,
+    cache: dict[tuple[str, ...], PackageIndex],
+    keep_trees: bool = True,
 ) -> list[Linted]:
     rules = selected_rules(options)
     out: list[Linted] = []
     for item in items:
         tree = load_tree(item.path, load_options_for(item, options, cache))
-        out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
+        record, found = _file_record(item, tree), check_tree(tree, rules, options)
+        # Without the trees a run's memory stays flat: each is dropped once its rules ran.
+        out.append((tree if keep_trees else _directives_only(tree), record, found))
     return out
 
 
@@ -214,11 +230,15 @@ _worker_packages: dict[tuple[str, ...], PackageIndex] = {}
 """Package indexes of one worker process, so that its chunks share each ``$(find)`` crawl."""
 
 
-def _lint_chunk_in_worker(items: Sequence[InputFile], options: LintOptions) -> list[Linted]:
-    return _lint_chunk(items, options, _worker_packages)
+def _lint_chunk_in_worker(
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool
+) -> list[Linted]:
+    return _lint_chunk(items, options, _worker_packages, keep_trees)
 
 
-def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Linted]:
+def _lint_parallel(
+    inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool
+) -> list[Linted]:
     # Imported here: the process pool (with multiprocessing and logging) costs start-up
     # time that a serial run does not need.
     from concurrent.futures import ProcessPoolExecutor
@@ -228,16 +248,22 @@ def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Li
     size = max(1, -(-len(inputs) // (options.jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
     with ProcessPoolExecutor(max_workers=min(options.jobs, len(chunks))) as pool:
-        done = pool.map(_lint_chunk_in_worker, chunks, [options] * len(chunks))
+        done = pool.map(
+            _lint_chunk_in_worker, chunks, [options] * len(chunks), [keep_trees] * len(chunks)
+        )
         return [linted for chunk in done for linted in chunk]
 
 
-def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
+def lint_files(
+    inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool = True
+) -> LintResult:
+    """Lint ``inputs``; with ``keep_trees=False`` the result has no trees (``check`` needs
+    only the records and diagnostics, and memory then stays flat with the file count)."""
     if options.jobs > 1 and len(inputs) > 1:
-        linted = _lint_parallel(inputs, options)
+        linted = _lint_parallel(inputs, options, keep_trees)
     else:
-        linted = _lint_chunk(inputs, options, {})
-    trees = tuple(tree for tree, _, _ in linted)
+        linted = _lint_chunk(inputs, options, {}, keep_trees)
+    trees = tuple(tree for tree, _, _ in linted if tree is not None)
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     for _, _, found in linted:
         for diagnostic in found:
@@ -245,12 +271,15 @@ def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
                 (diagnostic.sort_key, diagnostic.related, diagnostic.node), diagnostic
             )
     records = tuple(record for _, record, _ in linted)
-    return LintResult(records, trees, finish_diagnostics(trees, diagnostics.values(), options))
+    reported = finish_diagnostics(trees, diagnostics.values(), options)
+    return LintResult(records, trees if keep_trees else (), reported)
 
 
-def lint_paths(paths: Sequence[str], options: LintOptions | None = None) -> LintResult:
+def lint_paths(
+    paths: Sequence[str], options: LintOptions | None = None, keep_trees: bool = True
+) -> LintResult:
     """Lint files and folders; every input file appears once in ``files``."""
-    return lint_files(discover(paths), options or LintOptions())
+    return lint_files(discover(paths), options or LintOptions(), keep_trees)
 
 
 def lint_text(
