@@ -9,7 +9,7 @@ from collections.abc import Callable, Sequence
 
 from launch_linter import __version__
 from launch_linter.config import Config, ConfigError, config_for
-from launch_linter.engine import LintOptions, LintResult, lint_paths
+from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_paths
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
@@ -68,7 +68,11 @@ def _add_resolution_options(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--config", metavar="FILE", help="configuration file")
     parser.add_argument(
-        "--jobs", type=int, default=None, metavar="N", help="lint files in N processes"
+        "--jobs",
+        type=int,
+        default=None,
+        metavar="N",
+        help="lint files in N processes (default: chosen from the file count and free CPUs)",
     )
 
 
@@ -202,8 +206,10 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
     if not ignore:
         ignore = list(config.ignore or ())
     jobs = getattr(ns, "jobs", None)
-    jobs = 1 if jobs is None else jobs
-    if jobs < 1:
+    if jobs is None:
+        # check and transforms choose from the files and free CPUs (engine.auto_jobs).
+        jobs = AUTO_JOBS if ns.command in ("check", "transforms") else 1
+    elif jobs < 1:
         raise UsageError("--jobs must be at least 1")
     beliefs = BeliefSet.empty()
     if ns.command in ("check", "graph"):

@@ -23,6 +23,10 @@ from launch_linter.suppressions import (
 )
 
 MAX_DISCOVERED_FILES = 200_000
+AUTO_JOBS = 0
+FILES_PER_JOB = 300
+"""A worker must have this many files to pay for itself: a file costs about half a
+millisecond, a worker's start and the results it sends back tens of milliseconds."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -38,6 +42,7 @@ class LintOptions:
     severity: dict[str, Severity] = field(default_factory=dict)
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
     jobs: int = 1
+    """Worker processes; ``AUTO_JOBS`` (0) lets ``auto_jobs`` choose from the file count."""
     per_path_ignores: tuple[PathIgnore, ...] = ()
 
 
@@ -236,8 +241,23 @@ def _lint_chunk_in_worker(
     return _lint_chunk(items, options, _worker_packages, keep_trees)
 
 
+def auto_jobs(files: int) -> int:
+    """Workers for ``files`` files: one per ``FILES_PER_JOB`` files, at most one per CPU
+    this process may use that other work (the load average) leaves free; at least one."""
+    try:
+        cpus = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not on every platform
+        cpus = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except (AttributeError, OSError):
+        busy = 0.0
+    free = int(cpus - busy + 0.5)
+    return max(1, min(cpus, free, files // FILES_PER_JOB))
+
+
 def _lint_parallel(
-    inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool
+    inputs: Sequence[InputFile], options: LintOptions, jobs: int, keep_trees: bool
 ) -> list[Linted]:
     # Imported here: the process pool (with multiprocessing and logging) costs start-up
     # time that a serial run does not need.
@@ -245,9 +265,9 @@ def _lint_parallel(
 
     # Several chunks per worker balance uneven files; map() keeps the input order, so the
     # result is the serial one.
-    size = max(1, -(-len(inputs) // (options.jobs * 4)))
+    size = max(1, -(-len(inputs) // (jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
-    with ProcessPoolExecutor(max_workers=min(options.jobs, len(chunks))) as pool:
+    with ProcessPoolExecutor(max_workers=min(jobs, len(chunks))) as pool:
         done = pool.map(
             _lint_chunk_in_worker, chunks, [options] * len(chunks), [keep_trees] * len(chunks)
         )
@@ -259,8 +279,9 @@ def lint_files(
 ) -> LintResult:
     """Lint ``inputs``; with ``keep_trees=False`` the result has no trees (``check`` needs
     only the records and diagnostics, and memory then stays flat with the file count)."""
-    if options.jobs > 1 and len(inputs) > 1:
-        linted = _lint_parallel(inputs, options, keep_trees)
+    jobs = options.jobs if options.jobs != AUTO_JOBS else auto_jobs(len(inputs))
+    if jobs > 1 and len(inputs) > 1:
+        linted = _lint_parallel(inputs, options, jobs, keep_trees)
     else:
         linted = _lint_chunk(inputs, options, {}, keep_trees)
     trees = tuple(tree for tree, _, _ in linted if tree is not None)
