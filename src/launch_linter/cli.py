@@ -253,9 +253,8 @@ def run_check(ns: argparse.Namespace) -> int:
     result = lint_paths(ns.paths, options, keep_trees=False)
     fmt = ns.format or "text"
     if fmt == "json":
-        sys.stdout.write(
-            json_report.dumps(json_report.check_document(result, options.beliefs, __version__))
-            + "\n"
+        json_report.write(
+            json_report.check_document(result, options.beliefs, __version__), sys.stdout
         )
     elif fmt in ("sarif", "github"):
         from launch_linter.report import formats
@@ -273,7 +272,7 @@ def run_transforms(ns: argparse.Namespace) -> int:
         raise UsageError("transforms needs at least one PATH")
     result = lint_paths(ns.paths, lint_options(ns))
     if ns.format == "json":
-        sys.stdout.write(json_report.dumps(json_report.transforms_document(result)) + "\n")
+        json_report.write(json_report.transforms_document(result), sys.stdout)
     else:
         for transform in result.transforms:
             sys.stdout.write(text.format_transform(transform) + "\n")

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import Any, TextIO
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
@@ -66,5 +66,22 @@ def transforms_document(result: LintResult) -> dict[str, Any]:
     }
 
 
+def _encoder() -> json.JSONEncoder:
+    return json.JSONEncoder(indent=2, ensure_ascii=False, allow_nan=False, default=str)
+
+
 def dumps(document: dict[str, Any]) -> str:
-    return json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False, default=str)
+    return _encoder().encode(document)
+
+
+def write(document: dict[str, Any], out: TextIO) -> None:
+    """Write ``dumps(document)`` and a newline to ``out`` piece by piece: the whole text of
+    a large run (and the list of its pieces) is never held at once."""
+    batch: list[str] = []
+    for chunk in _encoder().iterencode(document):
+        batch.append(chunk)
+        if len(batch) >= 4096:
+            out.write("".join(batch))
+            batch.clear()
+    batch.append("\n")
+    out.write("".join(batch))
