@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Iterator
 from typing import Any, TextIO
 
 from launch_linter.engine import LintResult
@@ -74,14 +75,20 @@ def dumps(document: dict[str, Any]) -> str:
     return _encoder().encode(document)
 
 
-def write(document: dict[str, Any], out: TextIO) -> None:
-    """Write ``dumps(document)`` and a newline to ``out`` piece by piece: the whole text of
-    a large run (and the list of its pieces) is never held at once."""
+def pieces(document: dict[str, Any]) -> Iterator[str]:
+    """``dumps(document)`` and a newline, piece by piece: the whole text of a large run
+    (and the list of its pieces) is never held at once."""
     batch: list[str] = []
     for chunk in _encoder().iterencode(document):
         batch.append(chunk)
         if len(batch) >= 4096:
-            out.write("".join(batch))
+            yield "".join(batch)
             batch.clear()
     batch.append("\n")
-    out.write("".join(batch))
+    yield "".join(batch)
+
+
+def write(document: dict[str, Any], out: TextIO) -> None:
+    """Write ``dumps(document)`` and a newline to ``out`` (see ``pieces``)."""
+    for piece in pieces(document):
+        out.write(piece)
