@@ -16,10 +16,12 @@ from launch_linter.discovery import (
 )
 from launch_linter.fix import with_located_fixes
 from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import (
     PackageIndex,
@@ -89,6 +91,11 @@ class LintResult:
     def transforms(self) -> tuple[StaticTransform, ...]:
         return tuple(t for tree in self.trees for t in tree.transforms)
 
+    @property
+    def joints(self) -> tuple[tuple[str, RobotJoint], ...]:
+        """(root, joint) for every URDF joint a tree's robot_state_publisher publishes."""
+        return tuple((tree.root, j) for tree in self.trees for j in tree.joints)
+
 
 def _display_function(item: InputFile) -> object:
     relative = not os.path.isabs(item.display)
@@ -137,7 +144,8 @@ def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None
 
 
 def load_options_for(
-    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
+    robots: RobotCache | None = None,
 ) -> LoadOptions:
     if options.package_paths is not None:
         index = _package_index(tuple(options.package_paths), cache)
@@ -158,6 +166,7 @@ def load_options_for(
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         ros_version=ros_version_for(item.path, options, {}),
+        robots=robots,
     )
 
 
@@ -215,8 +224,8 @@ def _directives_only(tree: LaunchTree) -> LaunchTree | None:
     """What suppressions need of a tree (its comments and element lines), if anything."""
     if not tree.comments:
         return None
-    return LaunchTree(tree.root, tree.status, (), (), tree.files, tree.comments,
-                      tree.element_lines)
+    return LaunchTree(tree.root, tree.status, (), (), tree.files,
+                      comments=tree.comments, element_lines=tree.element_lines)
 
 
 def _lint_chunk(
@@ -227,8 +236,10 @@ def _lint_chunk(
 ) -> list[Linted]:
     rules = selected_rules(options)
     out: list[Linted] = []
+    # One cache per chunk: a description included by many launch files is expanded once.
+    robots = RobotCache()
     for item in items:
-        tree = load_tree(item.path, load_options_for(item, options, cache))
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
         record, found = _file_record(item, tree), check_tree(tree, rules, options)
         # Without the trees a run's memory stays flat: each is dropped once its rules ran.
         out.append((tree if keep_trees else _directives_only(tree), record, found))

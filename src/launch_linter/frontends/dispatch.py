@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import re
 
+from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.xml_safe import read_launch_bytes
@@ -74,5 +75,10 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
         # of a run over ROS 1 files only.
         from launch_linter.frontends.ros2_launch import load_ros2
 
-        return load_ros2(path, options, data)
-    return load_ros1(path, options, data)
+        tree = load_ros2(path, options, data)
+    else:
+        tree = load_ros1(path, options, data)
+    if tree.descriptions:
+        tree = attach_robot(tree, options.packages, options.robots, options.display_path,
+                            dict(options.env))
+    return tree

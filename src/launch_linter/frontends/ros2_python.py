@@ -99,6 +99,14 @@ class SubsVal:
     subs: Subs
 
 
+@dataclass(frozen=True)
+class OpenFile:
+    """``open(path)``: nothing is opened; ``.read()`` gives the file's text as the
+    ``file-content`` substitution (a robot description read from a URDF file)."""
+
+    path: Subs
+
+
 @dataclass(frozen=True, slots=True)
 class LazyStr:
     """A Python string (or path) whose value the linter computes later, from the same
@@ -190,7 +198,7 @@ class ConfigsVal:
 
 
 BUILTINS = ("str", "int", "float", "bool", "len", "list", "tuple", "dict", "range", "print",
-            "sorted", "enumerate", "zip", "min", "max", "abs", "round")
+            "sorted", "enumerate", "zip", "min", "max", "abs", "round", "open")
 
 
 def _starts_actions(node: ast.AST) -> bool:
@@ -383,6 +391,12 @@ class Interpreter:
             self.run_block(node.orelse, env)
             self.run_block(node.finalbody, env)
         elif isinstance(node, ast.With):
+            for item in node.items:
+                # ``with open(path) as f``: f.read() is the file's text, read by nobody.
+                if isinstance(item.optional_vars, ast.Name):
+                    value = self.eval(item.context_expr, env)
+                    if isinstance(value, OpenFile):
+                        env.vars[item.optional_vars.id] = value
             self.run_block(node.body, env)
         elif isinstance(node, ast.Break):
             raise _Break
@@ -619,7 +633,7 @@ class Interpreter:
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
         if isinstance(base, list | dict | str | SubsVal | LazyStr | LaunchDescriptionVal |
-                      ConfigsVal):
+                      ConfigsVal | OpenFile):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"
@@ -865,6 +879,8 @@ class Interpreter:
     def builtin(self, name: str, args: list[object], node: ast.Call) -> object:
         if name == "print":
             return None
+        if name == "open" and args and isinstance(args[0], (str, LazyStr)):
+            return OpenFile(self.subs(args[0], node, "file name"))
         if any(isinstance(a, Unknown) for a in args):
             return next(a for a in args if isinstance(a, Unknown))
         if name == "str" and len(args) == 1:
@@ -918,6 +934,8 @@ class Interpreter:
     def method(self, method: BoundMethod, args: list[object], kwargs: dict[str, object],
                node: ast.Call) -> object:
         target, name = method.target, method.name
+        if isinstance(target, OpenFile) and name == "read" and not args:
+            return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, list):
             if name == "append" and len(args) == 1:
                 self.extend(target, [args[0]])
@@ -1196,6 +1214,7 @@ class Interpreter:
             arguments=items,
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
+            parameters=self.parameters(pick("parameters"), node),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],

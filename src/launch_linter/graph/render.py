@@ -11,6 +11,7 @@ import json
 from launch_linter.graph.model import TfGraph
 
 RED = "#c62828"
+BLUE = "#1565c0"
 GREY = "#616161"
 LEFT = "\\l"
 NEWLINE = "\n"
@@ -60,10 +61,12 @@ def to_dot(graph: TfGraph) -> str:
             lines.append("  }")
     for edge in graph.edges:
         attributes = [f"label={_dot_string(NEWLINE.join(edge.label))}"]
-        if edge.conditional:
+        if edge.conditional or edge.dynamic:
             attributes.append("style=dashed")
         if edge.flagged:
             attributes.append(f'color="{RED}", fontcolor="{RED}", penwidth=2')
+        elif edge.source == "urdf":
+            attributes.append(f'color="{BLUE}", fontcolor="{BLUE}"')
         else:
             attributes.append(f'fontcolor="{GREY}"')
         if edge.tooltip:
@@ -106,13 +109,16 @@ def to_mermaid(graph: TfGraph) -> str:
         if clustered:
             lines.append("  end")
     red_links: list[int] = []
+    blue_links: list[int] = []
     for index, edge in enumerate(graph.edges):
-        arrow = "-.->" if edge.conditional else "-->"
+        arrow = "-.->" if edge.conditional or edge.dynamic else "-->"
         lines.append(
             f"  {ids[edge.parent]} {arrow}|{_mermaid_text(edge.label)}| {ids[edge.child]}"
         )
         if edge.flagged:
             red_links.append(index)
+        elif edge.source == "urdf":
+            blue_links.append(index)
     for note_index, note in enumerate(graph.notes):
         lines.append(f"  note{note_index}[{_mermaid_text([note])}]")
     lines.append(f"  classDef flagged stroke:{RED},color:{RED},stroke-width:2px")
@@ -125,6 +131,8 @@ def to_mermaid(graph: TfGraph) -> str:
         lines.append(f"  class {','.join(unresolved)} unresolved")
     if graph.notes:
         lines.append(f"  class {','.join(f'note{i}' for i in range(len(graph.notes)))} flagged")
+    if blue_links:
+        lines.append(f"  linkStyle {','.join(map(str, blue_links))} stroke:{BLUE},color:{BLUE}")
     if red_links:
         lines.append(
             f"  linkStyle {','.join(map(str, red_links))} stroke:{RED},color:{RED},stroke-width:2px"

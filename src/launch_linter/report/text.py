@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 
 _COLOURS = {Severity.ERROR: "\033[31m", Severity.WARNING: "\033[33m", Severity.INFO: "\033[36m"}
@@ -50,6 +51,23 @@ def statistics(diagnostics: Iterable[Diagnostic]) -> str:
         note = f"  [{fixable} fixable]" if fixable else ""
         lines.append(f"{count:>6}  {rule:<26} {severity}{note}")
     return "\n".join(lines) + ("\n" if lines else "")
+
+
+def format_joint(j: RobotJoint) -> str:
+    """A URDF edge in the ``transforms`` text listing: ``urdf`` and the joint type where a
+    launch transform shows its node and package."""
+    translation = f"({', '.join(f'{v:g}' for v in j.translation)})" if j.translation else "?"
+    rotation = f"rpy({', '.join(f'{v:g}' for v in j.rpy)})" if j.rpy else "?"
+    extra = [f"via {j.source.path}:{j.source.line}"]
+    if not j.condition.always:
+        extra.append(f"when {j.condition.describe()}")
+    if j.unresolved:
+        extra.append(f"unresolved: {', '.join(j.unresolved)}")
+    return (
+        f"{j.path}:{j.line}:{j.column}: urdf {j.joint_type} joint {j.name} "
+        f"{j.parent or '?'} -> {j.child or '?'} t={translation} r={rotation}"
+        f"  [{'; '.join(extra)}]"
+    )
 
 
 def format_transform(t: StaticTransform) -> str:

@@ -9,7 +9,7 @@ from launch_linter.model import Diagnostic
 Lint = Callable[..., list[tuple[str, int]]]
 LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
 
-RULE = "quaternion_w_first"
+RULE = "quaternion_order"
 NODE = """<launch>
   <node pkg="tf2_ros" type="static_transform_publisher" name="a"
         args="{}"/>
