@@ -25,10 +25,10 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from launch_linter.model.diagnostic import Diagnostic, Problem
-from launch_linter.model.launch import LaunchTree
+from launch_linter.model.launch import DIRECTIVE_MARKER, LaunchTree
 
 UNUSED_ID = "unused_suppression"
-PREFIX = "launch-linter:"
+PREFIX = DIRECTIVE_MARKER
 _DIRECTIVE = re.compile(
     r"launch-linter:\s*(?P<kind>disable-file|disable)\s*=\s*"
     r"(?P<ids>[A-Za-z0-9_.-]+(?:\s*,\s*[A-Za-z0-9_.-]+)*)(?P<rest>.*)",

@@ -31,7 +31,7 @@ from launch_linter.frontends.robot.sources import (
 from launch_linter.frontends.tokens import split_args
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     ALWAYS,
@@ -313,9 +313,9 @@ class Ros1Loader:
                 f"not well-formed XML: {exc.message}",
             ))
             return None
-        if document.comments:
+        if document.comments and holds_directive(document.comments):
             self.comments += [Comment(display, line, text) for line, text in document.comments]
-        self.element_lines += [(display, line) for line in document.element_lines]
+            self.element_lines += [(display, line) for line in document.element_lines]
         # roslaunch takes the one <launch> element of the document, wherever it is.
         launches = document.collected
         if len(launches) != 1:

@@ -53,7 +53,7 @@ from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Problem
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     DECODED_FIELDS,
@@ -219,8 +219,9 @@ class Ros2Loader:
             read = read_yaml(absolute, data)
         else:
             read = read_xml(absolute, data)
-        self.comments.extend(Comment(display, line, text) for line, text in read.comments)
-        self.element_lines.extend((display, line) for line in read.element_lines)
+        if holds_directive(read.comments):
+            self.comments.extend(Comment(display, line, text) for line, text in read.comments)
+            self.element_lines.extend((display, line) for line in read.element_lines)
         for problem in read.problems:
             self._report(problem.rule, Where(absolute, problem.line, problem.column),
                          problem.message)
