@@ -29,7 +29,6 @@ import os
 import random
 import sys
 from collections import Counter, defaultdict
-from typing import Dict, List
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EVAL = os.path.join(ROOT, "docs", "evaluation")
@@ -95,7 +94,7 @@ def main() -> int:
     ns = parser.parse_args()
 
     rows, files = findings(ns.corpus, ns.profile)
-    by_rule: Dict[str, List[dict[str, object]]] = defaultdict(list)
+    by_rule: dict[str, list[dict[str, object]]] = defaultdict(list)
     for row in rows:
         by_rule[str(row["rule"])].append(row)
     judged_keys = set()

@@ -14,6 +14,7 @@ from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
 from launch_linter.rules import RULES, RULES_BY_ID
+from launch_linter.rules._profiles import PROFILES
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
@@ -67,6 +68,19 @@ def _add_resolution_options(parser: argparse.ArgumentParser) -> None:
         help="environment variable for $(env)/$(optenv) (repeatable)",
     )
     parser.add_argument("--config", metavar="FILE", help="configuration file")
+    parser.add_argument(
+        "--profile",
+        choices=PROFILES,
+        default=None,
+        help="default, or study: the study's checks and severities (docs/severity.md)",
+    )
+    parser.add_argument(
+        "--ros-distro",
+        default=None,
+        metavar="NAME",
+        help="target ROS distribution (default: the ros-distro key, else $ROS_DISTRO, "
+        "else what the files show)",
+    )
     parser.add_argument(
         "--jobs", type=int, default=None, metavar="N", help="lint files in N processes"
     )
@@ -221,7 +235,25 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         beliefs=beliefs,
         jobs=jobs,
         per_path_ignores=config.per_path_ignores,
+        profile=getattr(ns, "profile", None) or config.profile or "default",
+        ros_distro=_ros_distro(getattr(ns, "ros_distro", None), config.ros_distro),
     )
+
+
+def _ros_distro(given: str | None, configured: str | None) -> str | None:
+    """``--ros-distro``, else the configuration key, else ``ROS_DISTRO`` from the real
+    environment (a sourced ROS setup names its distribution there); unknown names given
+    on the command line are a usage error, an unknown ``ROS_DISTRO`` is passed over."""
+    from launch_linter.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
+
+    name = normalise(given) or normalise(configured)
+    if name is not None:
+        if not is_known(name):
+            known = ", ".join((*ROS1_DISTROS, *ROS2_DISTROS))
+            raise UsageError(f"unknown ROS distribution {name!r} (known: {known})")
+        return name
+    from_env = normalise(os.environ.get("ROS_DISTRO"))
+    return from_env if from_env is not None and is_known(from_env) else None
 
 
 def _exit_status(result: LintResult, fail_on: str) -> int:
@@ -275,11 +307,17 @@ def run_transforms(ns: argparse.Namespace) -> int:
 
 
 def run_rules(ns: argparse.Namespace) -> int:
+    from launch_linter.measured import precision_text
+    from launch_linter.rules._profiles import study_severity
+
     width = max(len(r.id) for r in RULES)
     for rule in RULES:
+        study = study_severity(rule.id, rule.severity)
+        level = rule.severity.value if study is rule.severity else (
+            f"{rule.severity.value} (study: {study.value})")
         sys.stdout.write(
-            f"{rule.id:<{width}}  {rule.category.value:<12}  "
-            f"{rule.severity.value:<7}  {rule.summary}\n"
+            f"{rule.id:<{width}}  {rule.category.value:<12}  {level:<24}  "
+            f"{precision_text(rule.id):<32}  {rule.summary}\n"
         )
     return EXIT_OK
 

@@ -35,6 +35,8 @@ KEYS = (
     "env",
     "per-path-ignores",
     "fail-on",
+    "profile",
+    "ros-distro",
 )
 BELIEF_KEYWORDS = ("bundled", "study", "none")
 MAX_CONFIG_BYTES = 1024 * 1024
@@ -59,6 +61,10 @@ class Config:
     env: dict[str, str] = field(default_factory=dict)
     per_path_ignores: tuple[PathIgnore, ...] = ()
     fail_on: str | None = None
+    profile: str | None = None
+    """``default`` or ``study`` (docs/severity.md)."""
+    ros_distro: str | None = None
+    """The target ROS distribution, e.g. ``humble`` (docs/severity.md)."""
 
 
 def _categories() -> set[str]:
@@ -160,6 +166,21 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         if fail_on not in ("error", "warning", "info"):
             raise ConfigError(f"{path}: 'fail-on' must be error, warning or info")
         values["fail_on"] = fail_on
+    if "profile" in data:
+        from launch_linter.rules._profiles import PROFILES
+
+        if data["profile"] not in PROFILES:
+            raise ConfigError(f"{path}: 'profile' must be one of {', '.join(PROFILES)}")
+        values["profile"] = data["profile"]
+    if "ros-distro" in data:
+        from launch_linter.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
+
+        name = normalise(data["ros-distro"]) if isinstance(data["ros-distro"], str) else None
+        if name is None or not is_known(name):
+            raise ConfigError(
+                f"{path}: 'ros-distro' must be one of {', '.join((*ROS1_DISTROS, *ROS2_DISTROS))}"
+            )
+        values["ros_distro"] = name
     return Config(**values)
 
 

@@ -15,6 +15,7 @@ from launch_linter.model.launch import FileRecord, LaunchTree
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import PackageIndex, default_package_roots
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+from launch_linter.rules._profiles import STUDY_SEVERITY
 from launch_linter.suppressions import (
     UNUSED_ID,
     PathIgnore,
@@ -39,6 +40,10 @@ class LintOptions:
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
     jobs: int = 1
     per_path_ignores: tuple[PathIgnore, ...] = ()
+    profile: str = "default"
+    """``default`` or ``study`` (the study's checks and severities, for ``evaluate``)."""
+    ros_distro: str | None = None
+    """Target ROS distribution (lower case); None: from evidence in the files, else unknown."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -136,16 +141,31 @@ def load_options_for(
         env=options.env,
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
+        env_errors=options.profile == "study",
     )
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
     """Run ``rules`` on one tree and apply severity overrides."""
-    context = RuleContext(tree, options.beliefs)
+    context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options))
     return [_override(d, options) for rule in rules for d in rule.check(context)]
 
 
+def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:
+    """The distribution given, else Foxy when a file uses Foxy-era Node keywords, else None."""
+    if options.ros_distro:
+        return options.ros_distro
+    if any(d.rule == "ros2_removed_keyword" for d in tree.diagnostics):
+        return "foxy"
+    return None
+
+
 def _override(diagnostic: Diagnostic, options: LintOptions) -> Diagnostic:
+    if options.profile == "study":
+        study = STUDY_SEVERITY.get(diagnostic.rule)
+        rule = RULES_BY_ID.get(diagnostic.rule)
+        if study is not None and rule is not None and diagnostic.severity is rule.severity:
+            diagnostic = _with_severity(diagnostic, study)
     level = options.severity.get(diagnostic.rule)
     if level is not None and level is not diagnostic.severity:
         return _with_severity(diagnostic, level)

@@ -72,6 +72,7 @@ _SEVERITY = {
     "parse_error": (Category.LAUNCH, Severity.ERROR),
     "roslaunch_error": (Category.LAUNCH, Severity.ERROR),
     "unresolved": (Category.LAUNCH, Severity.INFO),
+    "ros2_removed_keyword": (Category.LAUNCH, Severity.ERROR),
 }
 
 
@@ -393,6 +394,11 @@ class Ros2Loader:
             return
         absolute = _locate(path, frame.filename)
         if absolute is None:
+            if path.startswith("~") and not self.options.env_errors:
+                # os.path.expanduser('~') is the launching user's home: not knowable here.
+                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                             f"it is under the user's home directory, which depends on the machine")
+                return
             self._report("roslaunch_error", action.where, f"included file not found: {path}")
             return
         if absolute in frame.chain:

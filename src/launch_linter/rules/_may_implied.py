@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import RotationKind, StaticTransform
 from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
 
 Key = tuple[str, ...] | str
@@ -50,6 +50,14 @@ def evidence(belief: Belief) -> str:
     return f"n={belief.n}, e={belief.e}, z={belief.z:.2f}"
 
 
+STRONG_Z = 2.0
+"""Below this z a belief is a hint: its findings are info (the study's profile: warning)."""
+
+
+def level(context: RuleContext, belief: Belief) -> Severity:
+    return Severity.WARNING if context.study or belief.z >= STRONG_Z else Severity.INFO
+
+
 def implications(
     context: RuleContext,
     rule_id: str,
@@ -74,7 +82,7 @@ def implications(
             for belief in index.get(key, ()):
                 if belief.consequent not in first:
                     yield diagnostic_at(
-                        rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+                        rule_id, Category.MAY_IMPLIED, level(context, belief), transform,
                         f"file has {what} {describe(key)} but not "
                         f"{describe(belief.consequent)}, which usually comes with it "
                         f"({evidence(belief)})",
@@ -103,13 +111,29 @@ def _non_null(
         key, values = key_of(transform), values_of(transform)
         if key is None or values is None:
             continue
+        if not context.study and quantity == "rotation" and _rotation_owned(transform):
+            continue
         for belief in index.get(key, ()):
             yield diagnostic_at(
-                rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+                rule_id, Category.MAY_IMPLIED, level(context, belief), transform,
                 f"{what} {describe(key)} usually has zero {quantity}, this one has "
                 f"{values} ({evidence(belief)})",
                 belief=belief,
             )
+
+
+def _rotation_owned(transform: StaticTransform) -> bool:
+    """True when another rule already reports this rotation's root cause: a quaternion tf2
+    rejects (bad_quaternion) or an angle written in degrees (rot_degrees)."""
+    from launch_linter.rules.bad_quaternion import TF2_TOLERANCE
+    from launch_linter.rules.rot_degrees import looks_like_degrees
+
+    rotation = transform.rotation
+    if rotation is None:
+        return False
+    if rotation.kind is RotationKind.QUATERNION:
+        return abs(sum(v * v for v in rotation.values) - 1.0) >= TF2_TOLERANCE
+    return any(looks_like_degrees(v) for v in rotation.values)
 
 
 def _displacement(transform: StaticTransform) -> str | None:

@@ -35,7 +35,7 @@ from launch_linter.rules._api import RuleContext, diagnostic_at
 
 ID = "leading_slash"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:

@@ -6,7 +6,11 @@ it publishes: an unknown or misspelled flag (`--yaw_deg`, `--frame_id`, `-- yaw`
 space), flags mixed with positional arguments, `--roll`/`--pitch`/`--yaw` together with
 `--qx`/`--qy`/`--qz`/`--qw`, a quaternion given in part (the missing components stay at
 0, 0, 0, 1, which leaves it not unit length), and a missing `--frame-id` or
-`--child-frame-id`. The message quotes what the program prints.
+`--child-frame-id`. The message quotes what the program prints. When the target
+distribution is Foxy or Galactic (`--ros-distro`, the `ros-distro` key or `ROS_DISTRO`),
+any flag is reported: flags arrived in tf2_ros 0.19.0 (ros2/geometry2#392), first released
+in Humble; the older program counts its arguments, prints its usage and exits with status
+2 (the `galactic` branch's `static_transform_broadcaster_program.cpp`).
 
 ## Why is this bad?
 The program stops at start-up with "Extra unparsed arguments on command-line", "Cannot
@@ -31,8 +35,11 @@ points at the node that died.
 ```
 """
 
+from __future__ import annotations
+
 from collections.abc import Iterator
 
+from launch_linter.distro import NO_FLAGS
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.rules._api import RuleContext, diagnostic_at
 
@@ -43,9 +50,23 @@ KINDS = ("unknown_flag", "mixed_styles", "rpy_and_quaternion", "partial_quaterni
          "missing_frame")
 
 
+def _uses_flags(tokens: tuple[str, ...]) -> bool:
+    return any(t.startswith("--") and t != "--ros-args" for t in tokens)
+
+
 def check(context: RuleContext) -> Iterator[Diagnostic]:
+    no_flags = context.distro in NO_FLAGS and not context.study
     for transform in context.tree.transforms:
         if "arity" in transform.unresolved:
+            continue
+        if no_flags and transform.ros_version == 2 and _uses_flags(transform.tokens):
+            distro = str(context.distro).capitalize()
+            yield diagnostic_at(
+                ID, CATEGORY, SEVERITY, transform,
+                f"flags (--frame-id ...) on {distro}: its static_transform_publisher knows "
+                f"only the positional form x y z yaw pitch roll parent child (flags arrived "
+                f"in Humble): it prints its usage and exits 2, no transform is published",
+            )
             continue
         for issue in transform.arg_issues:
             if issue.kind in KINDS:

@@ -1,20 +1,33 @@
-"""A ROS 2 static transform written with the deprecated positional arguments.
+"""A ROS 2 static transform written with positional arguments, judged for the target distribution.
 
 ## What it does
 Reports a ROS 2 `static_transform_publisher` (in a ROS 2 XML, YAML or Python launch file)
-whose arguments are the old positional form, `x y z yaw pitch roll parent child` (8) or
-`x y z qx qy qz qw parent child` (9), and gives the same transform written with flags
-(`--x --y --z`, `--yaw --pitch --roll` or `--qx --qy --qz --qw`, `--frame-id`,
-`--child-frame-id`).
+whose arguments are the positional form, `x y z yaw pitch roll parent child` (8) or
+`x y z qx qy qz qw parent child` (9), and gives the same transform written with flags.
+What it reports depends on the target distribution (`--ros-distro`, the `ros-distro`
+configuration key, the `ROS_DISTRO` environment variable, or Foxy-era `node_executable=`
+in the files):
+
+| target | the program | reported |
+|---|---|---|
+| Foxy, Galactic (and older) | knows only the positional form | nothing |
+| Humble, Iron, Jazzy, Kilted | takes it, warns "Old-style arguments are deprecated" | info |
+| Rolling | rejects it: "Frame id must not be empty", no transform | error |
+| unknown | — | info, naming the distributions |
+
+Sources: the flags were added to tf2_ros in 0.19.0 (ros2/geometry2#392, October 2021,
+after Galactic branched; the `galactic` branch's `static_transform_broadcaster_program.cpp`
+has no flags, the `humble`, `iron` and `jazzy` branches print the deprecation at line 258);
+the positional form was removed on Rolling by ros2/geometry2#790 (see
+moveit/moveit2_tutorials#1122, which quotes the resulting "Frame id must not be empty").
 
 ## Why is this bad?
-Since Galactic the program warns "Old-style arguments are deprecated" for this form, and
-recent distributions have removed it (ros2/geometry2#790): there the node stops with
-"Frame id must not be empty", and the transform is never published. The flags also say
-which number is which, where the positional order (yaw before roll, unlike URDF's `rpy`)
-is easy to get wrong.
+On Rolling the node stops and the transform is never published; on Humble to Kilted the
+program warns at every start. The flags also say which number is which, where the
+positional order (yaw before roll, unlike URDF's `rpy`) is easy to get wrong.
 
 ## Example
+Info with no target given; an error with `--ros-distro rolling`:
 ```xml
 <launch>
   <node pkg="tf2_ros" exec="static_transform_publisher" name="laser_tf"
@@ -31,18 +44,58 @@ is easy to get wrong.
 ```
 """
 
+from __future__ import annotations
+
 from collections.abc import Iterator
 
+from launch_linter.distro import NO_FLAGS, POSITIONAL_DEPRECATED, POSITIONAL_REMOVED, describe
 from launch_linter.model.diagnostic import Category, Diagnostic, Severity
 from launch_linter.rules._api import RuleContext, diagnostic_at
 
 ID = "ros2_positional_args"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
+EXAMPLE_PATH = "example.launch.xml"
+
+
+def _verdict(distro: str | None) -> tuple[Severity, str] | None:
+    if distro in NO_FLAGS:
+        return None
+    if distro in POSITIONAL_REMOVED:
+        return Severity.ERROR, (
+            f"on {distro.capitalize()} the positional form is removed (ros2/geometry2#790): "
+            "the node stops with 'Frame id must not be empty' and publishes nothing"
+        )
+    if distro in POSITIONAL_DEPRECATED:
+        return SEVERITY, (
+            f"on {distro.capitalize()} the positional form still works but warns 'Old-style "
+            "arguments are deprecated'"
+        )
+    return SEVERITY, (
+        f"positional form: the only one on Foxy and Galactic, deprecated on "
+        f"{describe(POSITIONAL_DEPRECATED)}, removed on Rolling (set --ros-distro to know)"
+    )
 
 
 def check(context: RuleContext) -> Iterator[Diagnostic]:
+    if context.study:
+        verdict: tuple[Severity, str] | None = (Severity.WARNING, "")
+    else:
+        verdict = _verdict(context.distro)
+    if verdict is None:
+        return
+    severity, why = verdict
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
             if issue.kind == "positional":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+                message = issue.message if not why else f"{why}; {_flags_part(issue.message)}"
+                yield diagnostic_at(ID, CATEGORY, severity, transform, message)
+
+
+def _flags_part(message: str) -> str:
+    """The decoder's message from its rewrite with flags on (``write it as ...``)."""
+    for marker in ("write:",):
+        at = message.find(marker)
+        if at >= 0:
+            return message[at:]
+    return message
