@@ -13,7 +13,8 @@ from __future__ import annotations
 
 ROS1_DISTROS: tuple[str, ...] = ("kinetic", "lunar", "melodic", "noetic")
 ROS2_DISTROS: tuple[str, ...] = (
-    "dashing", "eloquent", "foxy", "galactic", "humble", "iron", "jazzy", "kilted", "rolling",
+    "dashing", "eloquent", "foxy", "galactic", "humble", "iron", "jazzy", "kilted", "lyrical",
+    "rolling",
 )
 """In release order; rolling last (it is always the newest)."""
 
@@ -21,8 +22,10 @@ NO_FLAGS: tuple[str, ...] = ("dashing", "eloquent", "foxy", "galactic")
 """Distributions whose static_transform_publisher knows no flags: positional only."""
 POSITIONAL_DEPRECATED: tuple[str, ...] = ("humble", "iron", "jazzy", "kilted")
 """Positional still works, with a deprecation warning."""
-POSITIONAL_REMOVED: tuple[str, ...] = ("rolling",)
-"""Positional rejected: the node stops with 'Frame id must not be empty'."""
+POSITIONAL_REMOVED: tuple[str, ...] = ("lyrical", "rolling")
+"""Positional rejected: the node stops with 'Frame id must not be empty' (Rolling since
+ros2/geometry2#790; Lyrical branched from it: ctu-mrs/mrs_uav_managers#37 changes its
+arguments "for Lyrical compatibility")."""
 LEGACY_KEYWORDS_OK: tuple[str, ...] = ("dashing", "eloquent", "foxy")
 """Distributions whose launch_ros still takes ``node_executable=``/``node_name=``."""
 

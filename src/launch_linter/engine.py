@@ -141,7 +141,7 @@ def load_options_for(
         env=options.env,
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
-        env_errors=options.profile == "study",
+        study_errors=options.profile == "study",
     )
 
 

@@ -74,11 +74,12 @@ class LoadOptions:
     env: Mapping[str, str] = field(default_factory=dict)
     packages: PackageIndex = field(default_factory=lambda: PackageIndex([]))
     display_path: Callable[[str], str] = relative_to_cwd
-    env_errors: bool = False
-    """True: an error whose cause depends on the environment (``$(optenv)``/``$(env)`` not
-    given with ``--env``, a ``~`` path in ROS 2) is a ``roslaunch_error``, as the study
-    counted it; False (the default): an ``unresolved`` info, the robot's environment
-    decides."""
+    study_errors: bool = False
+    """True (the ``study`` profile): report as ``roslaunch_error``, as the study counted
+    them, what the default reports as ``unresolved`` info because the file alone cannot
+    decide it: an error whose cause depends on the environment (``$(optenv)``/``$(env)``
+    not given with ``--env``, a ``~`` path in ROS 2) and a Python file that is not a ROS 2
+    launch file (a test module, a script)."""
 
 
 class _AnonNames:
@@ -213,7 +214,7 @@ class Ros1Loader:
         ))
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
-        source = None if element is None or self.options.env_errors else self._env_source(
+        source = None if element is None or self.options.study_errors else self._env_source(
             element)
         if source is not None:
             self._report("unresolved", context.filename, element,

@@ -41,7 +41,7 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Where,
 )
-from launch_linter.frontends.ros2_python import read_python
+from launch_linter.frontends.ros2_python import NOT_A_LAUNCH_FILE, read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.frontends.xml_safe import read_launch_bytes
@@ -202,8 +202,10 @@ class Ros2Loader:
         self.comments.extend(Comment(display, line, text) for line, text in read.comments)
         self.element_lines.extend((display, line) for line in read.element_lines)
         for problem in read.problems:
-            self._report(problem.rule, Where(absolute, problem.line, problem.column),
-                         problem.message)
+            rule = problem.rule
+            if rule == NOT_A_LAUNCH_FILE:
+                rule = "roslaunch_error" if self.options.study_errors else "unresolved"
+            self._report(rule, Where(absolute, problem.line, problem.column), problem.message)
         return read
 
     # -- resolution --------------------------------------------------------------------
@@ -394,7 +396,7 @@ class Ros2Loader:
             return
         absolute = _locate(path, frame.filename)
         if absolute is None:
-            if path.startswith("~") and not self.options.env_errors:
+            if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
                 self._report("unresolved", action.where, f"include file {path!r} not followed: "
                              f"it is under the user's home directory, which depends on the machine")

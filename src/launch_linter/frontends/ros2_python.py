@@ -1505,6 +1505,32 @@ def read_python(path: str, data: bytes) -> FileRead:
     return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
 
 
+NOT_A_LAUNCH_FILE = "not_a_launch_file"
+"""The problem kind of a Python file that is something else than a launch file; the loader
+reports it as ``unresolved`` info (``roslaunch_error`` in the study's profile)."""
+
+
+def _other_kind_of_file(tree: ast.Module) -> str | None:
+    """What a Python file without ``generate_launch_description`` is instead, when it says
+    so: a launch_testing module, a script run as a program, or a decorated entry point."""
+    for statement in tree.body:
+        if isinstance(statement, ast.FunctionDef | ast.AsyncFunctionDef):
+            if statement.name == "generate_test_description":
+                return "a launch_testing module"
+            if statement.decorator_list:
+                return f"an entry point decorated @{_decorator_name(statement.decorator_list[0])}"
+        if isinstance(statement, ast.If) and "__main__" in ast.dump(statement.test):
+            return "a script run as a program"
+    return None
+
+
+def _decorator_name(node: ast.expr) -> str:
+    target = node.func if isinstance(node, ast.Call) else node
+    if isinstance(target, ast.Attribute):
+        return target.attr
+    return target.id if isinstance(target, ast.Name) else "…"
+
+
 def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
     module = Env()
     top = Where(interpreter.path, 1, 1)
@@ -1512,9 +1538,11 @@ def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Act
         interpreter.run_block(tree.body, module)
         found, function = module.lookup("generate_launch_description")
         if not found or not isinstance(function, FuncVal):
+            other = _other_kind_of_file(tree)
             interpreter.problems.append(Problem(
-                "roslaunch_error", 1, 1,
-                "no generate_launch_description() function: ros2 launch cannot load this file",
+                "roslaunch_error" if other is None else NOT_A_LAUNCH_FILE, 1, 1,
+                "no generate_launch_description() function: ros2 launch cannot load this file"
+                + ("" if other is None else f" ({other}, not a launch file: not read)"),
             ))
             return ()
         node = function.node

@@ -12,17 +12,19 @@ in the files):
 |---|---|---|
 | Foxy, Galactic (and older) | knows only the positional form | nothing |
 | Humble, Iron, Jazzy, Kilted | takes it, warns "Old-style arguments are deprecated" | info |
-| Rolling | rejects it: "Frame id must not be empty", no transform | error |
+| Lyrical, Rolling | rejects it: "Frame id must not be empty", no transform | error |
 | unknown | — | info, naming the distributions |
 
 Sources: the flags were added to tf2_ros in 0.19.0 (ros2/geometry2#392, October 2021,
 after Galactic branched; the `galactic` branch's `static_transform_broadcaster_program.cpp`
 has no flags, the `humble`, `iron` and `jazzy` branches print the deprecation at line 258);
 the positional form was removed on Rolling by ros2/geometry2#790 (see
-moveit/moveit2_tutorials#1122, which quotes the resulting "Frame id must not be empty").
+moveit/moveit2_tutorials#1122, which quotes the resulting "Frame id must not be empty"),
+and Lyrical branched after it (ctu-mrs/mrs_uav_managers#37 rewrites the arguments "for
+Lyrical compatibility"). See docs/severity.md.
 
 ## Why is this bad?
-On Rolling the node stops and the transform is never published; on Humble to Kilted the
+On Lyrical and Rolling the node stops and the transform is never published; on Humble to Kilted the
 program warns at every start. The flags also say which number is which, where the
 positional order (yaw before roll, unlike URDF's `rpy`) is easy to get wrong.
 
@@ -73,7 +75,7 @@ def _verdict(distro: str | None) -> tuple[Severity, str] | None:
         )
     return SEVERITY, (
         f"positional form: the only one on Foxy and Galactic, deprecated on "
-        f"{describe(POSITIONAL_DEPRECATED)}, removed on Rolling (set --ros-distro to know)"
+        f"{describe(POSITIONAL_DEPRECATED)}, removed on Lyrical and Rolling (set --ros-distro to know)"
     )
 
 
