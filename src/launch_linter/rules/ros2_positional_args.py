@@ -75,7 +75,8 @@ def _verdict(distro: str | None) -> tuple[Severity, str] | None:
         )
     return SEVERITY, (
         f"positional form: the only one on Foxy and Galactic, deprecated on "
-        f"{describe(POSITIONAL_DEPRECATED)}, removed on Lyrical and Rolling (set --ros-distro to know)"
+        f"{describe(POSITIONAL_DEPRECATED)}, removed on Lyrical and Rolling (set --ros-distro "
+        f"to know)"
     )
 
 
