@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from launch_linter.cli import main
-from launch_linter.distro import describe, is_known, normalise
+from launch_linter.model.distro import describe, is_known, normalise
 
 POSITIONAL = (
     '<launch><node pkg="tf2_ros" exec="static_transform_publisher" name="a" '

@@ -173,7 +173,7 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
             raise ConfigError(f"{path}: 'profile' must be one of {', '.join(PROFILES)}")
         values["profile"] = data["profile"]
     if "ros-distro" in data:
-        from launch_linter.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
+        from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
 
         name = normalise(data["ros-distro"]) if isinstance(data["ros-distro"], str) else None
         if name is None or not is_known(name):

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
-from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Severity
-from launch_linter.model.transform import RotationKind, StaticTransform
-from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
+from launch_linter.model.diagnostic import Belief, Severity
+from launch_linter.model.transform import Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 Key = tuple[str, ...] | str
 KeyOf = Callable[[StaticTransform], Key | None]
@@ -23,17 +23,17 @@ def signature_of(transform: StaticTransform) -> Key | None:
 
 
 def signature_unresolved(transform: StaticTransform) -> bool:
-    return "parent" in transform.unresolved or "child" in transform.unresolved
+    return transform.is_unresolved(Field.PARENT, Field.CHILD)
 
 
 def name_of(transform: StaticTransform) -> Key | None:
-    if transform.name and "name" not in transform.unresolved:
+    if transform.name and transform.knows(Field.NAME):
         return transform.name
     return None
 
 
 def name_unresolved(transform: StaticTransform) -> bool:
-    return "name" in transform.unresolved
+    return transform.is_unresolved(Field.NAME)
 
 
 def describe(key: Key | None) -> str:
@@ -54,8 +54,9 @@ STRONG_Z = 2.0
 """Below this z a belief is a hint: its findings are info (the study's profile: warning)."""
 
 
-def level(context: RuleContext, belief: Belief) -> Severity:
-    return Severity.WARNING if context.study or belief.z >= STRONG_Z else Severity.INFO
+def level(context: RuleContext, belief: Belief) -> Severity | None:
+    """Info for a weak belief; None (the rule's warning) otherwise."""
+    return None if context.study or belief.z >= STRONG_Z else Severity.INFO
 
 
 def implications(
@@ -64,7 +65,7 @@ def implications(
     key_of: KeyOf,
     unresolved: Callable[[StaticTransform], bool],
     what: str,
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """One diagnostic per file and violated belief ``A ⇒ B``: the file has A but not B,
     reported at the first transform with A."""
     index = context.beliefs.by_antecedent(rule_id)
@@ -81,12 +82,13 @@ def implications(
         for key, transform in first.items():
             for belief in index.get(key, ()):
                 if belief.consequent not in first:
-                    yield diagnostic_at(
-                        rule_id, Category.MAY_IMPLIED, level(context, belief), transform,
+                    yield finding_at(
+                        transform,
                         f"file has {what} {describe(key)} but not "
                         f"{describe(belief.consequent)}, which usually comes with it "
                         f"({evidence(belief)})",
                         belief=belief,
+                        severity=level(context, belief),
                     )
 
 
@@ -101,7 +103,7 @@ def _non_null(
     what: str,
     quantity: str,
     values_of: Callable[[StaticTransform], str | None],
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """Transforms whose key usually has a zero ``quantity`` but whose own is not zero;
     ``values_of`` gives the written values, or None when they are unknown or zero."""
     index = context.beliefs.by_antecedent(rule_id)
@@ -114,11 +116,12 @@ def _non_null(
         if not context.study and quantity == "rotation" and _rotation_owned(transform):
             continue
         for belief in index.get(key, ()):
-            yield diagnostic_at(
-                rule_id, Category.MAY_IMPLIED, level(context, belief), transform,
+            yield finding_at(
+                transform,
                 f"{what} {describe(key)} usually has zero {quantity}, this one has "
                 f"{values} ({evidence(belief)})",
                 belief=belief,
+                severity=level(context, belief),
             )
 
 
@@ -150,13 +153,13 @@ def _rotation(transform: StaticTransform) -> str | None:
 
 def null_displacements(
     context: RuleContext, rule_id: str, key_of: KeyOf, what: str
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """A transform whose key usually has zero displacement, with a non-zero one."""
     return _non_null(context, rule_id, key_of, what, "displacement", _displacement)
 
 
 def null_rotations(
     context: RuleContext, rule_id: str, key_of: KeyOf, what: str
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """A transform whose key usually has zero rotation, with a non-zero one."""
     return _non_null(context, rule_id, key_of, what, "rotation", _rotation)

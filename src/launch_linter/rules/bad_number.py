@@ -34,9 +34,9 @@ import math
 import re
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import NumberIssue, StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "bad_number"
 CATEGORY = Category.TF
@@ -89,13 +89,12 @@ def _separator_level(context: RuleContext) -> Severity:
     return Severity.WARNING if context.study else Severity.INFO
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.number_issues:
-            yield diagnostic_at(
-                ID, CATEGORY,
-                _separator_level(context) if separated_number(issue.written) else SEVERITY,
+            yield finding_at(
                 transform,
                 f"{_slot(transform, issue.index)} '{issue.written}' is not a number: "
                 f"{_effect(transform, issue)}",
+                severity=_separator_level(context) if separated_number(issue.written) else None,
             )

@@ -31,9 +31,9 @@ transformed through it; `roswtf` warns about it.
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, RotationKind, StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules.bad_number import separated_number
 
 ID = "bad_quaternion"
@@ -84,12 +84,12 @@ def _rejected_word(transform: StaticTransform) -> bool:
     )
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.QUATERNION:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         if not context.study and _rejected_word(transform):
             # One root cause, one finding: bad_number already says that a component is
@@ -99,7 +99,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         if found is None:
             continue
         severity, problem = found
-        yield diagnostic_at(
-            ID, CATEGORY, severity, transform,
+        yield finding_at(
+            transform,
             f"quaternion (qx, qy, qz, qw) = {_written(rotation.values)} {problem}",
+            severity=severity,
         )

@@ -43,12 +43,13 @@ name with another kind of node is not seen.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import (
+    Finding,
     RuleContext,
     can_coexist,
-    diagnostic_at,
+    finding_at,
     place,
     same_element,
 )
@@ -87,12 +88,12 @@ def _message(later: StaticTransform, first: StaticTransform, qualified: str) -> 
     )
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     seen: dict[str, list[StaticTransform]] = {}
     for transform in context.tree.transforms:
         qualified = transform.qualified_name
-        if qualified is None or "name" in transform.unresolved or (
-            "namespace" in transform.unresolved
+        if qualified is None or transform.is_unresolved(Field.NAME) or (
+            transform.is_unresolved(Field.NAMESPACE)
         ):
             continue
         earlier = seen.setdefault(qualified, [])
@@ -103,8 +104,8 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         # ROS 2 launch starts both nodes (it only warns), so both transforms are published:
         # a convention issue at info; the study's profile kept it at warning.
         ros2_level = Severity.WARNING if context.study else Severity.INFO
-        severity = ros2_level if transform.ros_version == 2 else SEVERITY
+        severity = ros2_level if transform.ros_version == 2 else None
         related = () if same_element(transform, first) else (first,)
-        yield diagnostic_at(
-            ID, CATEGORY, severity, transform, _message(transform, first, qualified), related
+        yield finding_at(
+            transform, _message(transform, first, qualified), related, severity=severity
         )

@@ -36,8 +36,8 @@ Nodes whose name or translation is unresolved are not judged.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._may_implied import name_of, null_displacements
 
 ID = "name_null_disp"
@@ -45,5 +45,5 @@ CATEGORY = Category.MAY_IMPLIED
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     return null_displacements(context, ID, name_of, "node")

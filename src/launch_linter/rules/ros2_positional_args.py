@@ -50,9 +50,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.distro import NO_FLAGS, POSITIONAL_DEPRECATED, POSITIONAL_REMOVED, describe
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.distro import NO_FLAGS, POSITIONAL_DEPRECATED, POSITIONAL_REMOVED, describe
+from launch_linter.model.transform import ArgIssue, ArgIssueKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ros2_positional_args"
 CATEGORY = Category.TF
@@ -80,25 +81,33 @@ def _verdict(distro: str | None) -> tuple[Severity, str] | None:
     )
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
-    if context.study:
-        verdict: tuple[Severity, str] | None = (Severity.WARNING, "")
-    else:
-        verdict = _verdict(context.distro)
+def _flags(issue: ArgIssue) -> str:
+    # ``others`` names the flag each positional word stands for.
+    count = min(len(issue.others), len(issue.words))
+    return " ".join(f"{issue.others[i]} {issue.words[i]}" for i in range(count))
+
+
+def message(issue: ArgIssue) -> str | None:
+    """The study's diagnostic for ``issue``, or None when it is another rule's kind."""
+    if issue.kind is not ArgIssueKind.POSITIONAL:
+        return None
+    return (
+        "old-style positional arguments are deprecated ('Old-style arguments are "
+        "deprecated') and recent ROS 2 distributions reject them ('Frame id must not be "
+        f"empty'); write: {_flags(issue)}"
+    )
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    verdict = (Severity.WARNING, "") if context.study else _verdict(context.distro)
     if verdict is None:
         return
     severity, why = verdict
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
-            if issue.kind == "positional":
-                message = issue.message if not why else f"{why}; {_flags_part(issue.message)}"
-                yield diagnostic_at(ID, CATEGORY, severity, transform, message)
-
-
-def _flags_part(message: str) -> str:
-    """The decoder's message from its rewrite with flags on (``write it as ...``)."""
-    for marker in ("write:",):
-        at = message.find(marker)
-        if at >= 0:
-            return message[at:]
-    return message
+            text = message(issue)
+            if text is None:
+                continue
+            if why:
+                text = f"{why}; write: {_flags(issue)}"
+            yield finding_at(transform, text, severity=None if severity is SEVERITY else severity)

@@ -43,9 +43,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import replace
 
-from launch_linter.distro import LEGACY_KEYWORDS_OK
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, frontend_diagnostics
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.distro import LEGACY_KEYWORDS_OK
+from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 
 ID = "ros2_removed_keyword"
 CATEGORY = Category.LAUNCH
@@ -54,11 +54,11 @@ EXAMPLE_PATH = "example.launch.py"
 EXAMPLE_DISTRO = "humble"
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     distro = context.distro
     if distro is None or distro in LEGACY_KEYWORDS_OK or context.study:
         return
-    for note in frontend_diagnostics(context, ID):
+    for note in frontend_findings(context, ID):
         yield replace(note, message=(
             f"Node keyword(s) {note.message} were removed after Foxy: on "
             f"{distro.capitalize()} ros2 launch refuses the whole file"

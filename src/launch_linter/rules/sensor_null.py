@@ -37,9 +37,9 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at, is_world_fixed
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at, is_world_fixed
 
 ID = "sensor_null"
 CATEGORY = Category.MAY_SEMANTIC
@@ -66,32 +66,31 @@ def _explained(transform: StaticTransform) -> bool:
     if is_world_fixed(parent):
         return True
     in_parent, in_child = sensor_words(parent), sensor_words(child)
-    in_name = sensor_words(transform.name or "") if "name" not in transform.unresolved else set()
+    in_name = sensor_words(transform.name or "") if transform.knows(Field.NAME) else set()
     if in_parent and not in_child and not (in_name - in_parent):
         return True
     return bool(in_parent & in_child)
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         if transform.null_displacement is not True or transform.null_rotation is not True:
             continue
         labels = [
             text
             for text, field in (
-                (transform.name, "name"),
-                (transform.parent, "parent"),
-                (transform.child, "child"),
+                (transform.name, Field.NAME),
+                (transform.parent, Field.PARENT),
+                (transform.child, Field.CHILD),
             )
-            if text is not None and field not in transform.unresolved
+            if text is not None and transform.knows(field)
         ]
         sensors = sorted(set().union(*(sensor_words(text) for text in labels)))
         if not sensors:
             continue
         if not context.study and _explained(transform):
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"transform '{transform.parent}' -> '{transform.child}' of a sensor "
             f"({', '.join(sensors)}) has zero displacement and zero rotation: the sensor's "
             f"mounting pose was probably never entered",

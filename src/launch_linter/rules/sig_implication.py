@@ -40,8 +40,8 @@ file whose frames depend on unresolved substitutions is not judged.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._may_implied import implications, signature_of, signature_unresolved
 
 ID = "sig_implication"
@@ -49,5 +49,5 @@ CATEGORY = Category.MAY_IMPLIED
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     return implications(context, ID, signature_of, signature_unresolved, "transform")

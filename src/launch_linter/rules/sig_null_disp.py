@@ -36,8 +36,8 @@ right. Transforms whose translation is unresolved are not judged.
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._may_implied import null_displacements, signature_of
 
 ID = "sig_null_disp"
@@ -45,5 +45,5 @@ CATEGORY = Category.MAY_IMPLIED
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     return null_displacements(context, ID, signature_of, "transform")

@@ -32,15 +32,15 @@ misspelt rule id silences nothing at all while looking as if it did.
 
 from collections.abc import Iterable
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 
 ID = "unused_suppression"
 CATEGORY = Category.LAUNCH
 SEVERITY = Severity.INFO
 
 
-def check(context: RuleContext) -> Iterable[Diagnostic]:
+def check(context: RuleContext) -> Iterable[Finding]:
     # Whether a suppression is used depends on every other rule's diagnostics, so the
     # engine reports these after all rules ran (``suppressions.apply_suppressions``).
     return ()

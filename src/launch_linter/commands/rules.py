@@ -1,0 +1,30 @@
+"""``launch-linter rules``: the table of every rule, its level and measured precision."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from launch_linter.commands.common import EXIT_OK
+from launch_linter.rules import RULES
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    subparsers.add_parser("rules", help="table of every rule").set_defaults(handler=run)
+
+
+def run(ns: argparse.Namespace) -> int:
+    """Each rule's level (and the study's, where it differs) and its measured precision."""
+    from launch_linter.measured import precision_text
+    from launch_linter.rules._profiles import study_severity
+
+    width = max(len(r.id) for r in RULES)
+    for rule in RULES:
+        study = study_severity(rule.id, rule.severity)
+        level = rule.severity.value if study is rule.severity else (
+            f"{rule.severity.value} (study: {study.value})")
+        sys.stdout.write(
+            f"{rule.id:<{width}}  {rule.category.value:<12}  {level:<24}  "
+            f"{precision_text(rule.id):<32}  {rule.summary}\n"
+        )
+    return EXIT_OK
