@@ -33,6 +33,13 @@ def test_a_param_from_the_environment(tmp_path: Path, reference: str) -> None:
         ("roslaunch_error", "error")]
 
 
+def test_a_namespace_from_the_environment(tmp_path: Path) -> None:
+    text = (f'<launch>\n  <group ns="$(optenv UAV_NAME)">\n    {STP}\n  </group>\n</launch>\n')
+    assert _rules(tmp_path, "a.launch", text) == [("unresolved", "info")]
+    assert _rules(tmp_path, "a.launch", text, env={"UAV_NAME": "uav1"}) == []
+    assert _rules(tmp_path, "a.launch", text, profile="study") == [("roslaunch_error", "error")]
+
+
 def test_an_error_without_the_environment_stays(tmp_path: Path) -> None:
     text = f'<launch>\n  <param name="e" type="int" value="abc"/>\n  {STP}\n</launch>\n'
     assert _rules(tmp_path, "a.launch", text) == [("roslaunch_error", "error")]
