@@ -41,7 +41,7 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Where,
 )
-from launch_linter.frontends.ros2_python import NOT_A_LAUNCH_FILE, read_python
+from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.diagnostic import Problem
@@ -56,6 +56,7 @@ from launch_linter.model.transform import (
     StaticTransform,
 )
 from launch_linter.resolve.ros2_substitution import (
+    Call,
     Ros2Scope,
     Subs,
     SubstitutionError,
@@ -75,6 +76,22 @@ MAX_FILES_PER_TREE = 2_000
 MAX_ACTIONS_PER_TREE = 200_000
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
+
+def _environment_names(subs: Subs, depth: int = 0) -> list[str]:
+    """The environment variables (written as literal names) that ``subs`` reads."""
+    names: list[str] = []
+    if depth > 32:
+        return names
+    for sub in subs:
+        if isinstance(sub, Call):
+            if sub.name in ("env", "optenv") and sub.args:
+                first = sub.args[0]
+                if all(isinstance(part, Text) for part in first):
+                    names.append("".join(part.text for part in first if isinstance(part, Text)))
+            for argument in sub.args:
+                names.extend(_environment_names(argument, depth + 1))
+    return names
+
 
 @dataclass(slots=True)
 class _Scope:
@@ -200,10 +217,8 @@ class Ros2Loader:
         self.comments.extend(Comment(display, line, text) for line, text in read.comments)
         self.element_lines.extend((display, line) for line in read.element_lines)
         for problem in read.problems:
-            rule = problem.rule
-            if rule == NOT_A_LAUNCH_FILE:
-                rule = "roslaunch_error" if self.options.study_errors else "unresolved"
-            self._report(rule, Where(absolute, problem.line, problem.column), problem.message)
+            self._report(problem.rule, Where(absolute, problem.line, problem.column),
+                         problem.message)
         return read
 
     # -- resolution --------------------------------------------------------------------
@@ -399,6 +414,13 @@ class Ros2Loader:
                 self._report("unresolved", action.where, f"include file {path!r} not followed: "
                              f"it is under the user's home directory, which depends on the machine")
                 return
+            variables = [v for v in _environment_names(action.path) if v not in scope.env]
+            if variables and not self.options.study_errors:
+                # os.getenv('TEST_LAUNCH_DIR', '') is set by whoever runs the file.
+                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                             f"it depends on the environment ({', '.join(variables)}; give "
+                             f"them with --env)")
+                return
             self._report("roslaunch_error", action.where, f"included file not found: {path}")
             return
         if absolute in frame.chain:
@@ -431,9 +453,9 @@ class Ros2Loader:
         self._run(read.actions, scope, inner)
 
     # -- transforms --------------------------------------------------------------------
-    def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where
-                   ) -> tuple[str, tuple[Hole, ...]]:
-        base = scope.configs.get(NAMESPACE_KEY)
+    def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where,
+                   pushed: bool = True) -> tuple[str, tuple[Hole, ...]]:
+        base = scope.configs.get(NAMESPACE_KEY) if pushed else None
         own = None if subs is None else self._resolve(subs, scope, frame, where)
         pending = (*holes(base or ()), *holes(own or ()))
         namespace = make_absolute(prefix_namespace(
@@ -458,7 +480,8 @@ class Ros2Loader:
             unresolved = frozenset(i for i, value in enumerate(values) if not is_resolved(value))
             decoded = decode_ros2(items, unresolved)
         self._emit(action.where, scope, frame, package, executable, action.name,
-                   action.namespace, decoded, values, action.args_written, action.unknown)
+                   action.namespace, decoded, values, action.args_written, action.unknown,
+                   pushed_namespace=action.pushed_namespace)
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)
@@ -490,7 +513,8 @@ class Ros2Loader:
     def _emit(self, where: Where, scope: _Scope, frame: _Frame, package: Value,
               executable: Value, name_subs: Subs | None, namespace_subs: Subs | None,
               decoded: Ros2Decoded | None, values: list[Value], args_written: str,
-              unknown: str, argv: list[str] | None = None) -> None:
+              unknown: str, argv: list[str] | None = None, pushed_namespace: bool = True
+              ) -> None:
         name_value = None if name_subs is None else self._resolve(name_subs, scope, frame, where)
         name = None if name_value is None else text_of(name_value) or None
         if name is not None and name_value is not None and is_resolved(name_value) and (
@@ -498,7 +522,8 @@ class Ros2Loader:
         ):
             self._report("roslaunch_error", where,
                          f"node name cannot contain a namespace: {name}", node=name)
-        namespace, namespace_holes = self._namespace(namespace_subs, scope, frame, where)
+        namespace, namespace_holes = self._namespace(namespace_subs, scope, frame, where,
+                                                     pushed_namespace)
         unresolved: set[Field] = set()
         if name_value is not None and not is_resolved(name_value):
             unresolved.add(Field.NAME)

@@ -22,6 +22,7 @@ from launch_linter.rules import (
     ros2_bad_flag,
     ros2_positional_args,
     ros2_removed_keyword,
+    ros2_schema,
     roslaunch_error,
     rot_degrees,
     self_transform,
@@ -65,6 +66,7 @@ RULE_MODULES = (
     ros2_removed_keyword,
     py_arguments_single_string,
     component_default_frames,
+    ros2_schema,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)
