@@ -35,12 +35,13 @@ def render() -> str:
         "sample of the corpus (data: `src/launch_linter/data/precision.json`, written by",
         "`scripts/precision.py`; see [evaluation/precision.md](evaluation/precision.md)).",
         "",
-        "| id | category | severity | study | measured precision | summary |",
-        "|---|---|---|---|---|---|",
+        "| id | category | severity | study | fix | measured precision | summary |",
+        "|---|---|---|---|---|---|---|",
     ]
     parts.extend(
         f"| [`{r.id}`](#{r.id}) | {r.category.value} | {r.severity.value} | "
-        f"{study_severity(r.id, r.severity).value} | {precision_text(r.id)} | {r.summary} |"
+        f"{study_severity(r.id, r.severity).value} | {r.fix.value if r.fix else ''} | "
+        f"{precision_text(r.id)} | {r.summary} |"
         for r in RULES
     )
     for rule in RULES:
@@ -48,8 +49,9 @@ def render() -> str:
             "",
             f"## {rule.id}",
             "",
-            f"*{rule.category.value}, {rule.severity.value}* (measured precision: "
-            f"{precision_text(rule.id)}): {rule.summary}",
+            f"*{rule.category.value}, {rule.severity.value}"
+            + (f", {rule.fix.value} fix" if rule.fix else "")
+            + f"* (measured precision: {precision_text(rule.id)}): {rule.summary}",
             "",
             _body(rule),
         ])

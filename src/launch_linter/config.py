@@ -36,6 +36,10 @@ KEYS = (
     "per-path-ignores",
     "fail-on",
     "profile",
+    "exclude",
+    "extend-exclude",
+    "respect-gitignore",
+    "ros",
     "ros-distro",
 )
 BELIEF_KEYWORDS = ("bundled", "study", "none")
@@ -63,8 +67,11 @@ class Config:
     fail_on: str | None = None
     profile: str | None = None
     """``default`` or ``study`` (docs/severity.md)."""
+    exclude: tuple[str, ...] | None = None
+    extend_exclude: tuple[str, ...] = ()
+    respect_gitignore: bool | None = None
+    ros: int | None = None
     ros_distro: str | None = None
-    """The target ROS distribution, e.g. ``humble`` (docs/severity.md)."""
 
 
 def _categories() -> set[str]:
@@ -172,6 +179,17 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         if data["profile"] not in PROFILES:
             raise ConfigError(f"{path}: 'profile' must be one of {', '.join(PROFILES)}")
         values["profile"] = data["profile"]
+    for key in ("exclude", "extend-exclude"):
+        if key in data:
+            values[key.replace("-", "_")] = _string_list(data[key], f"{path}: '{key}'")
+    if "respect-gitignore" in data:
+        if not isinstance(data["respect-gitignore"], bool):
+            raise ConfigError(f"{path}: 'respect-gitignore' must be true or false")
+        values["respect_gitignore"] = data["respect-gitignore"]
+    if "ros" in data:
+        if data["ros"] not in (1, 2) or isinstance(data["ros"], bool):
+            raise ConfigError(f"{path}: 'ros' must be 1 or 2")
+        values["ros"] = int(data["ros"])
     if "ros-distro" in data:
         from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
 

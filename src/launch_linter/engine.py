@@ -7,13 +7,28 @@ from collections.abc import Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
-from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
+from launch_linter.discovery import (
+    MAX_DISCOVERED_FILES,
+    Exclusions,
+    Ignored,
+    InputFile,
+    discover,
+)
+from launch_linter.fix import with_located_fixes
+from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
-from launch_linter.resolve.packages import PackageIndex, default_package_roots
+from launch_linter.resolve.packages import (
+    PackageIndex,
+    default_package_roots,
+    nearest_package_xml,
+    package_ros_version,
+)
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
 from launch_linter.rules._profiles import STUDY_SEVERITY
@@ -24,7 +39,17 @@ from launch_linter.suppressions import (
     ignored_by_path,
 )
 
-MAX_DISCOVERED_FILES = 200_000
+__all__ = [
+    "MAX_DISCOVERED_FILES",
+    "Exclusions",
+    "InputFile",
+    "LintOptions",
+    "LintResult",
+    "discover",
+    "lint_files",
+    "lint_paths",
+    "lint_text",
+]
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,8 +68,12 @@ class LintOptions:
     per_path_ignores: tuple[PathIgnore, ...] = ()
     profile: str = "default"
     """``default`` or ``study`` (the study's checks and severities, for ``evaluate``)."""
+    ros: int | None = None
+    """1 or 2: read every XML launch file as that ROS's (``--ros``); None: the nearest
+    ``package.xml`` decides for ``*.xml`` files, else their content."""
     ros_distro: str | None = None
-    """Target ROS distribution (lower case); None: from evidence in the files, else unknown."""
+    """Target ROS distribution (lower case), for the rules and fixes that depend on it;
+    None: from evidence in the files, else unknown."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -57,48 +86,10 @@ class LintResult:
     def transforms(self) -> tuple[StaticTransform, ...]:
         return tuple(t for tree in self.trees for t in tree.transforms)
 
-
-@dataclass(frozen=True, slots=True)
-class InputFile:
-    path: str
-    """Absolute path."""
-    display: str
-    """As the user gave it (relative stays relative)."""
-
-
-def _is_launch_xml(path: str) -> bool:
-    try:
-        with open(path, "rb") as handle:
-            head = handle.read(4096)
-    except OSError:
-        return False
-    return b"<launch" in head
-
-
-def discover(paths: Sequence[str]) -> list[InputFile]:
-    """Input files: each file named, and launch files found under each folder named."""
-    found: list[InputFile] = []
-    seen: set[str] = set()
-
-    def add(path: str, display: str) -> None:
-        absolute = os.path.abspath(path)
-        if absolute not in seen and len(found) < MAX_DISCOVERED_FILES:
-            seen.add(absolute)
-            found.append(InputFile(absolute, display))
-
-    for given in paths:
-        if os.path.isdir(given):
-            for directory, subdirs, files in os.walk(given):
-                subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
-                for name in sorted(files):
-                    full = os.path.join(directory, name)
-                    if name.endswith(LAUNCH_SUFFIXES) or (
-                        name.endswith(".xml") and _is_launch_xml(full)
-                    ):
-                        add(full, full)
-        else:
-            add(given, given)
-    return found
+    @property
+    def joints(self) -> tuple[tuple[str, RobotJoint], ...]:
+        """(root, joint) for every URDF joint a tree's robot_state_publisher publishes."""
+        return tuple((tree.root, j) for tree in self.trees for j in tree.joints)
 
 
 def _display_function(item: InputFile) -> object:
@@ -127,8 +118,29 @@ def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
     )
 
 
+PACKAGE_DECIDES_SUFFIXES = (".xml",)
+"""XML launch files whose ROS version the enclosing package decides (``*.launch.xml``,
+``*_launch.xml``, ``*.xml`` with a ``<launch>`` root). ``*.launch`` stays decided by its
+content: ROS 1 files left in migrated ament packages are common."""
+
+
+def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None]) -> int | None:
+    """``--ros`` if given; else, for ``*.xml`` files, the nearest package's build type."""
+    if options.ros is not None:
+        return options.ros
+    if not path.lower().endswith(PACKAGE_DECIDES_SUFFIXES):
+        return None
+    manifest = nearest_package_xml(path)
+    if manifest is None:
+        return None
+    if manifest not in cache:
+        cache[manifest] = package_ros_version(manifest)
+    return cache[manifest]
+
+
 def load_options_for(
-    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
+    robots: RobotCache | None = None,
 ) -> LoadOptions:
     roots = (
         tuple(options.package_paths)
@@ -143,6 +155,8 @@ def load_options_for(
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",
+        ros_version=ros_version_for(item.path, options, {}),
+        robots=robots,
     )
 
 
@@ -205,8 +219,10 @@ def _lint_chunk(
 ) -> list[Linted]:
     rules = selected_rules(options)
     out: list[Linted] = []
+    # One cache per chunk: a description included by many launch files is expanded once.
+    robots = RobotCache()
     for item in items:
-        tree = load_tree(item.path, load_options_for(item, options, cache))
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
         out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
     return out
 
@@ -235,19 +251,34 @@ def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
     else:
         linted = _lint_chunk(inputs, options, {})
     trees = tuple(tree for tree, _, _ in linted)
+    # A file linted on its own and also included by another input is reported once: the
+    # same place, rule and message found from two roots (or under two spellings of its
+    # path) is one finding.
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
+    real: dict[str, str] = {}
     for _, _, found in linted:
         for diagnostic in found:
-            diagnostics.setdefault(
-                (diagnostic.sort_key, diagnostic.related, diagnostic.node), diagnostic
-            )
+            where = real.get(diagnostic.path)
+            if where is None:
+                where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
+            key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
+            diagnostics.setdefault(key, diagnostic)
     records = tuple(record for _, record, _ in linted)
-    return LintResult(records, trees, finish_diagnostics(trees, diagnostics.values(), options))
+    finished = finish_diagnostics(trees, diagnostics.values(), options)
+    return LintResult(records, trees, with_located_fixes(finished, options.ros_distro))
 
 
-def lint_paths(paths: Sequence[str], options: LintOptions | None = None) -> LintResult:
-    """Lint files and folders; every input file appears once in ``files``."""
-    return lint_files(discover(paths), options or LintOptions())
+def lint_paths(
+    paths: Sequence[str],
+    options: LintOptions | None = None,
+    exclusions: Exclusions | None = None,
+    ignored: Ignored | None = None,
+) -> LintResult:
+    """Lint files and folders; every input file appears once in ``files``.
+
+    ``exclusions`` are the folder-walk exclusions (default: VCS and hidden folders) and
+    ``ignored`` an extra predicate on paths found in folders (the CLI's ``.gitignore``)."""
+    return lint_files(discover(paths, exclusions, ignored), options or LintOptions())
 
 
 def lint_text(
@@ -260,7 +291,11 @@ def lint_text(
     load = load_options_for(item, options, cache)
     tree = load_tree(item.path, load, text.encode("utf-8"))
     found = check_tree(tree, selected_rules(options), options)
-    diagnostics = finish_diagnostics((tree,), found, options)
+    diagnostics = with_located_fixes(
+        finish_diagnostics((tree,), found, options),
+        options.ros_distro,
+        {path: text.encode("utf-8")},
+    )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 
 

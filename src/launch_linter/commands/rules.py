@@ -21,10 +21,10 @@ def run(ns: argparse.Namespace) -> int:
     width = max(len(r.id) for r in RULES)
     for rule in RULES:
         study = study_severity(rule.id, rule.severity)
-        level = rule.severity.value if study is rule.severity else (
-            f"{rule.severity.value} (study: {study.value})")
+        fix = rule.fix.value if rule.fix else "-"
         sys.stdout.write(
-            f"{rule.id:<{width}}  {rule.category.value:<12}  {level:<24}  "
-            f"{precision_text(rule.id):<32}  {rule.summary}\n"
+            f"{rule.id:<{width}}  {rule.category.value:<12}  {rule.severity.value:<7}  "
+            f"{fix:<6}  study={study.value:<7}  {precision_text(rule.id):<32}  "
+            f"{rule.summary}\n"
         )
     return EXIT_OK

@@ -22,6 +22,13 @@ import shlex
 from dataclasses import dataclass, field
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.robot.sources import (
+    FRAME_NODE_PACKAGES,
+    FRAME_PARAMS,
+    from_file_value,
+    from_ros2_value,
+    is_description_name,
+)
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
     Action,
@@ -46,6 +53,7 @@ from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     DECODED_FIELDS,
     ArgForm,
@@ -157,6 +165,8 @@ class Ros2Loader:
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
+        self.descriptions: list[DescriptionSource] = []
+        self.nodes: list[NodeRecord] = []
         self.budget = _Budget()
         self.root_display = ""
 
@@ -202,6 +212,8 @@ class Ros2Loader:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
+            descriptions=tuple(self.descriptions),
+            nodes=tuple(self.nodes),
         )
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:
@@ -468,6 +480,9 @@ class Ros2Loader:
             return
         package = self._resolve(action.package, scope, frame, action.where)
         executable = self._resolve(action.executable, scope, frame, action.where)
+        package_text = resolved_text(package)
+        if package_text in FRAME_NODE_PACKAGES:
+            self._frame_node(action, scope, frame, package_text, resolved_text(executable))
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return
@@ -482,6 +497,50 @@ class Ros2Loader:
         self._emit(action.where, scope, frame, package, executable, action.name,
                    action.namespace, decoded, values, action.args_written, action.unknown,
                    pushed_namespace=action.pushed_namespace)
+
+    def _frame_node(self, action: RunNode, scope: _Scope, frame: _Frame, package: str,
+                    executable: str | None) -> None:
+        """Keep a node that tf rules need, with its frame parameters and, for
+        robot_state_publisher, its ``robot_description``."""
+        where = action.where
+        name_value = (None if action.name is None
+                      else self._resolve(action.name, scope, frame, where))
+        name = None if name_value is None else resolved_text(name_value)
+        params: list[tuple[str, str]] = []
+        for group in action.parameters:
+            if not isinstance(group, Params):
+                continue
+            for key, subs in group.items:
+                short = key.rsplit(".", 1)[-1]
+                if is_description_name(short):
+                    self._ros2_description(subs, scope, frame, where, name)
+                elif short in FRAME_PARAMS:
+                    text = resolved_text(self._resolve(subs, scope, frame, where))
+                    params.append((short, UNKNOWN_VALUE if text is None else text))
+        self.nodes.append(NodeRecord(
+            self._display(frame.filename), where.line, where.column, package,
+            executable or "", name, tuple(params), frame.condition,
+        ))
+
+    def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
+                          node: str | None) -> None:
+        command = None
+        for sub in subs:
+            if isinstance(sub, Call) and sub.name == "command" and sub.args:
+                command = self._resolve(sub.args[0], scope, frame, where)
+                break
+            if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
+                # open(path).read() or $(file-content path): a URDF file read as it is.
+                path = self._resolve(sub.args[0], scope, frame, where)
+                self.descriptions.append(from_file_value(
+                    path, self._display(frame.filename), where.line, where.column,
+                    frame.condition, node, os.path.dirname(frame.filename)))
+                return
+        value = self._resolve(subs, scope, frame, where) if command is None else ()
+        source = from_ros2_value(value, command, self._display(frame.filename), where.line,
+                                 where.column, frame.condition, node)
+        if source is not None:
+            self.descriptions.append(source)
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)

@@ -105,6 +105,14 @@ class SubsVal:
     subs: Subs
 
 
+@dataclass(frozen=True)
+class OpenFile:
+    """``open(path)``: nothing is opened; ``.read()`` gives the file's text as the
+    ``file-content`` substitution (a robot description read from a URDF file)."""
+
+    path: Subs
+
+
 @dataclass(frozen=True, slots=True)
 class LazyStr:
     """A Python string (or path) whose value the linter computes later, from the same
@@ -196,7 +204,15 @@ class ConfigsVal:
 
 
 BUILTINS = ("str", "int", "float", "bool", "len", "list", "tuple", "dict", "range", "print",
-            "sorted", "enumerate", "zip", "min", "max", "abs", "round")
+            "sorted", "enumerate", "zip", "min", "max", "abs", "round", "open")
+
+
+def _starts_actions(node: ast.AST) -> bool:
+    """Whether a function's body calls a launch action class (a ``Node``, ...)."""
+    return any(
+        isinstance(inner, ast.Call) and _called_name(inner.func) in ACTION_NAMES
+        for inner in ast.walk(node)
+    )
 
 
 class Env:
@@ -362,6 +378,12 @@ class Interpreter:
             self.run_block(node.orelse, env)
             self.run_block(node.finalbody, env)
         elif isinstance(node, ast.With):
+            for item in node.items:
+                # ``with open(path) as f``: f.read() is the file's text, read by nobody.
+                if isinstance(item.optional_vars, ast.Name):
+                    value = self.eval(item.context_expr, env)
+                    if isinstance(value, OpenFile):
+                        env.vars[item.optional_vars.id] = value
             self.run_block(node.body, env)
         elif isinstance(node, ast.Break):
             raise _Break
@@ -598,7 +620,7 @@ class Interpreter:
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
         if isinstance(base, list | dict | str | SubsVal | LazyStr | LaunchDescriptionVal |
-                      ConfigsVal):
+                      ConfigsVal | OpenFile):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"
@@ -844,6 +866,8 @@ class Interpreter:
     def builtin(self, name: str, args: list[object], node: ast.Call) -> object:
         if name == "print":
             return None
+        if name == "open" and args and isinstance(args[0], (str, LazyStr)):
+            return OpenFile(self.subs(args[0], node, "file name"))
         if any(isinstance(a, Unknown) for a in args):
             return next(a for a in args if isinstance(a, Unknown))
         if name == "str" and len(args) == 1:
@@ -897,6 +921,8 @@ class Interpreter:
     def method(self, method: BoundMethod, args: list[object], kwargs: dict[str, object],
                node: ast.Call) -> object:
         target, name = method.target, method.name
+        if isinstance(target, OpenFile) and name == "read" and not args:
+            return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, list):
             if name == "append" and len(args) == 1:
                 self.extend(target, [args[0]])
@@ -1181,6 +1207,7 @@ class Interpreter:
             arguments=items,
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
+            parameters=self.parameters(pick("parameters"), node),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
@@ -1333,15 +1360,30 @@ class Interpreter:
                  resolver: Callable[[Subs], Value], node: ast.Call, where: Where
                  ) -> Sequence[Action]:
         self.steps = 0
+        # The file's problems were handed over when it was read; what the function's body
+        # meets now (a loop over an unknown value, ...) is reported through the actions.
+        recorded = len(self.problems)
         try:
             result = self.call_function(function, [ContextVal(resolver), *args],
                                         {str(k): v for k, v in kwargs.items()}, node)
         except (_OutOfSteps, RecursionError):
             return (Unfollowed(where, f"line {node.lineno}: OpaqueFunction too complex to "
                                       f"follow"),)
-        if result is None:
-            return ()
-        return self.actions(result, node)
+        finally:
+            met = self.problems[recorded:]
+            del self.problems[recorded:]
+        name = getattr(function.node, "name", "<lambda>")
+        notes = tuple(
+            Unfollowed(Where(self.path, p.line, p.column),
+                       f"in OpaqueFunction {name}(): {p.message}")
+            for p in met
+        )
+        found = self.actions(result, node) if result is not None else ()
+        if not found and not notes and _starts_actions(function.node):
+            notes = (Unfollowed(where, f"line {node.lineno}: OpaqueFunction "
+                                       f"{name}() builds launch actions but "
+                                       f"returns none the linter can follow"),)
+        return (*notes, *found)
 
     launch_LaunchConfiguration = _substitution("var", 2)
     launch_EnvironmentVariable = _substitution("env", 2)

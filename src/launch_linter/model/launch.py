@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 from launch_linter.model.diagnostic import Problem
+from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.model.transform import StaticTransform
 
 
@@ -45,3 +46,9 @@ class LaunchTree:
     files: tuple[str, ...]
     comments: tuple[Comment, ...] = ()
     element_lines: tuple[tuple[str, int], ...] = ()
+    descriptions: tuple[DescriptionSource, ...] = ()
+    """The ``robot_description`` sources the launch files give."""
+    nodes: tuple[NodeRecord, ...] = ()
+    """Launched nodes that tf rules need (robot_state_publisher, localization, odometry)."""
+    joints: tuple[RobotJoint, ...] = ()
+    """URDF joints of the descriptions a robot_state_publisher of the tree publishes."""
