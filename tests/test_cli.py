@@ -16,7 +16,7 @@ TEXT_LINE = re.compile(
     r"(?P<severity>error|warning|info): (?P<message>.+) \[(?P<rule>[a-z_]+)\]$"
 )
 
-# error (bad_arity) on line 3, warning (leading_slash) on line 5.
+# error (bad_arity) on line 3, info (leading_slash) on line 5.
 MIXED = """<launch>
   <node pkg="tf2_ros" type="static_transform_publisher" name="a"
         args="0 0 0.2 0 0 0 base_link laser 100"/>
@@ -24,9 +24,10 @@ MIXED = """<launch>
         args="0.1 0 0.2 0 0 0 base_link /camera 100"/>
 </launch>
 """
+# warning (rot_degrees: a yaw of 90 reads as radians)
 WARNING_ONLY = """<launch>
   <node pkg="tf" type="static_transform_publisher" name="b"
-        args="0.1 0 0.2 0 0 0 base_link /camera 100"/>
+        args="0.1 0 0.2 90 0 0 base_link camera 100"/>
 </launch>
 """
 INFO_ONLY = """<launch>
@@ -70,10 +71,10 @@ def test_text_format(workdir: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert all(parsed), lines
     assert [(m["path"], m["line"], m["column"], m["severity"], m["rule"]) for m in parsed if m] == [
         ("mixed.launch", "2", "3", "error", "bad_arity"),
-        ("mixed.launch", "4", "3", "warning", "leading_slash"),
+        ("mixed.launch", "4", "3", "info", "leading_slash"),
     ]
     assert "\033[" not in out
-    assert "1 error(s), 1 warning(s)" in err
+    assert "1 error(s), 0 warning(s), 1 info" in err
 
 
 def test_colour_on_request(workdir: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -20,7 +20,7 @@ def launch(*nodes: tuple[str, str]) -> str:
     return f"<launch>\n{body}\n</launch>\n"
 
 
-# self_transform (error) on line 2, leading_slash (warning) on line 3
+# self_transform (error) on line 2, leading_slash (info) on line 3
 ROBOT = launch(("a", "0 0 0 0 0 0 base_link base_link"), ("b", "0 0 1 0 0 0 map /odom"))
 
 
@@ -43,7 +43,7 @@ def check(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, list[tup
     return status, [(d["rule"], d["severity"]) for d in document["diagnostics"]], err
 
 
-BOTH = [("self_transform", "error"), ("leading_slash", "warning")]
+BOTH = [("self_transform", "error"), ("leading_slash", "info")]
 
 
 def test_no_config_file(project: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -65,7 +65,7 @@ def test_pyproject_table(project: Path, capsys: pytest.CaptureFixture[str]) -> N
     (project / "pyproject.toml").write_text(
         '[project]\nname = "x"\n\n[tool.launch-linter]\nselect = ["tf"]\nbeliefs = "none"\n'
     )
-    assert check(capsys, "launch")[1] == [("leading_slash", "warning")]
+    assert check(capsys, "launch")[1] == [("leading_slash", "info")]
 
 
 def test_pyproject_without_the_table_is_passed_over(project: Path) -> None:
@@ -95,9 +95,9 @@ def test_command_line_overrides_the_file(project: Path, capsys: pytest.CaptureFi
     )
     assert check(capsys, "launch")[:2] == (1, [("self_transform", "error")])
     assert check(capsys, "--ignore", "self_transform", "launch")[:2] == (
-        0, [("leading_slash", "warning")]
+        0, [("leading_slash", "info")]
     )
-    assert check(capsys, "--ignore", "self_transform", "--fail-on", "warning", "launch")[0] == 1
+    assert check(capsys, "--ignore", "self_transform", "--fail-on", "info", "launch")[0] == 1
 
 
 def test_file_fail_on_applies(project: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -217,7 +217,8 @@ def test_the_legend_shows_only_what_the_picture_has(
     dot = capsys.readouterr().out
     assert "red:" not in dot and "dashed:" not in dot and "dotted:" not in dot
     flagged = tmp_path / "flagged.launch"
-    flagged.write_text(clean.read_text().replace("base_link", "/base_link"))
+    # A warning-level finding (rot_degrees: a yaw of 90 read as radians).
+    flagged.write_text(clean.read_text().replace("0 0 0 0 0 0 base_link", "0 0 0 90 0 0 base_link"))
     assert main(["graph", "--beliefs", "none", str(flagged)]) == 0
     dot = capsys.readouterr().out
     assert "red: errors or warnings" in dot and "dashed:" not in dot

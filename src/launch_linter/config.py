@@ -36,6 +36,7 @@ KEYS = (
     "env",
     "per-path-ignores",
     "fail-on",
+    "profile",
     "exclude",
     "extend-exclude",
     "respect-gitignore",
@@ -65,6 +66,8 @@ class Config:
     env: dict[str, str] = field(default_factory=dict)
     per_path_ignores: tuple[PathIgnore, ...] = ()
     fail_on: str | None = None
+    profile: str | None = None
+    """``default`` or ``study`` (docs/severity.md)."""
     exclude: tuple[str, ...] | None = None
     extend_exclude: tuple[str, ...] = ()
     respect_gitignore: bool | None = None
@@ -172,6 +175,12 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         if fail_on not in ("error", "warning", "info"):
             raise ConfigError(f"{path}: 'fail-on' must be error, warning or info")
         values["fail_on"] = fail_on
+    if "profile" in data:
+        from launch_linter.rules._profiles import PROFILES
+
+        if data["profile"] not in PROFILES:
+            raise ConfigError(f"{path}: 'profile' must be one of {', '.join(PROFILES)}")
+        values["profile"] = data["profile"]
     for key in ("exclude", "extend-exclude"):
         if key in data:
             values[key.replace("-", "_")] = _string_list(data[key], f"{path}: '{key}'")
@@ -184,10 +193,14 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
             raise ConfigError(f"{path}: 'ros' must be 1 or 2")
         values["ros"] = int(data["ros"])
     if "ros-distro" in data:
-        distro = data["ros-distro"]
-        if not isinstance(distro, str) or not distro.isalpha():
-            raise ConfigError(f"{path}: 'ros-distro' must be a distribution name, e.g. 'humble'")
-        values["ros_distro"] = distro.lower()
+        from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
+
+        name = normalise(data["ros-distro"]) if isinstance(data["ros-distro"], str) else None
+        if name is None or not is_known(name):
+            raise ConfigError(
+                f"{path}: 'ros-distro' must be one of {', '.join((*ROS1_DISTROS, *ROS2_DISTROS))}"
+            )
+        values["ros_distro"] = name
     return Config(**values)
 
 

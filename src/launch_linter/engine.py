@@ -32,6 +32,7 @@ from launch_linter.resolve.packages import (
 )
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
+from launch_linter.rules._profiles import STUDY_SEVERITY
 from launch_linter.suppressions import (
     UNUSED_ID,
     PathIgnore,
@@ -74,11 +75,14 @@ class LintOptions:
     jobs: int = 1
     """Worker processes; ``AUTO_JOBS`` (0) lets ``auto_jobs`` choose from the file count."""
     per_path_ignores: tuple[PathIgnore, ...] = ()
+    profile: str = "default"
+    """``default`` or ``study`` (the study's checks and severities, for ``evaluate``)."""
     ros: int | None = None
     """1 or 2: read every XML launch file as that ROS's (``--ros``); None: the nearest
     ``package.xml`` decides for ``*.xml`` files, else their content."""
     ros_distro: str | None = None
-    """The target distribution (``--ros-distro``), for fixes that depend on it."""
+    """Target ROS distribution (lower case), for the rules and fixes that depend on it;
+    None: from evidence in the files, else unknown."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -166,6 +170,7 @@ def load_options_for(
         env=options.env,
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
+        study_errors=options.profile == "study",
         ros_version=ros_version_for(item.path, options, {}),
         robots=robots,
     )
@@ -181,14 +186,27 @@ def _package_index(
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
     """Run ``rules`` on one tree; each finding becomes a diagnostic stamped by its rule."""
-    context = RuleContext(tree, options.beliefs)
+    context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options))
     return [_stamp(rule, f, options) for rule in rules for f in rule.check(context)]
+
+
+def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:
+    """The distribution given, else Foxy when a file uses Foxy-era Node keywords, else None."""
+    if options.ros_distro:
+        return options.ros_distro
+    if any(p.rule == "ros2_removed_keyword" for p in tree.problems):
+        return "foxy"
+    return None
 
 
 def _stamp(rule: Rule, finding: Finding, options: LintOptions) -> Diagnostic:
     # The one place where a rule's id, category and severity meet its findings, and where
-    # the configuration's and command line's severity overrides apply.
-    return rule.diagnostic(finding, options.severity.get(rule.id))
+    # the configuration's and command line's severity overrides apply. The study profile
+    # gives a finding at the rule's default level the study's level for that rule.
+    override = options.severity.get(rule.id)
+    if override is None and options.profile == "study" and finding.severity is None:
+        override = STUDY_SEVERITY.get(rule.id)
+    return rule.diagnostic(finding, override)
 
 
 def _file_record(item: InputFile, tree: LaunchTree) -> FileRecord:

@@ -70,7 +70,7 @@ def test_a_hostile_beliefs_file_name_cannot_inject_either(
     name = "b'e\"l{{ x }}\n{% if %}\\\"\"\"é #.json"
     path = tmp_path / name
     document = {"format": BELIEF_FORMAT, "p0": 0.9, "beliefs": [
-        {"class": "name_null_rot", "if": "a", "n": 10, "e": 10, "z": 1.05},
+        {"class": "name_null_rot", "if": "a", "n": 10, "e": 10, "z": 2.05},
     ]}
     path.write_text(json.dumps(document), encoding="utf-8")
     generated = generate(str(path), 1.0)

@@ -83,8 +83,9 @@ def test_mined_beliefs_drive_check(db: Path, tmp_path: Path,
     assert main(["beliefs", "--db", str(db), "-o", str(beliefs)]) == 0
     target = tmp_path / "robot.launch"
     target.write_text(launch(node("mo", "1 0 0 0 0 0 map odom 100")))
+    # These beliefs have z < 2: reported at info by default, so fail on info.
     status = main(["check", str(target), "--beliefs", str(beliefs), "--format", "json",
-                   "--select", "may_implied"])
+                   "--select", "may_implied", "--fail-on", "info"])
     document = json.loads(capsys.readouterr().out)
     assert status == 1
     found = {(d["rule"], json.dumps(d["belief"]["if"])) for d in document["diagnostics"]}

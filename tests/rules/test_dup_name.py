@@ -127,7 +127,7 @@ def test_same_file_included_twice_in_one_namespace(lint_tree: LintTree) -> None:
     assert "included twice" in found.message
 
 
-def test_ros2_duplicate_is_a_warning(lint_diagnostics: LintDiagnostics) -> None:
+def test_ros2_duplicate_is_info(lint_diagnostics: LintDiagnostics) -> None:
     xml = "\n".join([
         "<launch>",
         node("tf", "0 0 0 0 0 0 a b"),
@@ -144,8 +144,11 @@ def test_ros2_duplicate_is_a_warning(lint_diagnostics: LintDiagnostics) -> None:
         tree.root, tree.status,
         tuple(replace(t, ros_version=2) for t in tree.transforms), (), tree.files,
     )
+    # ROS 2 launch starts both nodes: info by default, the study's warning in its profile.
     (found,) = RULES_BY_ID[RULE].check(RuleContext(ros2))
-    assert found.severity is Severity.WARNING
+    assert found.severity is Severity.INFO
+    (study,) = RULES_BY_ID[RULE].check(RuleContext(ros2, profile="study"))
+    assert study.severity is Severity.WARNING
     assert "ROS 2" in found.message and "refuses" not in found.message
 
 

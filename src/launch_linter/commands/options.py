@@ -14,6 +14,7 @@ from launch_linter.config import Config, ConfigError, check_rule_ids, config_for
 from launch_linter.discovery import Exclusions, Ignored
 from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_paths, lint_text
 from launch_linter.model.beliefs import BeliefSet
+from launch_linter.rules._profiles import PROFILES
 
 
 def split_ids(values: list[str] | None) -> list[str]:
@@ -63,6 +64,19 @@ def add_resolution_options(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--config", metavar="FILE", help="configuration file")
     parser.add_argument(
+        "--profile",
+        choices=PROFILES,
+        default=None,
+        help="default, or study: the study's checks and severities (docs/severity.md)",
+    )
+    parser.add_argument(
+        "--ros-distro",
+        default=None,
+        metavar="NAME",
+        help="target ROS distribution, for the rules and fixes that depend on it (default: "
+        "the ros-distro key, else $ROS_DISTRO, else what the files show)",
+    )
+    parser.add_argument(
         "--jobs",
         type=int,
         default=None,
@@ -100,12 +114,6 @@ def add_discovery_options(parser: argparse.ArgumentParser) -> None:
         choices=(1, 2),
         default=None,
         help="read XML launch files as this ROS's (default: the package.xml, then content)",
-    )
-    parser.add_argument(
-        "--ros-distro",
-        default=None,
-        metavar="NAME",
-        help="the target ROS 2 distribution (e.g. humble), for fixes that depend on it",
     )
     parser.add_argument(
         "--stdin-filename",
@@ -179,9 +187,26 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         beliefs=beliefs,
         jobs=jobs,
         per_path_ignores=config.per_path_ignores,
+        profile=getattr(ns, "profile", None) or config.profile or "default",
         ros=ns.ros if getattr(ns, "ros", None) is not None else config.ros,
-        ros_distro=(getattr(ns, "ros_distro", None) or config.ros_distro or "").lower() or None,
+        ros_distro=ros_distro(getattr(ns, "ros_distro", None), config.ros_distro),
     )
+
+
+def ros_distro(given: str | None, configured: str | None) -> str | None:
+    """``--ros-distro``, else the configuration key, else ``ROS_DISTRO`` from the real
+    environment (a sourced ROS setup names its distribution there); an unknown name on
+    the command line is a usage error, an unknown ``ROS_DISTRO`` is passed over."""
+    from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
+
+    name = normalise(given) or normalise(configured)
+    if name is not None:
+        if not is_known(name):
+            known = ", ".join((*ROS1_DISTROS, *ROS2_DISTROS))
+            raise UsageError(f"unknown ROS distribution {name!r} (known: {known})")
+        return name
+    from_env = normalise(os.environ.get("ROS_DISTRO"))
+    return from_env if from_env is not None and is_known(from_env) else None
 
 
 def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, Ignored | None]:

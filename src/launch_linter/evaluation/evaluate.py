@@ -28,9 +28,12 @@ from launch_linter.mining.ingest import MANIFEST, CorpusEntry, CorpusError, read
 from launch_linter.mining.store import Store, StoredVersion, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES, BeliefSet
 from launch_linter.resolve.xml_safe import read_launch_bytes
-from launch_linter.rules import RULES
+from launch_linter.rules import rules_for_profile
 
 OUTPUTS = ("table.md", "table.csv", "rules.png", "history.md")
+
+STUDY = "study"
+"""Table IV reproduces the study: its checks and severities (docs/severity.md)."""
 
 
 class EvaluationError(Exception):
@@ -173,7 +176,8 @@ def evaluate(db: str, min_z: float, beliefs_spec: str | None = None) -> Evaluati
             raise EvaluationError(str(exc)) from None
     entries, kind, root = _corpus_entries(meta.get("corpus", ""))
     heads = _manifest_head_paths(root) if kind == "manifest" else {}
-    linted, skipped = lint_versions(stored, entries, heads, LintOptions(beliefs=beliefs))
+    options = LintOptions(beliefs=beliefs, profile=STUDY)
+    linted, skipped = lint_versions(stored, entries, heads, options)
     evaluated = [i for i in linted if i.version.latest and not i.version.mature]
     scope = Scope(
         corpus=meta.get("corpus", ""),
@@ -186,8 +190,9 @@ def evaluate(db: str, min_z: float, beliefs_spec: str | None = None) -> Evaluati
         not_linted=tuple(skipped),
         strongest=max((b.z for b in every), default=None),
     )
-    history = follow_history(linted, [r.id for r in RULES if is_fault_rule(r)])
-    return Evaluation(scope, fault_table(evaluated, RULES), history)
+    rules = rules_for_profile(STUDY)
+    history = follow_history(linted, [r.id for r in rules if is_fault_rule(r)])
+    return Evaluation(scope, fault_table(evaluated, rules), history)
 
 
 def _belief_counts(beliefs: BeliefSet) -> str:

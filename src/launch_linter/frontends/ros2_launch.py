@@ -86,6 +86,22 @@ MAX_ACTIONS_PER_TREE = 200_000
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
 
+def _environment_names(subs: Subs, depth: int = 0) -> list[str]:
+    """The environment variables (written as literal names) that ``subs`` reads."""
+    names: list[str] = []
+    if depth > 32:
+        return names
+    for sub in subs:
+        if isinstance(sub, Call):
+            if sub.name in ("env", "optenv") and sub.args:
+                first = sub.args[0]
+                if all(isinstance(part, Text) for part in first):
+                    names.append("".join(part.text for part in first if isinstance(part, Text)))
+            for argument in sub.args:
+                names.extend(_environment_names(argument, depth + 1))
+    return names
+
+
 @dataclass(slots=True)
 class _Scope:
     """Launch configurations and environment, shared by everything that runs in it."""
@@ -418,6 +434,18 @@ class Ros2Loader:
             return
         absolute = _locate(path, frame.filename)
         if absolute is None:
+            if path.startswith("~") and not self.options.study_errors:
+                # os.path.expanduser('~') is the launching user's home: not knowable here.
+                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                             f"it is under the user's home directory, which depends on the machine")
+                return
+            variables = [v for v in _environment_names(action.path) if v not in scope.env]
+            if variables and not self.options.study_errors:
+                # os.getenv('TEST_LAUNCH_DIR', '') is set by whoever runs the file.
+                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                             f"it depends on the environment ({', '.join(variables)}; give "
+                             f"them with --env)")
+                return
             self._report("roslaunch_error", action.where, f"included file not found: {path}")
             return
         if absolute in frame.chain:

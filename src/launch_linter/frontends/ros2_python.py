@@ -73,6 +73,13 @@ ACTION_NAMES = frozenset({
     "ComposableNode", "GroupAction", "OpaqueFunction", "TimerAction", "LaunchDescription",
 })
 
+_LEGACY_NODE_KEYWORDS = {
+    "node_executable": "executable",
+    "node_name": "name",
+    "node_namespace": "namespace",
+}
+"""launch_ros ``Node`` keywords of Foxy and before, and what replaced them."""
+
 
 # -- values -----------------------------------------------------------------------------
 
@@ -1204,6 +1211,12 @@ class Interpreter:
                 if isinstance(arguments, str):
                     self.problem("roslaunch_error", node, "arguments is one string, not a "
                                  "list: launch passes each of its characters as an argument")
+        legacy = [k for k in _LEGACY_NODE_KEYWORDS if k in kwargs]
+        if legacy:
+            # Kept as a note: evidence of a Foxy target, an error on later distributions
+            # (the rule ros2_removed_keyword decides with the target distribution).
+            self.problem("ros2_removed_keyword", node, ", ".join(
+                f"{k}= (now {_LEGACY_NODE_KEYWORDS[k]}=)" for k in legacy))
         executable = pick("executable", "node_executable")
         return RunNode(
             where=self.where(node),

@@ -31,6 +31,7 @@ EXCLUDED = (
     "launch_linter.evaluation",
     "launch_linter.generate",
     "launch_linter.graph",
+    "launch_linter.measured",
     "launch_linter.mining",
 )
 """Edges reached only from commands other than ``check``."""

@@ -26,6 +26,7 @@ from launch_linter.rules import (
     reversed_name,
     ros2_bad_flag,
     ros2_positional_args,
+    ros2_removed_keyword,
     ros2_schema,
     roslaunch_error,
     rot_degrees,
@@ -67,6 +68,7 @@ RULE_MODULES = (
     unused_suppression,
     ros2_positional_args,
     ros2_bad_flag,
+    ros2_removed_keyword,
     py_arguments_single_string,
     component_default_frames,
     conflicting_transform,
@@ -80,4 +82,20 @@ RULE_MODULES = (
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)
 RULES_BY_ID: dict[str, Rule] = {r.id: r for r in RULES}
 
-__all__ = ["RULES", "RULES_BY_ID", "Rule", "RuleContext"]
+
+def rules_for_profile(profile: str) -> tuple[Rule, ...]:
+    """The rules as a profile sees them: ``study`` gives each the study's severity and
+    leaves out the rules that cannot fire without a target distribution."""
+    if profile != "study":
+        return RULES
+    from dataclasses import replace
+
+    from launch_linter.rules._profiles import STUDY_EXCLUDED, study_severity
+
+    return tuple(
+        replace(r, severity=study_severity(r.id, r.severity))
+        for r in RULES
+        if r.id not in STUDY_EXCLUDED
+    )
+
+__all__ = ["RULES", "RULES_BY_ID", "Rule", "RuleContext", "rules_for_profile"]

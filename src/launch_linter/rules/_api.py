@@ -27,6 +27,14 @@ class RuleContext:
 
     tree: LaunchTree
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
+    profile: str = "default"
+    """``default``, or ``study``: the study's checks and severities (see docs/severity.md)."""
+    distro: str | None = None
+    """The target ROS distribution (lower case), None when unknown (see docs/severity.md)."""
+
+    @property
+    def study(self) -> bool:
+        return self.profile == "study"
 
 
 @dataclass(frozen=True)
@@ -132,6 +140,34 @@ def rule_from_module(module: ModuleType) -> Rule:
         check=module.check,
         fix=getattr(module, "FIX", None),
     )
+
+
+WORLD_FIXED_FRAMES = frozenset({"map", "world", "odom", "earth"})
+"""Frames fixed in the world (REP 105): a sensor or robot hangs under them, never a mount."""
+
+
+_WORLD_ORDER = {"earth": 0, "world": 1, "map": 2, "odom": 3}
+"""REP 105's order of the world-fixed frames: each is the parent of the next."""
+
+
+def _world_base(frame: str) -> str:
+    return frame.rsplit("/", 1)[-1].lower().rstrip("0123456789_")
+
+
+def is_world_fixed(frame: str) -> bool:
+    """``map``, ``world``, ``odom``, ``earth``, and ``<robot>/map`` style or ``map2`` variants."""
+    return _world_base(frame) in WORLD_FIXED_FRAMES
+
+
+def goes_down_from_world(parent: str, child: str) -> bool:
+    """True when ``parent`` → ``child`` hangs a frame under a world-fixed one the usual way:
+    a robot or sensor frame under any of them, or world-fixed frames in REP 105's order
+    (earth → world → map → odom)."""
+    if not is_world_fixed(parent):
+        return False
+    if not is_world_fixed(child):
+        return True
+    return _WORLD_ORDER[_world_base(parent)] < _WORLD_ORDER[_world_base(child)]
 
 
 def by_file(transforms: Iterable[StaticTransform]) -> dict[str, list[StaticTransform]]:

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
-from launch_linter.model.diagnostic import Belief
-from launch_linter.model.transform import Field, StaticTransform
+from launch_linter.model.diagnostic import Belief, Severity
+from launch_linter.model.transform import Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 Key = tuple[str, ...] | str
@@ -50,6 +50,15 @@ def evidence(belief: Belief) -> str:
     return f"n={belief.n}, e={belief.e}, z={belief.z:.2f}"
 
 
+STRONG_Z = 2.0
+"""Below this z a belief is a hint: its findings are info (the study's profile: warning)."""
+
+
+def level(context: RuleContext, belief: Belief) -> Severity | None:
+    """Info for a weak belief; None (the rule's warning) otherwise."""
+    return None if context.study or belief.z >= STRONG_Z else Severity.INFO
+
+
 def implications(
     context: RuleContext,
     rule_id: str,
@@ -79,6 +88,7 @@ def implications(
                         f"{describe(belief.consequent)}, which usually comes with it "
                         f"({evidence(belief)})",
                         belief=belief,
+                        severity=level(context, belief),
                     )
 
 
@@ -106,13 +116,30 @@ def _non_null(
         values = values_of(transform) if beliefs else None
         if values is None:
             continue
+        if not context.study and quantity == "rotation" and _rotation_owned(transform):
+            continue
         for belief in beliefs:
             yield finding_at(
                 transform,
                 f"{what} {describe(key)} usually has zero {quantity}, this one has "
                 f"{values} ({evidence(belief)})",
                 belief=belief,
+                severity=level(context, belief),
             )
+
+
+def _rotation_owned(transform: StaticTransform) -> bool:
+    """True when another rule already reports this rotation's root cause: a quaternion tf2
+    rejects (bad_quaternion) or an angle written in degrees (rot_degrees)."""
+    from launch_linter.rules.bad_quaternion import TF2_TOLERANCE
+    from launch_linter.rules.rot_degrees import looks_like_degrees
+
+    rotation = transform.rotation
+    if rotation is None:
+        return False
+    if rotation.kind is RotationKind.QUATERNION:
+        return abs(sum(v * v for v in rotation.values) - 1.0) >= TF2_TOLERANCE
+    return any(looks_like_degrees(v) for v in rotation.values)
 
 
 def _displacement(transform: StaticTransform) -> str | None:

@@ -42,6 +42,7 @@ from launch_linter.model.diagnostic import Applicability, Category, Fix, Severit
 from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
+from launch_linter.rules.bad_number import separated_number
 
 ID = "bad_quaternion"
 CATEGORY = Category.TF
@@ -50,6 +51,9 @@ SEVERITY = Severity.ERROR
 TF2_TOLERANCE = 0.01
 """tf2's ``QUATERNION_NORMALIZATION_TOLERANCE`` on abs(|q|² - 1)."""
 ROSWTF_TOLERANCE = 1e-6
+QUATERNION_SLOTS = (3, 4, 5, 6)
+"""Indices of qx, qy, qz, qw among the numeric arguments."""
+
 FIX = Applicability.UNSAFE
 
 
@@ -107,12 +111,23 @@ def _problem(values: tuple[float, ...]) -> tuple[Severity, str] | None:
     return None
 
 
+def _rejected_word(transform: StaticTransform) -> bool:
+    return any(
+        issue.index in QUATERNION_SLOTS and not separated_number(issue.written)
+        for issue in transform.number_issues
+    )
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.QUATERNION:
             continue
         if transform.is_unresolved(Field.ROTATION):
+            continue
+        if not context.study and _rejected_word(transform):
+            # One root cause, one finding: bad_number already says that a component is
+            # not a number, and the norm of what atof made of it is no advice.
             continue
         found = _problem(rotation.values)
         if found is None:

@@ -50,7 +50,7 @@ from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 ID = "int_suffix"
 CATEGORY = Category.MAY_SEMANTIC
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 _SUFFIXED = re.compile(r"^(?P<stem>.*\D)(?P<number>\d+)$")
 # Our stand-in for $(anon id) numbers anonymous names itself; those numbers mean nothing.

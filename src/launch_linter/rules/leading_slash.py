@@ -43,7 +43,7 @@ from launch_linter.rules._fixes import fixable, frame_index, replace_words
 
 ID = "leading_slash"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 FIX = Applicability.SAFE
 
 

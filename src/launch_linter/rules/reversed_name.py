@@ -28,15 +28,17 @@ next reader, or the frames were swapped and the transform is the inverse of the 
 ```
 """
 
+from __future__ import annotations
+
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import Field
-from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at, goes_down_from_world
 
 ID = "reversed_name"
 CATEGORY = Category.MAY_SEMANTIC
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 SEPARATORS = ("_to_", "2", "_2_", "_")
 
@@ -58,6 +60,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
         name = transform.name.lower()
         separator = _joins(name, child, parent)
         if separator is None or _joins(name, parent, child) is not None:
+            continue
+        if not context.study and goes_down_from_world(parent, child):
+            # "base_to_world" on world -> base reads "base attached to world": the usual
+            # way to name a robot's or a map's place in a world-fixed frame. The transform
+            # goes the right way, whatever the name says.
             continue
         yield finding_at(transform,
             f"name '{transform.name}' reads '{signature[1]}' -> '{signature[0]}', but the "

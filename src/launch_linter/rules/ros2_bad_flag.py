@@ -6,7 +6,11 @@ it publishes: an unknown or misspelled flag (`--yaw_deg`, `--frame_id`, `-- yaw`
 space), flags mixed with positional arguments, `--roll`/`--pitch`/`--yaw` together with
 `--qx`/`--qy`/`--qz`/`--qw`, a quaternion given in part (the missing components stay at
 0, 0, 0, 1, which leaves it not unit length), and a missing `--frame-id` or
-`--child-frame-id`. The message quotes what the program prints.
+`--child-frame-id`. The message quotes what the program prints. When the target
+distribution is Foxy or Galactic (`--ros-distro`, the `ros-distro` key or `ROS_DISTRO`),
+any flag is reported: flags arrived in tf2_ros 0.19.0 (ros2/geometry2#392), first released
+in Humble; the older program counts its arguments, prints its usage and exits with status
+2 (the `galactic` branch's `static_transform_broadcaster_program.cpp`).
 
 ## Why is this bad?
 The program stops at start-up with "Extra unparsed arguments on command-line", "Cannot
@@ -36,6 +40,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.distro import NO_FLAGS
 from launch_linter.model.transform import ArgIssue, ArgIssueKind, Field
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
@@ -45,6 +50,10 @@ SEVERITY = Severity.ERROR
 
 _EMPTY_FRAME = {"--frame-id": "Frame id", "--child-frame-id": "Child frame id"}
 """The program's words for each frame flag in 'X must not be empty'."""
+
+
+def _uses_flags(tokens: tuple[str, ...]) -> bool:
+    return any(t.startswith("--") and t != "--ros-args" for t in tokens)
 
 
 def _suggestion(issue: ArgIssue) -> str:
@@ -103,8 +112,18 @@ def message(issue: ArgIssue) -> str | None:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    no_flags = context.distro in NO_FLAGS and not context.study
     for transform in context.tree.transforms:
         if transform.is_unresolved(Field.ARITY):
+            continue
+        if no_flags and transform.ros_version == 2 and _uses_flags(transform.tokens):
+            distro = str(context.distro).capitalize()
+            yield finding_at(
+                transform,
+                f"flags (--frame-id ...) on {distro}: its static_transform_publisher knows "
+                f"only the positional form x y z yaw pitch roll parent child (flags arrived "
+                f"in Humble): it prints its usage and exits 2, no transform is published",
+            )
             continue
         for issue in transform.arg_issues:
             text = message(issue)

@@ -32,16 +32,18 @@ is placed at the wrong spot of the robot.
 A null transform is sometimes meant, to give a sensor frame a second name (an alias).
 """
 
+from __future__ import annotations
+
 import re
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import Field
-from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.model.transform import Field, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at, is_world_fixed
 
 ID = "sensor_null"
 CATEGORY = Category.MAY_SEMANTIC
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 SENSOR_WORDS = frozenset({"velodyne", "kinect", "openni", "imu"})
 # A run of capitals (IMU), a capitalised word (Imu) or a lower-case word (imu).
@@ -51,6 +53,23 @@ _WORD = re.compile(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+")
 def sensor_words(text: str) -> set[str]:
     """The sensor words of ``text``: whole words only (not the "imu" of "simulation")."""
     return {w.lower() for w in _WORD.findall(text)} & SENSOR_WORDS
+
+
+def _explained(transform: StaticTransform) -> bool:
+    """A null transform that is not a forgotten mount: the sensor word is only in the
+    parent (the child is another frame of that device, or a frame under it), the parent
+    is fixed in the world (a bare sensor displayed in ``map``), or parent and child name
+    the same device (an alias between two frames of one sensor)."""
+    parent, child = transform.parent, transform.child
+    if parent is None or child is None:
+        return False
+    if is_world_fixed(parent):
+        return True
+    in_parent, in_child = sensor_words(parent), sensor_words(child)
+    in_name = sensor_words(transform.name or "") if transform.knows(Field.NAME) else set()
+    if in_parent and not in_child and not (in_name - in_parent):
+        return True
+    return bool(in_parent & in_child)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -68,6 +87,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         ]
         sensors = sorted(set().union(*(sensor_words(text) for text in labels)))
         if not sensors:
+            continue
+        if not context.study and _explained(transform):
             continue
         yield finding_at(transform,
             f"transform '{transform.parent}' -> '{transform.child}' of a sensor "

@@ -75,12 +75,12 @@ def test_may_semantic_rules(write: object, path: str, step: int) -> None:
     assert [rule for rule, _ in diagnostics] == ["sensor_null"]
 
 
-def test_duplicate_node_names_only_warn_in_ros2() -> None:
+def test_duplicate_node_names_are_info_in_ros2() -> None:
     text = xml([("a", "b")]).replace("tf0", "same") + xml([("a", "c")]).replace("tf0", "same")
     text = text.replace("</launch>\n<launch>\n", "")
     options = LintOptions(package_paths=(), select=frozenset({"dup_name"}))
     (diagnostic,) = lint_text(text, "robot.launch.xml", options).diagnostics
-    assert diagnostic.severity.value == "warning"
+    assert diagnostic.severity.value == "info"
 
 
 def test_tree_rules_across_formats(tmp_path: Path) -> None:

@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Per-rule and frequency-weighted precision of the warning/error findings, from the judged sample.
+
+Reads ``docs/evaluation/judged.jsonl`` (one judged finding a line: ``key``, ``rule``,
+``verdict`` TRUE / HARMLESS / FALSE / ARTIFACT, ``reason``) and, for each state compared,
+the full list of warning/error findings on the corpus (``findings*.jsonl``, written by
+``draw_judged_sample.py``). For a state:
+
+- a rule's precision is TRUE / (TRUE + HARMLESS + FALSE) over the judged findings that the
+  state reports at warning or error (HARMLESS is not a defect a maintainer would fix);
+- ARTIFACT findings (the corpus stores files flat, so a ``$(dirname)`` sibling that is not in
+  the corpus looks missing) are left out of the precision and of the rule's frequency: they
+  cannot happen in a checkout;
+- the frequency-weighted precision weighs each rule by how often it fires at warning or
+  error on the corpus (artifact share removed), i.e. the precision of what a user sees.
+
+Writes docs/evaluation/precision.md and src/launch_linter/data/precision.json (the per-rule
+figures that ``launch-linter rules`` and docs/rules.md show).
+
+    python scripts/precision.py
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from collections import Counter, defaultdict
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EVAL = os.path.join(ROOT, "docs", "evaluation")
+DATA = os.path.join(ROOT, "src", "launch_linter", "data", "precision.json")
+STATES = (
+    ("before", "the study's levels (profile `study`, the levels before this change)",
+     "findings_before.jsonl", "counts_before.json"),
+    ("after", "the default profile now", "findings.jsonl", "counts.json"),
+)
+JUDGED_VERDICTS = ("TRUE", "HARMLESS", "FALSE")
+
+
+def read_jsonl(path: str) -> list[dict]:
+    with open(path, encoding="utf-8") as handle:
+        return [json.loads(line) for line in handle if line.strip()]
+
+
+class State:
+    def __init__(self, judged: list[dict], findings: list[dict], counts: dict) -> None:
+        present = {row["key"] for row in findings}
+        self.counts = counts
+        self.rows = [row for row in judged if row["key"] in present]
+        self.frequency = Counter(row["rule"] for row in findings)
+        self.unjudged = sorted(
+            {row["key"] for row in findings} - {row["key"] for row in judged}
+        )
+
+    def verdicts(self, rule: str) -> Counter:
+        return Counter(row["verdict"] for row in self.rows if row["rule"] == rule)
+
+    def precision(self, rule: str) -> tuple[float, int, int] | None:
+        v = self.verdicts(rule)
+        judged = sum(v[k] for k in JUDGED_VERDICTS)
+        if not judged:
+            return None
+        return v["TRUE"] / judged, v["TRUE"], judged
+
+    def effective_frequency(self, rule: str) -> float:
+        v = self.verdicts(rule)
+        total = sum(v.values())
+        artifact = v["ARTIFACT"] / total if total else 0.0
+        return self.frequency[rule] * (1.0 - artifact)
+
+    def weighted_raw(self) -> float:
+        """The weighted precision with ARTIFACT findings counted as false (the corpus's
+        view: a file linted alone, its siblings missing)."""
+        num = den = 0.0
+        for rule in self.frequency:
+            v = self.verdicts(rule)
+            judged = sum(v.values())
+            if not judged:
+                continue
+            num += self.frequency[rule] * v["TRUE"] / judged
+            den += self.frequency[rule]
+        return num / den if den else 0.0
+
+    def weighted(self) -> tuple[float, float]:
+        """(weighted precision, weight covered by judged rules)."""
+        num = den = 0.0
+        for rule in self.frequency:
+            p = self.precision(rule)
+            if p is None:
+                continue
+            weight = self.effective_frequency(rule)
+            num += weight * p[0]
+            den += weight
+        total = sum(self.effective_frequency(r) for r in self.frequency)
+        return (num / den if den else 0.0), (den / total if total else 0.0)
+
+
+def fmt(p: tuple[float, int, int] | None) -> str:
+    return "—" if p is None else f"{100 * p[0]:.0f}% ({p[1]}/{p[2]})"
+
+
+def main() -> int:
+    judged = read_jsonl(os.path.join(EVAL, "judged.jsonl"))
+    states: dict[str, State] = {}
+    for name, _, findings, counts in STATES:
+        with open(os.path.join(EVAL, counts), encoding="utf-8") as handle:
+            counted = json.load(handle)
+        states[name] = State(judged, read_jsonl(os.path.join(EVAL, findings)), counted)
+    rules = sorted({row["rule"] for row in judged} | {
+        r for s in states.values() for r in s.frequency
+    })
+    verdicts = Counter(row["verdict"] for row in judged)
+    tally = ", ".join(f"{k} {v}" for k, v in sorted(verdicts.items()))
+    lines = [
+        "# Precision of warnings and errors, measured on a judged sample",
+        "",
+        "Generated by `scripts/precision.py` from `judged.jsonl` (each finding read in its",
+        "repository and judged TRUE / HARMLESS / FALSE / ARTIFACT with a reason),",
+        "`findings*.jsonl` and `counts*.json` (written by `scripts/draw_judged_sample.py`,",
+        "seed 15, on the latest version of each of the corpus's files, each linted alone with",
+        "the bundled beliefs).",
+        "Precision = TRUE / (TRUE + HARMLESS + FALSE); ARTIFACT (a `$(dirname)` sibling the",
+        "flat corpus does not hold) is left out of both precision and frequency.",
+        f"Judged: {len(judged)} findings ({tally}).",
+        "",
+    ]
+    for name, label, _, _ in STATES:
+        state = states[name]
+        weighted, covered = state.weighted()
+        files = state.counts["corpus_latest_files"]
+        flagged = state.counts["files_with_warning_or_error"]
+        lines += [
+            f"## {name.capitalize()}: {label}",
+            "",
+            f"- warning/error findings: {sum(state.frequency.values())}, in {flagged} of {files} "
+            f"files ({100.0 * flagged / files:.1f}%)",
+            f"- frequency-weighted precision: **{100 * weighted:.1f}%** (judged rules cover "
+            f"{100 * covered:.0f}% of the weight); unjudged findings: {len(state.unjudged)}",
+            f"- the same with ARTIFACT findings counted as false: "
+            f"{100 * state.weighted_raw():.1f}%",
+            "",
+            "| rule | fires (warning/error) | judged | TRUE | HARMLESS | FALSE | ARTIFACT "
+            "| precision |",
+            "|---|---:|---:|---:|---:|---:|---:|---:|",
+        ]
+        for rule in rules:
+            v = state.verdicts(rule)
+            if not state.frequency[rule] and not sum(v.values()):
+                continue
+            lines.append(
+                f"| {rule} | {state.frequency[rule]} | {sum(v.values())} | {v['TRUE']} | "
+                f"{v['HARMLESS']} | {v['FALSE']} | {v['ARTIFACT']} | {fmt(state.precision(rule))} |"
+            )
+        lines.append("")
+    lost = [
+        row for row in judged
+        if row["verdict"] == "TRUE" and row["key"] not in {r["key"] for r in states["after"].rows}
+    ]
+    lines += [
+        "## Judged TRUE findings no longer at warning or error",
+        "",
+        "Each is still reported (at info), which `tests/test_judged_regressions.py` checks on "
+        "a copy of its snippet." if lost else "None.",
+        "",
+    ]
+    lines += [f"- `{r['rule']}` {r['repo']} {r['path']}:{r['line']}: {r['reason']}" for r in lost]
+    with open(os.path.join(EVAL, "precision.md"), "w", encoding="utf-8") as handle:
+        handle.write("\n".join(lines).rstrip() + "\n")
+
+    data: dict[str, dict[str, object]] = defaultdict(dict)
+    for rule in rules:
+        for name in ("before", "after"):
+            p = states[name].precision(rule)
+            if p is not None:
+                data[rule][name] = {"precision": round(p[0], 3), "true": p[1], "judged": p[2]}
+    with open(DATA, "w", encoding="utf-8") as handle:
+        json.dump({"source": "docs/evaluation/precision.md", "rules": dict(sorted(data.items()))},
+                  handle, indent=1, sort_keys=True)
+        handle.write("\n")
+    for name, _, _, _ in STATES:
+        weighted, covered = states[name].weighted()
+        unjudged = len(states[name].unjudged)
+        sys.stdout.write(f"{name}: weighted precision {100 * weighted:.1f}% "
+                         f"(coverage {100 * covered:.0f}%), unjudged {unjudged}\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

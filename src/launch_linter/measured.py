@@ -1,0 +1,41 @@
+"""Measured precision of each rule, from the judged sample (``data/precision.json``).
+
+Written by ``scripts/precision.py`` (see docs/evaluation/precision.md); read by
+``launch-linter rules`` and docs/rules.md so that the figures are data, not prose.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from functools import cache
+
+DATA = "precision.json"
+
+
+@cache
+def _table() -> dict[str, dict[str, dict[str, float]]]:
+    # A plain file next to the module: a standalone linter (which embeds modules without
+    # their data) finds none and says "not measured".
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", DATA)
+    try:
+        with open(path, encoding="utf-8") as handle:
+            rules = json.load(handle).get("rules", {})
+    except (OSError, ValueError):
+        return {}
+    return rules if isinstance(rules, dict) else {}
+
+
+def precision_text(rule_id: str) -> str:
+    """``100% (6/6)`` at the current levels, or ``0% (0/52) before, now info`` for a rule
+    whose warnings and errors went away, or ``not measured``."""
+    entry = _table().get(rule_id)
+    if not entry:
+        return "not measured"
+    after, before = entry.get("after"), entry.get("before")
+    if after:
+        return f"{after['precision']:.0%} ({after['true']:g}/{after['judged']:g})"
+    if before:
+        return (f"{before['precision']:.0%} ({before['true']:g}/{before['judged']:g}) "
+                f"at the study's level")
+    return "not measured"

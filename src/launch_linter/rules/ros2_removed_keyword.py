@@ -1,0 +1,65 @@
+"""A ROS 2 `Node` given Foxy-era keywords (`node_executable=`, ...) on a later distribution.
+
+## What it does
+Reports a Python launch file whose `Node(...)` uses `node_executable=`, `node_name=` or
+`node_namespace=` when the target distribution (`--ros-distro`, the `ros-distro` key,
+or `ROS_DISTRO`) is Galactic or later, and names the keyword that replaced each one
+(`executable=`, `name=`, `namespace=`). With no target given, these keywords are taken as
+evidence that the file targets Foxy and nothing is reported.
+
+## Why is this bad?
+launch_ros renamed the keywords in Foxy and removed the old ones afterwards: on Humble,
+`Node(node_executable=...)` raises "unexpected keyword argument" and `ros2 launch`
+refuses the whole file, so none of its transforms is published.
+
+## Example
+With `--ros-distro humble`:
+```python
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="tf2_ros", node_executable="static_transform_publisher",
+             arguments=["--frame-id", "base_link", "--child-frame-id", "laser"]),
+    ])
+```
+
+## Use instead
+```python
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="tf2_ros", executable="static_transform_publisher",
+             arguments=["--frame-id", "base_link", "--child-frame-id", "laser"]),
+    ])
+```
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import replace
+
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.distro import LEGACY_KEYWORDS_OK
+from launch_linter.rules._api import Finding, RuleContext, frontend_findings
+
+ID = "ros2_removed_keyword"
+CATEGORY = Category.LAUNCH
+SEVERITY = Severity.ERROR
+EXAMPLE_PATH = "example.launch.py"
+EXAMPLE_DISTRO = "humble"
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    distro = context.distro
+    if distro is None or distro in LEGACY_KEYWORDS_OK or context.study:
+        return
+    for note in frontend_findings(context, ID):
+        yield replace(note, message=(
+            f"Node keyword(s) {note.message} were removed after Foxy: on "
+            f"{distro.capitalize()} ros2 launch refuses the whole file"
+        ))
