@@ -1,4 +1,5 @@
 """Launch-Linter: find mistakes in the static transforms that ROS launch files declare."""
+from __future__ import annotations
 
 from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
 from launch_linter.model import Diagnostic, StaticTransform

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-from importlib import resources
+import os
 
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
 
@@ -22,8 +22,11 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
     if spec in ("bundled", "study"):
         name = BUNDLED if spec == "bundled" else STUDY
         try:
-            text = resources.files("launch_linter").joinpath("data", name).read_text("utf-8")
-        except (FileNotFoundError, OSError) as exc:
+            # The package data sits beside this module (importlib.resources.files needs 3.9).
+            path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
+            with open(path, encoding="utf-8") as handle:
+                text = handle.read()
+        except OSError as exc:
             raise BeliefsNotFound(f"the {spec} beliefs file is not installed: {exc}") from None
         return BeliefSet.from_json(json.loads(text), spec, min_z)
     try:

@@ -89,7 +89,7 @@ def stod(text: str) -> tuple[float | None, str]:
     return value, "ok" if match.end() == len(stripped) else "partial"
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Ros2Decoded:
     form: str
     """``ypr``, ``quaternion`` or ``invalid`` (nothing could be decoded)."""
@@ -387,7 +387,7 @@ def _flags(reader: _Reader, flags: dict[str, tuple[int, str]]) -> Ros2Decoded:
             for slot, f in enumerate(order)
         ))
     frames: list[str | None] = []
-    for flag, what in zip(FRAME_FLAGS, ("Frame id", "Child frame id"), strict=True):
+    for flag, what in zip(FRAME_FLAGS, ("Frame id", "Child frame id")):
         value = flags[flag][1] if flag in flags else None
         if value is None or (value == "" and reader.resolved(flags[flag][0])):
             reader.issues.append(ArgIssue(
@@ -427,7 +427,7 @@ def _result(reader: _Reader, form: str, parent: str | None, child: str | None,
     )
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ComponentParam:
     """A parameter given to the component: its text, and whether launch passes it as a
     string (rather than a number) to the node."""
@@ -462,7 +462,7 @@ def decode_component(params: Mapping[str, ComponentParam], complete: bool = True
             values.append(reader.number(slot, param.text, slot))
     frames = [
         params[name].text if name in params else default
-        for name, default in zip(COMPONENT_PARAMS[7:], COMPONENT_DEFAULT_FRAMES, strict=True)
+        for name, default in zip(COMPONENT_PARAMS[7:], COMPONENT_DEFAULT_FRAMES)
     ]
     absent = [name for name in COMPONENT_PARAMS[7:] if name not in params]
     if absent and complete:

@@ -6,6 +6,7 @@ import os
 from collections.abc import Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from typing import List, Tuple
 
 from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
@@ -25,7 +26,7 @@ from launch_linter.suppressions import (
 MAX_DISCOVERED_FILES = 200_000
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LintOptions:
     """How to resolve launch files and which rules to run."""
 
@@ -41,7 +42,7 @@ class LintOptions:
     per_path_ignores: tuple[PathIgnore, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LintResult:
     files: tuple[FileRecord, ...]
     trees: tuple[LaunchTree, ...]
@@ -52,7 +53,7 @@ class LintResult:
         return tuple(t for tree in self.trees for t in tree.transforms)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class InputFile:
     path: str
     """Absolute path."""
@@ -183,7 +184,7 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Linted = tuple[LaunchTree, FileRecord, list[Diagnostic]]
+Linted = Tuple[LaunchTree, FileRecord, List[Diagnostic]]
 
 
 def _lint_chunk(

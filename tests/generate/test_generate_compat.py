@@ -13,6 +13,7 @@ from launch_linter.generate import compat
 
 def test_on_this_python_the_public_names_are_the_real_ones() -> None:
     import dataclasses
+
     import tomllib
 
     assert sys.version_info >= (3, 11)

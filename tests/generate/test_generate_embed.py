@@ -44,7 +44,7 @@ def test_modules_are_the_package_files_with_only_python_3_8_edits(
         lines, embedded = original.splitlines(), module.source.splitlines()
         # Every line keeps its number, so tracebacks point at the package's lines.
         assert len(embedded) == len(lines), module.path
-        for before, after in zip(lines, embedded, strict=True):
+        for before, after in zip(lines, embedded):
             if before != after:
                 rewritten = any(mark in after for mark in EDIT_MARKS) or " | " in before
                 assert rewritten or not after.strip(" )]:,"), (module.path, before, after)

@@ -28,12 +28,12 @@ def write_chart(table: FaultTable, path: str, title: str) -> None:
             [p + height / 2 for p in positions], study, height, label="study (Table IV)",
             color="#ff7f0e",
         )
-        for bar, value in zip(bars, ours, strict=True):
+        for bar, value in zip(bars, ours):
             axes.annotate(
                 f"{value:.2f}", (bar.get_width(), bar.get_y() + bar.get_height() / 2),
                 xytext=(3, 0), textcoords="offset points", va="center", fontsize=7,
             )
-        for bar, row in zip(study_bars, rows, strict=True):
+        for bar, row in zip(study_bars, rows):
             if row.study is not None:
                 axes.annotate(
                     f"{row.study.percent:g}",

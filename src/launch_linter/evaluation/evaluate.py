@@ -37,7 +37,7 @@ class EvaluationError(Exception):
     """The database or its corpus cannot be evaluated."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Scope:
     """What was evaluated, for the outputs' preambles."""
 
@@ -54,7 +54,7 @@ class Scope:
     """The highest z of any belief mined into the database (None when there is none)."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Evaluation:
     scope: Scope
     table: FaultTable

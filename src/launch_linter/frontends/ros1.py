@@ -62,7 +62,7 @@ def relative_to_cwd(path: str) -> str:
     return os.path.relpath(path)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LoadOptions:
     """What the command line tells the loader."""
 
@@ -663,7 +663,7 @@ class Ros1Loader:
         self._required(element, "name", context, anon)
         self._required(element, "address", context, anon)
         values = dict(zip(_MACHINE_ATTRS, self._resolve_all(element, _MACHINE_ATTRS, context,
-                                                            anon), strict=True))
+                                                            anon)))
         default = values["default"]
         default_text = resolved_text(default) if default is not None else "false"
         if default_text is not None and (default_text or "false").lower() not in (

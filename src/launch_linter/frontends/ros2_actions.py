@@ -11,12 +11,13 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Union
 
 from launch_linter.resolve.ros2_substitution import Subs
 from launch_linter.resolve.value import Value
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Where:
     """Where an action is written: absolute path, 1-based line and column."""
 
@@ -25,7 +26,7 @@ class Where:
     column: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Predicate:
     """An ``if`` (``positive``) or ``unless`` condition on an action."""
 
@@ -33,7 +34,7 @@ class Predicate:
     expression: Subs
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class DeclareArg:
     where: Where
     condition: Predicate | None
@@ -41,7 +42,7 @@ class DeclareArg:
     default: Subs | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class SetVar:
     """``<let>`` / ``SetLaunchConfiguration``; ``value`` None unsets it."""
 
@@ -51,7 +52,7 @@ class SetVar:
     value: Subs | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class SetEnv:
     """``<set_env>`` / ``SetEnvironmentVariable``; ``value`` None unsets it."""
 
@@ -61,14 +62,14 @@ class SetEnv:
     value: Subs | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class PushNamespace:
     where: Where
     condition: Predicate | None
     namespace: Subs
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Group:
     """``<group>`` / ``GroupAction``: ``scoped`` keeps configurations set inside from
     leaking out; ``forwarding`` False starts the group without the outer ones."""
@@ -80,7 +81,7 @@ class Group:
     forwarding: Subs | bool = True
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Include:
     where: Where
     condition: Predicate | None
@@ -88,7 +89,7 @@ class Include:
     args: tuple[tuple[Subs, Subs], ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RunNode:
     """``<node>`` / ``Node``. ``arguments`` holds one entry per argv item, or None when
     the list cannot be known (``unknown`` says why)."""
@@ -104,7 +105,7 @@ class RunNode:
     unknown: str = ""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Params:
     """Parameters given by name (nested names joined with ``.``). launch gives each value
     YAML typing after substitution (``1.0`` is a double, ``map`` a string), whatever the
@@ -113,14 +114,14 @@ class Params:
     items: tuple[tuple[str, Subs], ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ParamsUnknown:
     """Parameters from somewhere the linter does not read (a file, an expression)."""
 
     reason: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Component:
     """``<composable_node>`` / ``ComposableNode`` inside a container or a load action."""
 
@@ -133,7 +134,7 @@ class Component:
     parameters: tuple[Params | ParamsUnknown, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LoadComponents:
     """``<node_container>``, ``<load_composable_node>`` and their Python classes."""
 
@@ -142,7 +143,7 @@ class LoadComponents:
     components: tuple[Component, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Deferred:
     """Actions known only when the launch runs (a Python ``OpaqueFunction``): ``expand``
     receives a resolver for substitutions at that point and returns the actions."""
@@ -152,7 +153,7 @@ class Deferred:
     expand: Callable[[Callable[[Subs], Value]], Sequence[Action]]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Unfollowed:
     """Something that may launch nodes but that the linter cannot follow."""
 
@@ -160,13 +161,18 @@ class Unfollowed:
     reason: str
 
 
-Action = (
-    DeclareArg | SetVar | SetEnv | PushNamespace | Group | Include | RunNode
-    | LoadComponents | Deferred | Unfollowed
+ACTION_TYPES = (
+    DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
+    LoadComponents, Deferred, Unfollowed,
 )
+"""The action classes, for ``isinstance`` (Python 3.8 has no run-time ``X | Y``)."""
+Action = Union[
+    DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
+    LoadComponents, Deferred, Unfollowed,
+]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Problem:
     """Something the reader of one file reports: ``rule`` is ``parse_error``,
     ``roslaunch_error`` or ``unresolved``."""
@@ -177,7 +183,7 @@ class Problem:
     message: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FileRead:
     """One file read by a ROS 2 front-end; ``actions`` is None when it is unreadable."""
 

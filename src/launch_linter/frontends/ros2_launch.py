@@ -75,7 +75,7 @@ _SEVERITY = {
 }
 
 
-@dataclass(slots=True)
+@dataclass
 class _Scope:
     """Launch configurations and environment, shared by everything that runs in it."""
 
@@ -88,7 +88,7 @@ class _Scope:
         return _Scope(dict(self.configs), dict(self.env), condition)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class _Frame:
     """Where the actions being run come from."""
 
@@ -99,7 +99,7 @@ class _Frame:
     condition: Condition
 
 
-@dataclass(slots=True)
+@dataclass
 class _Budget:
     actions: int = 0
     anon: dict[str, str] = field(default_factory=dict)

@@ -41,7 +41,7 @@ from launch_linter.resolve.ros2_substitution import (
 )
 
 
-@dataclass(slots=True)
+@dataclass
 class Entity:
     """One launch entity, whichever the file format."""
 

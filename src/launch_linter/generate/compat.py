@@ -11,7 +11,7 @@ This module must itself run on Python 3.8 with the standard library only.
 """
 
 # This file must run on Python 3.8, which the project's ruff target (3.11) does not know:
-# ruff: noqa: UP006, UP029, UP035, UP036, B905
+# ruff: noqa: UP006, UP029
 
 from __future__ import annotations
 
@@ -178,8 +178,9 @@ else:
     TypeAlias = "TypeAlias"
 
 if sys.version_info >= (3, 11):
-    import tomllib
     from enum import Enum
+
+    import tomllib
 else:
     tomllib = _tomllib_before_3_11()
     Enum = EnumBefore311

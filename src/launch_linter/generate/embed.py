@@ -48,7 +48,7 @@ class EmbedError(ValueError):
         self.problems = problems
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Module:
     """One embedded module: its import name, file (relative, ``/``-separated), source."""
 
@@ -61,7 +61,7 @@ class Module:
     """Of the package file as read, so that a reviewer can match it to a release."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Embedding:
     modules: tuple[Module, ...]
     """Sorted by name (the compat module, ``_launch_linter_compat``, sorts first)."""
@@ -74,7 +74,7 @@ class Embedding:
         return sources_sha256(sorted((m.name, m.source) for m in self.modules))
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class _Import:
     target: str
     line: int
@@ -171,7 +171,7 @@ def _imports(source: str, name: str, is_package: bool, package: _Package) -> Ite
                     if package.file_of(candidate) is not None:
                         yield _Import(candidate, node.lineno, lazy)
             return
-        inner = lazy or isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda)
+        inner = lazy or isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
         for child in ast.iter_child_nodes(node):
             yield from visit(child, inner)
 

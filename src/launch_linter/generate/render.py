@@ -64,7 +64,7 @@ class Code(str):
     __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RenderOptions:
     beliefs_source: str
     """As given to ``generate --beliefs`` (``bundled``, ``study`` or a file name)."""
@@ -90,7 +90,7 @@ def py_literal(value: object) -> Code:
         return Code(f"float({repr(value)!r})")
     if isinstance(value, str):
         return Code(ascii(value))
-    if isinstance(value, tuple | list):
+    if isinstance(value, (tuple, list)):
         items = [py_literal(v) for v in value]
         if isinstance(value, tuple):
             return Code("(" + ", ".join(items) + ("," if len(items) == 1 else "") + ")")
@@ -152,7 +152,7 @@ def belief_rows(beliefs: Sequence[Belief], cls: str) -> list[Code]:
 
 
 def _finalize(value: object) -> object:
-    if isinstance(value, Code | jinja2.Undefined):
+    if isinstance(value, (Code, jinja2.Undefined)):
         # An undefined value raises its own error when printed.
         return value
     raise RenderError(

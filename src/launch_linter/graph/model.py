@@ -18,7 +18,7 @@ from launch_linter.model.transform import RotationKind, StaticTransform
 MAX_NOTES = 12
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Frame:
     key: str
     label: str
@@ -26,7 +26,7 @@ class Frame:
     flagged: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Edge:
     parent: str
     child: str
@@ -37,7 +37,7 @@ class Edge:
     tooltip: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class TfGraph:
     title: str
     frames: tuple[Frame, ...]

@@ -28,7 +28,7 @@ from launch_linter.model.diagnostic import Belief
 EXIT_OK, EXIT_USAGE, EXIT_INTERRUPTED = 0, 2, 130
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class MineReport:
     files: int
     transforms: int
@@ -40,9 +40,9 @@ def created_now() -> str:
     # SOURCE_DATE_EPOCH (reproducible-builds.org) lets the bundled file be rebuilt byte-for-byte.
     epoch = os.environ.get("SOURCE_DATE_EPOCH")
     moment = (
-        datetime.datetime.fromtimestamp(int(epoch), datetime.UTC)
+        datetime.datetime.fromtimestamp(int(epoch), datetime.timezone.utc)
         if epoch and epoch.isdigit()
-        else datetime.datetime.now(datetime.UTC)
+        else datetime.datetime.now(datetime.timezone.utc)
     )
     return moment.replace(microsecond=0).isoformat().replace("+00:00", "Z")
 

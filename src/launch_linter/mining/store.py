@@ -19,7 +19,7 @@ import sqlite3
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from types import TracebackType
-from typing import Any
+from typing import Any, Tuple
 
 from launch_linter.mining.beliefs import MinedTransform, decode_key, encode_key
 from launch_linter.model.diagnostic import Belief
@@ -124,21 +124,21 @@ TRANSFORM_COLUMNS = (
     "launch_format",
 )
 
-TransformRow = tuple[Any, ...]
+TransformRow = Tuple[Any, ...]
 
 
 class StoreError(Exception):
     """The database cannot be used (wrong schema version, not a database, …)."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RepoInfo:
     name: str
     commits: int | None
     named_mature: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FileRef:
     """One (repository, path, version) of the corpus."""
 
@@ -148,7 +148,7 @@ class FileRef:
     latest: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ParsedContent:
     """A distinct content and what the front-end made of it."""
 
@@ -159,7 +159,7 @@ class ParsedContent:
     rows: tuple[TransformRow, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class StoredVersion:
     """One stored (repository, path, version), as the evaluation reads it back."""
 

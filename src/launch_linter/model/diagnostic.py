@@ -24,14 +24,14 @@ class Category(str, Enum):
     LAUNCH = "launch"
 
 
-@dataclass(frozen=True, slots=True, order=True)
+@dataclass(frozen=True, order=True)
 class Location:
     path: str
     line: int
     column: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Belief:
     """A mined MAY-Implied belief: ``if`` (signature or name) implies ``then``."""
 
@@ -56,7 +56,7 @@ class Belief:
         }
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Diagnostic:
     rule: str
     category: Category

@@ -15,7 +15,7 @@ class FileStatus(str, Enum):
     UNREADABLE = "unreadable"
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FileRecord:
     """One input file and how reading it went."""
 
@@ -24,7 +24,7 @@ class FileRecord:
     transforms: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Comment:
     """An XML comment (or YAML/Python comment) with the line it ends on."""
 
@@ -33,7 +33,7 @@ class Comment:
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LaunchTree:
     """Everything read from one root file, its includes included."""
 

@@ -16,7 +16,7 @@ class RotationKind(str, Enum):
     QUATERNION = "quaternion"
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Rotation:
     """A rotation as written: ``values`` is (yaw, pitch, roll) or (qx, qy, qz, qw)."""
 
@@ -37,7 +37,7 @@ class Rotation:
         )
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ConditionLiteral:
     """One unresolved ``if``/``unless`` test: the attribute text and whether it must be true."""
 
@@ -48,7 +48,7 @@ class ConditionLiteral:
         return ConditionLiteral(self.text, not self.positive)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Condition:
     """A presence condition: the conjunction of unresolved literals (empty means always)."""
 
@@ -79,7 +79,7 @@ class Condition:
 ALWAYS = Condition()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class NumberIssue:
     """A numeric argument that the program does not read as written."""
 
@@ -88,7 +88,7 @@ class NumberIssue:
     read_as: float | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ArgIssue:
     """A mistake in how a ROS 2 transform is written, beyond counts and numbers.
 
@@ -102,7 +102,7 @@ class ArgIssue:
     message: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class StaticTransform:
     """One ``static_transform_publisher`` node, resolved as far as statically possible.
 

@@ -19,6 +19,7 @@ import os
 import shlex
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Tuple, Union
 
 from launch_linter.resolve import safe_eval
 from launch_linter.resolve.value import (
@@ -36,14 +37,14 @@ MAX_NESTING = 32
 MAX_TEXT = 100_000
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Text:
     """Literal text."""
 
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Call:
     """A substitution call: ``name`` with its arguments; ``written`` is how it appeared."""
 
@@ -52,7 +53,7 @@ class Call:
     written: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Opaque:
     """A piece the linter cannot evaluate (a Python expression it does not model)."""
 
@@ -60,8 +61,8 @@ class Opaque:
     reason: str
 
 
-Sub = Text | Call | Opaque
-Subs = tuple[Sub, ...]
+Sub = Union[Text, Call, Opaque]
+Subs = Tuple[Sub, ...]
 
 
 class SubstitutionSyntaxError(Exception):
@@ -76,7 +77,7 @@ class SubstitutionError(Exception):
     """ROS 2 launch refuses this substitution when it runs."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Ros2Scope:
     """What a substitution can see at one place of a launch tree."""
 

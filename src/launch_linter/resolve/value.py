@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Tuple, Union
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Hole:
     """An unresolved piece of text: the substitution as written and why it is unknown."""
 
@@ -13,8 +14,8 @@ class Hole:
     reason: str
 
 
-Part = str | Hole
-Value = tuple[Part, ...]
+Part = Union[str, Hole]
+Value = Tuple[Part, ...]
 
 
 def literal(text: str) -> Value:

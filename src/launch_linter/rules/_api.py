@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+import typing
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from types import ModuleType
+from typing import Callable
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Location, Severity
@@ -12,7 +14,7 @@ from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RuleContext:
     """Everything a rule may look at: one launch tree and the selected beliefs."""
 
@@ -20,10 +22,10 @@ class RuleContext:
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
 
 
-Check = Callable[[RuleContext], Iterable[Diagnostic]]
+Check = Callable[[RuleContext], typing.Iterable[Diagnostic]]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Rule:
     id: str
     category: Category

@@ -8,14 +8,15 @@ transform may be the one that the belief asks for.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
+from typing import Callable, Optional, Tuple, Union
 
 from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Severity
 from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
 
-Key = tuple[str, ...] | str
-KeyOf = Callable[[StaticTransform], Key | None]
+Key = Union[Tuple[str, ...], str]
+KeyOf = Callable[[StaticTransform], Optional[Key]]
 
 
 def signature_of(transform: StaticTransform) -> Key | None:

@@ -31,6 +31,7 @@ rejects. Nothing in the launch output points at the cause.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

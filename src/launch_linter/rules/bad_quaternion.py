@@ -27,6 +27,7 @@ transformed through it; `roswtf` warns about it.
 </launch>
 ```
 """
+from __future__ import annotations
 
 import math
 from collections.abc import Iterator

@@ -27,6 +27,7 @@ start with a '/'`), and tools such as cartographer refuse such frame ids outrigh
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -39,6 +39,7 @@ publishes `base_footprint -> laser`, or the two frames of one transform were swa
 Only static transforms are seen: a parent given by a URDF (`robot_state_publisher`) or by
 a node that publishes tf at run time is not.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

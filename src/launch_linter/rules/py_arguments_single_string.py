@@ -37,6 +37,7 @@ Node(package='tf2_ros', executable='static_transform_publisher',
      arguments=['--z', '0.2', '--frame-id', 'base_link', '--child-frame-id', 'laser'])
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

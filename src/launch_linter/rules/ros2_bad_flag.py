@@ -30,6 +30,7 @@ points at the node that died.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

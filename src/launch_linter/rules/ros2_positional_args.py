@@ -30,6 +30,7 @@ is easy to get wrong.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -31,6 +31,7 @@ another 117°), not by a quarter turn, and nothing complains at run time.
 An angle in degrees between -2π and 2π (such as `5`) cannot be told from radians and is
 not reported.
 """
+from __future__ import annotations
 
 import math
 from collections.abc import Iterator
@@ -70,7 +71,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             continue
         suspects = [
             f"{name} {value:g} ({value:g}° is {math.radians(value):.6g} rad)"
-            for name, value in zip(ANGLE_NAMES, rotation.values, strict=True)
+            for name, value in zip(ANGLE_NAMES, rotation.values)
             if looks_like_degrees(value)
         ]
         if not suspects:
