@@ -315,9 +315,9 @@ def _positional_message(rotation_size: int, words: list[str]) -> str:
     names = ("--x", "--y", "--z") + (
         ("--yaw", "--pitch", "--roll") if rotation_size == 3 else QUATERNION_FLAGS
     )
-    flags = [f"{flag} {word}" for flag, word in zip(names, words, strict=False)]
+    flags = [f"{flag} {word}" for flag, word in zip(names, words)]
     flags += [
-        f"{flag} {word}" for flag, word in zip(FRAME_FLAGS, words[len(names):], strict=False)
+        f"{flag} {word}" for flag, word in zip(FRAME_FLAGS, words[len(names):])
     ]
     return (
         "old-style positional arguments are deprecated ('Old-style arguments are "

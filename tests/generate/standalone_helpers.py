@@ -92,7 +92,7 @@ NEWEST_MINOR = 13
 """The newest Python 3 the tests look for."""
 
 
-@functools.cache
+@functools.lru_cache(maxsize=None)
 def other_pythons() -> tuple[str, ...]:
     """Working interpreters of Python 3.8 to 3.13 other than this one (pyenv's, then those
     on PATH), oldest first."""

@@ -791,7 +791,7 @@ class Interpreter:
         spec = function.node.args
         local = Env(function.closure)
         names = [a.arg for a in (*spec.posonlyargs, *spec.args)]
-        for name, value in zip(names, args, strict=False):
+        for name, value in zip(names, args):
             local.vars[name] = value
         if len(args) > len(names):
             if spec.vararg is None:
@@ -860,7 +860,7 @@ class Interpreter:
             if name == "enumerate" and len(sequences) == 1:
                 return [(i, v) for i, v in enumerate(sequences[0])]
             if name == "zip":
-                return [tuple(group) for group in zip(*sequences, strict=False)]
+                return [tuple(group) for group in zip(*sequences)]
             if name == "sorted" and len(sequences) == 1 and all(
                 isinstance(v, (str, int, float)) for v in sequences[0]
             ):

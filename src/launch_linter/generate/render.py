@@ -183,7 +183,7 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
         if not (
             _MODULE_NAME.fullmatch(module.name)
             and _MODULE_PATH.fullmatch(module.path)
-            and _SHA256.fullmatch(module.original_sha256)
+            and _SHA256.fullmatch(module.sha256)
         ):
             raise RenderError(f"not an embeddable module: {module.name!r} ({module.path!r})")
     selected = beliefs.restricted(options.classes)
@@ -204,7 +204,7 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
             # Checked above to hold only these characters, so they may stand in a comment.
             "path": Code(m.path),
             "is_package": m.is_package,
-            "sha256": Code(m.original_sha256),
+            "sha256": Code(m.sha256),
             "literal": source_literal(m.source),
         }
         for m in embedding.modules

@@ -935,7 +935,7 @@ def _fn_map(it: _Interpreter, args: tuple[object, ...]) -> object:
     sources = [it.items(source, "map()") for source in args[1:]]
     # Charged up front so that an oversized map is refused before any call is made.
     it.charge(min(len(source) for source in sources))
-    results = [it.call(function, group) for group in zip(*sources, strict=False)]
+    results = [it.call(function, group) for group in zip(*sources)]
     it.meta(results)
     return _MapObject(results)
 
