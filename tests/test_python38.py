@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import ast
 import subprocess
-import sys
 import textwrap
 from pathlib import Path
 from typing import Iterator
@@ -118,6 +117,19 @@ def problems(source: str, name: str) -> Iterator[str]:
                 _union(node.args[1])
             ):
                 yield f"{where}: {called}() with 'X | Y' needs Python 3.10 (use a tuple)"
+    # ``ast.Subscript.slice`` is wrapped in ``ast.Index`` on 3.8; subscript_index unwraps it.
+    called = {id(n.func) for n in ast.walk(tree) if isinstance(n, ast.Call)}
+    unwrapper = [n for n in ast.walk(tree)
+                 if isinstance(n, ast.FunctionDef) and n.name == "subscript_index"]
+    inside = {id(n) for f in unwrapper for n in ast.walk(f)}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and node.attr == "slice" and (
+            id(node) not in called and id(node) not in inside
+        ):
+            yield (
+                f"{name}:{node.lineno}: .slice of a subscript is ast.Index on Python 3.8;"
+                " use resolve.safe_eval.subscript_index"
+            )
     # Values evaluated at import: module- and class-level assignments and base classes.
     scopes: list[ast.AST] = [tree, *(n for n in ast.walk(tree) if isinstance(n, ast.ClassDef))]
     for scope in scopes:
@@ -161,6 +173,7 @@ def test_every_file_is_python_3_8() -> None:
     ("from functools import cache\n", "functools.cache needs Python 3.9"),
     ("import datetime\nnow = datetime.UTC\n", "datetime.UTC needs Python 3.11"),
     ("import tomllib\n", "tomllib needs Python 3.11"),
+    ("key = node.slice\n", "use resolve.safe_eval.subscript_index"),
     ("def f(x: list[int]) -> None:\n    pass\n", "without 'from __future__"),
 ])
 def test_what_python_3_8_cannot_run_is_found(source: str, expected: str) -> None:

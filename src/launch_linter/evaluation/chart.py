@@ -2,7 +2,17 @@
 
 from __future__ import annotations
 
+import importlib.util
+
 from launch_linter.evaluation.table import FaultTable
+
+PLOT_HINT = "pip install 'launch-linter[plot]'"
+"""How to get matplotlib, which only the chart needs (a plain install leaves it out)."""
+
+
+def chart_available() -> bool:
+    """Whether matplotlib is installed (looked up, not imported: importing it is slow)."""
+    return importlib.util.find_spec("matplotlib") is not None
 
 
 def write_chart(table: FaultTable, path: str, title: str) -> None:

@@ -6,7 +6,8 @@ import argparse
 import sqlite3
 import sys
 
-from launch_linter.evaluation.evaluate import EvaluationError, evaluate, write_outputs
+from launch_linter.evaluation.chart import PLOT_HINT, chart_available
+from launch_linter.evaluation.evaluate import CHART, EvaluationError, evaluate, write_outputs
 
 EXIT_OK, EXIT_USAGE = 0, 2
 
@@ -31,6 +32,8 @@ def run_evaluate(ns: argparse.Namespace) -> int:
         f"history: {fixed} faults of earlier versions fixed, {persisting} persisting\n"
         f"wrote {', '.join(paths)}\n"
     )
+    if not chart_available():
+        sys.stderr.write(f"launch-linter: {CHART} not drawn: it needs matplotlib ({PLOT_HINT})\n")
     for where, reason in evaluation.scope.not_linted:
         sys.stderr.write(f"launch-linter: warning: {where}: {reason}\n")
     return EXIT_OK

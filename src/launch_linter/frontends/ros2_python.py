@@ -55,6 +55,7 @@ from launch_linter.frontends.ros2_actions import (
 )
 from launch_linter.frontends.xml_safe import MAX_BYTES
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
+from launch_linter.resolve.safe_eval import subscript_index
 from launch_linter.resolve.value import Value, holes, resolved_text
 
 FORMAT = "ros2-python"
@@ -394,7 +395,7 @@ class Interpreter:
                     self.assign(name, reason, env)
         elif isinstance(target, ast.Subscript):
             container = self.eval(target.value, env)
-            key = self.eval(target.slice, env)
+            key = self.eval(subscript_index(target), env)
             if isinstance(container, dict) and isinstance(key, (str, int, float, bool)):
                 container[key] = value
 
@@ -534,7 +535,8 @@ class Interpreter:
                 return self.unknown(node, "depends on a condition the linter cannot decide")
             return self.eval(node.body if test else node.orelse, env)
         if isinstance(node, ast.Subscript):
-            return self.subscript(self.eval(node.value, env), self.eval(node.slice, env), node)
+            key = self.eval(subscript_index(node), env)
+            return self.subscript(self.eval(node.value, env), key, node)
         if isinstance(node, (ast.ListComp, ast.GeneratorExp)):
             return self.comprehension(node, env)
         if isinstance(node, ast.Lambda):

@@ -76,6 +76,7 @@ __all__ = [
     "EvalScope",
     "EvalUnresolved",
     "evaluate",
+    "subscript_index",
 ]
 
 MAX_SOURCE_CHARS: Final = 10_000
@@ -103,6 +104,19 @@ _TEXT_ITEMS_PER_UNIT: Final = 4
 # Arithmetic on integers of about 100,000 bits takes milliseconds.
 _BITS_PER_UNIT: Final = 32
 _MAX_MESSAGE: Final = 200
+
+
+def subscript_index(node: ast.Subscript) -> ast.expr:
+    """``node.slice`` as Python 3.9+ parses it: Python 3.8 wraps an index in ``ast.Index``
+    and a tuple holding slices (``a[1:2, 3]``) in ``ast.ExtSlice``."""
+    inner: Any = node.slice
+    kind = type(inner).__name__
+    if kind == "Index":
+        index: ast.expr = inner.value
+        return index
+    if kind == "ExtSlice":
+        return ast.copy_location(ast.Tuple(elts=list(inner.dims), ctx=ast.Load()), node)
+    return node.slice
 
 
 class EvalError(Exception):
@@ -643,13 +657,14 @@ class _Interpreter:
 
     def _subscript(self, node: ast.Subscript) -> object:
         container = self.eval(node.value)
-        if isinstance(node.slice, ast.Slice):
+        key = subscript_index(node)
+        if isinstance(key, ast.Slice):
             bounds = [
                 None if part is None else self.eval(part)
-                for part in (node.slice.lower, node.slice.upper, node.slice.step)
+                for part in (key.lower, key.upper, key.step)
             ]
             return self.slice(container, bounds[0], bounds[1], bounds[2])
-        index = self.eval(node.slice)
+        index = self.eval(key)
         return self.index(container, index)
 
     def slice(self, container: object, lower: object, upper: object, step: object) -> object:
