@@ -535,8 +535,8 @@ class Interpreter:
                 return self.unknown(node, "depends on a condition the linter cannot decide")
             return self.eval(node.body if test else node.orelse, env)
         if isinstance(node, ast.Subscript):
-            key = self.eval(subscript_index(node), env)
-            return self.subscript(self.eval(node.value, env), key, node)
+            container = self.eval(node.value, env)
+            return self.subscript(container, self.eval(subscript_index(node), env), node)
         if isinstance(node, (ast.ListComp, ast.GeneratorExp)):
             return self.comprehension(node, env)
         if isinstance(node, ast.Lambda):
