@@ -102,7 +102,7 @@ class Report:
 
 def compare(path: str, row: dict[str, Any], tree: LaunchTree, report: Report) -> None:
     name = os.path.basename(path)
-    rules = {d.rule for d in tree.diagnostics}
+    rules = {d.rule for d in tree.problems}
     if "error" in row:
         report.refused[row["error_type"]] += 1
         seen = sorted(rules & {"parse_error", "roslaunch_error", "unresolved"})
@@ -140,7 +140,7 @@ def compare(path: str, row: dict[str, Any], tree: LaunchTree, report: Report) ->
                                  f"{where} ours {mine[index]!r}, roslaunch {key[index]!r}"))
     if tree.status.value != "ok":
         problems.append(("ours parse_error, roslaunch loads", name))
-    errors = [d for d in tree.diagnostics if d.rule in ("parse_error", "roslaunch_error")]
+    errors = [d for d in tree.problems if d.rule in ("parse_error", "roslaunch_error")]
     if errors:
         problems.append(("ours reports a roslaunch error, roslaunch loads",
                          f"{name}:{errors[0].line} {errors[0].message[:120]}"))

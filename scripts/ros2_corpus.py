@@ -48,7 +48,7 @@ def main(argv: list[str]) -> int:
             issues.update(issue.kind for issue in transform.arg_issues)
             issues["arity_issue"] += transform.arity_issue is not None
             issues["number_issues"] += bool(transform.number_issues)
-        diagnostics.update(d.rule for d in tree.diagnostics)
+        diagnostics.update(d.rule for d in tree.problems)
     elapsed = time.perf_counter() - start
     print(f"corpus: {corpus} ({len(files)} files)")
     for key in sorted(counts):

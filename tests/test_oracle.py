@@ -88,7 +88,7 @@ def test_same_static_transforms_as_roslaunch(name: str, oracle: dict[str, dict[s
     row = oracle[name]
     tree = _ours(name)
     if not row["ok"]:
-        blocking = [d for d in tree.diagnostics
+        blocking = [d for d in tree.problems
                     if d.rule in ("parse_error", "roslaunch_error", "unresolved")]
         assert blocking, f"roslaunch refuses {name} ({row['error']}) but we report nothing"
         return
@@ -105,7 +105,7 @@ def test_same_static_transforms_as_roslaunch(name: str, oracle: dict[str, dict[s
     )
     assert ours == theirs
     for transform in tree.transforms:
-        assert transform.unresolved == (), transform
+        assert transform.unresolved_names == (), transform
         assert transform.condition.always, transform
-    errors = [d for d in tree.diagnostics if d.rule in ("parse_error", "roslaunch_error")]
+    errors = [d for d in tree.problems if d.rule in ("parse_error", "roslaunch_error")]
     assert errors == []

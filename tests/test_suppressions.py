@@ -237,7 +237,7 @@ def _tree(comments: list[tuple[int, str]], lines: list[int]) -> LaunchTree:
         root="robot.launch.py",
         status=FileStatus.OK,
         transforms=(),
-        diagnostics=(),
+        problems=(),
         files=("robot.launch.py",),
         comments=tuple(Comment("robot.launch.py", line, text) for line, text in comments),
         element_lines=tuple(("robot.launch.py", line) for line in lines),

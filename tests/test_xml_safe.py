@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from launch_linter.frontends.xml_safe import (
+from launch_linter.resolve.xml_safe import (
     MAX_BYTES,
     MAX_DEPTH,
     MAX_ELEMENTS,

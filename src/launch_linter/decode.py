@@ -15,7 +15,7 @@ import math
 import re
 from dataclasses import dataclass
 
-from launch_linter.model.transform import NumberIssue, Rotation, RotationKind
+from launch_linter.model.transform import ArgForm, NumberIssue, Rotation, RotationKind
 
 # What C's strtod (hence atof) reads, in the "C" locale. Hexadecimal comes first because a
 # regex alternation takes the first branch that matches, and "0x10" must not stop at "0".
@@ -81,7 +81,7 @@ def is_number(text: str) -> bool:
 class Decoded:
     """What the program makes of the words (treat as read-only)."""
 
-    form: str
+    form: ArgForm
     parent: str | None
     child: str | None
     translation: tuple[float, float, float] | None
@@ -121,7 +121,7 @@ _NUMERIC_INDICES = {
 
 
 def _layout(
-    words: tuple[str, ...], rotation_size: int, with_period: bool, form: str, issue: str | None
+    words: tuple[str, ...], rotation_size: int, with_period: bool, form: ArgForm, issue: str | None
 ) -> Decoded:
     numeric = 3 + rotation_size
     values, issues = _numbers(words, numeric)
@@ -147,7 +147,7 @@ def _layout(
 
 
 def _invalid(issue: str) -> Decoded:
-    return Decoded("invalid", None, None, None, None, None, issue, (), (), None, None)
+    return Decoded(ArgForm.INVALID, None, None, None, None, None, issue, (), (), None, None)
 
 
 def decode_ros1(package: str, tokens: tuple[str, ...]) -> Decoded:
@@ -158,17 +158,17 @@ def decode_ros1(package: str, tokens: tuple[str, ...]) -> Decoded:
         if count == 9:
             if not is_number(words[8]) and is_number(words[6]):
                 return _layout(
-                    words, 4, False, "quaternion",
+                    words, 4, False, ArgForm.QUATERNION,
                     f"tf needs a period after the child frame: with 9 arguments it reads "
                     f"'{words[6]}' as the parent frame, '{words[7]}' as the child and "
                     f"'{words[8]}' as the period",
                 )
-            return _layout(words, 3, True, "ypr", None)
+            return _layout(words, 3, True, ArgForm.YPR, None)
         if count == 10:
-            return _layout(words, 4, True, "quaternion", None)
+            return _layout(words, 4, True, ArgForm.QUATERNION, None)
         if count == 8:
             return _layout(
-                words, 3, False, "ypr",
+                words, 3, False, ArgForm.YPR,
                 "tf needs 9 or 10 arguments (the last is the period in ms); "
                 "with 8 it prints its usage and exits",
             )
@@ -177,23 +177,23 @@ def decode_ros1(package: str, tokens: tuple[str, ...]) -> Decoded:
             f"(x y z qx qy qz qw parent child period_ms) arguments, not {count}"
         )
     if count == 8:
-        return _layout(words, 3, False, "ypr", None)
+        return _layout(words, 3, False, ArgForm.YPR, None)
     if count == 9:
         if not is_number(words[6]) and is_number(words[8]):
             return _layout(
-                words, 3, True, "ypr",
+                words, 3, True, ArgForm.YPR,
                 f"tf2_ros takes no period: with 9 arguments it reads a quaternion with "
                 f"qw='{words[6]}' ({atof(words[6])[0]:g}), parent '{words[7]}' and child "
                 f"'{words[8]}'",
             )
-        return _layout(words, 4, False, "quaternion", None)
+        return _layout(words, 4, False, ArgForm.QUATERNION, None)
     if count == 10:
         return _layout(
-            words, 4, True, "quaternion",
+            words, 4, True, ArgForm.QUATERNION,
             "tf2_ros takes no period: with 10 arguments it prints its usage and exits",
         )
     if count == 1:
-        return Decoded("param", None, None, None, None, None, None, (), (), None, None)
+        return Decoded(ArgForm.PARAM, None, None, None, None, None, None, (), (), None, None)
     return _invalid(
         f"tf2_ros takes 8 (x y z yaw pitch roll parent child), 9 "
         f"(x y z qx qy qz qw parent child) or 1 (/param_name) arguments, not {count}"

@@ -32,7 +32,16 @@ import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
-from launch_linter.model.transform import ArgIssue, NumberIssue, Rotation, RotationKind
+from launch_linter.model.transform import (
+    DECODED_FIELDS,
+    ArgForm,
+    ArgIssue,
+    ArgIssueKind,
+    Field,
+    NumberIssue,
+    Rotation,
+    RotationKind,
+)
 
 TRANSLATION_FLAGS = ("--x", "--y", "--z")
 QUATERNION_FLAGS = ("--qx", "--qy", "--qz", "--qw")
@@ -91,8 +100,8 @@ def stod(text: str) -> tuple[float | None, str]:
 
 @dataclass(frozen=True)
 class Ros2Decoded:
-    form: str
-    """``ypr``, ``quaternion`` or ``invalid`` (nothing could be decoded)."""
+    form: ArgForm
+    """``YPR``, ``QUATERNION`` or ``INVALID`` (nothing could be decoded)."""
     parent: str | None
     child: str | None
     translation: tuple[float, float, float] | None
@@ -100,9 +109,9 @@ class Ros2Decoded:
     arity_issue: str | None
     number_issues: tuple[NumberIssue, ...]
     arg_issues: tuple[ArgIssue, ...]
-    sources: Mapping[str, tuple[int, ...]] = field(default_factory=dict)
+    sources: Mapping[Field, tuple[int, ...]] = field(default_factory=dict)
     """For ``parent``, ``child``, ``translation`` and ``rotation``: the input items read."""
-    unresolved: tuple[str, ...] = ()
+    unresolved: frozenset[Field] = frozenset()
     """Those of the four fields read from an unresolved input item."""
 
 
@@ -110,13 +119,14 @@ def _flag_like(word: str) -> bool:
     return word.startswith("-") and len(word) > 1 and stod(word)[1] == "invalid"
 
 
-def _suggest(word: str, following: str | None) -> str:
+def _suggest(word: str, following: str | None) -> ArgIssue:
+    """An unknown flag, with the flag probably meant: ``split`` when it is ``-- NAME``."""
     if word == "--" and following is not None and "--" + following in VALUE_FLAGS:
-        return f" (did you mean '--{following}', without the space?)"
+        return ArgIssue(ArgIssueKind.UNKNOWN_FLAG, (word,), ("--" + following,), split=True)
     candidates = difflib.get_close_matches(
         word.replace("_", "-").lower(), VALUE_FLAGS + HELP_FLAGS, n=1, cutoff=0.6
     )
-    return f" (did you mean '{candidates[0]}'?)" if candidates else ""
+    return ArgIssue(ArgIssueKind.UNKNOWN_FLAG, (word,), tuple(candidates[:1]))
 
 
 class _Reader:
@@ -209,17 +219,12 @@ def decode_ros2(items: Sequence[str], unresolved: frozenset[int] = frozenset()) 
         position += 1
 
     for item in joined:
-        reader.issues.append(ArgIssue(
-            "single_string",
-            f"the argument {item!r} is one argv item holding {len(item.split())} words: "
-            f"the program does not split it and stops with 'Extra unparsed arguments on "
-            f"command-line'; give each word as its own item",
-        ))
+        reader.issues.append(ArgIssue(ArgIssueKind.SINGLE_STRING, (item,)))
     if help_asked:
         reader.arity = (
             "'--help' makes the program print its usage and exit: no transform is published"
         )
-        return _result(reader, "invalid", None, None, None, None, {})
+        return _result(reader, ArgForm.INVALID, None, None, None, None, {})
 
     positional = _drop_unknown_flags(reader, bare)
     if len(positional) in (8, 9):
@@ -228,7 +233,7 @@ def decode_ros2(items: Sequence[str], unresolved: frozenset[int] = frozenset()) 
         _wrong_count(reader, positional)
         if len(positional) == 10:
             return _layout(reader, positional, 4)
-        return _result(reader, "invalid", None, None, None, None, {})
+        return _result(reader, ArgForm.INVALID, None, None, None, None, {})
     if positional:
         extra = " ".join(repr(word) for _, word in positional)
         reader.arity = (
@@ -250,11 +255,7 @@ def _drop_unknown_flags(reader: _Reader, bare: list[tuple[int, str]]) -> list[tu
             positional.append((index, word))
             continue
         following = bare[position + 1][1] if position + 1 < len(bare) else None
-        reader.issues.append(ArgIssue(
-            "unknown_flag",
-            f"unknown flag '{word}'{_suggest(word, following)}: the program stops with "
-            f"'Extra unparsed arguments on command-line'",
-        ))
+        reader.issues.append(_suggest(word, following))
         if word == "--" and following is not None and "--" + following in VALUE_FLAGS:
             skip = 2  # '-- yaw 90': the flag's name and its value
         elif following is not None and not _flag_like(following):
@@ -295,35 +296,17 @@ def _positional(reader: _Reader, positional: list[tuple[int, str]],
         rotation_size = 3
     new_style = [f for f in flags if f not in RPY_FLAGS]
     if new_style:
-        reader.issues.append(ArgIssue(
-            "mixed_styles",
-            f"flags ({', '.join(new_style)}) together with old-style positional arguments: "
-            f"the program stops with 'Cannot specify both new-style (flags) and old-style "
-            f"(arguments)'",
-        ))
+        reader.issues.append(ArgIssue(ArgIssueKind.MIXED_STYLES, tuple(new_style)))
     elif flags:
-        reader.issues.append(ArgIssue(
-            "mixed_styles",
-            f"flags ({', '.join(flags)}) together with old-style positional arguments: "
-            f"the program silently replaces them with the positional rotation",
-        ))
-    reader.issues.append(ArgIssue("positional", _positional_message(rotation_size, words)))
-    return _layout(reader, positional, rotation_size)
-
-
-def _positional_message(rotation_size: int, words: list[str]) -> str:
+        # Only rpy flags: the program silently replaces them with the positional rotation.
+        reader.issues.append(ArgIssue(ArgIssueKind.MIXED_STYLES, tuple(flags), fatal=False))
     names = ("--x", "--y", "--z") + (
         ("--yaw", "--pitch", "--roll") if rotation_size == 3 else QUATERNION_FLAGS
     )
-    flags = [f"{flag} {word}" for flag, word in zip(names, words)]
-    flags += [
-        f"{flag} {word}" for flag, word in zip(FRAME_FLAGS, words[len(names):])
-    ]
-    return (
-        "old-style positional arguments are deprecated ('Old-style arguments are "
-        "deprecated') and recent ROS 2 distributions reject them ('Frame id must not be "
-        f"empty'); write: {' '.join(flags)}"
+    reader.issues.append(
+        ArgIssue(ArgIssueKind.POSITIONAL, tuple(words), names + FRAME_FLAGS)
     )
+    return _layout(reader, positional, rotation_size)
 
 
 def _layout(reader: _Reader, positional: list[tuple[int, str]], rotation_size: int
@@ -337,13 +320,13 @@ def _layout(reader: _Reader, positional: list[tuple[int, str]], rotation_size: i
     ]
     kind = RotationKind.YPR if rotation_size == 3 else RotationKind.QUATERNION
     return _result(
-        reader, kind.value, positional[numeric][1], positional[numeric + 1][1],
+        reader, ArgForm(kind.value), positional[numeric][1], positional[numeric + 1][1],
         (values[0], values[1], values[2]), Rotation(kind, tuple(values[3:numeric])),
         {
-            "translation": tuple(indices[:3]),
-            "rotation": tuple(indices[3:numeric]),
-            "parent": (indices[numeric],),
-            "child": (indices[numeric + 1],),
+            Field.TRANSLATION: tuple(indices[:3]),
+            Field.ROTATION: tuple(indices[3:numeric]),
+            Field.PARENT: (indices[numeric],),
+            Field.CHILD: (indices[numeric + 1],),
         },
     )
 
@@ -357,11 +340,9 @@ def _flags(reader: _Reader, flags: dict[str, tuple[int, str]]) -> Ros2Decoded:
     )
     rotation: Rotation | None
     if rpy and quaternion:
-        reader.issues.append(ArgIssue(
-            "rpy_and_quaternion",
-            f"{', '.join(rpy)} together with {', '.join(quaternion)}: the program stops "
-            f"with 'Cannot specify both quaternion and Euler rotations'",
-        ))
+        reader.issues.append(
+            ArgIssue(ArgIssueKind.RPY_AND_QUATERNION, tuple(rpy), tuple(quaternion))
+        )
         rotation = None
     elif quaternion:
         defaults = (0.0, 0.0, 0.0, 1.0)
@@ -373,12 +354,9 @@ def _flags(reader: _Reader, flags: dict[str, tuple[int, str]]) -> Ros2Decoded:
         missing = [f for f in QUATERNION_FLAGS if f not in flags]
         norm = sum(v * v for v in values)
         if missing and math.isfinite(norm) and abs(norm - 1.0) >= TF2_TOLERANCE:
-            reader.issues.append(ArgIssue(
-                "partial_quaternion",
-                f"quaternion without {', '.join(missing)}: missing components stay at "
-                f"(0, 0, 0, 1), giving ({', '.join(f'{v:g}' for v in values)}), which is "
-                f"not unit length and tf2 rejects",
-            ))
+            reader.issues.append(
+                ArgIssue(ArgIssueKind.PARTIAL_QUATERNION, tuple(missing), values=values)
+            )
     else:
         # Rotation values keep the ypr layout (yaw, pitch, roll) of the positional form.
         order = ("--yaw", "--pitch", "--roll")
@@ -387,29 +365,26 @@ def _flags(reader: _Reader, flags: dict[str, tuple[int, str]]) -> Ros2Decoded:
             for slot, f in enumerate(order)
         ))
     frames: list[str | None] = []
-    for flag, what in zip(FRAME_FLAGS, ("Frame id", "Child frame id")):
+    for flag in FRAME_FLAGS:
         value = flags[flag][1] if flag in flags else None
         if value is None or (value == "" and reader.resolved(flags[flag][0])):
-            reader.issues.append(ArgIssue(
-                "missing_frame",
-                f"no {flag}: the program stops with '{what} must not be empty'",
-            ))
+            reader.issues.append(ArgIssue(ArgIssueKind.MISSING_FRAME, (flag,)))
             value = None
         frames.append(value)
     sources = {
-        "translation": tuple(flags[f][0] for f in TRANSLATION_FLAGS if f in flags),
-        "rotation": tuple(flags[f][0] for f in rpy + quaternion),
-        "parent": tuple(flags[f][0] for f in FRAME_FLAGS[:1] if f in flags),
-        "child": tuple(flags[f][0] for f in FRAME_FLAGS[1:] if f in flags),
+        Field.TRANSLATION: tuple(flags[f][0] for f in TRANSLATION_FLAGS if f in flags),
+        Field.ROTATION: tuple(flags[f][0] for f in rpy + quaternion),
+        Field.PARENT: tuple(flags[f][0] for f in FRAME_FLAGS[:1] if f in flags),
+        Field.CHILD: tuple(flags[f][0] for f in FRAME_FLAGS[1:] if f in flags),
     }
-    form = RotationKind.QUATERNION.value if quaternion and not rpy else RotationKind.YPR.value
+    form = ArgForm.QUATERNION if quaternion and not rpy else ArgForm.YPR
     return _result(reader, form, frames[0], frames[1],
                    (translation[0], translation[1], translation[2]), rotation, sources)
 
 
-def _result(reader: _Reader, form: str, parent: str | None, child: str | None,
+def _result(reader: _Reader, form: ArgForm, parent: str | None, child: str | None,
             translation: tuple[float, float, float] | None, rotation: Rotation | None,
-            sources: Mapping[str, tuple[int, ...]]) -> Ros2Decoded:
+            sources: Mapping[Field, tuple[int, ...]]) -> Ros2Decoded:
     return Ros2Decoded(
         form=form,
         parent=parent,
@@ -420,8 +395,8 @@ def _result(reader: _Reader, form: str, parent: str | None, child: str | None,
         number_issues=tuple(reader.numbers),
         arg_issues=tuple(reader.issues),
         sources=sources,
-        unresolved=tuple(
-            key for key in ("translation", "rotation", "parent", "child")
+        unresolved=frozenset(
+            key for key in DECODED_FIELDS
             if any(i in reader.unresolved for i in sources.get(key, ()))
         ),
     )
@@ -466,17 +441,15 @@ def decode_component(params: Mapping[str, ComponentParam], complete: bool = True
     ]
     absent = [name for name in COMPONENT_PARAMS[7:] if name not in params]
     if absent and complete:
-        reader.issues.append(ArgIssue(
-            "default_frames",
-            f"no {' or '.join(absent)} parameter: the component publishes "
-            f"'{frames[0]}' -> '{frames[1]}' (its defaults are '/frame' and '/child')",
-        ))
+        reader.issues.append(
+            ArgIssue(ArgIssueKind.DEFAULT_FRAMES, tuple(absent), (frames[0], frames[1]))
+        )
     sources = {
-        "translation": (0, 1, 2),
-        "rotation": (3, 4, 5, 6),
-        "parent": (7,),
-        "child": (8,),
+        Field.TRANSLATION: (0, 1, 2),
+        Field.ROTATION: (3, 4, 5, 6),
+        Field.PARENT: (7,),
+        Field.CHILD: (8,),
     }
-    return _result(reader, RotationKind.QUATERNION.value, frames[0], frames[1],
+    return _result(reader, ArgForm.QUATERNION, frames[0], frames[1],
                    (values[0], values[1], values[2]),
                    Rotation(RotationKind.QUATERNION, tuple(values[3:7])), sources)

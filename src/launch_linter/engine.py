@@ -16,6 +16,7 @@ from launch_linter.model.launch import FileRecord, LaunchTree
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import PackageIndex, default_package_roots
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+from launch_linter.rules._api import Finding, finding_of
 from launch_linter.suppressions import (
     UNUSED_ID,
     PathIgnore,
@@ -141,22 +142,15 @@ def load_options_for(
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
-    """Run ``rules`` on one tree and apply severity overrides."""
+    """Run ``rules`` on one tree; each finding becomes a diagnostic stamped by its rule."""
     context = RuleContext(tree, options.beliefs)
-    return [_override(d, options) for rule in rules for d in rule.check(context)]
+    return [_stamp(rule, f, options) for rule in rules for f in rule.check(context)]
 
 
-def _override(diagnostic: Diagnostic, options: LintOptions) -> Diagnostic:
-    level = options.severity.get(diagnostic.rule)
-    if level is not None and level is not diagnostic.severity:
-        return _with_severity(diagnostic, level)
-    return diagnostic
-
-
-def _with_severity(diagnostic: Diagnostic, severity: Severity) -> Diagnostic:
-    from dataclasses import replace
-
-    return replace(diagnostic, severity=severity)
+def _stamp(rule: Rule, finding: Finding, options: LintOptions) -> Diagnostic:
+    # The one place where a rule's id, category and severity meet its findings, and where
+    # the configuration's and command line's severity overrides apply.
+    return rule.diagnostic(finding, options.severity.get(rule.id))
 
 
 def _file_record(item: InputFile, tree: LaunchTree) -> FileRecord:
@@ -169,6 +163,7 @@ def finish_diagnostics(
 ) -> tuple[Diagnostic, ...]:
     """Apply inline suppressions and per-path ignores to the rules' diagnostics, and sort."""
     ran = {r.id for r in selected_rules(options)}
+    unused_rule = RULES_BY_ID[UNUSED_ID]
     kept, unused = apply_suppressions(
         trees,
         diagnostics,
@@ -178,7 +173,7 @@ def finish_diagnostics(
     )
     out = [
         d
-        for d in (*kept, *(_override(u, options) for u in unused))
+        for d in (*kept, *(_stamp(unused_rule, finding_of(u), options) for u in unused))
         if not ignored_by_path(d, options.per_path_ignores)
     ]
     return tuple(sorted(out, key=lambda d: d.sort_key))

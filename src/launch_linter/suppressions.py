@@ -24,7 +24,7 @@ from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Diagnostic, Problem
 from launch_linter.model.launch import LaunchTree
 
 UNUSED_ID = "unused_suppression"
@@ -140,14 +140,14 @@ def _names(diagnostic: Diagnostic) -> tuple[str, str]:
     return (diagnostic.rule, diagnostic.category.value)
 
 
-def _covers(directive: Directive, diagnostic: Diagnostic) -> bool:
+def _covers(directive: Directive, diagnostic: Diagnostic | Problem) -> bool:
     if diagnostic.path != directive.path:
         return False
     return directive.whole_file or diagnostic.line == directive.target
 
 
-def _unused(path: str, line: int, message: str) -> Diagnostic:
-    return Diagnostic(UNUSED_ID, Category.LAUNCH, Severity.INFO, path, line, 1, message)
+def _unused(path: str, line: int, message: str) -> Problem:
+    return Problem(UNUSED_ID, path, line, 1, message)
 
 
 def apply_suppressions(
@@ -156,8 +156,11 @@ def apply_suppressions(
     known: Mapping[str, str],
     ran: Collection[str],
     report_unused: bool,
-) -> tuple[list[Diagnostic], list[Diagnostic]]:
+) -> tuple[list[Diagnostic], list[Problem]]:
     """Drop what the directives in ``trees`` suppress; return (kept, unused-suppression).
+
+    The unused-suppression problems carry no severity: the engine stamps them from the
+    rule registry like every other rule's findings.
 
     ``known`` maps every rule id to its category; ``ran`` holds the ids of the rules that
     ran. ``report_unused`` is False when ``unused_suppression`` itself is not selected.
@@ -181,7 +184,7 @@ def apply_suppressions(
     if not report_unused:
         return kept, []
     ran_categories = {known[r] for r in ran if r in known}
-    unused: list[Diagnostic] = [
+    unused: list[Problem] = [
         _unused(m.path, m.line, f"not a launch-linter directive: {m.text!r} "
                 "(expected 'launch-linter: disable=RULE,…' or 'disable-file=RULE,…')")
         for m in malformed

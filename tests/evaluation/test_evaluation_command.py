@@ -11,7 +11,7 @@ from conftest import MakeDb
 from evaluation_helpers import launch, node
 
 from launch_linter.cli import main
-from launch_linter.evaluation import chart, commands
+from launch_linter.evaluation import chart
 from launch_linter.evaluation import evaluate as evaluate_module
 from launch_linter.evaluation.evaluate import EvaluationError, evaluate
 from launch_linter.evaluation.history import FIXED, PERSISTING
@@ -123,7 +123,6 @@ def test_without_matplotlib_everything_but_the_chart_is_written_and_one_line_say
     # As a plain install (no plot extra) finds it: matplotlib not installed.
     monkeypatch.setattr(chart, "chart_available", lambda: False)
     monkeypatch.setattr(evaluate_module, "chart_available", lambda: False)
-    monkeypatch.setattr(commands, "chart_available", lambda: False)
     _, db = make_db(corpus_rows())
     out = tmp_path / "out"
     assert main(["evaluate", "--db", str(db), "--out", str(out)]) == 0

@@ -57,7 +57,7 @@ def test_tf2_real_quaternion_is_not_a_period(tmp_path: Path) -> None:
 def test_tf2_one_arg_parameter_form(tmp_path: Path) -> None:
     t = load_one(tmp_path, "tf2_ros", "/static_tf/laser")
     assert (t.form, t.arity_issue, t.parent, t.child) == ("param", None, None, None)
-    assert t.unresolved == ()
+    assert t.unresolved_names == ()
 
 
 def test_args_spanning_lines_with_any_whitespace(tmp_path: Path) -> None:
@@ -94,11 +94,11 @@ def test_wrong_counts(tmp_path: Path) -> None:
 def test_a_hole_counts_as_one_word_when_that_gives_a_valid_form(tmp_path: Path) -> None:
     t = load_one(tmp_path, "tf", "0 0 0 0 0 0 base_link $(arg child) 100")
     assert (t.form, t.parent, t.child_written) == ("ypr", "base_link", "$(arg child)")
-    assert t.unresolved == ("child",)
+    assert t.unresolved_names == ("child",)
 
 
 def test_a_hole_that_may_be_several_words(tmp_path: Path) -> None:
     t = load_one(tmp_path, "tf", "0 0 0 $(arg rotation) base_link camera 100")
     assert t.form == "unknown"
-    assert t.unresolved == ("arity", "translation", "rotation", "parent", "child")
+    assert t.unresolved_names == ("arity", "translation", "rotation", "parent", "child")
     assert t.parent is None and t.rotation is None

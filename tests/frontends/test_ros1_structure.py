@@ -32,7 +32,7 @@ def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:
 
 
 def messages(tree: LaunchTree, rule: str) -> list[str]:
-    return [d.message for d in tree.diagnostics if d.rule == rule]
+    return [d.message for d in tree.problems if d.rule == rule]
 
 
 # --- if / unless -------------------------------------------------------------------------
@@ -50,7 +50,7 @@ def test_if_unless_truthiness(tmp_path: Path) -> None:
         </launch>""")
     assert [t.name for t in tree.transforms] == ["a", "c", "f"]
     assert all(t.condition.always for t in tree.transforms)
-    assert tree.diagnostics == ()
+    assert tree.problems == ()
 
 
 def test_if_that_is_not_a_boolean_is_a_roslaunch_error(tmp_path: Path) -> None:
@@ -76,7 +76,7 @@ def test_unresolved_condition_is_kept_as_the_presence_condition(tmp_path: Path) 
     transforms = by_name(tree)
     a, b, c = transforms["a"], transforms["b"], transforms["c"]
     assert a.condition.describe() == "if='$(arg sim)' and unless='$(arg real)'"
-    assert a.unresolved == ()
+    assert a.unresolved_names == ()
     assert b.condition.excludes(c.condition)
     assert not a.condition.excludes(b.condition)
 
@@ -93,7 +93,7 @@ def test_conditional_arg_idiom_is_not_a_redeclaration(tmp_path: Path) -> None:
     assert by_name(load(tmp_path, xml, args={"sim": "true"}))["n"].parent == "sim_base"
     unknown = load(tmp_path, xml.replace('default="false"', ""))
     transform = by_name(unknown)["n"]
-    assert transform.unresolved == ("parent",)
+    assert transform.unresolved_names == ("parent",)
     assert "unresolved condition" in transform.unresolved_reasons[0]
     assert messages(unknown, "roslaunch_error") == []
 
@@ -159,7 +159,7 @@ def test_unresolved_namespace(tmp_path: Path) -> None:
         </launch>""")
     transform = tree.transforms[0]
     assert transform.namespace == "/$(arg robot)/"
-    assert transform.unresolved == ("namespace",)
+    assert transform.unresolved_names == ("namespace",)
 
 
 def test_duplicate_node_names_are_a_roslaunch_error(tmp_path: Path) -> None:
@@ -170,7 +170,7 @@ def test_duplicate_node_names_are_a_roslaunch_error(tmp_path: Path) -> None:
           <group ns="other"><node {TF2} name="same" args="0 0 0 0 0 0 p c"/></group>
           <node if="false" {TF2} name="same" args="0 0 0 0 0 0 p d"/>
         </launch>""")
-    (duplicate,) = [d for d in tree.diagnostics if d.rule == "roslaunch_error"]
+    (duplicate,) = [d for d in tree.problems if d.rule == "roslaunch_error"]
     assert duplicate.message == "roslaunch file contains multiple nodes named [/same]"
     assert duplicate.line == 3
     assert [(r.line, r.column) for r in duplicate.related] == [(2, 3)]
@@ -213,7 +213,7 @@ def test_include_passes_args_and_checks_them(tmp_path: Path) -> None:
     assert any("unused args [nobody]" in m for m in errors)
     assert any("requires the 'parent' arg to be set" in m for m in errors)
     fourth = transforms[("/fourth/", "inc_child_default")]
-    assert fourth.unresolved == ("parent",)
+    assert fourth.unresolved_names == ("parent",)
 
 
 def test_included_file_does_not_see_the_parents_args(tmp_path: Path) -> None:
@@ -224,7 +224,7 @@ def test_included_file_does_not_see_the_parents_args(tmp_path: Path) -> None:
           <arg name="secret" default="s"/>
           <include file="$(dirname)/child.launch"/>
         </launch>""")
-    assert tree.transforms[0].unresolved == ("parent",)
+    assert tree.transforms[0].unresolved_names == ("parent",)
     assert any("requires the 'secret' arg" in m for m in messages(tree, "roslaunch_error"))
 
 
@@ -315,12 +315,12 @@ def test_unresolved_fields_reasons_and_condition(tmp_path: Path) -> None:
                 name="$(arg name)" args="$(arg x) 0 0 0 0 0 base $(env CHILD)"/>
         </launch>""")
     (transform,) = tree.transforms
-    assert transform.unresolved == ("name", "package", "translation", "child")
+    assert transform.unresolved_names == ("name", "package", "translation", "child")
     assert [r.split(":")[0] for r in transform.unresolved_reasons] == [
         "$(arg name)", "$(arg x)", "$(env CHILD)", "$(arg tf_pkg)",
     ]
     assert transform.condition.describe() == "if='$(arg use)'"
-    (info,) = [d for d in tree.diagnostics if d.rule == "unresolved"]
+    (info,) = [d for d in tree.problems if d.rule == "unresolved"]
     assert "$(env CHILD)" in info.message and info.node == "$(arg name)"
     assert transform.parent == "base"
 
@@ -366,7 +366,7 @@ def test_launch_element_conditions(tmp_path: Path) -> None:
     node = f'<node {TF2} name="n" args="0 0 0 0 0 0 a b"/>'
     ignored = load(tmp_path, f'<launch if="false">{node}</launch>')
     assert [t.name for t in ignored.transforms] == ["n"]
-    assert ignored.diagnostics == ()
+    assert ignored.problems == ()
     substituted = load(tmp_path, '<launch if="$(arg x)"/>')
     assert messages(substituted, "roslaunch_error")
 
@@ -374,7 +374,7 @@ def test_launch_element_conditions(tmp_path: Path) -> None:
 def test_unreadable_file(tmp_path: Path) -> None:
     tree = load_tree(str(tmp_path / "missing.launch"), LoadOptions())
     assert tree.status is FileStatus.UNREADABLE
-    assert tree.diagnostics[0].rule == "parse_error"
+    assert tree.problems[0].rule == "parse_error"
 
 
 def test_an_unresolved_namespace_names_the_substitution_that_blocks_it() -> None:
@@ -386,7 +386,7 @@ def test_an_unresolved_namespace_names_the_substitution_that_blocks_it() -> None
         'args="0 0 0 0 0 0 a b"/></group></launch>'
     )
     (transform,) = result.transforms
-    assert transform.unresolved == ("namespace",)
+    assert transform.unresolved_names == ("namespace",)
     assert any("$(arg robot)" in reason for reason in transform.unresolved_reasons)
     (diagnostic,) = [d for d in result.diagnostics if d.rule == "unresolved"]
     assert "$(arg robot)" in diagnostic.message

@@ -26,7 +26,7 @@ def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:
 
 
 def rules(tree: LaunchTree) -> list[str]:
-    return [d.rule for d in tree.diagnostics]
+    return [d.rule for d in tree.problems]
 
 
 def test_arg_default_is_used_when_no_value_is_given(tmp_path: Path) -> None:
@@ -47,7 +47,7 @@ def test_command_line_args_override_defaults_and_can_be_undeclared(tmp_path: Pat
     tree = load(tmp_path, xml, args={"parent": "chassis", "extra": " gps "})
     transform = by_name(tree)["n"]
     assert (transform.parent, transform.child) == ("chassis", "gps")
-    assert transform.unresolved == ()
+    assert transform.unresolved_names == ()
 
 
 def test_command_line_private_and_empty_args_are_ignored(tmp_path: Path) -> None:
@@ -67,7 +67,7 @@ def test_arg_value_cannot_be_overridden(tmp_path: Path) -> None:
         </launch>"""
     tree = load(tmp_path, xml, args={"child": "other"})
     assert by_name(tree)["n"].child == "other"
-    assert any("cannot override arg 'child'" in d.message for d in tree.diagnostics)
+    assert any("cannot override arg 'child'" in d.message for d in tree.problems)
 
 
 def test_required_arg_without_default_is_unresolved_until_given(tmp_path: Path) -> None:
@@ -78,11 +78,11 @@ def test_required_arg_without_default_is_unresolved_until_given(tmp_path: Path) 
           <node {TF2} name="n" args="0 0 0 0 0 0 world $(arg frame)"/>
         </launch>"""
     missing = by_name(load(tmp_path, xml))["n"]
-    assert missing.unresolved == ("child",)
+    assert missing.unresolved_names == ("child",)
     assert missing.child_written == "$(arg frame)"
     assert "--arg frame:=VALUE" in missing.unresolved_reasons[0]
     given = by_name(load(tmp_path, xml, args={"frame": "base"}))["n"]
-    assert (given.child, given.unresolved) == ("base", ())
+    assert (given.child, given.unresolved_names) == ("base", ())
 
 
 def test_eval_through_the_safe_interpreter(tmp_path: Path) -> None:
@@ -131,7 +131,7 @@ def test_find_through_package_xml_under_the_package_roots(tmp_path: Path) -> Non
     assert transforms["inc"].path.endswith("inc.launch")
     assert transforms["n"].child_written == f"{package}/_x"
     absent = transforms["m"]
-    assert absent.unresolved == ("child",)
+    assert absent.unresolved_names == ("child",)
     assert "package 'absent' not found" in absent.unresolved_reasons[0]
 
 
@@ -140,7 +140,7 @@ def test_find_without_package_roots_is_unresolved(tmp_path: Path) -> None:
         <launch>
           <include file="$(find my_robot)/launch/inc.launch"/>
         </launch>""")
-    (diagnostic,) = tree.diagnostics
+    (diagnostic,) = tree.problems
     assert diagnostic.rule == "unresolved"
     assert "not followed" in diagnostic.message and "my_robot" in diagnostic.message
 
@@ -153,10 +153,10 @@ def test_env_and_optenv_read_only_the_given_mapping(tmp_path: Path) -> None:
         </launch>"""
     tree = load(tmp_path, xml)
     unset = by_name(tree)["n"]
-    assert unset.unresolved == ("parent",) and unset.child == "child_default"
+    assert unset.unresolved_names == ("parent",) and unset.child == "child_default"
     assert by_name(tree)["words"].tokens[-2:] == ("two", "words")
     given = by_name(load(tmp_path, xml, env={"PARENT": "p", "CHILD": "c"}))["n"]
-    assert (given.parent, given.child, given.unresolved) == ("p", "c", ())
+    assert (given.parent, given.child, given.unresolved_names) == ("p", "c", ())
 
 
 def test_dirname_is_the_folder_of_the_file_holding_the_attribute(tmp_path: Path) -> None:
@@ -224,7 +224,7 @@ def test_lexer_errors_are_roslaunch_errors_and_leave_holes(tmp_path: Path) -> No
           <node {TF2} name="n" args="0 0 0 0 0 0 a $(arg $(arg x))"/>
           <node {TF2} name="m" args="0 0 0 0 0 0 a $(unknown x)"/>
         </launch>""")
-    messages = [d.message for d in tree.diagnostics if d.rule == "roslaunch_error"]
+    messages = [d.message for d in tree.problems if d.rule == "roslaunch_error"]
     assert any("Dollar signs" in m for m in messages)
     assert any("Unknown substitution command [unknown x]" in m for m in messages)
     for transform in tree.transforms:

@@ -6,13 +6,25 @@ import argparse
 import sqlite3
 import sys
 
-from launch_linter.evaluation.chart import PLOT_HINT, chart_available
-from launch_linter.evaluation.evaluate import CHART, EvaluationError, evaluate, write_outputs
-
-EXIT_OK, EXIT_USAGE = 0, 2
+from launch_linter.commands.common import EXIT_OK, EXIT_USAGE
 
 
-def run_evaluate(ns: argparse.Namespace) -> int:
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    evaluate = subparsers.add_parser(
+        "evaluate", help="reproduce the study's Table IV on a database"
+    )
+    evaluate.add_argument("--db", required=True)
+    evaluate.add_argument("--min-z", type=float, default=1.0)
+    evaluate.add_argument("--out", default="evaluation", metavar="DIR")
+    evaluate.add_argument("--beliefs", default=None)
+    evaluate.set_defaults(handler=run)
+
+
+def run(ns: argparse.Namespace) -> int:
+    # Imported here: every command line builds this parser, few evaluate.
+    from launch_linter.evaluation.chart import PLOT_HINT, chart_available
+    from launch_linter.evaluation.evaluate import CHART, EvaluationError, evaluate, write_outputs
+
     try:
         evaluation = evaluate(ns.db, ns.min_z, ns.beliefs)
         paths = write_outputs(evaluation, ns.out)

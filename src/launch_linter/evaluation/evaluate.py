@@ -24,10 +24,10 @@ from launch_linter.evaluation.lint import Linted, LintOutcome, Version, lint_byt
 from launch_linter.evaluation.study import STUDY_FILES
 from launch_linter.evaluation.table import FaultTable, fault_table, is_fault_rule, render_csv
 from launch_linter.evaluation.table import render_markdown as render_table
-from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.mining.ingest import MANIFEST, CorpusEntry, CorpusError, read_corpus
 from launch_linter.mining.store import Store, StoredVersion, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES, BeliefSet
+from launch_linter.resolve.xml_safe import read_launch_bytes
 from launch_linter.rules import RULES
 
 OUTPUTS = ("table.md", "table.csv", "rules.png", "history.md")

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 
 from launch_linter.evaluation.lint import Linted, Version
 from launch_linter.model.diagnostic import Diagnostic
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import Field, StaticTransform
 
 FIXED, PERSISTING, GONE = "fixed", "persisting", "gone"
 OUTCOMES = (FIXED, PERSISTING, GONE)
@@ -78,7 +78,7 @@ class History:
 
 
 def _name(transform: StaticTransform) -> str | None:
-    return transform.name if transform.name and "name" not in transform.unresolved else None
+    return transform.name if transform.name and transform.knows(Field.NAME) else None
 
 
 def _at(transforms: Sequence[StaticTransform], diagnostic: Diagnostic) -> StaticTransform | None:

@@ -14,8 +14,8 @@ import re
 
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
 from launch_linter.frontends.ros2_launch import load_ros2
-from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.model.launch import LaunchTree
+from launch_linter.resolve.xml_safe import read_launch_bytes
 
 LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.yaml", ".launch.yml", ".launch.py")
 

@@ -19,10 +19,17 @@ from dataclasses import dataclass, field
 
 from launch_linter.decode import decode_ros1, is_number
 from launch_linter.frontends.tokens import split_args
-from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
-from launch_linter.model.diagnostic import Category, Diagnostic, Location, Severity
+from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
-from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
+from launch_linter.model.transform import (
+    ALWAYS,
+    DECODED_FIELDS,
+    ArgForm,
+    Condition,
+    ConditionLiteral,
+    Field,
+    StaticTransform,
+)
 from launch_linter.resolve.packages import PackageIndex
 from launch_linter.resolve.substitution import (
     SubstitutionError,
@@ -31,6 +38,7 @@ from launch_linter.resolve.substitution import (
     to_bool,
 )
 from launch_linter.resolve.value import Hole, Value, holes, resolved_text, text_of
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
 STATIC_TF_TYPE = "static_transform_publisher"
 TF_PACKAGES = ("tf", "tf2_ros")
@@ -176,7 +184,7 @@ class Ros1Loader:
     def __init__(self, options: LoadOptions) -> None:
         self.options = options
         self.transforms: list[StaticTransform] = []
-        self.diagnostics: list[Diagnostic] = []
+        self.problems: list[Problem] = []
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -194,12 +202,10 @@ class Ros1Loader:
         self, rule: str, path: str, element: Element | None, message: str,
         node: str | None = None, related: tuple[Location, ...] = (),
     ) -> None:
-        severity = Severity.INFO if rule == "unresolved" else Severity.ERROR
         line, column = (element.line, element.column) if element else (1, 1)
-        self.diagnostics.append(Diagnostic(
-            rule, Category.LAUNCH, severity, self._display(path), line, column, message, node,
-            related,
-        ))
+        self.problems.append(
+            Problem(rule, self._display(path), line, column, message, node, related)
+        )
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         self._report("roslaunch_error", context.filename, element, message)
@@ -239,7 +245,7 @@ class Ros1Loader:
             root=self.root_display,
             status=status,
             transforms=tuple(self.transforms),
-            diagnostics=tuple(self.diagnostics),
+            problems=tuple(self.problems),
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
@@ -272,8 +278,8 @@ class Ros1Loader:
         try:
             document = parse_xml(data, text_tags=("rosparam",), collect=("launch",))
         except XmlError as exc:
-            self.diagnostics.append(Diagnostic(
-                "parse_error", Category.LAUNCH, Severity.ERROR, display, exc.line, exc.column,
+            self.problems.append(Problem(
+                "parse_error", display, exc.line, exc.column,
                 f"not well-formed XML: {exc.message}",
             ))
             return None
@@ -288,10 +294,7 @@ class Ros1Loader:
                 f"no <launch> element (the root element is <{document.root.tag}>)"
                 if not launches else "more than one <launch> element"
             )
-            self.diagnostics.append(Diagnostic(
-                "parse_error", Category.LAUNCH, Severity.ERROR, display, where.line,
-                where.column, message,
-            ))
+            self.problems.append(Problem("parse_error", display, where.line, where.column, message))
             return None
         return launches[0]
 
@@ -890,15 +893,15 @@ class Ros1Loader:
         name_text = resolved_text(name_value)
         name = name_text or text_of(name_value) or None
         words = split_args(args_value)
-        unresolved: list[str] = []
+        unresolved: set[Field] = set()
         if name_text is None or name is None:
-            unresolved.append("name")
+            unresolved.add(Field.NAME)
         if ns_unresolved:
-            unresolved.append("namespace")
+            unresolved.add(Field.NAMESPACE)
         if package_text is None:
-            unresolved.append("package")
+            unresolved.add(Field.PACKAGE)
         if type_text is None:
-            unresolved.append("executable")
+            unresolved.add(Field.EXECUTABLE)
         decode_package = package_text or (
             "tf" if len(words.words) in (9, 10) and is_number(words.words[-1]) else "tf2_ros"
         )
@@ -910,23 +913,23 @@ class Ros1Loader:
             # A hole is taken for one word (typically a frame from an arg) while that gives
             # a form the program accepts; a hole that stands for the whole value (an
             # $(eval) or a refused text) may hold any number of words.
-            if (decoded.form in ("invalid", "param") or decoded.arity_issue
+            if (decoded.form in (ArgForm.INVALID, ArgForm.PARAM) or decoded.arity_issue
                     or any(not _single_command(h.text) for h in words.holes)):
-                unresolved.append("arity")
-                arity_issue, form = None, "unknown"
-            if form == "unknown":
-                fields = dict.fromkeys(("translation", "rotation", "parent", "child"), True)
+                unresolved.add(Field.ARITY)
+                arity_issue, form = None, ArgForm.UNKNOWN
+            if form is ArgForm.UNKNOWN:
+                fields = dict.fromkeys(DECODED_FIELDS, True)
             else:
-                rotation_end = 6 if form == "ypr" else 7
+                rotation_end = 6 if form is ArgForm.YPR else 7
                 fields = {
-                    "translation": any(i in indices for i in (0, 1, 2)),
-                    "rotation": any(3 <= i < rotation_end for i in indices),
-                    "parent": decoded.parent_index in indices,
-                    "child": decoded.child_index in indices,
-                    "period_ms": decoded.period_ms is not None
+                    Field.TRANSLATION: any(i in indices for i in (0, 1, 2)),
+                    Field.ROTATION: any(3 <= i < rotation_end for i in indices),
+                    Field.PARENT: decoded.parent_index in indices,
+                    Field.CHILD: decoded.child_index in indices,
+                    Field.PERIOD_MS: decoded.period_ms is not None
                     and decoded.numeric_indices[-1] in indices,
                 }
-            unresolved.extend(k for k, v in fields.items() if v)
+            unresolved.update(k for k, v in fields.items() if v)
         if words.unresolved or unresolved:
             number_issues = tuple(n for n in decoded.number_issues
                                   if n.index not in words.unresolved)
@@ -937,7 +940,7 @@ class Ros1Loader:
                 reasons = (*reasons, f"namespace {namespace!r}: {ns_unresolved}")
         else:
             number_issues, reasons = decoded.number_issues, ()
-        known = form != "unknown"
+        known = form is not ArgForm.UNKNOWN
         transform = StaticTransform(
             path=self._display(context.filename),
             line=element.line,
@@ -960,14 +963,14 @@ class Ros1Loader:
             arity_issue=arity_issue,
             number_issues=number_issues,
             condition=_conjoin(context.condition, condition),
-            unresolved=tuple(dict.fromkeys(unresolved)) if unresolved else (),
+            unresolved=frozenset(unresolved),
             unresolved_reasons=reasons,
         )
         self.transforms.append(transform)
         if transform.unresolved:
             self._report(
                 "unresolved", context.filename, element,
-                f"cannot resolve {', '.join(transform.unresolved)} statically"
+                f"cannot resolve {', '.join(transform.unresolved_names)} statically"
                 + (f": {'; '.join(reasons)}" if reasons else ""),
                 node=name,
             )

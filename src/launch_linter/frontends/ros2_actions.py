@@ -13,6 +13,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Union
 
+from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Subs
 from launch_linter.resolve.value import Value
 
@@ -187,7 +188,7 @@ class Problem:
 class FileRead:
     """One file read by a ROS 2 front-end; ``actions`` is None when it is unreadable."""
 
-    launch_format: str
+    launch_format: LaunchFormat
     actions: tuple[Action, ...] | None
     comments: tuple[tuple[int, str], ...] = ()
     element_lines: tuple[int, ...] = ()

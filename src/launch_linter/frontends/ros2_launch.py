@@ -44,10 +44,17 @@ from launch_linter.frontends.ros2_actions import (
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
-from launch_linter.frontends.xml_safe import read_launch_bytes
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
-from launch_linter.model.transform import Condition, ConditionLiteral, StaticTransform
+from launch_linter.model.transform import (
+    DECODED_FIELDS,
+    ArgForm,
+    Condition,
+    ConditionLiteral,
+    Field,
+    LaunchFormat,
+    StaticTransform,
+)
 from launch_linter.resolve.ros2_substitution import (
     Ros2Scope,
     Subs,
@@ -58,6 +65,7 @@ from launch_linter.resolve.ros2_substitution import (
     written,
 )
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+from launch_linter.resolve.xml_safe import read_launch_bytes
 
 STATIC_TF_EXECUTABLE = "static_transform_publisher"
 STATIC_TF_PACKAGE = "tf2_ros"
@@ -67,13 +75,6 @@ MAX_FILES_PER_TREE = 2_000
 MAX_ACTIONS_PER_TREE = 200_000
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
-
-_SEVERITY = {
-    "parse_error": (Category.LAUNCH, Severity.ERROR),
-    "roslaunch_error": (Category.LAUNCH, Severity.ERROR),
-    "unresolved": (Category.LAUNCH, Severity.INFO),
-}
-
 
 @dataclass
 class _Scope:
@@ -93,7 +94,7 @@ class _Frame:
     """Where the actions being run come from."""
 
     filename: str
-    launch_format: str
+    launch_format: LaunchFormat
     chain: tuple[str, ...]
     included_from: tuple[str, int] | None
     condition: Condition
@@ -135,7 +136,7 @@ class Ros2Loader:
     def __init__(self, options: LoadOptions) -> None:
         self.options = options
         self.transforms: list[StaticTransform] = []
-        self.diagnostics: list[Diagnostic] = []
+        self.problems: list[Problem] = []
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -147,10 +148,8 @@ class Ros2Loader:
         return self.options.display_path(path)
 
     def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
-        category, severity = _SEVERITY[rule]
-        self.diagnostics.append(Diagnostic(
-            rule, category, severity, self._display(where.path), where.line, where.column,
-            message, node,
+        self.problems.append(Problem(
+            rule, self._display(where.path), where.line, where.column, message, node
         ))
 
     # -- files -------------------------------------------------------------------------
@@ -182,7 +181,7 @@ class Ros2Loader:
             root=self.root_display,
             status=status,
             transforms=tuple(self.transforms),
-            diagnostics=tuple(self.diagnostics),
+            problems=tuple(self.problems),
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
@@ -493,26 +492,26 @@ class Ros2Loader:
             self._report("roslaunch_error", where,
                          f"node name cannot contain a namespace: {name}", node=name)
         namespace, namespace_holes = self._namespace(namespace_subs, scope, frame, where)
-        unresolved: list[str] = []
+        unresolved: set[Field] = set()
         if name_value is not None and not is_resolved(name_value):
-            unresolved.append("name")
+            unresolved.add(Field.NAME)
         if namespace_holes:
-            unresolved.append("namespace")
+            unresolved.add(Field.NAMESPACE)
         if not is_resolved(package):
-            unresolved.append("package")
+            unresolved.add(Field.PACKAGE)
         if not is_resolved(executable):
-            unresolved.append("executable")
+            unresolved.add(Field.EXECUTABLE)
         if decoded is None:
-            unresolved.extend(("translation", "rotation", "parent", "child", "arity"))
+            unresolved.update((*DECODED_FIELDS, Field.ARITY))
         else:
-            unresolved.extend(decoded.unresolved)
+            unresolved.update(decoded.unresolved)
         all_holes = (*holes(name_value or ()), *namespace_holes, *holes(package),
                      *holes(executable), *(h for value in values for h in holes(value)))
         reasons = [f"{h.text}: {h.reason}" for h in all_holes]
         if unknown:
             reasons.append(unknown)
         reasons = list(dict.fromkeys(reasons))
-        known = decoded is not None and decoded.form != "invalid"
+        known = decoded is not None and decoded.form is not ArgForm.INVALID
         transform = StaticTransform(
             path=self._display(frame.filename),
             line=where.line,
@@ -531,11 +530,11 @@ class Ros2Loader:
             translation=decoded.translation if known and decoded is not None else None,
             rotation=decoded.rotation if known and decoded is not None else None,
             period_ms=None,
-            form="unknown" if decoded is None else decoded.form,
+            form=ArgForm.UNKNOWN if decoded is None else decoded.form,
             arity_issue=None if decoded is None else decoded.arity_issue,
             number_issues=() if decoded is None else decoded.number_issues,
             condition=frame.condition,
-            unresolved=tuple(dict.fromkeys(unresolved)),
+            unresolved=frozenset(unresolved),
             unresolved_reasons=tuple(reasons),
             ros_version=2,
             launch_format=frame.launch_format,
@@ -545,7 +544,7 @@ class Ros2Loader:
         if transform.unresolved:
             self._report(
                 "unresolved", where,
-                f"cannot resolve {', '.join(transform.unresolved)} statically"
+                f"cannot resolve {', '.join(transform.unresolved_names)} statically"
                 + (f": {'; '.join(reasons)}" if reasons else ""),
                 node=name,
             )

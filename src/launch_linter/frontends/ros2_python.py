@@ -53,12 +53,13 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Where,
 )
-from launch_linter.frontends.xml_safe import MAX_BYTES
+from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
 from launch_linter.resolve.safe_eval import subscript_index
 from launch_linter.resolve.value import Value, holes, resolved_text
+from launch_linter.resolve.xml_safe import MAX_BYTES
 
-FORMAT = "ros2-python"
+FORMAT = LaunchFormat.ROS2_PYTHON
 MAX_STEPS = 200_000
 MAX_CALL_DEPTH = 16
 MAX_ITEMS = 10_000

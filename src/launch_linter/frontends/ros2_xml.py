@@ -31,7 +31,7 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Where,
 )
-from launch_linter.frontends.xml_safe import Element, XmlError, parse_xml
+from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import (
     Opaque,
     Subs,
@@ -39,6 +39,7 @@ from launch_linter.resolve.ros2_substitution import (
     parse,
     split_command_line,
 )
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
 
 @dataclass
@@ -241,7 +242,7 @@ def read_xml(path: str, data: bytes) -> FileRead:
     except XmlError as exc:
         message = f"not well-formed XML: {exc.message}"
         problem = Problem("parse_error", exc.line, exc.column, message)
-        return FileRead("ros2-xml", None, problems=(problem,))
+        return FileRead(LaunchFormat.ROS2_XML, None, problems=(problem,))
     comments = tuple(document.comments)
     lines = tuple(document.element_lines)
     if document.root.tag != "launch":
@@ -249,6 +250,6 @@ def read_xml(path: str, data: bytes) -> FileRead:
             "parse_error", document.root.line, document.root.column,
             f"root element is <{document.root.tag}>, not <launch>",
         )
-        return FileRead("ros2-xml", None, comments, lines, (problem,))
+        return FileRead(LaunchFormat.ROS2_XML, None, comments, lines, (problem,))
     actions, problems = actions_of(path, _entity(document.root))
-    return FileRead("ros2-xml", actions, comments, lines, problems)
+    return FileRead(LaunchFormat.ROS2_XML, actions, comments, lines, problems)

@@ -18,9 +18,10 @@ from typing import Any
 
 from launch_linter.frontends.ros2_actions import FileRead, Problem
 from launch_linter.frontends.ros2_xml import Entity, actions_of
-from launch_linter.frontends.xml_safe import MAX_BYTES, MAX_ELEMENTS
+from launch_linter.model.transform import LaunchFormat
+from launch_linter.resolve.xml_safe import MAX_BYTES, MAX_ELEMENTS
 
-FORMAT = "ros2-yaml"
+FORMAT = LaunchFormat.ROS2_YAML
 
 
 class _TooLarge(Exception):

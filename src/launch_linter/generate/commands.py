@@ -10,8 +10,7 @@ import sys
 
 from launch_linter import __version__
 from launch_linter.beliefs_files import BeliefsNotFound, load_beliefs
-from launch_linter.cli import EXIT_OK, UsageError
-from launch_linter.generate import embed, render
+from launch_linter.commands.common import EXIT_OK, UsageError
 from launch_linter.model.beliefs import BELIEF_CLASSES
 
 
@@ -39,6 +38,9 @@ def generate_command(beliefs: str, min_z: float, classes: tuple[str, ...]) -> st
 
 def generate_text(beliefs_spec: str, min_z: float, classes: tuple[str, ...]) -> str:
     """The standalone linter for these beliefs, from the installed package's source."""
+    # Imported here: the renderer needs Jinja2, which no other command loads.
+    from launch_linter.generate import embed, render
+
     try:
         beliefs = load_beliefs(beliefs_spec, min_z)
     except BeliefsNotFound as exc:
@@ -66,7 +68,16 @@ def _write(path: str, text: str) -> None:
     os.chmod(path, mode | (readable >> 2))
 
 
-def run_generate(ns: argparse.Namespace) -> int:
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    generate = subparsers.add_parser("generate", help="render a standalone linter from beliefs")
+    generate.add_argument("--beliefs", default="bundled")
+    generate.add_argument("--min-z", type=float, default=1.0)
+    generate.add_argument("--class", dest="classes", action="append", metavar="CLASS")
+    generate.add_argument("-o", "--output", required=True, metavar="FILE.py")
+    generate.set_defaults(handler=run)
+
+
+def run(ns: argparse.Namespace) -> int:
     classes = _classes(ns.classes)
     if ns.min_z != ns.min_z:  # NaN would select nothing and mean nothing
         raise UsageError("--min-z must be a number")

@@ -8,7 +8,8 @@ import shutil
 import subprocess
 import sys
 
-from launch_linter.cli import EXIT_OK, UsageError, lint_options
+from launch_linter.commands.common import EXIT_OK, UsageError
+from launch_linter.commands.options import lint_options
 from launch_linter.engine import lint_paths
 from launch_linter.graph.model import build_graph
 from launch_linter.graph.render import to_dot, to_mermaid
@@ -44,7 +45,24 @@ def _render_image(dot_text: str, image_format: str, output: str) -> None:
         raise UsageError(f"{dot} failed (status {done.returncode}): {message}")
 
 
-def run_graph(ns: argparse.Namespace) -> int:
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    graph = subparsers.add_parser("graph", help="draw the static transform tree of a launch file")
+    graph.add_argument("path")
+    graph.add_argument("-o", "--output", metavar="FILE.svg|.png|.dot|.mmd")
+    graph.add_argument("--arg", action="append", metavar="NAME:=VALUE")
+    graph.add_argument("--package-path", action="append", metavar="DIR")
+    graph.add_argument("--env", action="append", metavar="NAME=VALUE")
+    graph.add_argument("--config", metavar="FILE", help="configuration file")
+    graph.add_argument(
+        "--beliefs",
+        default=None,
+        metavar="bundled|study|none|FILE",
+        help="mined beliefs for the may_implied rules (default: bundled)",
+    )
+    graph.set_defaults(handler=run)
+
+
+def run(ns: argparse.Namespace) -> int:
     if not os.path.isfile(ns.path):
         raise UsageError(f"graph needs one launch file; {ns.path!r} is not a file")
     output: str | None = ns.output

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from launch_linter.engine import LintResult
 from launch_linter.model.diagnostic import Diagnostic, Severity
-from launch_linter.model.transform import RotationKind, StaticTransform
+from launch_linter.model.transform import Field, RotationKind, StaticTransform
 
 MAX_NOTES = 12
 
@@ -54,7 +54,7 @@ def _frame_key(transform: StaticTransform, which: str, index: int) -> tuple[str,
     """(key, label, resolved) of the parent or child frame of ``transform``."""
     normalised = transform.parent if which == "parent" else transform.child
     written = transform.parent_written if which == "parent" else transform.child_written
-    if normalised is not None and which not in transform.unresolved:
+    if normalised is not None and transform.knows(Field(which)):
         return normalised, normalised, True
     # Unresolved frames are distinct vertices: two unknowns need not be the same frame.
     return f"?{index}:{which}", written or "?", False
@@ -62,12 +62,12 @@ def _frame_key(transform: StaticTransform, which: str, index: int) -> tuple[str,
 
 def _edge_label(transform: StaticTransform, rules: list[str]) -> tuple[str, ...]:
     lines = [transform.qualified_name or "?"]
-    if transform.translation is None or "translation" in transform.unresolved:
+    if transform.translation is None or transform.is_unresolved(Field.TRANSLATION):
         lines.append("xyz ?")
     else:
         lines.append(f"xyz {_numbers(transform.translation)}")
     rotation = transform.rotation
-    if rotation is None or "rotation" in transform.unresolved:
+    if rotation is None or transform.is_unresolved(Field.ROTATION):
         lines.append("rotation ?")
     elif rotation.kind is RotationKind.YPR:
         lines.append(f"ypr {_numbers(rotation.values)}")

@@ -10,8 +10,9 @@ import sys
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
+from launch_linter.commands.common import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 from launch_linter.mining.beliefs import (
     belief_order,
     beliefs_document,
@@ -19,13 +20,13 @@ from launch_linter.mining.beliefs import (
     encode_key,
     mine,
 )
-from launch_linter.mining.ingest import CorpusError, IngestReport, ingest, read_corpus
 from launch_linter.mining.stats import check_p0
 from launch_linter.mining.store import Store, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES
 from launch_linter.model.diagnostic import Belief
 
-EXIT_OK, EXIT_USAGE, EXIT_INTERRUPTED = 0, 2, 130
+if TYPE_CHECKING:
+    from launch_linter.mining.ingest import IngestReport
 
 
 @dataclass(frozen=True)
@@ -77,6 +78,10 @@ def mine_corpus(
     jobs: int = 1,
 ) -> tuple[IngestReport, MineReport, dict[str, int]]:
     """Ingest ``corpus_path`` into ``db`` and mine it: (ingest, mining, database counts)."""
+    # Imported here (the front-ends and multiprocessing): every command line builds the
+    # parser of this module, few mine.
+    from launch_linter.mining.ingest import ingest, read_corpus
+
     check_p0(p0)
     corpus = read_corpus(corpus_path, mature)
     with Store(db) as store:
@@ -90,7 +95,34 @@ def _error(message: str) -> int:
     return EXIT_USAGE
 
 
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Two commands: ``mine`` (ingest and mine a corpus) and ``beliefs`` (list or write)."""
+    mine = subparsers.add_parser("mine", help="ingest a corpus into a database and mine beliefs")
+    mine.add_argument("corpus")
+    mine.add_argument("--db", required=True)
+    mine.add_argument("--p0", type=float, default=0.9)
+    mine.add_argument("--mature-commits", type=int, default=30)
+    mine.add_argument(
+        "--mature",
+        action="append",
+        metavar="REPO",
+        help="treat this repository folder as mature (plain folders)",
+    )
+    mine.add_argument("--jobs", type=int, default=None)
+    mine.set_defaults(handler=run_mine)
+
+    beliefs = subparsers.add_parser("beliefs", help="list mined beliefs or write a beliefs file")
+    beliefs.add_argument("--db", required=True)
+    beliefs.add_argument("--min-z", type=float, default=None)
+    beliefs.add_argument("--class", dest="classes", action="append", metavar="CLASS")
+    beliefs.add_argument("--format", choices=("table", "json"), default="table")
+    beliefs.add_argument("-o", "--output", metavar="FILE")
+    beliefs.set_defaults(handler=run_beliefs)
+
+
 def run_mine(ns: argparse.Namespace) -> int:
+    from launch_linter.mining.ingest import CorpusError
+
     if ns.mature_commits < 0:
         return _error("--mature-commits must not be negative")
     if ns.jobs is not None and ns.jobs < 1:

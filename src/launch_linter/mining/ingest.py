@@ -23,11 +23,11 @@ from dataclasses import dataclass, field
 from launch_linter.engine import discover
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
-from launch_linter.frontends.xml_safe import read_launch_bytes
 from launch_linter.mining.progress import Progress
 from launch_linter.mining.store import FileRef, ParsedContent, RepoInfo, Store, transform_row
 from launch_linter.model.launch import FileStatus
 from launch_linter.resolve.packages import PackageIndex
+from launch_linter.resolve.xml_safe import read_launch_bytes
 
 MANIFEST = "manifest.jsonl"
 BATCH_SIZE = 256
@@ -230,7 +230,7 @@ def parse_job(job: ParseJob) -> ParsedContent:
         return ParsedContent(job.sha256, len(data), FileStatus.PARSE_ERROR.value, reason, ())
     failure: str | None = None
     if tree.status is not FileStatus.OK:
-        first = next((d for d in tree.diagnostics if d.rule == "parse_error"), None)
+        first = next((d for d in tree.problems if d.rule == "parse_error"), None)
         failure = first.message if first else tree.status.value
     own = [t for t in tree.transforms if t.path == job.parse_path]
     rows = tuple(transform_row(i, t) for i, t in enumerate(own))

@@ -23,7 +23,7 @@ from typing import Any, Tuple
 
 from launch_linter.mining.beliefs import MinedTransform, decode_key, encode_key
 from launch_linter.model.diagnostic import Belief
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import Field, StaticTransform
 
 SCHEMA_VERSION = 1
 
@@ -193,14 +193,14 @@ def transform_row(ordinal: int, t: StaticTransform) -> TransformRow:
         *(translation if translation is not None else (None, None, None)),
         rotation.kind.value if rotation is not None else None,
         _json(list(rotation.values)) if rotation is not None else None,
-        t.period_ms, t.form, t.arity_issue,
+        t.period_ms, t.form.value, t.arity_issue,
         _json([[i.index, i.written, i.read_as] for i in t.number_issues]),
         t.condition.describe(),
         _json([[lit.text, lit.positive] for lit in t.condition.literals]),
         _json(list(t.included_from)) if t.included_from is not None else None,
-        _json(list(t.unresolved)), _json(list(t.unresolved_reasons)),
-        int(t.fully_resolved), int(t.name is not None and "name" not in t.unresolved),
-        _flag(t.null_displacement), _flag(t.null_rotation), t.ros_version, t.launch_format,
+        _json(list(t.unresolved_names)), _json(list(t.unresolved_reasons)),
+        int(t.fully_resolved), int(t.name is not None and t.knows(Field.NAME)),
+        _flag(t.null_displacement), _flag(t.null_rotation), t.ros_version, t.launch_format.value,
     )
 
 

@@ -32,6 +32,23 @@ class Location:
 
 
 @dataclass(frozen=True)
+class Problem:
+    """What a front-end (or the suppression pass) noticed, before the engine stamps it.
+
+    It names its rule by id only: the rule registry owns category and severity, so the
+    front-ends never decide either.
+    """
+
+    rule: str
+    path: str
+    line: int
+    column: int
+    message: str
+    node: str | None = None
+    related: tuple[Location, ...] = ()
+
+
+@dataclass(frozen=True)
 class Belief:
     """A mined MAY-Implied belief: ``if`` (signature or name) implies ``then``."""
 

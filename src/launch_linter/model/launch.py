@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import Enum
 
-from launch_linter.model.diagnostic import Diagnostic
+from launch_linter.model.diagnostic import Problem
 from launch_linter.model.transform import StaticTransform
 
 
@@ -40,7 +40,8 @@ class LaunchTree:
     root: str
     status: FileStatus
     transforms: tuple[StaticTransform, ...]
-    diagnostics: tuple[Diagnostic, ...]
+    problems: tuple[Problem, ...]
+    """What the front-end noticed (parse errors, roslaunch errors, unresolved values)."""
     files: tuple[str, ...]
     comments: tuple[Comment, ...] = ()
     element_lines: tuple[tuple[str, int], ...] = ()

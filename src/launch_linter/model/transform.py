@@ -2,11 +2,81 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
-from dataclasses import dataclass, field
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from enum import Enum
 
 NULL_TOLERANCE = 1e-9
+
+
+class Field(str, Enum):
+    """A field of the transform record that may be unresolved. The declaration order is
+    the order in which output lists them."""
+
+    NAME = "name"
+    NAMESPACE = "namespace"
+    PACKAGE = "package"
+    EXECUTABLE = "executable"
+    ARITY = "arity"
+    TRANSLATION = "translation"
+    ROTATION = "rotation"
+    PARENT = "parent"
+    CHILD = "child"
+    PERIOD_MS = "period_ms"
+
+
+FIELD_ORDER = {f: position for position, f in enumerate(Field)}
+ROS2_FIELD_ORDER = {**FIELD_ORDER, Field.ARITY: len(FIELD_ORDER)}
+"""The ROS 2 front-end has always listed ``arity`` after the fields it hides (the ROS 1
+front-end before them); output keeps each order."""
+
+DECODED_FIELDS = (Field.TRANSLATION, Field.ROTATION, Field.PARENT, Field.CHILD)
+"""The fields the argument decoders give, in record order."""
+
+
+def field_names(
+    fields: Iterable[Field], order: Mapping[Field, int] = FIELD_ORDER
+) -> tuple[str, ...]:
+    """The fields' names in record order (how JSON, text and messages list them)."""
+    return tuple(f.value for f in sorted(set(fields), key=order.__getitem__))
+
+
+class ArgForm(str, Enum):
+    """How the arguments were written, as the decoder read them."""
+
+    YPR = "ypr"
+    QUATERNION = "quaternion"
+    INVALID = "invalid"
+    """No layout the program accepts."""
+    PARAM = "param"
+    """ROS 1 ``tf2_ros`` given one argument: a parameter name."""
+    UNKNOWN = "unknown"
+    """A substitution hides how many words there are."""
+
+
+class LaunchFormat(str, Enum):
+    ROS1_XML = "ros1-xml"
+    ROS2_XML = "ros2-xml"
+    ROS2_YAML = "ros2-yaml"
+    ROS2_PYTHON = "ros2-python"
+
+
+class ArgIssueKind(str, Enum):
+    """A ROS 2 argument mistake; each kind belongs to one rule, which words it."""
+
+    POSITIONAL = "positional"
+    """Deprecated old-style positional arguments (``ros2_positional_args``)."""
+    UNKNOWN_FLAG = "unknown_flag"
+    MIXED_STYLES = "mixed_styles"
+    RPY_AND_QUATERNION = "rpy_and_quaternion"
+    PARTIAL_QUATERNION = "partial_quaternion"
+    MISSING_FRAME = "missing_frame"
+    SINGLE_STRING = "single_string"
+    """Several words in one argv item (``py_arguments_single_string``)."""
+    DEFAULT_FRAMES = "default_frames"
+    """A component left at ``/frame`` -> ``/child`` (``component_default_frames``)."""
 
 
 class RotationKind(str, Enum):
@@ -90,16 +160,26 @@ class NumberIssue:
 
 @dataclass(frozen=True)
 class ArgIssue:
-    """A mistake in how a ROS 2 transform is written, beyond counts and numbers.
+    """A mistake in how a ROS 2 transform is written, beyond counts and numbers: the facts,
+    which the rule of ``kind`` words.
 
-    ``kind`` names it for the rule that reports it: ``positional`` (deprecated old-style
-    arguments), ``unknown_flag``, ``mixed_styles``, ``rpy_and_quaternion``,
-    ``partial_quaternion``, ``missing_frame``, ``single_string`` (several arguments in
-    one argv item) or ``default_frames`` (a component left at ``/frame`` → ``/child``).
+    By kind, ``words`` holds: the positional words (``POSITIONAL``), the unknown flag, the
+    flags beside positional arguments, the rpy flags, the missing quaternion flags, the
+    missing frame flag, the argv item holding several words, the absent frame parameters.
+    ``others`` holds: the flag each positional word stands for, the suggested flag (if
+    any), the quaternion flags (``RPY_AND_QUATERNION``), the two frames a component
+    publishes (``DEFAULT_FRAMES``). ``values`` holds the completed quaternion
+    (``PARTIAL_QUATERNION``). ``fatal`` is False for rpy flags beside positional
+    arguments (the program silently replaces them). ``split`` is True for an unknown flag
+    that is a flag name written with a space after ``--``.
     """
 
-    kind: str
-    message: str
+    kind: ArgIssueKind
+    words: tuple[str, ...] = ()
+    others: tuple[str, ...] = ()
+    values: tuple[float, ...] = ()
+    fatal: bool = True
+    split: bool = False
 
 
 @dataclass(frozen=True)
@@ -128,15 +208,30 @@ class StaticTransform:
     translation: tuple[float, float, float] | None
     rotation: Rotation | None
     period_ms: float | None
-    form: str
+    form: ArgForm
     arity_issue: str | None = None
     number_issues: tuple[NumberIssue, ...] = ()
-    condition: Condition = field(default_factory=Condition)
-    unresolved: tuple[str, ...] = ()
+    condition: Condition = dataclasses.field(default_factory=Condition)
+    unresolved: frozenset[Field] = frozenset()
     unresolved_reasons: tuple[str, ...] = ()
     ros_version: int = 1
-    launch_format: str = "ros1-xml"
+    launch_format: LaunchFormat = LaunchFormat.ROS1_XML
     arg_issues: tuple[ArgIssue, ...] = ()
+
+    def is_unresolved(self, *fields: Field) -> bool:
+        """True when any of ``fields`` could not be resolved."""
+        return any(f in self.unresolved for f in fields)
+
+    def knows(self, *fields: Field) -> bool:
+        """True when every one of ``fields`` is resolved."""
+        return not self.is_unresolved(*fields)
+
+    @property
+    def unresolved_names(self) -> tuple[str, ...]:
+        """The unresolved fields' names in record order (as JSON and messages list them)."""
+        return field_names(
+            self.unresolved, ROS2_FIELD_ORDER if self.ros_version == 2 else FIELD_ORDER
+        )
 
     @property
     def parent(self) -> str | None:
@@ -151,7 +246,7 @@ class StaticTransform:
         """(parent, child) without leading slashes; None unless both are resolved."""
         if self.parent is None or self.child is None:
             return None
-        if "parent" in self.unresolved or "child" in self.unresolved:
+        if self.is_unresolved(Field.PARENT, Field.CHILD):
             return None
         return (self.parent, self.child)
 
@@ -164,13 +259,13 @@ class StaticTransform:
 
     @property
     def null_displacement(self) -> bool | None:
-        if self.translation is None or "translation" in self.unresolved:
+        if self.translation is None or self.is_unresolved(Field.TRANSLATION):
             return None
         return all(abs(v) <= NULL_TOLERANCE for v in self.translation)
 
     @property
     def null_rotation(self) -> bool | None:
-        if self.rotation is None or "rotation" in self.unresolved:
+        if self.rotation is None or self.is_unresolved(Field.ROTATION):
             return None
         return self.rotation.is_null
 

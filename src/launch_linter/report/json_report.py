@@ -54,7 +54,7 @@ def transform_json(t: StaticTransform) -> dict[str, Any]:
         ),
         "period_ms": t.period_ms,
         "condition": "always" if t.condition.always else "unknown",
-        "unresolved": list(t.unresolved),
+        "unresolved": list(t.unresolved_names),
     }
 
 

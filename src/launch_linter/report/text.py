@@ -46,7 +46,7 @@ def format_transform(t: StaticTransform) -> str:
     if not t.condition.always:
         extra.append(f"when {t.condition.describe()}")
     if t.unresolved:
-        extra.append(f"unresolved: {', '.join(t.unresolved)}")
+        extra.append(f"unresolved: {', '.join(t.unresolved_names)}")
     tail = f"  [{'; '.join(extra)}]" if extra else ""
     return (
         f"{t.path}:{t.line}:{t.column}: {t.namespace}{t.name or '?'} ({t.package}) "

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from launch_linter.frontends.xml_safe import XmlError, parse_xml
+from launch_linter.resolve.xml_safe import XmlError, parse_xml
 
 MAX_DIRECTORIES = 50_000
 MAX_WALK_UP = 32

@@ -9,7 +9,14 @@ from types import ModuleType
 from typing import Callable
 
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Location, Severity
+from launch_linter.model.diagnostic import (
+    Belief,
+    Category,
+    Diagnostic,
+    Location,
+    Problem,
+    Severity,
+)
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
 
@@ -22,7 +29,26 @@ class RuleContext:
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
 
 
-Check = Callable[[RuleContext], typing.Iterable[Diagnostic]]
+@dataclass(frozen=True)
+class Finding:
+    """What a rule reports: where, what, and on what evidence; never which rule or category.
+
+    The engine stamps the rule's id, category and severity from the registry. ``severity``
+    is set only by a rule with two documented levels (e.g. ``bad_quaternion``'s info-level
+    notice about a quaternion slightly off unit length); None means the rule's ``SEVERITY``.
+    """
+
+    path: str
+    line: int
+    column: int
+    message: str
+    node: str | None = None
+    related: tuple[Location, ...] = ()
+    belief: Belief | None = None
+    severity: Severity | None = None
+
+
+Check = Callable[[RuleContext], typing.Iterable[Finding]]
 
 
 @dataclass(frozen=True)
@@ -34,24 +60,35 @@ class Rule:
     doc: str
     check: Check
 
+    def diagnostic(self, finding: Finding, override: Severity | None = None) -> Diagnostic:
+        """``finding`` stamped with this rule's metadata; ``override`` (configuration or
+        command line) wins over the finding's own level, which wins over the default."""
+        return Diagnostic(
+            rule=self.id,
+            category=self.category,
+            severity=override or finding.severity or self.severity,
+            path=finding.path,
+            line=finding.line,
+            column=finding.column,
+            message=finding.message,
+            node=finding.node,
+            related=finding.related,
+            belief=finding.belief,
+        )
 
-def diagnostic_at(
-    module_id: str,
-    category: Category,
-    severity: Severity,
+
+def finding_at(
     transform: StaticTransform,
     message: str,
     related: Iterable[StaticTransform | Location] = (),
     belief: Belief | None = None,
-) -> Diagnostic:
-    """A diagnostic located at ``transform``'s node, ``related`` pointing at other places."""
+    severity: Severity | None = None,
+) -> Finding:
+    """A finding located at ``transform``'s node, ``related`` pointing at other places."""
     locations = tuple(
         r if isinstance(r, Location) else Location(r.path, r.line, r.column) for r in related
     )
-    return Diagnostic(
-        rule=module_id,
-        category=category,
-        severity=severity,
+    return Finding(
         path=transform.path,
         line=transform.line,
         column=transform.column,
@@ -59,12 +96,20 @@ def diagnostic_at(
         node=transform.name,
         related=locations,
         belief=belief,
+        severity=severity,
     )
 
 
-def frontend_diagnostics(context: RuleContext, rule_id: str) -> Iterable[Diagnostic]:
-    """The diagnostics of ``rule_id`` that the front-end recorded while reading the tree."""
-    return (d for d in context.tree.diagnostics if d.rule == rule_id)
+def finding_of(problem: Problem) -> Finding:
+    """A problem recorded by a front-end or the suppression pass, as a finding."""
+    return Finding(
+        problem.path, problem.line, problem.column, problem.message, problem.node, problem.related
+    )
+
+
+def frontend_findings(context: RuleContext, rule_id: str) -> Iterable[Finding]:
+    """The problems of ``rule_id`` that the front-end recorded while reading the tree."""
+    return (finding_of(p) for p in context.tree.problems if p.rule == rule_id)
 
 
 def rule_from_module(module: ModuleType) -> Rule:

@@ -11,9 +11,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Callable, Optional, Tuple, Union
 
-from launch_linter.model.diagnostic import Belief, Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
+from launch_linter.model.diagnostic import Belief
+from launch_linter.model.transform import Field, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 Key = Union[Tuple[str, ...], str]
 KeyOf = Callable[[StaticTransform], Optional[Key]]
@@ -24,17 +24,17 @@ def signature_of(transform: StaticTransform) -> Key | None:
 
 
 def signature_unresolved(transform: StaticTransform) -> bool:
-    return "parent" in transform.unresolved or "child" in transform.unresolved
+    return transform.is_unresolved(Field.PARENT, Field.CHILD)
 
 
 def name_of(transform: StaticTransform) -> Key | None:
-    if transform.name and "name" not in transform.unresolved:
+    if transform.name and transform.knows(Field.NAME):
         return transform.name
     return None
 
 
 def name_unresolved(transform: StaticTransform) -> bool:
-    return "name" in transform.unresolved
+    return transform.is_unresolved(Field.NAME)
 
 
 def describe(key: Key | None) -> str:
@@ -57,7 +57,7 @@ def implications(
     key_of: KeyOf,
     unresolved: Callable[[StaticTransform], bool],
     what: str,
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """One diagnostic per file and violated belief ``A ⇒ B``: the file has A but not B,
     reported at the first transform with A."""
     index = context.beliefs.by_antecedent(rule_id)
@@ -74,8 +74,8 @@ def implications(
         for key, transform in first.items():
             for belief in index.get(key, ()):
                 if belief.consequent not in first:
-                    yield diagnostic_at(
-                        rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+                    yield finding_at(
+                        transform,
                         f"file has {what} {describe(key)} but not "
                         f"{describe(belief.consequent)}, which usually comes with it "
                         f"({evidence(belief)})",
@@ -94,7 +94,7 @@ def _non_null(
     what: str,
     quantity: str,
     values_of: Callable[[StaticTransform], str | None],
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """Transforms whose key usually has a zero ``quantity`` but whose own is not zero;
     ``values_of`` gives the written values, or None when they are unknown or zero."""
     index = context.beliefs.by_antecedent(rule_id)
@@ -105,8 +105,8 @@ def _non_null(
         if key is None or values is None:
             continue
         for belief in index.get(key, ()):
-            yield diagnostic_at(
-                rule_id, Category.MAY_IMPLIED, Severity.WARNING, transform,
+            yield finding_at(
+                transform,
                 f"{what} {describe(key)} usually has zero {quantity}, this one has "
                 f"{values} ({evidence(belief)})",
                 belief=belief,
@@ -127,13 +127,13 @@ def _rotation(transform: StaticTransform) -> str | None:
 
 def null_displacements(
     context: RuleContext, rule_id: str, key_of: KeyOf, what: str
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """A transform whose key usually has zero displacement, with a non-zero one."""
     return _non_null(context, rule_id, key_of, what, "displacement", _displacement)
 
 
 def null_rotations(
     context: RuleContext, rule_id: str, key_of: KeyOf, what: str
-) -> Iterator[Diagnostic]:
+) -> Iterator[Finding]:
     """A transform whose key usually has zero rotation, with a non-zero one."""
     return _non_null(context, rule_id, key_of, what, "rotation", _rotation)

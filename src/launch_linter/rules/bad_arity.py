@@ -35,9 +35,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import ArgForm, Field, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "bad_arity"
 CATEGORY = Category.TF
@@ -46,7 +46,7 @@ SEVERITY = Severity.ERROR
 
 def _fix(transform: StaticTransform) -> str:
     """What to write instead, for the ROS 1 forms whose intent is clear."""
-    if transform.ros_version != 1 or transform.form not in ("ypr", "quaternion"):
+    if transform.ros_version != 1 or transform.form not in (ArgForm.YPR, ArgForm.QUATERNION):
         return ""
     if transform.package == "tf2_ros" and transform.period_ms is not None:
         return f"; remove the period '{transform.period_ms:g}' (tf2_ros publishes once, latched)"
@@ -55,10 +55,9 @@ def _fix(transform: StaticTransform) -> str:
     return ""
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
-        if transform.arity_issue is None or "arity" in transform.unresolved:
+        if transform.arity_issue is None or transform.is_unresolved(Field.ARITY):
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform, transform.arity_issue + _fix(transform)
+        yield finding_at(transform, transform.arity_issue + _fix(transform)
         )

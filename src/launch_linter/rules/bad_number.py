@@ -35,9 +35,9 @@ import math
 import re
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import NumberIssue, StaticTransform
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "bad_number"
 CATEGORY = Category.TF
@@ -84,12 +84,14 @@ def _effect(transform: StaticTransform, issue: NumberIssue) -> str:
     return f"the program reads only its numeric start, {read}"
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.number_issues:
-            yield diagnostic_at(
-                ID, CATEGORY, Severity.WARNING if _separated(issue.written) else SEVERITY,
+            # A number split by a separator ("0,5") is a warning: the program reads
+            # part of it, so the transform is published, though wrong.
+            yield finding_at(
                 transform,
                 f"{_slot(transform, issue.index)} '{issue.written}' is not a number: "
                 f"{_effect(transform, issue)}",
+                severity=Severity.WARNING if _separated(issue.written) else None,
             )

@@ -32,9 +32,9 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, RotationKind
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "bad_quaternion"
 CATEGORY = Category.TF
@@ -75,18 +75,19 @@ def _problem(values: tuple[float, ...]) -> tuple[Severity, str] | None:
     return None
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.QUATERNION:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         found = _problem(rotation.values)
         if found is None:
             continue
         severity, problem = found
-        yield diagnostic_at(
-            ID, CATEGORY, severity, transform,
+        yield finding_at(
+            transform,
             f"quaternion (qx, qy, qz, qw) = {_written(rotation.values)} {problem}",
+            severity=severity,
         )

@@ -42,16 +42,29 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import ArgIssue, ArgIssueKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "component_default_frames"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def message(issue: ArgIssue) -> str | None:
+    """The diagnostic for ``issue``, or None when it is another rule's kind."""
+    if issue.kind is not ArgIssueKind.DEFAULT_FRAMES:
+        return None
+    parent, child = issue.others
+    return (
+        f"no {' or '.join(issue.words)} parameter: the component publishes "
+        f"'{parent}' -> '{child}' (its defaults are '/frame' and '/child')"
+    )
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
-            if issue.kind == "default_frames":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+            text = message(issue)
+            if text is not None:
+                yield finding_at(transform, text)

@@ -44,12 +44,13 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import (
+    Finding,
     RuleContext,
     can_coexist,
-    diagnostic_at,
+    finding_at,
     place,
     same_element,
 )
@@ -88,12 +89,12 @@ def _message(later: StaticTransform, first: StaticTransform, qualified: str) -> 
     )
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     seen: dict[str, list[StaticTransform]] = {}
     for transform in context.tree.transforms:
         qualified = transform.qualified_name
-        if qualified is None or "name" in transform.unresolved or (
-            "namespace" in transform.unresolved
+        if qualified is None or transform.is_unresolved(Field.NAME) or (
+            transform.is_unresolved(Field.NAMESPACE)
         ):
             continue
         earlier = seen.setdefault(qualified, [])
@@ -103,6 +104,6 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             continue
         severity = Severity.WARNING if transform.ros_version == 2 else SEVERITY
         related = () if same_element(transform, first) else (first,)
-        yield diagnostic_at(
-            ID, CATEGORY, severity, transform, _message(transform, first, qualified), related
+        yield finding_at(
+            transform, _message(transform, first, qualified), related, severity=severity
         )

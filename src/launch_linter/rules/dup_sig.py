@@ -35,13 +35,14 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import (
+    Finding,
     RuleContext,
     by_file,
     can_coexist,
-    diagnostic_at,
+    finding_at,
     place,
     same_element,
 )
@@ -52,15 +53,14 @@ SEVERITY = Severity.ERROR
 
 
 def _agreement(a: StaticTransform, b: StaticTransform) -> str:
-    known = ("translation", "rotation")
-    if any(field in t.unresolved for t in (a, b) for field in known):
+    if any(t.is_unresolved(Field.TRANSLATION, Field.ROTATION) for t in (a, b)):
         return "tf2 keeps only one of them"
     if a.translation == b.translation and a.rotation == b.rotation:
         return "with the same values, so one of them is a redundant copy"
     return "with different values: tf2 keeps whichever starts last"
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transforms in by_file(context.tree.transforms).values():
         seen: dict[tuple[str, str], list[StaticTransform]] = {}
         for transform in transforms:
@@ -80,8 +80,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             if first is None:
                 continue
             maybe = " if both are launched" if first.condition != transform.condition else ""
-            yield diagnostic_at(
-                ID, CATEGORY, SEVERITY, transform,
+            yield finding_at(transform,
                 f"transform '{signature[0]}' -> '{signature[1]}' is already published at "
                 f"{place(first, transform)}{maybe}, {_agreement(first, transform)}",
                 (first,),

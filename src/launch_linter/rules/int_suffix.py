@@ -45,9 +45,9 @@ import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, by_file, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, StaticTransform
+from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
 ID = "int_suffix"
 CATEGORY = Category.MAY_SEMANTIC
@@ -62,14 +62,14 @@ MAX_LISTED = 6
 @dataclass(frozen=True)
 class _Kind:
     label: str
-    field: str
+    field: Field
     value: Callable[[StaticTransform], str | None]
 
 
 KINDS = (
-    _Kind("node names", "name", lambda t: t.name),
-    _Kind("parent frames", "parent", lambda t: t.parent),
-    _Kind("child frames", "child", lambda t: t.child),
+    _Kind("node names", Field.NAME, lambda t: t.name),
+    _Kind("parent frames", Field.PARENT, lambda t: t.parent),
+    _Kind("child frames", Field.CHILD, lambda t: t.child),
 )
 
 
@@ -90,7 +90,7 @@ def _series(
     series: dict[str, dict[int, tuple[str, StaticTransform]]] = {}
     for transform in transforms:
         value = kind.value(transform)
-        if value is None or kind.field in transform.unresolved:
+        if value is None or transform.is_unresolved(kind.field):
             continue
         match = _SUFFIXED.match(value)
         if match is None or match["stem"].endswith(_SYNTHETIC_STEM):
@@ -105,11 +105,11 @@ def _unresolved_values(transforms: list[StaticTransform], kind: _Kind) -> list[s
     return [
         value
         for t in transforms
-        if kind.field in t.unresolved and (value := kind.value(t)) is not None
+        if t.is_unresolved(kind.field) and (value := kind.value(t)) is not None
     ]
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transforms in by_file(context.tree.transforms).values():
         for kind in KINDS:
             blocked = _unresolved_values(transforms, kind)
@@ -126,8 +126,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
                 gap = [_spell(stem, n, width if padded else 0) for n in missing]
                 after = min(n for n in present if n > missing[0])
                 before = max(n for n in present if n < missing[0])
-                yield diagnostic_at(
-                    ID, CATEGORY, SEVERITY, numbers[after][1],
+                yield finding_at(numbers[after][1],
                     f"{kind.label} {_listed(spellings)} skip {_listed(gap)}: "
                     f"a transform of the series may be missing or misnumbered",
                     (numbers[before][1],),

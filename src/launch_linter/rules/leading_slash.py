@@ -31,15 +31,15 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "leading_slash"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for role, written in (
             ("parent", transform.parent_written),
@@ -47,8 +47,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         ):
             if written is None or not written.startswith("/"):
                 continue
-            yield diagnostic_at(
-                ID, CATEGORY, SEVERITY, transform,
+            yield finding_at(transform,
                 f"{role} frame '{written}' starts with '/': tf2 names it '{written[1:]}' "
                 f"and rejects lookups of '{written}'; write '{written.lstrip('/')}'",
             )

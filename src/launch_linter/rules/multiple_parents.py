@@ -43,16 +43,16 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, can_coexist, diagnostic_at, place
+from launch_linter.rules._api import Finding, RuleContext, can_coexist, finding_at, place
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     by_child: dict[str, list[tuple[str, StaticTransform]]] = {}
     for transform in context.tree.transforms:
         signature = transform.signature
@@ -70,8 +70,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         others = " and ".join(f"'{p}' ({place(t, transform)})" for p, t in rivals.items())
         conditional = any(not t.condition.always for t in (transform, *rivals.values()))
         gets = "may get" if conditional else "gets"
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' here and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",

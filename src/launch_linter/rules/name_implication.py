@@ -40,8 +40,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._may_implied import implications, name_of, name_unresolved
 
 ID = "name_implication"
@@ -49,5 +49,5 @@ CATEGORY = Category.MAY_IMPLIED
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     return implications(context, ID, name_of, name_unresolved, "node")

@@ -37,8 +37,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._may_implied import name_of, null_displacements
 
 ID = "name_null_disp"
@@ -46,5 +46,5 @@ CATEGORY = Category.MAY_IMPLIED
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     return null_displacements(context, ID, name_of, "node")

@@ -32,8 +32,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ned_transform"
 CATEGORY = Category.MAY_SEMANTIC
@@ -42,10 +43,10 @@ SEVERITY = Severity.WARNING
 SUFFIX = "_ned"
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         child = transform.child
-        if child is None or "child" in transform.unresolved:
+        if child is None or transform.is_unresolved(Field.CHILD):
             continue
         if not child.lower().endswith(SUFFIX):
             continue
@@ -56,8 +57,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
             problems.append("has no rotation")
         if not problems:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"NED frame '{child}' {' and '.join(problems)}: a '_ned' child should only "
             f"re-orient its parent's axes to north-east-down (REP 103), with zero "
             f"displacement and a non-null rotation",

@@ -26,13 +26,13 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, frontend_diagnostics
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 
 ID = "parse_error"
 CATEGORY = Category.LAUNCH
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterable[Diagnostic]:
-    return frontend_diagnostics(context, ID)
+def check(context: RuleContext) -> Iterable[Finding]:
+    return frontend_findings(context, ID)

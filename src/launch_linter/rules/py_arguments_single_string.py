@@ -41,16 +41,30 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import ArgIssue, ArgIssueKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "py_arguments_single_string"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def message(issue: ArgIssue) -> str | None:
+    """The diagnostic for ``issue``, or None when it is another rule's kind."""
+    if issue.kind is not ArgIssueKind.SINGLE_STRING:
+        return None
+    (item,) = issue.words
+    return (
+        f"the argument {item!r} is one argv item holding {len(item.split())} words: the "
+        f"program does not split it and stops with 'Extra unparsed arguments on "
+        f"command-line'; give each word as its own item"
+    )
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
-            if issue.kind == "single_string":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+            text = message(issue)
+            if text is not None:
+                yield finding_at(transform, text)

@@ -31,8 +31,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "reversed_name"
 CATEGORY = Category.MAY_SEMANTIC
@@ -49,18 +50,17 @@ def _joins(name: str, first: str, second: str) -> str | None:
     return None
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         signature = transform.signature
-        if signature is None or transform.name is None or "name" in transform.unresolved:
+        if signature is None or transform.name is None or transform.is_unresolved(Field.NAME):
             continue
         parent, child = (frame.lower() for frame in signature)
         name = transform.name.lower()
         separator = _joins(name, child, parent)
         if separator is None or _joins(name, parent, child) is not None:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"name '{transform.name}' reads '{signature[1]}' -> '{signature[0]}', but the "
             f"transform goes from parent '{signature[0]}' to child '{signature[1]}': either "
             f"the frames are swapped or the name should be "

@@ -34,20 +34,62 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import ArgIssue, ArgIssueKind, Field
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ros2_bad_flag"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
-KINDS = ("unknown_flag", "mixed_styles", "rpy_and_quaternion", "partial_quaternion",
-         "missing_frame")
+
+_EMPTY_FRAME = {"--frame-id": "Frame id", "--child-frame-id": "Child frame id"}
+"""The program's words for each frame flag in 'X must not be empty'."""
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def _suggestion(issue: ArgIssue) -> str:
+    if not issue.others:
+        return ""
+    if issue.split:
+        return f" (did you mean '{issue.others[0]}', without the space?)"
+    return f" (did you mean '{issue.others[0]}'?)"
+
+
+def message(issue: ArgIssue) -> str | None:
+    """The diagnostic for ``issue``, or None when it is another rule's kind."""
+    kind, words = issue.kind, issue.words
+    if kind is ArgIssueKind.UNKNOWN_FLAG:
+        return (
+            f"unknown flag '{words[0]}'{_suggestion(issue)}: the program stops with "
+            f"'Extra unparsed arguments on command-line'"
+        )
+    if kind is ArgIssueKind.MIXED_STYLES:
+        effect = (
+            "the program stops with 'Cannot specify both new-style (flags) and old-style "
+            "(arguments)'" if issue.fatal
+            else "the program silently replaces them with the positional rotation"
+        )
+        return f"flags ({', '.join(words)}) together with old-style positional arguments: {effect}"
+    if kind is ArgIssueKind.RPY_AND_QUATERNION:
+        return (
+            f"{', '.join(words)} together with {', '.join(issue.others)}: the program stops "
+            f"with 'Cannot specify both quaternion and Euler rotations'"
+        )
+    if kind is ArgIssueKind.PARTIAL_QUATERNION:
+        return (
+            f"quaternion without {', '.join(words)}: missing components stay at "
+            f"(0, 0, 0, 1), giving ({', '.join(f'{v:g}' for v in issue.values)}), which is "
+            f"not unit length and tf2 rejects"
+        )
+    if kind is ArgIssueKind.MISSING_FRAME:
+        return f"no {words[0]}: the program stops with '{_EMPTY_FRAME[words[0]]} must not be empty'"
+    return None
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
-        if "arity" in transform.unresolved:
+        if transform.is_unresolved(Field.ARITY):
             continue
         for issue in transform.arg_issues:
-            if issue.kind in KINDS:
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+            text = message(issue)
+            if text is not None:
+                yield finding_at(transform, text)

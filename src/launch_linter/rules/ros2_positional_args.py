@@ -34,16 +34,32 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import ArgIssue, ArgIssueKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "ros2_positional_args"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def message(issue: ArgIssue) -> str | None:
+    """The diagnostic for ``issue``, or None when it is another rule's kind."""
+    if issue.kind is not ArgIssueKind.POSITIONAL:
+        return None
+    # ``others`` names the flag each positional word stands for.
+    count = min(len(issue.others), len(issue.words))
+    flags = " ".join(f"{issue.others[i]} {issue.words[i]}" for i in range(count))
+    return (
+        "old-style positional arguments are deprecated ('Old-style arguments are "
+        "deprecated') and recent ROS 2 distributions reject them ('Frame id must not be "
+        f"empty'); write: {flags}"
+    )
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         for issue in transform.arg_issues:
-            if issue.kind == "positional":
-                yield diagnostic_at(ID, CATEGORY, SEVERITY, transform, issue.message)
+            text = message(issue)
+            if text is not None:
+                yield finding_at(transform, text)

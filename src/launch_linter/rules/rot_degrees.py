@@ -36,9 +36,9 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.model.transform import RotationKind
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field, RotationKind
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "rot_degrees"
 CATEGORY = Category.MAY_SEMANTIC
@@ -62,12 +62,12 @@ def looks_like_degrees(value: float) -> bool:
     return math.isfinite(value) and abs(value) > FULL_TURN and not is_radian_multiple(value)
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
         if rotation is None or rotation.kind is not RotationKind.YPR:
             continue
-        if "rotation" in transform.unresolved:
+        if transform.is_unresolved(Field.ROTATION):
             continue
         suspects = [
             f"{name} {value:g} ({value:g}° is {math.radians(value):.6g} rad)"
@@ -76,8 +76,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         ]
         if not suspects:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"{', '.join(suspects)}: static_transform_publisher reads yaw, pitch and roll in "
             f"radians, and an angle above 2π is probably in degrees",
         )

@@ -29,21 +29,20 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "self_transform"
 CATEGORY = Category.MUST
 SEVERITY = Severity.ERROR
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         signature = transform.signature
         if signature is None or signature[0] != signature[1]:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"parent and child are the same frame '{signature[0]}': tf2 ignores a transform "
             f"from a frame to itself (TF_SELF_TRANSFORM); one of the two frames is wrong",
         )

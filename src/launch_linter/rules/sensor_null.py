@@ -36,8 +36,9 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext, diagnostic_at
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.transform import Field
+from launch_linter.rules._api import Finding, RuleContext, finding_at
 
 ID = "sensor_null"
 CATEGORY = Category.MAY_SEMANTIC
@@ -53,24 +54,23 @@ def sensor_words(text: str) -> set[str]:
     return {w.lower() for w in _WORD.findall(text)} & SENSOR_WORDS
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         if transform.null_displacement is not True or transform.null_rotation is not True:
             continue
         labels = [
             text
             for text, field in (
-                (transform.name, "name"),
-                (transform.parent, "parent"),
-                (transform.child, "child"),
+                (transform.name, Field.NAME),
+                (transform.parent, Field.PARENT),
+                (transform.child, Field.CHILD),
             )
-            if text is not None and field not in transform.unresolved
+            if text is not None and transform.knows(field)
         ]
         sensors = sorted(set().union(*(sensor_words(text) for text in labels)))
         if not sensors:
             continue
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, transform,
+        yield finding_at(transform,
             f"transform '{transform.parent}' -> '{transform.child}' of a sensor "
             f"({', '.join(sensors)}) has zero displacement and zero rotation: the sensor's "
             f"mounting pose was probably never entered",

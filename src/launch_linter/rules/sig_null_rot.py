@@ -39,8 +39,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._may_implied import null_rotations, signature_of
 
 ID = "sig_null_rot"
@@ -48,5 +48,5 @@ CATEGORY = Category.MAY_IMPLIED
 SEVERITY = Severity.WARNING
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     return null_rotations(context, ID, signature_of, "transform")

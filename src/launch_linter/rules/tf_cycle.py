@@ -40,9 +40,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import RuleContext, can_coexist, diagnostic_at, place
+from launch_linter.rules._api import Finding, RuleContext, can_coexist, finding_at, place
 
 ID = "tf_cycle"
 CATEGORY = Category.TF
@@ -89,7 +89,7 @@ class _Search:
                 self._walk(start, child, [*frames, frame], [*path, edge])
 
 
-def check(context: RuleContext) -> Iterator[Diagnostic]:
+def check(context: RuleContext) -> Iterator[Finding]:
     position = {id(t): i for i, t in enumerate(context.tree.transforms)}
     for frames, edges in _Search(context.tree.transforms).run().items():
         closing = max(edges, key=lambda t: position[id(t)])
@@ -98,8 +98,7 @@ def check(context: RuleContext) -> Iterator[Diagnostic]:
         conditional = any(not t.condition.always for t in edges)
         form = "may form" if conditional else "form"
         where = ", ".join(place(t, closing) for t in others)
-        yield diagnostic_at(
-            ID, CATEGORY, SEVERITY, closing,
+        yield finding_at(closing,
             f"static transforms {form} a loop {loop} (with {where}): tf frames must form a "
             f"tree, and tf2 fails every lookup through the loop",
             others,

@@ -33,15 +33,15 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from launch_linter.model.diagnostic import Category, Diagnostic, Severity
-from launch_linter.rules._api import RuleContext
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
 
 ID = "unused_suppression"
 CATEGORY = Category.LAUNCH
 SEVERITY = Severity.INFO
 
 
-def check(context: RuleContext) -> Iterable[Diagnostic]:
+def check(context: RuleContext) -> Iterable[Finding]:
     # Whether a suppression is used depends on every other rule's diagnostics, so the
     # engine reports these after all rules ran (``suppressions.apply_suppressions``).
     return ()

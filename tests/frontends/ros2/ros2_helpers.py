@@ -19,4 +19,4 @@ def by_name(tree: LaunchTree) -> dict[str | None, StaticTransform]:
 
 
 def rules(tree: LaunchTree) -> list[tuple[str, int]]:
-    return [(d.rule, d.line) for d in tree.diagnostics]
+    return [(d.rule, d.line) for d in tree.problems]

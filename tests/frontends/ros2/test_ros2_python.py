@@ -54,7 +54,7 @@ def test_a_node_with_a_list_of_arguments(load: Load) -> None:
     )
     assert (transform.ros_version, transform.launch_format) == (2, "ros2-python")
     assert transform.args_written.startswith("['--x'")
-    assert tree.diagnostics == ()
+    assert tree.problems == ()
 
 
 def test_arguments_and_configurations(load: Load) -> None:
@@ -136,7 +136,7 @@ def test_unknown_values_are_unresolved_with_their_line(load: Load) -> None:
         "    ])\n"
     )}, "a.launch.py")
     nodes = by_name(tree)
-    assert nodes["a"].unresolved == ("child",)
+    assert nodes["a"].unresolved_names == ("child",)
     assert nodes["a"].parent == "base"
     (reason,) = nodes["a"].unresolved_reasons
     assert reason.startswith(f"laser_frame(): line {HEADER_LINES + 3}:")
@@ -231,7 +231,7 @@ def test_includes_of_every_form(load: Load) -> None:
     assert (nodes["from_xml"].child, nodes["from_xml"].launch_format) == ("gps", "ros2-xml")
     assert (nodes["from_py"].child, nodes["from_py"].path) == ("imu",
                                                                 "ws/robot/launch/c.launch.py")
-    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.diagnostics)] == [
+    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.problems)] == [
         ("roslaunch_error", True),
     ]
 
@@ -403,5 +403,5 @@ def test_text_bombs_are_refused(load: Load) -> None:
                                               "b + c + d + e + f]") + "])\n"
     )}, "a.launch.py")
     (transform,) = tree.transforms
-    assert transform.unresolved == ("child",)
+    assert transform.unresolved_names == ("child",)
     assert "too long" in transform.unresolved_reasons[0]

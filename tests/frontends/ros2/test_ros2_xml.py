@@ -27,7 +27,7 @@ def test_a_node_with_flags(load: Load) -> None:
     assert transform.tokens == (
         "--x", "0.1", "--yaw", "1.57", "--frame-id", "base_link", "--child-frame-id", "laser",
     )
-    assert tree.diagnostics == () and tree.status is FileStatus.OK
+    assert tree.problems == () and tree.status is FileStatus.OK
 
 
 def test_other_nodes_are_not_transforms(load: Load) -> None:
@@ -56,9 +56,9 @@ def test_an_unset_argument_is_unresolved_with_its_reason(load: Load) -> None:
         f'  <node {TF} name="t" args="--frame-id base --child-frame-id $(var child)"/>'
     )}, "a.launch.xml")
     (transform,) = tree.transforms
-    assert transform.unresolved == ("child",) and transform.parent == "base"
+    assert transform.unresolved_names == ("child",) and transform.parent == "base"
     assert rules(tree) == [("unresolved", 3)]
-    assert "$(var child)" in tree.diagnostics[0].message
+    assert "$(var child)" in tree.problems[0].message
 
 
 def test_a_group_scopes_configurations_and_the_namespace(load: Load) -> None:
@@ -123,7 +123,7 @@ def test_a_value_set_under_an_unknown_condition_is_unknown_after_it(load: Load) 
         '  <group if="$(var flag)" scoped="false"><let name="c" value="two"/></group>\n'
         f'  <node {TF} name="t" args="--frame-id a --child-frame-id $(var c)"/>'
     )}, "a.launch.xml")
-    assert tree.transforms[0].unresolved == ("child",)
+    assert tree.transforms[0].unresolved_names == ("child",)
 
 
 def test_a_value_set_in_a_conditional_scoped_group_is_known_inside(load: Load) -> None:
@@ -177,7 +177,7 @@ def test_a_required_argument_an_include_does_not_pass(load: Load) -> None:
         "b.launch.xml": launch('  <arg name="frame"/>'),
     }, "a.launch.xml")
     assert rules(tree) == [("roslaunch_error", 3)]
-    assert "missing required argument" in tree.diagnostics[0].message
+    assert "missing required argument" in tree.problems[0].message
 
 
 def test_include_cycles_and_missing_files(load: Load) -> None:
@@ -187,7 +187,7 @@ def test_include_cycles_and_missing_files(load: Load) -> None:
         ),
         "b.launch.yaml": "launch:\n- include:\n    file: a.launch.xml\n",
     }, "a.launch.xml")
-    messages = [d.message for d in tree.diagnostics]
+    messages = [d.message for d in tree.problems]
     assert any("include cycle" in m for m in messages)
     assert any("included file not found" in m for m in messages)
 
@@ -235,7 +235,7 @@ def test_ros1_type_in_ros2_xml(load: Load) -> None:
         '  <node pkg="tf" type="static_transform_publisher" name="t" args="0 0 0 0 0 0 a b 100"/>'
     )}, "a.launch.xml")
     assert rules(tree) == [("roslaunch_error", 3)]
-    assert "'type' 'exec'" in tree.diagnostics[0].message
+    assert "'type' 'exec'" in tree.problems[0].message
 
 
 def test_parse_errors(load: Load) -> None:
@@ -278,7 +278,7 @@ def test_the_fixture_tree_in_every_format(load: Load) -> None:
         ("arm.launch.py", "tool_tf"): ("/", "flange", "tool"),
     }
     assert {t.launch_format for t in tree.transforms} == {"ros2-xml", "ros2-yaml", "ros2-python"}
-    assert tree.diagnostics == ()
+    assert tree.problems == ()
 
 
 def test_set_env_and_forwarding(load: Load) -> None:
@@ -292,5 +292,5 @@ def test_set_env_and_forwarding(load: Load) -> None:
         f'  <node {TF} name="b" args="--frame-id $(var parent) --child-frame-id $(env ROBOT x)"/>'
     )}, "a.launch.xml", env={"ROBOT": "r1"})
     nodes = by_name(tree)
-    assert (nodes["a"].child, nodes["a"].unresolved) == ("r2", ("parent",))
+    assert (nodes["a"].child, nodes["a"].unresolved_names) == ("r2", ("parent",))
     assert (nodes["b"].parent, nodes["b"].child) == ("base", "x")

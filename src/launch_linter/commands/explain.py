@@ -1,0 +1,23 @@
+"""``launch-linter explain RULE``: the documentation of one rule."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from launch_linter.commands.common import EXIT_OK, UsageError
+from launch_linter.rules import RULES_BY_ID
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    explain = subparsers.add_parser("explain", help="documentation of one rule")
+    explain.add_argument("rule")
+    explain.set_defaults(handler=run)
+
+
+def run(ns: argparse.Namespace) -> int:
+    rule = RULES_BY_ID.get(ns.rule)
+    if rule is None:
+        raise UsageError(f"unknown rule {ns.rule!r} (see 'launch-linter rules')")
+    sys.stdout.write(f"{rule.id} ({rule.category.value}, {rule.severity.value})\n\n{rule.doc}\n")
+    return EXIT_OK

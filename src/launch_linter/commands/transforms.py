@@ -1,0 +1,30 @@
+"""``launch-linter transforms``: every static transform found, as text or JSON."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from launch_linter.commands.common import EXIT_OK, UsageError
+from launch_linter.commands.options import add_resolution_options, lint_options
+from launch_linter.engine import lint_paths
+from launch_linter.report import json_report, text
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    transforms = subparsers.add_parser("transforms", help="print every static transform found")
+    add_resolution_options(transforms)
+    transforms.add_argument("--format", choices=("text", "json"), default="text")
+    transforms.set_defaults(handler=run)
+
+
+def run(ns: argparse.Namespace) -> int:
+    if not ns.paths:
+        raise UsageError("transforms needs at least one PATH")
+    result = lint_paths(ns.paths, lint_options(ns))
+    if ns.format == "json":
+        sys.stdout.write(json_report.dumps(json_report.transforms_document(result)) + "\n")
+    else:
+        for transform in result.transforms:
+            sys.stdout.write(text.format_transform(transform) + "\n")
+    return EXIT_OK
