@@ -209,6 +209,8 @@ def decode_ros2(items: Sequence[str], unresolved: frozenset[int] = frozenset()) 
                     f"with 'Not enough arguments for {word}'"
                 )
                 break
+            if word in flags:
+                _overwritten(reader, word, *flags[word])
             flags[word] = words[position + 1]
             position += 2
             continue
@@ -241,6 +243,23 @@ def decode_ros2(items: Sequence[str], unresolved: frozenset[int] = frozenset()) 
             f"'Extra unparsed arguments on command-line'"
         )
     return _flags(reader, flags)
+
+
+_FLAG_SLOTS = {
+    "--x": 0, "--y": 1, "--z": 2, "--yaw": 3, "--pitch": 4, "--roll": 5,
+    "--qx": 3, "--qy": 4, "--qz": 5, "--qw": 6,
+}
+
+
+def _overwritten(reader: _Reader, flag: str, index: int, word: str) -> None:
+    """A flag given again: the program still parses the earlier value when it meets it
+    (``std::stod`` in ``DoubleOption::visit``), so a bad one stops it even though a later
+    occurrence would be good. Text after a number is ignored, and the value is replaced."""
+    slot = _FLAG_SLOTS.get(flag)
+    if slot is None or not reader.resolved(index):
+        return
+    if stod(word)[1] in ("invalid", "range"):
+        reader.numbers.append(NumberIssue(slot, word, None))
 
 
 def _drop_unknown_flags(reader: _Reader, bare: list[tuple[int, str]]) -> list[tuple[int, str]]:
@@ -319,6 +338,13 @@ def _layout(reader: _Reader, positional: list[tuple[int, str]], rotation_size: i
         for slot, (index, word) in enumerate(positional[:numeric])
     ]
     kind = RotationKind.YPR if rotation_size == 3 else RotationKind.QUATERNION
+    for offset in (0, 1):
+        index, word = positional[numeric + offset]
+        if word == "" and reader.resolved(index):
+            reader.issues.append(ArgIssue(
+                ArgIssueKind.MISSING_FRAME, (FRAME_FLAGS[offset],),
+                ("positional", str(numeric + offset + 1)),
+            ))
     return _result(
         reader, ArgForm(kind.value), positional[numeric][1], positional[numeric + 1][1],
         (values[0], values[1], values[2]), Rotation(kind, tuple(values[3:numeric])),
@@ -368,7 +394,9 @@ def _flags(reader: _Reader, flags: dict[str, tuple[int, str]]) -> Ros2Decoded:
     for flag in FRAME_FLAGS:
         value = flags[flag][1] if flag in flags else None
         if value is None or (value == "" and reader.resolved(flags[flag][0])):
-            reader.issues.append(ArgIssue(ArgIssueKind.MISSING_FRAME, (flag,)))
+            reader.issues.append(ArgIssue(
+                ArgIssueKind.MISSING_FRAME, (flag,), () if value is None else ("empty",),
+            ))
             value = None
         frames.append(value)
     sources = {
@@ -439,6 +467,10 @@ def decode_component(params: Mapping[str, ComponentParam], complete: bool = True
         params[name].text if name in params else default
         for name, default in zip(COMPONENT_PARAMS[7:], COMPONENT_DEFAULT_FRAMES)
     ]
+    for name in COMPONENT_PARAMS[7:]:
+        param = params.get(name)
+        if param is not None and param.resolved and param.text == "":
+            reader.issues.append(ArgIssue(ArgIssueKind.MISSING_FRAME, (name,), ("parameter",)))
     absent = [name for name in COMPONENT_PARAMS[7:] if name not in params]
     if absent and complete:
         reader.issues.append(

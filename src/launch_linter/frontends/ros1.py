@@ -628,8 +628,25 @@ class Ros1Loader:
             self._error(context, element, "command must be 'load', 'dump', or 'delete'")
         if file is not None and command_text == "delete":
             self._error(context, element, "'file' attribute is invalid with 'delete' command.")
+        file_text = None if file is None else resolved_text(file)
+        if file is not None and (command_text or "load") == "load" and file_text is not None and (
+            file_text == "" or _checkable_path(element.attrib.get("file", ""), file_text)
+        ) and not os.path.isfile(file_text):
+            self._error(context, element,
+                        f"error loading <rosparam> tag: file does not exist [{file_text}]")
+        body: Value | None = (element.text,) if element.text else ()
         if substitute:
-            self._resolve_text(element.text, element, "text", context, anon)
+            body = self._resolve_text(element.text, element, "text", context, anon)
+        if file is None and (command_text or "load") == "load" and body is not None:
+            text = resolved_text(body)
+            # An unresolved param=/ns= may well be set: only a certain absence counts.
+            has_param = any(
+                value is not None and (resolved_text(value) is None or bool(text_of(value)))
+                for value in (_param, _ns)
+            )
+            problem = None if text is None else rosparam_body_problem(text, has_param)
+            if problem is not None:
+                self._error(context, element, f"error loading <rosparam> tag: {problem}")
 
     def _remap(self, element: Element, context: _Context) -> None:
         if self._condition(element, context) is None:
@@ -698,7 +715,9 @@ class Ros1Loader:
                                 f"<test> tags cannot have '{attribute}' attribute")
             name_value = self._resolve(element, "name", context)
             test_name = self._required(element, "test-name", context)
-            self._present(element, ("time-limit", "retry"), context)
+            limits = self._present(element, ("time-limit", "retry"), context)
+            for message in _test_limit_problems(limits):
+                self._error(context, element, f"Invalid <node> tag: {message}")
             if not (name_value and text_of(name_value)):
                 name_value = test_name
         else:
@@ -997,6 +1016,97 @@ def _is_int(text: str) -> bool:
     except ValueError:
         return False
     return True
+
+
+def _test_limit_problems(values: dict[str, Value]) -> list[str]:
+    """What roslaunch's ``_test_attrs`` refuses: ``float(time-limit)`` must work and be
+    positive, ``int(retry)`` must work (empty values are not checked)."""
+    problems: list[str] = []
+    limit = resolved_text(values["time-limit"]) if "time-limit" in values else None
+    if limit:
+        try:
+            if float(limit) <= 0.0:
+                problems.append("'time-limit' must be a positive number")
+        except ValueError:
+            problems.append(f"'time-limit' must be a number: [{limit}]")
+    retry = resolved_text(values["retry"]) if "retry" in values else None
+    if retry:
+        try:
+            int(retry)
+        except ValueError:
+            problems.append(f"'retry' must be a number: [{retry}]")
+    return problems
+
+
+def _checkable_path(written: str, path: str) -> bool:
+    """Whether a missing file means the same on every machine: an absolute path found
+    through ``$(find pkg)`` (the package exists) or ``$(dirname)``."""
+    return os.path.isabs(path) and ("$(find " in written or "$(dirname)" in written)
+
+
+def rosparam_body_problem(text: str, has_param: bool) -> str | None:
+    """What roslaunch's ``load_rosparam`` refuses in a ``<rosparam>`` body: a YAML value
+    that is not a mapping, without ``param=``."""
+    if has_param or yaml_root_kind(text) != "other":
+        return None
+    return "'param' attribute must be set for non-dictionary values"
+
+
+def yaml_root_kind(text: str) -> str | None:
+    """Whether a YAML document's root is a ``mapping``, ``other`` (a sequence or a
+    scalar), or None when that is not plain from its first lines (tags, anchors, block
+    scalars, several documents, or nothing at all). Standard library only, and never a
+    guess: the core does not depend on PyYAML, and a body it cannot classify is left
+    alone."""
+    lines = []
+    for raw in text[:100_000].splitlines():
+        stripped = raw.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        if stripped.startswith(("%", "---", "...")):
+            return None
+        lines.append(raw)
+    if not lines:
+        return None  # empty: roslaunch takes it as {}
+    first = lines[0].strip()
+    if first[0] in "!&*|>?@`":
+        return None
+    if first.startswith("{"):
+        return "mapping"
+    if first.startswith("[") or first == "-" or first.startswith(("- ", "-\t")):
+        return "other"
+    key_end = _plain_key_end(first)
+    if key_end is not None:
+        return "mapping"
+    if any(_plain_key_end(line.strip()) is not None for line in lines[1:]):
+        return None  # not a plain single value: YAML may refuse it; leave it
+    return "other"
+
+
+def _plain_key_end(line: str) -> int | None:
+    """Where a ``key:`` ends on a line (``: ``, ``:\t`` or ``:`` at its end, outside
+    quotes), or None."""
+    quote = ""
+    index = 0
+    if line[:1] in "'\"":
+        quote = line[0]
+        index = 1
+        while index < len(line):
+            if line[index] == quote:
+                if quote == "'" and line[index + 1:index + 2] == "'":
+                    index += 2
+                    continue
+                break
+            index += 2 if quote == '"' and line[index] == "\\" else 1
+        index += 1
+        rest = line[index:].lstrip()
+        return index if rest.startswith(":") and (rest == ":" or rest[1] in " \t") else None
+    for index, char in enumerate(line):
+        if char == "#" and index and line[index - 1] in " \t":
+            return None
+        if char == ":" and (index + 1 == len(line) or line[index + 1] in " \t"):
+            return index
+    return None
 
 
 def _is_positive_number(text: str) -> bool:

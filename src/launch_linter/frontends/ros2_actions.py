@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import Union
 
 from launch_linter.model.transform import LaunchFormat
-from launch_linter.resolve.ros2_substitution import Subs
+from launch_linter.resolve.ros2_substitution import Subs, Text
 from launch_linter.resolve.value import Value
 
 
@@ -104,6 +104,25 @@ class RunNode:
     arguments: tuple[Subs, ...] | None
     args_written: str
     unknown: str = ""
+    pushed_namespace: bool = True
+    """False for ``ros2 run`` in an executable action: launch_ros's pushed namespace
+    applies to ``Node`` actions only."""
+
+
+def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:
+    """``ros2 run PKG EXEC ARGS...`` as an executable's argv items: (package, executable,
+    arguments), or None when the command is something else."""
+    if len(items) < 4:
+        return None
+    words = []
+    for item in items[:2]:
+        if not all(isinstance(sub, Text) for sub in item):
+            return None
+        words.append("".join(sub.text for sub in item if isinstance(sub, Text)))
+    program, verb = words
+    if not (program == "ros2" or program.endswith("/ros2")) or verb != "run":
+        return None
+    return items[2], items[3], tuple(items[4:])
 
 
 @dataclass(frozen=True)

@@ -424,9 +424,9 @@ class Ros2Loader:
         self._run(read.actions, scope, inner)
 
     # -- transforms --------------------------------------------------------------------
-    def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where
-                   ) -> tuple[str, tuple[Hole, ...]]:
-        base = scope.configs.get(NAMESPACE_KEY)
+    def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where,
+                   pushed: bool = True) -> tuple[str, tuple[Hole, ...]]:
+        base = scope.configs.get(NAMESPACE_KEY) if pushed else None
         own = None if subs is None else self._resolve(subs, scope, frame, where)
         pending = (*holes(base or ()), *holes(own or ()))
         namespace = make_absolute(prefix_namespace(
@@ -451,7 +451,8 @@ class Ros2Loader:
             unresolved = frozenset(i for i, value in enumerate(values) if not is_resolved(value))
             decoded = decode_ros2(items, unresolved)
         self._emit(action.where, scope, frame, package, executable, action.name,
-                   action.namespace, decoded, values, action.args_written, action.unknown)
+                   action.namespace, decoded, values, action.args_written, action.unknown,
+                   pushed_namespace=action.pushed_namespace)
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)
@@ -483,7 +484,8 @@ class Ros2Loader:
     def _emit(self, where: Where, scope: _Scope, frame: _Frame, package: Value,
               executable: Value, name_subs: Subs | None, namespace_subs: Subs | None,
               decoded: Ros2Decoded | None, values: list[Value], args_written: str,
-              unknown: str, argv: list[str] | None = None) -> None:
+              unknown: str, argv: list[str] | None = None, pushed_namespace: bool = True
+              ) -> None:
         name_value = None if name_subs is None else self._resolve(name_subs, scope, frame, where)
         name = None if name_value is None else text_of(name_value) or None
         if name is not None and name_value is not None and is_resolved(name_value) and (
@@ -491,7 +493,8 @@ class Ros2Loader:
         ):
             self._report("roslaunch_error", where,
                          f"node name cannot contain a namespace: {name}", node=name)
-        namespace, namespace_holes = self._namespace(namespace_subs, scope, frame, where)
+        namespace, namespace_holes = self._namespace(namespace_subs, scope, frame, where,
+                                                     pushed_namespace)
         unresolved: set[Field] = set()
         if name_value is not None and not is_resolved(name_value):
             unresolved.add(Field.NAME)

@@ -52,6 +52,7 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Unfollowed,
     Where,
+    ros2_run,
 )
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
@@ -64,7 +65,9 @@ MAX_STEPS = 200_000
 MAX_CALL_DEPTH = 16
 MAX_ITEMS = 10_000
 MAX_TEXT = 100_000
-LAUNCH_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml")
+LAUNCH_ROOTS = (
+    "launch", "launch_ros", "launch_xml", "launch_yaml", "launch_testing", "launch_pytest",
+)
 ACTION_NAMES = frozenset({
     "Node", "IncludeLaunchDescription", "ComposableNodeContainer", "LoadComposableNodes",
     "ComposableNode", "GroupAction", "OpaqueFunction", "TimerAction", "LaunchDescription",
@@ -255,6 +258,8 @@ class Interpreter:
     call_sites: list[ast.AST] = field(default_factory=list)
     """Calls of the file's own functions being run, outermost first."""
     lines: list[str] = field(default_factory=list)
+    served: list[object] = field(default_factory=list)
+    """What a script gives ``LaunchService.include_launch_description``."""
 
     # -- helpers -------------------------------------------------------------------------
     def step(self) -> None:
@@ -590,6 +595,10 @@ class Interpreter:
             return ConfigsVal(base.resolver)
         if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal)):
             return BoundMethod(base, name)
+        if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
+            name == "include_launch_description"
+        ):
+            return BoundMethod(base, name)
         return self.unknown(node, f"attribute '{name}' is not interpreted")
 
     def fstring(self, node: ast.JoinedStr, env: Env) -> object:
@@ -897,6 +906,12 @@ class Interpreter:
             if name == "insert" and len(args) == 2 and isinstance(args[0], int):
                 target.insert(args[0], self.guard(args[1]))
                 return None
+        if isinstance(target, LaunchObject) and target.name == "LaunchService" and (
+            name == "include_launch_description" and len(args) == 1
+        ):
+            # A script-style file: what it would serve is its launch description.
+            self.served.append(args[0])
+            return None
         if isinstance(target, LaunchDescriptionVal) and name in ("add_action", "add_entity"):
             if len(args) == 1:
                 target.items.append(self.guard(args[0]))
@@ -1004,6 +1019,9 @@ class Interpreter:
             return self.ament(name, args, node)
         if module.root not in LAUNCH_ROOTS:
             return self.unknown(node, f"calls '{dotted}', which the linter does not model")
+        if name == "Parameter" and ".substitutions" in dotted:
+            # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
+            return _substitution("param", 2)(self, args, kwargs, node)
         handler = getattr(self, f"launch_{name}", None)
         if handler is None:
             if name in ("ParameterValue", "ParameterFile") and args:
@@ -1152,6 +1170,23 @@ class Interpreter:
             arguments=items,
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
+        )
+
+    def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
+                              node: ast.Call) -> object:
+        """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
+        other processes are not transforms."""
+        cmd = self.arg(args, kwargs, 0, "cmd")
+        if not isinstance(cmd, list | tuple) or kwargs.get("shell") is True:
+            return LaunchObject("ExecuteProcess")
+        run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
+        if run is None:
+            return LaunchObject("ExecuteProcess")
+        package, executable, arguments = run
+        return RunNode(
+            where=self.where(node), condition=self.condition(kwargs, node), package=package,
+            executable=executable, name=None, namespace=None, arguments=arguments,
+            args_written=self.segment(_keyword(node, "cmd") or node), pushed_namespace=False,
         )
 
     def launch_DeclareLaunchArgument(self, args: list[object], kwargs: dict[str, object],
@@ -1313,6 +1348,7 @@ class Interpreter:
     launch_EqualsSubstitution = _substitution("equals", 2)
     launch_NotEqualsSubstitution = _substitution("not-equals", 2)
     launch_IfElseSubstitution = _substitution("if", 3)
+    launch_LaunchLogDir = _substitution("launch_log_dir", 0)
 
     def launch_TextSubstitution(self, args: list[object], kwargs: dict[str, object],
                                 node: ast.Call) -> object:
@@ -1495,20 +1531,119 @@ def read_python(path: str, data: bytes) -> FileRead:
     return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
 
 
+ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
+"""What ``ros2 launch`` and ``launch_testing`` call; ``launch_pytest`` fixtures next."""
+
+
+def _is_launch_pytest_fixture(decorator: ast.expr) -> bool:
+    """``@launch_pytest.fixture``, ``@launch_pytest.fixture(...)`` or a bare ``@fixture``
+    imported from it (checked by the caller)."""
+    target = decorator.func if isinstance(decorator, ast.Call) else decorator
+    return (
+        isinstance(target, ast.Attribute) and target.attr == "fixture"
+        and isinstance(target.value, ast.Name) and target.value.id == "launch_pytest"
+    )
+
+
+def _entry_point(tree: ast.Module, module: Env) -> tuple[str, FuncVal] | None:
+    for name in ENTRY_POINTS:
+        found, function = module.lookup(name)
+        if found and isinstance(function, FuncVal):
+            return name, function
+    fixture_imported = any(
+        isinstance(statement, ast.ImportFrom) and statement.module == "launch_pytest"
+        and any(alias.name == "fixture" and alias.asname is None for alias in statement.names)
+        for statement in tree.body
+    )
+    for statement in tree.body:
+        if not isinstance(statement, ast.FunctionDef):
+            continue
+        for decorator in statement.decorator_list:
+            bare = decorator.func if isinstance(decorator, ast.Call) else decorator
+            if _is_launch_pytest_fixture(decorator) or (
+                fixture_imported and isinstance(bare, ast.Name) and bare.id == "fixture"
+            ):
+                found, function = module.lookup(statement.name)
+                if found and isinstance(function, FuncVal):
+                    return statement.name, function
+    return None
+
+
+def _yield_as_return(function: FuncVal) -> FuncVal:
+    """A fixture that ``yield``s its launch description (then cleans up) gives what it
+    yields first: its body up to that statement, with the ``yield`` read as ``return``."""
+    node = function.node
+    if not isinstance(node, ast.FunctionDef):
+        return function
+    for index, statement in enumerate(node.body):
+        if isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Yield):
+            returned = ast.copy_location(ast.Return(value=statement.value.value), statement)
+            body = [*node.body[:index], returned]
+            copy = ast.copy_location(ast.FunctionDef(
+                name=node.name, args=node.args, body=body, decorator_list=[],
+                returns=None, type_comment=None,
+            ), node)
+            return FuncVal(copy, function.closure, function.defaults)
+    return function
+
+
+def _served(interpreter: Interpreter, module: Env) -> LaunchDescriptionVal | None:
+    """A script's launch description: what its module code, or else its ``main()``,
+    gives ``LaunchService().include_launch_description``."""
+    if not interpreter.served:
+        found, main = module.lookup("main")
+        if found and isinstance(main, FuncVal):
+            interpreter.call_function(main, [], {}, main.node)
+    if not interpreter.served:
+        return None
+    items: list[object] = []
+    for description in interpreter.served:
+        if isinstance(description, LaunchDescriptionVal):
+            items.extend(description.items)
+        else:
+            items.append(description)
+    return LaunchDescriptionVal(items)
+
+
+def _fixture_arguments(interpreter: Interpreter, function: FuncVal, module: Env
+                       ) -> dict[str, object]:
+    """pytest passes a fixture's parameters from the fixtures of the same name: the
+    module's own functions of those names are called (without arguments)."""
+    values: dict[str, object] = {}
+    for parameter in function.node.args.args:
+        found, fixture = module.lookup(parameter.arg)
+        if found and isinstance(fixture, FuncVal) and fixture is not function:
+            values[parameter.arg] = interpreter.call_function(fixture, [], {}, fixture.node)
+    return values
+
+
 def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
     module = Env()
     top = Where(interpreter.path, 1, 1)
     try:
         interpreter.run_block(tree.body, module)
-        found, function = module.lookup("generate_launch_description")
-        if not found or not isinstance(function, FuncVal):
+        entry = _entry_point(tree, module)
+        if entry is None:
+            served = _served(interpreter, module)
+            if served is not None:
+                return interpreter.actions(served.items, tree)
             interpreter.problems.append(Problem(
-                "roslaunch_error", 1, 1,
-                "no generate_launch_description() function: ros2 launch cannot load this file",
+                "unresolved", 1, 1,
+                "no generate_launch_description(), generate_test_description() or "
+                "launch_pytest fixture: not a launch file ros2 launch can load; not read",
             ))
             return ()
+        entry_name, function = entry
         node = function.node
-        result = interpreter.call_function(function, [], {}, node)
+        arguments = (_fixture_arguments(interpreter, function, module)
+                     if entry_name not in ENTRY_POINTS else {})
+        function = _yield_as_return(function)
+        result = interpreter.call_function(function, [], arguments, node)
+        if isinstance(result, (tuple, list)) and result and isinstance(
+            result[0], LaunchDescriptionVal
+        ):
+            # launch_testing's (LaunchDescription, {name: process, ...}) form.
+            result = result[0]
     except _OutOfSteps:
         return (Unfollowed(top, f"stopped interpreting after {MAX_STEPS} steps: the launch "
                                 f"description is not followed"),)

@@ -30,9 +30,12 @@ from launch_linter.frontends.ros2_actions import (
     SetEnv,
     SetVar,
     Where,
+    ros2_run,
 )
+from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import (
+    CommandLineError,
     Opaque,
     Subs,
     SubstitutionSyntaxError,
@@ -54,6 +57,9 @@ class Entity:
     """Attributes that hold entities (``param``, ``arg`` of an include, ...)."""
     children: list[Entity] = field(default_factory=list)
     """Nested actions (of ``launch``, ``group``, ``timer``)."""
+    other_keys: list[str] = field(default_factory=list)
+    """YAML keys written but kept neither as attributes nor as nested entities (a null
+    value, a list of scalars, a mapping): the schema check still sees their names."""
 
 
 def normalise_tag(tag: str) -> str:
@@ -144,6 +150,8 @@ class _Reader:
             return self.include(entity, where, condition)
         if tag == "node":
             return self.node(entity, where, condition)
+        if tag == "executable":
+            return self.executable(entity, where, condition)
         if tag in ("node_container", "load_composable_node"):
             components = tuple(
                 self.component(child) for child in entity.lists.get("composable_node", [])
@@ -173,6 +181,13 @@ class _Reader:
             )
             return None
         args = self.subs(entity, "args")
+        try:
+            arguments = () if args is None else tuple(split_command_line(args))
+        except CommandLineError as exc:
+            self.report("parse_error", entity,
+                        f"args: {exc}: launch's command-line parser (shlex) refuses it, "
+                        f"and with it the whole file")
+            return None
         return RunNode(
             where=where,
             condition=condition,
@@ -180,8 +195,31 @@ class _Reader:
             executable=executable,
             name=self.subs(entity, "name") or self.subs(entity, "node-name"),
             namespace=self.subs(entity, "namespace"),
-            arguments=() if args is None else tuple(split_command_line(args)),
+            arguments=arguments,
             args_written=entity.attrs.get("args", ""),
+        )
+
+    def executable(self, entity: Entity, where: Where, condition: Predicate | None
+                   ) -> RunNode | None:
+        """``<executable cmd="ros2 run PKG EXEC ARGS">`` starts that node."""
+        cmd = self.required(entity, "cmd")
+        if cmd is None:
+            return None
+        try:
+            items = split_command_line(cmd)
+        except CommandLineError as exc:
+            self.report("parse_error", entity,
+                        f"cmd: {exc}: launch's command-line parser (shlex) refuses it, "
+                        f"and with it the whole file")
+            return None
+        run = ros2_run(items)
+        if run is None:
+            return None
+        package, executable, arguments = run
+        return RunNode(
+            where=where, condition=condition, package=package, executable=executable,
+            name=None, namespace=None, arguments=arguments,
+            args_written=entity.attrs.get("cmd", ""), pushed_namespace=False,
         )
 
     def component(self, entity: Entity) -> Component:
@@ -221,10 +259,47 @@ class _Reader:
             items.append((prefix + name, value))
 
 
-def actions_of(path: str, root: Entity) -> tuple[tuple[Action, ...], tuple[Problem, ...]]:
-    """The actions of a ``launch`` root entity read from ``path``, and the problems seen."""
+def _schema_entity(entity: Entity, xml: bool) -> SchemaEntity:
+    if xml:
+        # An XML entity's children are its nested tags, in order, whatever they are.
+        nested = entity.children
+    else:
+        # YAML nests entities as list-valued keys, and actions under ``children``.
+        nested = [item for items in entity.lists.values() for item in items]
+        nested.extend(entity.children)
+    names = (*entity.attrs, *entity.other_keys)
+    return SchemaEntity(
+        entity.tag, entity.line, entity.column, tuple(dict.fromkeys(names)),
+        tuple(_schema_entity(child, xml) for child in nested),
+    )
+
+
+def schema_problems(root: Entity, launch_format: str) -> tuple[Problem, ...]:
+    """What launch's front-end refuses under ``root`` (``ros2_schema`` problems), and the
+    actions it may not know (``unresolved``)."""
+    xml = launch_format == "xml"
+    children = tuple(_schema_entity(child, xml) for child in root.children)
+    return tuple(
+        Problem("ros2_schema" if found.refused else "unresolved", found.line, found.column,
+                found.message)
+        for found in check_launch(children, launch_format)
+    )
+
+
+def actions_of(path: str, root: Entity, launch_format: str = "xml"
+               ) -> tuple[tuple[Action, ...] | None, tuple[Problem, ...]]:
+    """The actions of a ``launch`` root entity read from ``path``, and the problems seen.
+
+    The actions are None when launch refuses the file (a ``ros2_schema`` problem): it
+    starts none of its nodes, so none of its transforms are published.
+    """
+    schema = schema_problems(root, launch_format)
     reader = _Reader(path)
-    return reader.actions(root.children), tuple(reader.problems)
+    actions = reader.actions(root.children)
+    if any(problem.rule in ("ros2_schema", "parse_error")
+           for problem in (*schema, *reader.problems)):
+        return None, (*schema, *reader.problems)
+    return actions, (*schema, *reader.problems)
 
 
 def _entity(element: Element) -> Entity:
@@ -251,5 +326,5 @@ def read_xml(path: str, data: bytes) -> FileRead:
             f"root element is <{document.root.tag}>, not <launch>",
         )
         return FileRead(LaunchFormat.ROS2_XML, None, comments, lines, (problem,))
-    actions, problems = actions_of(path, _entity(document.root))
+    actions, problems = actions_of(path, _entity(document.root), "xml")
     return FileRead(LaunchFormat.ROS2_XML, actions, comments, lines, problems)

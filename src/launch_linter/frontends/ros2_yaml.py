@@ -79,13 +79,16 @@ class _Converter:
             name = str(key.value)
             if name == "children":
                 entity.children = self.entities(value, entity.tag)
-            elif isinstance(value, self.yaml.ScalarNode):
-                if value.tag != "tag:yaml.org,2002:null":
-                    entity.attrs[name] = str(value.value)
-            elif isinstance(value, self.yaml.SequenceNode) and all(
+            elif isinstance(value, self.yaml.ScalarNode) and (
+                value.tag != "tag:yaml.org,2002:null"
+            ):
+                entity.attrs[name] = str(value.value)
+            elif isinstance(value, self.yaml.SequenceNode) and value.value and all(
                 isinstance(item, self.yaml.MappingNode) for item in value.value
             ):
                 entity.lists[name] = [self.nested(name, item) for item in value.value]
+            else:
+                entity.other_keys.append(name)
 
     def nested(self, tag: str, body: Any) -> Entity:
         self.tick()
@@ -151,7 +154,7 @@ def read_yaml(path: str, data: bytes) -> FileRead:
         return _error(line, column, exc.message, comments)
     except (_TooLarge, RecursionError) as exc:
         return _error(1, 1, f"YAML launch file too large or too deep: {exc}", comments)
-    actions, problems = actions_of(path, launch)
+    actions, problems = actions_of(path, launch, "yaml")
     return FileRead(FORMAT, actions, comments, tuple(converter.lines), problems)
 
 

@@ -168,10 +168,14 @@ class ArgIssue:
     missing frame flag, the argv item holding several words, the absent frame parameters.
     ``others`` holds: the flag each positional word stands for, the suggested flag (if
     any), the quaternion flags (``RPY_AND_QUATERNION``), the two frames a component
-    publishes (``DEFAULT_FRAMES``). ``values`` holds the completed quaternion
-    (``PARTIAL_QUATERNION``). ``fatal`` is False for rpy flags beside positional
-    arguments (the program silently replaces them). ``split`` is True for an unknown flag
-    that is a flag name written with a space after ``--``.
+    publishes (``DEFAULT_FRAMES``), and for ``MISSING_FRAME`` how the frame is empty:
+    nothing (the flag is absent), ``("empty",)`` (given empty), ``("positional", N)``
+    (the Nth positional argument is empty) or ``("parameter",)`` (a component's
+    ``frame_id``/``child_frame_id`` parameter, whose name is then in ``words``).
+    ``values`` holds the completed quaternion (``PARTIAL_QUATERNION``). ``fatal`` is
+    False for rpy flags beside positional arguments (the program silently replaces them).
+    ``split`` is True for an unknown flag that is a flag name written with a space after
+    ``--``.
     """
 
     kind: ArgIssueKind

@@ -127,7 +127,9 @@ class _Parser:
                 parts.append(self.call(0))
                 continue
             char = self.source[self.pos]
-            if char == "\\" and self.pos + 1 < len(self.source):
+            if char == "\\" and self.pos + 1 < len(self.source) and (
+                self.source[self.pos + 1] != "\n"  # launch's r'\\(.)' stops at a newline
+            ):
                 text.append(self.source[self.pos + 1])
                 self.pos += 2
                 continue
@@ -194,7 +196,9 @@ class _Parser:
                     text.clear()
                 parts.append(self.call(depth + 1))
                 continue
-            if char == "\\" and self.pos + 1 < len(self.source):
+            if char == "\\" and self.pos + 1 < len(self.source) and (
+                self.source[self.pos + 1] != "\n"  # launch's r'\\(.)' stops at a newline
+            ):
                 text.append(self.source[self.pos + 1])
                 self.pos += 2
                 continue
@@ -237,6 +241,9 @@ _ARITY: dict[str, tuple[int, int]] = {
     "not-equals": (2, 2),
     "if": (2, 3),
     "path-join": (0, 64),
+    "param": (1, 2),
+    "launch_log_dir": (0, 0),
+    "log_dir": (0, 0),
 }
 """Substitutions that ROS 2 launch (or our Python front-end) knows, with their arity."""
 
@@ -246,6 +253,11 @@ _RUNTIME_ONLY = {
     "exec-in-pkg": "the location of an executable is only known in a built workspace",
     "command": "$(command) runs a program, which the linter never does",
     "file-content": "the linter does not read files named by substitutions",
+    # launch_ros (Humble+): a global parameter set by <set_parameter> or given at run time.
+    "param": "a ROS parameter's value is only known when the launch runs",
+    # launch: the folder of this run's logs, made when the launch starts.
+    "launch_log_dir": "the launch log folder is only known when the launch runs",
+    "log_dir": "the launch log folder is only known when the launch runs",
 }
 
 _TRUE_WORDS = ("true", "1", "yes", "on")
@@ -468,41 +480,54 @@ def to_bool(value: Value) -> bool | None:
     raise ValueError(f"{text!r} is not a valid condition (true, false, 1 or 0)")
 
 
-def split_command_line(subs: Subs) -> list[Subs]:
-    """Split an ``args`` attribute into argv items as launch's ``_parse_cmdline`` does.
+class CommandLineError(ValueError):
+    """launch's ``shlex.split`` refuses a piece of literal text (an unclosed quote, a
+    trailing backslash): the front-end raises and the whole file is refused."""
 
-    Literal text is split like a shell (``shlex``); a substitution's result is never
-    split, so ``$(var a)`` is one argument whatever its value, and it joins the literal
-    text it touches (``$(var a)_link``). Launch would also emit an empty argument for
-    whitespace before a leading substitution; that artefact is not reproduced.
+
+def split_command_line(subs: Subs) -> list[Subs]:
+    """Split an ``args``/``cmd`` attribute into argv items exactly as launch's
+    ``ExecuteProcess._parse_cmdline`` does.
+
+    Each literal text is split with ``shlex.split``; a substitution's result is never
+    split, and it joins the literal text it touches (``$(var a)_link``). Two of launch's
+    artefacts are kept because the program sees them: a text of only whitespace closes
+    the current item even when it is empty, so whitespace before a leading substitution
+    (``args=" $(var a) b"``) and an empty attribute (``args=""``) give an empty argument.
+    Raises :class:`CommandLineError` where ``shlex`` does (launch then refuses the file).
     """
     result: list[Subs] = []
     current: list[Sub] = []
 
-    def flush() -> None:
-        if current:
-            result.append(tuple(current))
-            current.clear()
+    def close() -> None:
+        # launch appends the item even when it is empty.
+        result.append(tuple(current))
+        current.clear()
 
+    if not subs:
+        # parse_substitution('') is one empty text, which shlex splits into nothing.
+        return [()]
     for sub in subs:
         if not isinstance(sub, Text):
             current.append(sub)
             continue
         try:
             tokens = shlex.split(sub.text)
-        except ValueError:
-            tokens = sub.text.split()
+        except ValueError as exc:
+            raise CommandLineError(f"{exc} in {sub.text!r}") from None
         if not tokens:
-            flush()
+            close()
             continue
-        if sub.text[0].isspace():
-            flush()
+        if sub.text[0].isspace() and current:
+            close()
         current.append(Text(tokens[0]))
         if len(tokens) > 1:
-            flush()
-            result.extend((Text(token),) for token in tokens[1:-1])
+            close()
             current.append(Text(tokens[-1]))
+        if len(tokens) > 2:
+            result.extend((Text(token),) for token in tokens[1:-1])
         if sub.text[-1].isspace():
-            flush()
-    flush()
+            close()
+    if current:
+        result.append(tuple(current))
     return result

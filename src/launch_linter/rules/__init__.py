@@ -21,6 +21,7 @@ from launch_linter.rules import (
     reversed_name,
     ros2_bad_flag,
     ros2_positional_args,
+    ros2_schema,
     roslaunch_error,
     rot_degrees,
     self_transform,
@@ -63,6 +64,7 @@ RULE_MODULES = (
     ros2_bad_flag,
     py_arguments_single_string,
     component_default_frames,
+    ros2_schema,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

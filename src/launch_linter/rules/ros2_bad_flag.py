@@ -54,6 +54,22 @@ def _suggestion(issue: ArgIssue) -> str:
     return f" (did you mean '{issue.others[0]}'?)"
 
 
+def _missing_frame(issue: ArgIssue) -> str:
+    """An absent or empty frame id, by how it was written (see ``ArgIssue``)."""
+    name, how = issue.words[0], issue.others
+    if how[:1] == ("parameter",):
+        child = "CHILD_" if name.startswith("child") else ""
+        return (f"the {name} parameter is empty: tf2 rejects a transform without a frame id "
+                f"(TF_NO_{child}FRAME_ID)")
+    stops = f"the program stops with '{_EMPTY_FRAME[name]} must not be empty'"
+    if how[:1] == ("positional",):
+        which = "parent" if name == "--frame-id" else "child"
+        return f"the {which} frame id (argument {how[1]}) is empty: {stops}"
+    if how[:1] == ("empty",):
+        return f"{name} is empty: {stops}"
+    return f"no {name}: {stops}"
+
+
 def message(issue: ArgIssue) -> str | None:
     """The diagnostic for ``issue``, or None when it is another rule's kind."""
     kind, words = issue.kind, issue.words
@@ -81,7 +97,7 @@ def message(issue: ArgIssue) -> str | None:
             f"not unit length and tf2 rejects"
         )
     if kind is ArgIssueKind.MISSING_FRAME:
-        return f"no {words[0]}: the program stops with '{_EMPTY_FRAME[words[0]]} must not be empty'"
+        return _missing_frame(issue)
     return None
 
 

@@ -4,8 +4,12 @@
 Reports what makes roslaunch stop with an error while loading a launch tree: an unknown
 substitution, `if` and `unless` on one tag, a condition that is not `true`/`false`/`1`/`0`,
 an arg declared twice or overridden, include args that are unused or have no value, a
-missing or cyclic include, a node name with a namespace in it. The linter goes on after
-each, so one run shows every such problem instead of roslaunch's first.
+missing or cyclic include, a node name with a namespace in it, a `<test>` whose
+`time-limit` is not a positive number or whose `retry` is not an integer, a `<rosparam>`
+whose `file` is empty or missing under a package found with `$(find)` (or under
+`$(dirname)`), and a `<rosparam>` body that is not a mapping without `param=`. The
+linter goes on after each, so one run shows every such problem instead of roslaunch's
+first.
 
 ## Why is this bad?
 roslaunch refuses to start the whole launch tree, so nothing in it runs.

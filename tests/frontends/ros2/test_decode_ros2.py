@@ -275,3 +275,44 @@ def test_component_parameters_from_a_file_may_set_the_frames() -> None:
 def test_component_string_for_a_number() -> None:
     decoded = decode_component({"translation.x": ComponentParam("abc", True)})
     assert decoded.number_issues == (NumberIssue(0, "abc", None),)
+
+
+# -- every occurrence of a repeated flag, empty frames in every form -----------------------
+
+
+@pytest.mark.parametrize(("words", "bad"), [
+    (["--x", "abc", "--x", "1"], [NumberIssue(0, "abc", None)]),
+    (["--yaw", "1e999", "--yaw", "0.5"], [NumberIssue(3, "1e999", None)]),
+    (["--qw", "one", "--qw", "1"], [NumberIssue(6, "one", None)]),
+    (["--x", "1m", "--x", "1"], []),  # stod reads '1' and the value is replaced anyway
+    (["--x", "1", "--x", "2"], []),
+])
+def test_an_earlier_occurrence_of_a_flag_is_parsed_too(words: list[str],
+                                                       bad: list[NumberIssue]) -> None:
+    decoded = decode_ros2([*words, "--frame-id", "a", "--child-frame-id", "b"])
+    assert list(decoded.number_issues) == bad
+    assert decoded.arg_issues == ()
+
+
+def test_the_last_frame_flag_wins_even_when_empty() -> None:
+    assert kinds(["--frame-id", "a", "--child-frame-id", "b", "--frame-id", ""]) == [
+        "missing_frame"]
+    assert kinds(["--frame-id", "", "--child-frame-id", "b", "--frame-id", "a"]) == []
+
+
+@pytest.mark.parametrize(("words", "expected"), [
+    (["0"] * 6 + ["", "b"], "'Frame id must not be empty'"),
+    (["0"] * 6 + ["a", ""], "'Child frame id must not be empty'"),
+    (["0"] * 6 + ["1", "a", ""], "'Child frame id must not be empty'"),
+])
+def test_empty_positional_frames(words: list[str], expected: str) -> None:
+    decoded = decode_ros2(words)
+    (issue,) = [i for i in decoded.arg_issues if i.kind == "missing_frame"]
+    assert expected in message(issue)
+
+
+def test_empty_component_frames() -> None:
+    decoded = decode_component({"frame_id": ComponentParam("", True),
+                                "child_frame_id": ComponentParam("laser", True)})
+    assert [i.kind for i in decoded.arg_issues] == ["missing_frame"]
+    assert "TF_NO_FRAME_ID" in message(decoded.arg_issues[0])

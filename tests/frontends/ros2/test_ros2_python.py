@@ -356,7 +356,7 @@ def test_syntax_errors_and_missing_entry_point(load: Load) -> None:
     tree = load({"a.launch.py": "def generate_launch_description(:\n"}, "a.launch.py")
     assert tree.status is FileStatus.PARSE_ERROR and rules(tree) == [("parse_error", 1)]
     tree = load({"b.launch.py": "x = 1\n"}, "b.launch.py")
-    assert rules(tree) == [("roslaunch_error", 1)]
+    assert rules(tree) == [("unresolved", 1)]
 
 
 def test_comments_and_element_lines(load: Load) -> None:
@@ -405,3 +405,85 @@ def test_text_bombs_are_refused(load: Load) -> None:
     (transform,) = tree.transforms
     assert transform.unresolved_names == ("child",)
     assert "too long" in transform.unresolved_reasons[0]
+
+
+def test_parameter_and_log_dir_substitutions_are_unresolved(load: Load) -> None:
+    tree = load({"a.launch.py": HEADER
+        + "from launch_ros.substitutions import Parameter\n"
+        + "from launch.substitutions import LaunchLogDir\n"
+        + launch_file("    return LaunchDescription([\n        "
+                      + tf("['--frame-id', Parameter('base'), '--child-frame-id', 'laser']",
+                           ", cwd=LaunchLogDir()")
+                      + "])\n").replace(HEADER, "", 1)}, "a.launch.py")
+    (transform,) = tree.transforms
+    assert "parent" in transform.unresolved and transform.child == "laser"
+    assert [rule for rule, _ in rules(tree)] == ["unresolved"]
+
+
+def test_launch_testing_entry_point(load: Load) -> None:
+    tree = load({"test_a.py": HEADER + "import launch_testing\n\n"
+        "def generate_test_description():\n"
+        "    node = " + tf("['--frame-id', 'map', '--child-frame-id', 'odom']") + "\n"
+        "    return LaunchDescription([node, launch_testing.actions.ReadyToTest()]), {'n': node}\n"
+    }, "test_a.py")
+    assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
+    assert tree.problems == ()
+
+
+def test_launch_pytest_fixture_with_a_pytest_fixture_argument(load: Load) -> None:
+    tree = load({"test_b.py": HEADER + "import launch_pytest\nimport pytest\n"
+        "from launch.actions import ExecuteProcess\n\n"
+        "@pytest.fixture\n"
+        "def proc():\n"
+        "    return ExecuteProcess(cmd=['ros2', 'run', 'tf2_ros', 'static_transform_publisher',"
+        " '--frame-id', 'map', '--child-frame-id', 'odom'])\n\n"
+        "@launch_pytest.fixture(scope='module')\n"
+        "def launch_description(proc):\n"
+        "    return LaunchDescription([proc, launch_pytest.actions.ReadyToTest()])\n"
+    }, "test_b.py")
+    (transform,) = tree.transforms
+    assert (transform.package, transform.parent, transform.child) == ("tf2_ros", "map", "odom")
+
+
+def test_a_script_is_an_info_not_an_error(load: Load) -> None:
+    tree = load({"tool.launch.py": "import sys\nprint(sys.argv)\n"}, "tool.launch.py")
+    assert rules(tree) == [("unresolved", 1)]
+    assert tree.status is FileStatus.OK
+
+
+def test_execute_process_ros2_run_is_a_node_outside_the_pushed_namespace(load: Load) -> None:
+    tree = load({"a.launch.py": HEADER + "from launch.actions import ExecuteProcess\n"
+        + launch_file(
+            "    return LaunchDescription([GroupAction([PushRosNamespace('r'), ExecuteProcess(\n"
+            "        cmd=['ros2', 'run', 'tf2_ros', 'static_transform_publisher', '0', '0', '0',"
+            " '0', '0', '0', 'a', 'b']),\n"
+            "        ExecuteProcess(cmd=['ls', '-l'])])])\n").replace(HEADER, "", 1)},
+        "a.launch.py")
+    (transform,) = tree.transforms
+    assert (transform.namespace, transform.parent, transform.child) == ("/", "a", "b")
+
+
+def test_launch_pytest_fixture_that_yields(load: Load) -> None:
+    tree = load({"test_c.py": HEADER + "import launch_pytest\n\n"
+        "@launch_pytest.fixture\n"
+        "def launch_description():\n"
+        "    frames = ['map', 'odom']\n"
+        "    yield LaunchDescription([" + tf("['--frame-id', frames[0], '--child-frame-id',"
+                                            " frames[1]]") + "])\n"
+        "    print('cleanup')\n"
+    }, "test_c.py")
+    assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
+
+
+def test_script_style_file_reads_what_it_serves(load: Load) -> None:
+    tree = load({"run.launch.py": HEADER + "import sys\nfrom launch import LaunchService\n\n"
+        "def main(argv=sys.argv[1:]):\n"
+        "    ld = LaunchDescription([" + tf("['--frame-id', 'map', '--child-frame-id', 'odom']")
+        + "])\n"
+        "    ls = LaunchService(argv=argv)\n"
+        "    ls.include_launch_description(ld)\n"
+        "    return ls.run()\n\n"
+        "if __name__ == '__main__':\n"
+        "    sys.exit(main())\n"
+    }, "run.launch.py")
+    assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]

@@ -135,6 +135,8 @@ def test_find_pkg_share_uses_the_package_index() -> None:
 
 @pytest.mark.parametrize("source", [
     "$(find-pkg-prefix robot)", "$(command 'ls /')", "$(find-exec ls)",
+    "$(param use_sim_time)", "$(param robot_frame base_link)", "$(launch_log_dir)",
+    "$(log_dir)",
 ])
 def test_runtime_only_substitutions_are_unresolved(source: str) -> None:
     result = value(source)
@@ -173,7 +175,10 @@ def test_boolean_of_an_unknown_value_is_unknown() -> None:
     assert not is_resolved(value("$(or false $(var unset))"))
 
 
-@pytest.mark.parametrize("source", ["$(optenv X)", "$(arg x)", "$(var)", "$(not a b)"])
+@pytest.mark.parametrize("source", [
+    "$(optenv X)", "$(arg x)", "$(var)", "$(not a b)", "$(param)", "$(log_dir x)",
+    "$(launch-log-dir)",
+])
 def test_what_launch_refuses_raises(source: str) -> None:
     with pytest.raises(SubstitutionError):
         value(source)

@@ -218,13 +218,14 @@ def test_composable_node(load: Load) -> None:
 def test_composable_node_parameters_from_a_file(load: Load) -> None:
     tree = load({"a.launch.xml": launch(
         '  <load_composable_node target="/c">\n'
-        '    <composable_node pkg="tf2_ros" plugin="tf2_ros::StaticTransformBroadcasterNode">\n'
+        '    <composable_node pkg="tf2_ros" plugin="tf2_ros::StaticTransformBroadcasterNode"'
+        ' name="t">\n'
         '      <param from="$(dirname)/tf.yaml"/>\n'
         '    </composable_node>\n'
         '  </load_composable_node>'
     )}, "a.launch.xml")
     (transform,) = tree.transforms
-    assert transform.name is None
+    assert transform.name == "t"  # launch_ros requires it (ComposableNode.parse)
     assert set(transform.unresolved) == {"translation", "rotation", "parent", "child"}
     assert transform.arg_issues == ()
 
@@ -234,8 +235,8 @@ def test_ros1_type_in_ros2_xml(load: Load) -> None:
         '  <let name="x" value="1"/>\n'
         '  <node pkg="tf" type="static_transform_publisher" name="t" args="0 0 0 0 0 0 a b 100"/>'
     )}, "a.launch.xml")
-    assert rules(tree) == [("roslaunch_error", 3)]
-    assert "'type' 'exec'" in tree.problems[0].message
+    assert rules(tree) == [("ros2_schema", 3), ("roslaunch_error", 3)]
+    assert "'type' 'exec'" in tree.problems[1].message
 
 
 def test_parse_errors(load: Load) -> None:
@@ -294,3 +295,27 @@ def test_set_env_and_forwarding(load: Load) -> None:
     nodes = by_name(tree)
     assert (nodes["a"].child, nodes["a"].unresolved_names) == ("r2", ("parent",))
     assert (nodes["b"].parent, nodes["b"].child) == ("base", "x")
+
+
+def test_run_time_substitutions_are_unresolved_not_errors(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <node pkg="tf2_ros" exec="static_transform_publisher" name="t"'
+        ' args="--frame-id $(param base_frame) --child-frame-id laser"'
+        ' cwd="$(launch_log_dir)" output="$(log_dir)"/>'
+    )}, "a.launch.xml")
+    assert [rule for rule, _ in rules(tree)] == ["unresolved"]
+    (transform,) = tree.transforms
+    assert "parent" in transform.unresolved and transform.child == "laser"
+
+
+def test_executable_ros2_run_is_a_node(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <push-ros-namespace namespace="r"/>\n'
+        '  <executable cmd="ros2 run tf2_ros static_transform_publisher --frame-id base'
+        ' --child-frame-id cam" output="screen"/>\n'
+        '  <executable cmd="ls -l"/>'
+    )}, "a.launch.xml")
+    (transform,) = tree.transforms
+    assert (transform.package, transform.executable) == ("tf2_ros", "static_transform_publisher")
+    assert (transform.namespace, transform.parent, transform.child) == ("/", "base", "cam")
+    assert transform.line == 3

@@ -1,0 +1,75 @@
+"""roslaunch's <test> and <rosparam> checks, with its messages (xmlloader.py, loader.py)."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.ros1 import LoadOptions, yaml_root_kind
+from launch_linter.resolve.packages import PackageIndex
+
+
+def errors(tmp_path: Path, body: str) -> list[str]:
+    package = tmp_path / "src" / "robot"
+    (package / "config").mkdir(parents=True, exist_ok=True)
+    (package / "package.xml").write_text("<package><name>robot</name></package>\n")
+    (package / "config" / "ok.yaml").write_text("a: 1\n")
+    path = package / "t.launch"
+    path.write_text("<launch>\n" + textwrap.dedent(body).strip() + "\n</launch>\n")
+    tree = load_tree(str(path), LoadOptions(packages=PackageIndex([str(tmp_path / "src")])))
+    return [d.message for d in tree.problems if d.rule == "roslaunch_error"]
+
+
+TEST = '<test test-name="t" pkg="rostest" type="x" {}/>'
+
+
+@pytest.mark.parametrize(("attrs", "expected"), [
+    ('time-limit="abc"', ["Invalid <node> tag: 'time-limit' must be a number: [abc]"]),
+    ('time-limit="-1"', ["Invalid <node> tag: 'time-limit' must be a positive number"]),
+    ('time-limit="0.0"', ["Invalid <node> tag: 'time-limit' must be a positive number"]),
+    ('retry="2.5"', ["Invalid <node> tag: 'retry' must be a number: [2.5]"]),
+    ('retry="x" time-limit="y"', ["Invalid <node> tag: 'time-limit' must be a number: [y]",
+                                  "Invalid <node> tag: 'retry' must be a number: [x]"]),
+    ('time-limit=" 60 " retry=" 3 "', []),
+    ('time-limit="nan" retry=""', []),  # float('nan') <= 0 is false; empty is not checked
+])
+def test_test_limits(tmp_path: Path, attrs: str, expected: list[str]) -> None:
+    assert errors(tmp_path, TEST.format(attrs)) == expected
+
+
+@pytest.mark.parametrize(("body", "expected"), [
+    ('<rosparam file=""/>', ["error loading <rosparam> tag: file does not exist []"]),
+    ('<rosparam file="$(find robot)/config/nope.yaml"/>',
+     ["error loading <rosparam> tag: file does not exist [{root}/src/robot/config/nope.yaml]"]),
+    ('<rosparam file="$(dirname)/nope.yaml"/>',
+     ["error loading <rosparam> tag: file does not exist [{root}/src/robot/nope.yaml]"]),
+    ('<rosparam file="$(find robot)/config/ok.yaml"/>', []),
+    ('<rosparam file="relative/nope.yaml"/>', []),  # depends on roslaunch's working folder
+    ('<rosparam command="dump" file="$(find robot)/config/nope.yaml"/>', []),
+    ("<rosparam>[1, 2]</rosparam>",
+     ["error loading <rosparam> tag: 'param' attribute must be set for non-dictionary values"]),
+    ("<rosparam>just text</rosparam>",
+     ["error loading <rosparam> tag: 'param' attribute must be set for non-dictionary values"]),
+    ('<rosparam param="gains">[1, 2]</rosparam>', []),
+    ('<rosparam ns="gains">[1, 2]</rosparam>', []),
+    ("<rosparam>a: !degrees 90\nb: deg(45)</rosparam>", []),
+    ("<rosparam>   </rosparam>", []),
+    ('<rosparam file="$(find robot)/config/ok.yaml">[1, 2]</rosparam>', []),  # text ignored
+])
+def test_rosparam(tmp_path: Path, body: str, expected: list[str]) -> None:
+    assert errors(tmp_path, body) == [e.format(root=tmp_path) for e in expected]
+
+
+@pytest.mark.parametrize(("body", "kind"), [
+    ("a: 1", "mapping"), ("- 1\n- 2", "other"), ("[1, 2]", "other"), ("{a: 1}", "mapping"),
+    ("just text", "other"), ('"a: b"', "other"), ('"a": 1', "mapping"), ("a:1", "other"),
+    ("# c\n\nfoo:\n  bar: 1", "mapping"), ("url: http://x", "mapping"),
+    ("'it''s': 2", "mapping"), ("a #: b", "other"),
+    ("!degrees 90", None), ("hello\nworld: 1", None), ("", None), ("---\na: 1", None),
+])
+def test_yaml_root_kind_without_pyyaml(body: str, kind: str | None) -> None:
+    """Standard library only, so that the generated linter agrees on every Python."""
+    assert yaml_root_kind(body) == kind
