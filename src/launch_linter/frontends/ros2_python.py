@@ -1177,7 +1177,7 @@ class Interpreter:
         """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
         other processes are not transforms."""
         cmd = self.arg(args, kwargs, 0, "cmd")
-        if not isinstance(cmd, list | tuple) or kwargs.get("shell") is True:
+        if not isinstance(cmd, (list, tuple)) or kwargs.get("shell") is True:
             return LaunchObject("ExecuteProcess")
         run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
         if run is None:
