@@ -97,7 +97,7 @@ def test_json_contract(workdir: Path, capsys: pytest.CaptureFixture[str]) -> Non
         {"path": "broken.launch", "status": "parse_error", "transforms": 0},
     ]
     fields = {"rule", "category", "severity", "path", "line", "column", "message", "node",
-              "related", "belief"}
+              "related", "belief", "fix"}
     for diagnostic in document["diagnostics"]:
         assert set(diagnostic) == fields
         assert diagnostic["category"] in ("must", "may_semantic", "may_implied", "tf", "launch")
@@ -105,9 +105,10 @@ def test_json_contract(workdir: Path, capsys: pytest.CaptureFixture[str]) -> Non
     assert by_rule["bad_arity"] == {
         "rule": "bad_arity", "category": "tf", "severity": "error", "path": "mixed.launch",
         "line": 2, "column": 3, "message": by_rule["bad_arity"]["message"], "node": "a",
-        "related": [], "belief": None,
+        "related": [], "belief": None, "fix": by_rule["bad_arity"]["fix"],
     }
     assert by_rule["parse_error"]["path"] == "broken.launch"
+    assert by_rule["parse_error"]["fix"] is None
 
 
 def test_json_related_locations(workdir: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -170,7 +171,6 @@ def test_fail_on_and_exit_status(
 @pytest.mark.parametrize(
     "argv",
     [
-        ["check"],
         ["check", "mixed.launch", "--select", "no_such_rule"],
         ["check", "mixed.launch", "--ignore", "no_such_rule"],
         ["explain", "no_such_rule"],

@@ -14,7 +14,7 @@ def test_internal_failure_is_exit_2_without_traceback(
     def broken(*args: object, **kwargs: object) -> object:
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(check, "lint_paths", broken)
+    monkeypatch.setattr(check, "lint_command_paths", broken)
     monkeypatch.delenv("LAUNCH_LINTER_DEBUG", raising=False)
     status = cli.main(["check", "--beliefs", "none", str(tmp_path)])
     err = capsys.readouterr().err
@@ -29,7 +29,7 @@ def test_debug_variable_shows_the_traceback(
     def broken(*args: object, **kwargs: object) -> object:
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(check, "lint_paths", broken)
+    monkeypatch.setattr(check, "lint_command_paths", broken)
     monkeypatch.setenv("LAUNCH_LINTER_DEBUG", "1")
     with pytest.raises(RuntimeError):
         cli.main(["check", "--beliefs", "none", str(tmp_path)])

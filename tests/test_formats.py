@@ -54,6 +54,55 @@ PHYSICAL = {
     },
 }
 LEVEL = {"enum": ["none", "note", "warning", "error"]}
+# SARIF 2.1.0 ``fix``: a description and at least one artifact change, each with at least
+# one replacement of a region (here in bytes) by inserted content.
+FIXES: dict[str, Any] = {
+    "type": "array",
+    "items": {
+        "type": "object",
+        "additionalProperties": False,
+        "required": ["artifactChanges"],
+        "properties": {
+            "description": MESSAGE,
+            "artifactChanges": {
+                "type": "array",
+                "minItems": 1,
+                "items": {
+                    "type": "object",
+                    "additionalProperties": False,
+                    "required": ["artifactLocation", "replacements"],
+                    "properties": {
+                        "artifactLocation": {"type": "object", "required": ["uri"]},
+                        "replacements": {
+                            "type": "array",
+                            "minItems": 1,
+                            "items": {
+                                "type": "object",
+                                "additionalProperties": False,
+                                "required": ["deletedRegion"],
+                                "properties": {
+                                    "deletedRegion": {
+                                        "type": "object",
+                                        "required": ["byteOffset", "byteLength"],
+                                        "properties": {
+                                            "byteOffset": {"type": "integer", "minimum": 0},
+                                            "byteLength": {"type": "integer", "minimum": 0},
+                                        },
+                                    },
+                                    "insertedContent": {
+                                        "type": "object",
+                                        "required": ["text"],
+                                    },
+                                },
+                            },
+                        },
+                    },
+                },
+            },
+        },
+    },
+}
+
 SARIF_SUBSET: dict[str, Any] = {
     "type": "object",
     "additionalProperties": False,
@@ -120,6 +169,7 @@ SARIF_SUBSET: dict[str, Any] = {
                             "properties": {
                                 "ruleId": {"type": "string"},
                                 "ruleIndex": {"type": "integer", "minimum": 0},
+                                "fixes": FIXES,
                                 "level": LEVEL,
                                 "message": MESSAGE,
                                 "locations": {

@@ -165,13 +165,59 @@ def test_images_without_graphviz_say_what_to_install(
     assert not (tmp_path / "t.png").exists()
 
 
-@pytest.mark.parametrize("target", ["folder", "t.jpg"])
+@pytest.mark.parametrize("target", ["missing", "t.jpg"])
 def test_usage_errors(
     launch_file: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str], target: str
 ) -> None:
-    if target == "folder":
-        argv = ["graph", str(tmp_path)]
+    if target == "missing":
+        argv = ["graph", str(tmp_path / "no_such_folder")]
     else:
         argv = ["graph", str(launch_file), "-o", str(tmp_path / target)]
     assert main(argv) == 2
     assert "error" in capsys.readouterr().err
+
+
+def test_a_workspace_folder_draws_one_cluster_per_entry_point(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from tests.workspace_fixture import build_workspace
+
+    monkeypatch.chdir(build_workspace(tmp_path))
+    assert main(["graph", "--beliefs", "none", "."]) == 0
+    dot = capsys.readouterr().out
+    clusters = [line for line in dot.splitlines() if "subgraph cluster_" in line]
+    # part.launch and sensors_launch.xml are included by main.launch and env.xml: no
+    # cluster of their own. build/, install/, log/ and the ignored files are left out.
+    titles = [line.split('label="', 1)[1].split('"', 1)[0]
+              for line in dot.splitlines() if line.strip().startswith("label=")]
+    assert titles == [
+        "src/ros1_pkg/build/keep.launch",
+        "src/ros1_pkg/launch/main.launch",
+        "src/ros1_pkg/launch/robot.launch.xml",
+        "src/ros2_pkg/launch/bringup_launch.py",
+        "src/ros2_pkg/launch/env.xml",
+    ]
+    assert len(clusters) == 5
+    # The unnamed ROS 2 nodes are named by executable and position, not "?".
+    assert "static_transform_publisher #1" in dot and 'label="?\\n' not in dot
+    assert main(["graph", "--beliefs", "none", ".", "-o", str(tmp_path / "t.mmd")]) == 0
+    mermaid = (tmp_path / "t.mmd").read_text()
+    assert mermaid.count("  subgraph c") == 5 and mermaid.count("  end") == 5
+
+
+def test_the_legend_shows_only_what_the_picture_has(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    clean = tmp_path / "clean.launch"
+    clean.write_text(
+        '<launch><node pkg="tf2_ros" type="static_transform_publisher" name="a" '
+        'args="0 0 0 0 0 0 base_link laser"/></launch>'
+    )
+    assert main(["graph", "--beliefs", "none", str(clean)]) == 0
+    dot = capsys.readouterr().out
+    assert "red:" not in dot and "dashed:" not in dot and "dotted:" not in dot
+    flagged = tmp_path / "flagged.launch"
+    flagged.write_text(clean.read_text().replace("base_link", "/base_link"))
+    assert main(["graph", "--beliefs", "none", str(flagged)]) == 0
+    dot = capsys.readouterr().out
+    assert "red: errors or warnings" in dot and "dashed:" not in dot

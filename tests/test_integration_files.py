@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES
+from launch_linter.discovery import LAUNCH_SUFFIXES
 
 yaml = pytest.importorskip("yaml")
 

@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parent.parent
 RULES_DIR = ROOT / "src" / "launch_linter" / "rules"
 SNAKE_CASE = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
 SECTIONS = ("## What it does", "## Why is this bad?", "## Example", "## Use instead")
-OPTIONAL_SECTIONS = ("## Known problems", "## Options")
+OPTIONAL_SECTIONS = ("## Known problems", "## Options", "## Fix")
 XML_BLOCK = re.compile(r"```xml\n(.*?)```", re.DOTALL)
 
 # The rules table of DESIGN.md (a contract): id -> (category, severity).
@@ -140,3 +140,13 @@ def test_docs_hold_every_rule() -> None:
     for rule in RULES:
         assert f"\n## {rule.id}\n" in text
         assert _section(rule.doc, "## Why is this bad?").strip() in text
+
+
+@pytest.mark.parametrize("rule", RULES, ids=lambda r: r.id)
+def test_fix_kind_is_documented(rule: Rule) -> None:
+    """A rule that offers a fix says so in a ``## Fix`` section naming its kind."""
+    if rule.fix is None:
+        assert "## Fix" not in rule.doc
+        return
+    section = rule.doc.split("## Fix", 1)[1]
+    assert section.strip().lower().startswith(rule.fix.value)

@@ -36,6 +36,11 @@ KEYS = (
     "env",
     "per-path-ignores",
     "fail-on",
+    "exclude",
+    "extend-exclude",
+    "respect-gitignore",
+    "ros",
+    "ros-distro",
 )
 BELIEF_KEYWORDS = ("bundled", "study", "none")
 MAX_CONFIG_BYTES = 1024 * 1024
@@ -60,6 +65,11 @@ class Config:
     env: dict[str, str] = field(default_factory=dict)
     per_path_ignores: tuple[PathIgnore, ...] = ()
     fail_on: str | None = None
+    exclude: tuple[str, ...] | None = None
+    extend_exclude: tuple[str, ...] = ()
+    respect_gitignore: bool | None = None
+    ros: int | None = None
+    ros_distro: str | None = None
 
 
 def _categories() -> set[str]:
@@ -161,6 +171,22 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         if fail_on not in ("error", "warning", "info"):
             raise ConfigError(f"{path}: 'fail-on' must be error, warning or info")
         values["fail_on"] = fail_on
+    for key in ("exclude", "extend-exclude"):
+        if key in data:
+            values[key.replace("-", "_")] = _string_list(data[key], f"{path}: '{key}'")
+    if "respect-gitignore" in data:
+        if not isinstance(data["respect-gitignore"], bool):
+            raise ConfigError(f"{path}: 'respect-gitignore' must be true or false")
+        values["respect_gitignore"] = data["respect-gitignore"]
+    if "ros" in data:
+        if data["ros"] not in (1, 2) or isinstance(data["ros"], bool):
+            raise ConfigError(f"{path}: 'ros' must be 1 or 2")
+        values["ros"] = int(data["ros"])
+    if "ros-distro" in data:
+        distro = data["ros-distro"]
+        if not isinstance(distro, str) or not distro.isalpha():
+            raise ConfigError(f"{path}: 'ros-distro' must be a distribution name, e.g. 'humble'")
+        values["ros_distro"] = distro.lower()
     return Config(**values)
 
 

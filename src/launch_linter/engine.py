@@ -8,13 +8,26 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import List, Tuple
 
-from launch_linter.frontends.dispatch import LAUNCH_SUFFIXES, load_tree
+from launch_linter.discovery import (
+    MAX_DISCOVERED_FILES,
+    Exclusions,
+    Ignored,
+    InputFile,
+    discover,
+)
+from launch_linter.fix import with_located_fixes
+from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import FileRecord, LaunchTree
 from launch_linter.model.transform import StaticTransform
-from launch_linter.resolve.packages import PackageIndex, default_package_roots
+from launch_linter.resolve.packages import (
+    PackageIndex,
+    default_package_roots,
+    nearest_package_xml,
+    package_ros_version,
+)
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
 from launch_linter.suppressions import (
@@ -24,7 +37,17 @@ from launch_linter.suppressions import (
     ignored_by_path,
 )
 
-MAX_DISCOVERED_FILES = 200_000
+__all__ = [
+    "MAX_DISCOVERED_FILES",
+    "Exclusions",
+    "InputFile",
+    "LintOptions",
+    "LintResult",
+    "discover",
+    "lint_files",
+    "lint_paths",
+    "lint_text",
+]
 
 
 @dataclass(frozen=True)
@@ -41,6 +64,11 @@ class LintOptions:
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
     jobs: int = 1
     per_path_ignores: tuple[PathIgnore, ...] = ()
+    ros: int | None = None
+    """1 or 2: read every XML launch file as that ROS's (``--ros``); None: the nearest
+    ``package.xml`` decides for ``*.xml`` files, else their content."""
+    ros_distro: str | None = None
+    """The target distribution (``--ros-distro``), for fixes that depend on it."""
 
 
 @dataclass(frozen=True)
@@ -52,49 +80,6 @@ class LintResult:
     @property
     def transforms(self) -> tuple[StaticTransform, ...]:
         return tuple(t for tree in self.trees for t in tree.transforms)
-
-
-@dataclass(frozen=True)
-class InputFile:
-    path: str
-    """Absolute path."""
-    display: str
-    """As the user gave it (relative stays relative)."""
-
-
-def _is_launch_xml(path: str) -> bool:
-    try:
-        with open(path, "rb") as handle:
-            head = handle.read(4096)
-    except OSError:
-        return False
-    return b"<launch" in head
-
-
-def discover(paths: Sequence[str]) -> list[InputFile]:
-    """Input files: each file named, and launch files found under each folder named."""
-    found: list[InputFile] = []
-    seen: set[str] = set()
-
-    def add(path: str, display: str) -> None:
-        absolute = os.path.abspath(path)
-        if absolute not in seen and len(found) < MAX_DISCOVERED_FILES:
-            seen.add(absolute)
-            found.append(InputFile(absolute, display))
-
-    for given in paths:
-        if os.path.isdir(given):
-            for directory, subdirs, files in os.walk(given):
-                subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
-                for name in sorted(files):
-                    full = os.path.join(directory, name)
-                    if name.endswith(LAUNCH_SUFFIXES) or (
-                        name.endswith(".xml") and _is_launch_xml(full)
-                    ):
-                        add(full, full)
-        else:
-            add(given, given)
-    return found
 
 
 def _display_function(item: InputFile) -> object:
@@ -123,6 +108,26 @@ def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
     )
 
 
+PACKAGE_DECIDES_SUFFIXES = (".xml",)
+"""XML launch files whose ROS version the enclosing package decides (``*.launch.xml``,
+``*_launch.xml``, ``*.xml`` with a ``<launch>`` root). ``*.launch`` stays decided by its
+content: ROS 1 files left in migrated ament packages are common."""
+
+
+def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None]) -> int | None:
+    """``--ros`` if given; else, for ``*.xml`` files, the nearest package's build type."""
+    if options.ros is not None:
+        return options.ros
+    if not path.lower().endswith(PACKAGE_DECIDES_SUFFIXES):
+        return None
+    manifest = nearest_package_xml(path)
+    if manifest is None:
+        return None
+    if manifest not in cache:
+        cache[manifest] = package_ros_version(manifest)
+    return cache[manifest]
+
+
 def load_options_for(
     item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
 ) -> LoadOptions:
@@ -138,6 +143,7 @@ def load_options_for(
         env=options.env,
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
+        ros_version=ros_version_for(item.path, options, {}),
     )
 
 
@@ -217,19 +223,34 @@ def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
     else:
         linted = _lint_chunk(inputs, options, {})
     trees = tuple(tree for tree, _, _ in linted)
+    # A file linted on its own and also included by another input is reported once: the
+    # same place, rule and message found from two roots (or under two spellings of its
+    # path) is one finding.
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
+    real: dict[str, str] = {}
     for _, _, found in linted:
         for diagnostic in found:
-            diagnostics.setdefault(
-                (diagnostic.sort_key, diagnostic.related, diagnostic.node), diagnostic
-            )
+            where = real.get(diagnostic.path)
+            if where is None:
+                where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
+            key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
+            diagnostics.setdefault(key, diagnostic)
     records = tuple(record for _, record, _ in linted)
-    return LintResult(records, trees, finish_diagnostics(trees, diagnostics.values(), options))
+    finished = finish_diagnostics(trees, diagnostics.values(), options)
+    return LintResult(records, trees, with_located_fixes(finished, options.ros_distro))
 
 
-def lint_paths(paths: Sequence[str], options: LintOptions | None = None) -> LintResult:
-    """Lint files and folders; every input file appears once in ``files``."""
-    return lint_files(discover(paths), options or LintOptions())
+def lint_paths(
+    paths: Sequence[str],
+    options: LintOptions | None = None,
+    exclusions: Exclusions | None = None,
+    ignored: Ignored | None = None,
+) -> LintResult:
+    """Lint files and folders; every input file appears once in ``files``.
+
+    ``exclusions`` are the folder-walk exclusions (default: VCS and hidden folders) and
+    ``ignored`` an extra predicate on paths found in folders (the CLI's ``.gitignore``)."""
+    return lint_files(discover(paths, exclusions, ignored), options or LintOptions())
 
 
 def lint_text(
@@ -242,7 +263,11 @@ def lint_text(
     load = load_options_for(item, options, cache)
     tree = load_tree(item.path, load, text.encode("utf-8"))
     found = check_tree(tree, selected_rules(options), options)
-    diagnostics = finish_diagnostics((tree,), found, options)
+    diagnostics = with_located_fixes(
+        finish_diagnostics((tree,), found, options),
+        options.ros_distro,
+        {path: text.encode("utf-8")},
+    )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 
 

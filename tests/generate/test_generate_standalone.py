@@ -100,7 +100,6 @@ def test_exit_status_and_text_output_match_the_package(standalone: Generated) ->
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        ([], "needs at least one PATH"),
         ([CLEAN, "--select", "no_such_rule"], "unknown rule id"),
         ([CLEAN, "--arg", "no-separator"], "--arg must look like"),
         ([CLEAN, "--format", "yaml"], "invalid choice"),

@@ -8,8 +8,15 @@ import sys
 
 from launch_linter import __version__
 from launch_linter.commands.common import EXIT_FINDINGS, EXIT_OK, UsageError
-from launch_linter.commands.options import add_resolution_options, lint_options, load_config
-from launch_linter.engine import LintResult, lint_paths
+from launch_linter.commands.options import (
+    STDIN_NAME,
+    add_resolution_options,
+    lint_command_paths,
+    lint_options,
+    load_config,
+)
+from launch_linter.config import Config
+from launch_linter.engine import LintOptions, LintResult, lint_text
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
 
@@ -50,6 +57,23 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         help="lowest severity that makes the exit status 1 (default warning)",
     )
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
+    check.add_argument("-o", "--output-file", metavar="FILE", help="write the report to FILE")
+    check.add_argument(
+        "--statistics", action="store_true", help="a count per rule instead of each finding"
+    )
+    check.add_argument(
+        "--exit-zero", action="store_true", help="exit 0 even when findings reach --fail-on"
+    )
+    check.add_argument(
+        "-q", "--quiet", action="store_true", help="print findings only, no summary"
+    )
+    check.add_argument("--fix", action="store_true", help="apply the safe fixes")
+    check.add_argument(
+        "--unsafe-fixes", action="store_true", help="with --fix or --diff, also the unsafe fixes"
+    )
+    check.add_argument(
+        "--diff", action="store_true", help="print the fixes as a diff and change no file"
+    )
     check.set_defaults(handler=run)
 
 
@@ -68,24 +92,111 @@ def _use_colour(choice: str) -> bool:
     return sys.stdout.isatty()
 
 
-def run(ns: argparse.Namespace) -> int:
-    if not ns.paths:
-        raise UsageError("check needs at least one PATH")
-    config = load_config(ns)
-    options = lint_options(ns, config)
-    result = lint_paths(ns.paths, options)
+def _report(ns: argparse.Namespace, result: LintResult, options: LintOptions) -> str:
+    """The report in the chosen format (statistics instead of findings if asked)."""
     fmt = ns.format or "text"
+    if ns.statistics and fmt == "text":
+        return text.statistics(result.diagnostics)
     if fmt == "json":
-        sys.stdout.write(
-            json_report.dumps(json_report.check_document(result, options.beliefs, __version__))
-            + "\n"
-        )
-    elif fmt in ("sarif", "github"):
+        document = json_report.check_document(result, options.beliefs, __version__)
+        return json_report.dumps(document) + "\n"
+    if fmt in ("sarif", "github"):
         from launch_linter.report import formats
 
-        sys.stdout.write(formats.render(fmt, result, options.beliefs, __version__))
-    else:
-        colour = _use_colour(ns.color)
-        sys.stdout.write(text.format_diagnostics(result.diagnostics, colour))
+        return formats.render(fmt, result, options.beliefs, __version__)
+    colour = _use_colour(ns.color) and not ns.output_file
+    return text.format_diagnostics(result.diagnostics, colour)
+
+
+def _write_output(ns: argparse.Namespace, report: str) -> None:
+    if not ns.output_file:
+        sys.stdout.write(report)
+        return
+    try:
+        with open(ns.output_file, "w", encoding="utf-8") as handle:
+            handle.write(report)
+    except OSError as exc:
+        raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
+
+
+def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config) -> LintResult:
+    """``--fix``: apply fixes, lint again until nothing changes; the last result."""
+    from launch_linter import fix as fixing
+
+    last: list[LintResult] = []
+
+    def lint() -> tuple[object, ...]:
+        last.append(lint_command_paths(ns, options, config))
+        return last[-1].diagnostics
+
+    counts, _ = fixing.fix_until_stable(
+        lint, ns.unsafe_fixes, fixing.write_file  # type: ignore[arg-type]
+    )
+    if not ns.quiet:
+        total = sum(counts.values())
+        detail = ", ".join(f"{rule} {n}" for rule, n in sorted(counts.items()))
+        sys.stderr.write(f"fixed {total} finding(s)" + (f" ({detail})" if detail else "") + "\n")
+    return last[-1]
+
+
+def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
+    """``--diff``: the fixes as a unified diff; no file changes. Exit 1 when there is any."""
+    from launch_linter import fix as fixing
+
+    out: list[str] = []
+    for path, fixes in fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).items():
+        before = fixing.read_bytes(path)
+        if before is None:
+            continue
+        after, _ = fixing.apply_edits(before, fixes)
+        out.append(fixing.unified_diff(path, before, after))
+    _write_output(ns, "".join(out))
+    return EXIT_FINDINGS if any(out) and not ns.exit_zero else EXIT_OK
+
+
+def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
+    """``-`` with ``--fix``/``--diff``: the fixed text (or its diff) on stdout."""
+    from launch_linter import fix as fixing
+
+    name = getattr(ns, "stdin_filename", None) or STDIN_NAME
+    data = sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+    current = data
+    for _ in range(fixing.MAX_FIX_PASSES):
+        result = lint_text(current.decode("utf-8", "replace"), name, options)
+        fixes = fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).get(name, [])
+        fixed, _ = fixing.apply_edits(current, fixes)
+        if fixed == current:
+            break
+        current = fixed
+    if ns.diff:
+        _write_output(ns, fixing.unified_diff(name, data, current))
+        return EXIT_FINDINGS if current != data and not ns.exit_zero else EXIT_OK
+    sys.stdout.write(current.decode("utf-8", "replace"))
+    result = lint_text(current.decode("utf-8", "replace"), name, options)
+    if not ns.quiet:
+        sys.stderr.write(text.format_diagnostics(result.diagnostics))
+    return _status(ns, result, None)
+
+
+def _status(ns: argparse.Namespace, result: LintResult, config: Config | None) -> int:
+    if ns.exit_zero:
+        return EXIT_OK
+    fail_on = ns.fail_on or (config.fail_on if config is not None else None) or "warning"
+    return _exit_status(result, fail_on)
+
+
+def run(ns: argparse.Namespace) -> int:
+    config = load_config(ns)
+    options = lint_options(ns, config)
+    if ns.unsafe_fixes and not (ns.fix or ns.diff):
+        raise UsageError("--unsafe-fixes needs --fix or --diff")
+    if "-" in ns.paths and (ns.fix or ns.diff):
+        return _fix_stdin(ns, options)
+    if ns.diff:
+        return _print_diff(ns, lint_command_paths(ns, options, config))
+    fixing = ns.fix
+    result = _run_fixes(ns, options, config) if fixing else lint_command_paths(ns, options, config)
+    _write_output(ns, _report(ns, result, options))
+    if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")
-    return _exit_status(result, ns.fail_on or config.fail_on or "warning")
+    return _status(ns, result, config)

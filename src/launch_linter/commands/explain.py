@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import difflib
 import sys
 
 from launch_linter.commands.common import EXIT_OK, UsageError
@@ -18,6 +19,11 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(ns: argparse.Namespace) -> int:
     rule = RULES_BY_ID.get(ns.rule)
     if rule is None:
-        raise UsageError(f"unknown rule {ns.rule!r} (see 'launch-linter rules')")
-    sys.stdout.write(f"{rule.id} ({rule.category.value}, {rule.severity.value})\n\n{rule.doc}\n")
+        close = difflib.get_close_matches(ns.rule, list(RULES_BY_ID), n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise UsageError(f"unknown rule {ns.rule!r}{hint} (see 'launch-linter rules')")
+    fix = f", {rule.fix.value} fix" if rule.fix else ""
+    sys.stdout.write(
+        f"{rule.id} ({rule.category.value}, {rule.severity.value}{fix})\n\n{rule.doc}\n"
+    )
     return EXIT_OK

@@ -4,14 +4,16 @@ how they combine with the configuration file into :class:`LintOptions`."""
 from __future__ import annotations
 
 import argparse
+import os
+import sys
 
 from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
-from launch_linter.config import Config, ConfigError, config_for
-from launch_linter.engine import LintOptions
+from launch_linter.config import Config, ConfigError, check_rule_ids, config_for
+from launch_linter.discovery import Exclusions, Ignored
+from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.rules import RULES, RULES_BY_ID
 
 
 def split_ids(values: list[str] | None) -> list[str]:
@@ -21,11 +23,12 @@ def split_ids(values: list[str] | None) -> list[str]:
     return ids
 
 
-def check_ids(ids: list[str]) -> None:
-    categories = {r.category.value for r in RULES}
-    unknown = [i for i in ids if i not in RULES_BY_ID and i not in categories]
-    if unknown:
-        raise UsageError(f"unknown rule id(s): {', '.join(unknown)} (see 'launch-linter rules')")
+def check_ids(ids: list[str], where: str = "--select/--ignore") -> None:
+    """A usage error naming each unknown id, with the closest rule or category."""
+    try:
+        check_rule_ids(ids, where)
+    except ConfigError as exc:
+        raise UsageError(str(exc)) from None
 
 
 def pairs(values: list[str] | None, separator: str, what: str) -> dict[str, str]:
@@ -62,6 +65,49 @@ def add_resolution_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--jobs", type=int, default=None, metavar="N", help="lint files in N processes"
     )
+    add_discovery_options(parser)
+
+
+def add_discovery_options(parser: argparse.ArgumentParser) -> None:
+    """How folders are walked and XML is read: ruff's exclusions, .gitignore, ROS version."""
+    parser.add_argument(
+        "--exclude",
+        action="append",
+        metavar="GLOBS",
+        help="globs of paths to leave out of folder walks, replacing the defaults "
+        "(comma-separated, repeatable)",
+    )
+    parser.add_argument(
+        "--extend-exclude",
+        action="append",
+        metavar="GLOBS",
+        help="globs of paths to leave out in addition to the defaults",
+    )
+    parser.add_argument(
+        "--no-respect-gitignore",
+        dest="respect_gitignore",
+        action="store_false",
+        default=None,
+        help="also lint files that .gitignore ignores",
+    )
+    parser.add_argument(
+        "--ros",
+        type=int,
+        choices=(1, 2),
+        default=None,
+        help="read XML launch files as this ROS's (default: the package.xml, then content)",
+    )
+    parser.add_argument(
+        "--ros-distro",
+        default=None,
+        metavar="NAME",
+        help="the target ROS 2 distribution (e.g. humble), for fixes that depend on it",
+    )
+    parser.add_argument(
+        "--stdin-filename",
+        metavar="NAME",
+        help="the file name of the text read from '-' (for paths, packages, config)",
+    )
 
 
 def load_beliefs(spec: str | None, min_z: float) -> BeliefSet:
@@ -71,9 +117,26 @@ def load_beliefs(spec: str | None, min_z: float) -> BeliefSet:
         raise UsageError(str(exc)) from None
 
 
+STDIN_NAME = "stdin.launch"
+
+
+def given_paths(ns: argparse.Namespace) -> list[str]:
+    paths = getattr(ns, "paths", None)
+    return list(paths) if paths is not None else [ns.path]
+
+
+def input_paths(ns: argparse.Namespace) -> list[str]:
+    """The paths to lint: those given (``-``: the stdin file name), else ``.``."""
+    given = given_paths(ns)
+    if not given:
+        return [os.curdir]
+    stdin_name = getattr(ns, "stdin_filename", None) or STDIN_NAME
+    return [stdin_name if p == "-" else p for p in given]
+
+
 def load_config(ns: argparse.Namespace) -> Config:
     """The configuration file for this command's paths (``--config`` or found)."""
-    paths = getattr(ns, "paths", None) or [ns.path]
+    paths = input_paths(ns)
     try:
         return config_for(paths, getattr(ns, "config", None))
     except ConfigError as exc:
@@ -110,4 +173,40 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         beliefs=beliefs,
         jobs=jobs,
         per_path_ignores=config.per_path_ignores,
+        ros=ns.ros if getattr(ns, "ros", None) is not None else config.ros,
+        ros_distro=(getattr(ns, "ros_distro", None) or config.ros_distro or "").lower() or None,
     )
+
+
+def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, Ignored | None]:
+    """Folder-walk exclusions and the ``.gitignore`` predicate, flags over the file."""
+    exclude = split_ids(getattr(ns, "exclude", None)) or None
+    if exclude is None and config.exclude is not None:
+        exclude = list(config.exclude)
+    extend = [*config.extend_exclude, *split_ids(getattr(ns, "extend_exclude", None))]
+    base = os.path.dirname(os.path.abspath(config.path)) if config.path else os.curdir
+    exclusions = Exclusions.of(exclude, extend, base)
+    respect = getattr(ns, "respect_gitignore", None)
+    if respect is None:
+        respect = config.respect_gitignore if config.respect_gitignore is not None else True
+    if not respect:
+        return exclusions, None
+    try:
+        from launch_linter.gitignore import gitignore_predicate
+    except ImportError:  # the standalone linter carries no pathspec: .gitignore not read
+        return exclusions, None
+    return exclusions, gitignore_predicate().ignored
+
+
+def lint_command_paths(
+    ns: argparse.Namespace, options: LintOptions, config: Config
+) -> LintResult:
+    """Lint the command's paths (none: the current folder; ``-``: the text on stdin)."""
+    given = given_paths(ns)
+    if "-" in given:
+        if len(given) > 1:
+            raise UsageError("'-' (stdin) cannot be combined with other paths")
+        name = getattr(ns, "stdin_filename", None) or STDIN_NAME
+        return lint_text(sys.stdin.read(), name, options)
+    exclusions, ignored = discovery_for(ns, config)
+    return lint_paths(given or [os.curdir], options, exclusions, ignored)

@@ -16,8 +16,9 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(ns: argparse.Namespace) -> int:
     width = max(len(r.id) for r in RULES)
     for rule in RULES:
+        fix = rule.fix.value if rule.fix else "-"
         sys.stdout.write(
             f"{rule.id:<{width}}  {rule.category.value:<12}  "
-            f"{rule.severity.value:<7}  {rule.summary}\n"
+            f"{rule.severity.value:<7}  {fix:<6}  {rule.summary}\n"
         )
     return EXIT_OK

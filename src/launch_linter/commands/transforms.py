@@ -5,9 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 
-from launch_linter.commands.common import EXIT_OK, UsageError
-from launch_linter.commands.options import add_resolution_options, lint_options
-from launch_linter.engine import lint_paths
+from launch_linter.commands.common import EXIT_OK
+from launch_linter.commands.options import (
+    add_resolution_options,
+    lint_command_paths,
+    lint_options,
+    load_config,
+)
 from launch_linter.report import json_report, text
 
 
@@ -19,9 +23,8 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(ns: argparse.Namespace) -> int:
-    if not ns.paths:
-        raise UsageError("transforms needs at least one PATH")
-    result = lint_paths(ns.paths, lint_options(ns))
+    config = load_config(ns)
+    result = lint_command_paths(ns, lint_options(ns, config), config)
     if ns.format == "json":
         sys.stdout.write(json_report.dumps(json_report.transforms_document(result)) + "\n")
     else:

@@ -17,8 +17,6 @@ from launch_linter.frontends.ros2_launch import load_ros2
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.xml_safe import read_launch_bytes
 
-LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.yaml", ".launch.yml", ".launch.py")
-
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 # What only ROS 2 launch XML has. Every file is tested, so the tests are ordered by cost:
 # one pattern for the tags only ROS 2 has and one for its substitutions (a regular
@@ -52,11 +50,15 @@ def is_ros2_xml(data: bytes) -> bool:
     return _has_ros2_sign(_COMMENT.sub(b"", data))
 
 
-def front_end(path: str, data: bytes | None) -> str:
-    """``ros2`` or ``ros1``: which loader reads ``path`` (``data``: its bytes, if read)."""
+def front_end(path: str, data: bytes | None, ros_version: int | None = None) -> str:
+    """``ros2`` or ``ros1``: which loader reads ``path`` (``data``: its bytes, if read).
+
+    ``ros_version`` (from ``--ros`` or the package) decides for XML when given."""
     name = path.lower()
     if name.endswith((".py", ".yaml", ".yml")):
         return "ros2"
+    if ros_version is not None:
+        return "ros2" if ros_version == 2 else "ros1"
     return "ros2" if data is not None and is_ros2_xml(data) else "ros1"
 
 
@@ -68,6 +70,6 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
         except OSError:
             # The ROS 1 loader reports the file as unreadable.
             return load_ros1(path, options, None)
-    if front_end(path, data) == "ros2":
+    if front_end(path, data, options.ros_version) == "ros2":
         return load_ros2(path, options, data)
     return load_ros1(path, options, data)

@@ -78,6 +78,8 @@ class LoadOptions:
     env: Mapping[str, str] = field(default_factory=dict)
     packages: PackageIndex = field(default_factory=lambda: PackageIndex([]))
     display_path: Callable[[str], str] = relative_to_cwd
+    ros_version: int | None = None
+    """1 or 2 to read an XML root file as that ROS's launch XML; None: by its content."""
 
 
 class _AnonNames:

@@ -194,6 +194,14 @@ BUILTINS = ("str", "int", "float", "bool", "len", "list", "tuple", "dict", "rang
             "sorted", "enumerate", "zip", "min", "max", "abs", "round")
 
 
+def _starts_actions(node: ast.AST) -> bool:
+    """Whether a function's body calls a launch action class (a ``Node``, ...)."""
+    return any(
+        isinstance(inner, ast.Call) and _called_name(inner.func) in ACTION_NAMES
+        for inner in ast.walk(node)
+    )
+
+
 class Env:
     """Python scopes: a function's locals in front of its enclosing scopes."""
 
@@ -1322,15 +1330,30 @@ class Interpreter:
                  resolver: Callable[[Subs], Value], node: ast.Call, where: Where
                  ) -> Sequence[Action]:
         self.steps = 0
+        # The file's problems were handed over when it was read; what the function's body
+        # meets now (a loop over an unknown value, ...) is reported through the actions.
+        recorded = len(self.problems)
         try:
             result = self.call_function(function, [ContextVal(resolver), *args],
                                         {str(k): v for k, v in kwargs.items()}, node)
         except (_OutOfSteps, RecursionError):
             return (Unfollowed(where, f"line {node.lineno}: OpaqueFunction too complex to "
                                       f"follow"),)
-        if result is None:
-            return ()
-        return self.actions(result, node)
+        finally:
+            met = self.problems[recorded:]
+            del self.problems[recorded:]
+        name = getattr(function.node, "name", "<lambda>")
+        notes = tuple(
+            Unfollowed(Where(self.path, p.line, p.column),
+                       f"in OpaqueFunction {name}(): {p.message}")
+            for p in met
+        )
+        found = self.actions(result, node) if result is not None else ()
+        if not found and not notes and _starts_actions(function.node):
+            notes = (Unfollowed(where, f"line {node.lineno}: OpaqueFunction "
+                                       f"{name}() builds launch actions but "
+                                       f"returns none the linter can follow"),)
+        return (*notes, *found)
 
     launch_LaunchConfiguration = _substitution("var", 2)
     launch_EnvironmentVariable = _substitution("env", 2)

@@ -9,8 +9,12 @@ import subprocess
 import sys
 
 from launch_linter.commands.common import EXIT_OK, UsageError
-from launch_linter.commands.options import lint_options
-from launch_linter.engine import lint_paths
+from launch_linter.commands.options import (
+    add_discovery_options,
+    lint_command_paths,
+    lint_options,
+    load_config,
+)
 from launch_linter.graph.model import build_graph
 from launch_linter.graph.render import to_dot, to_mermaid
 
@@ -46,8 +50,11 @@ def _render_image(dot_text: str, image_format: str, output: str) -> None:
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    graph = subparsers.add_parser("graph", help="draw the static transform tree of a launch file")
+    graph = subparsers.add_parser(
+        "graph", help="draw the static transform trees of a launch file or a folder"
+    )
     graph.add_argument("path")
+    add_discovery_options(graph)
     graph.add_argument("-o", "--output", metavar="FILE.svg|.png|.dot|.mmd")
     graph.add_argument("--arg", action="append", metavar="NAME:=VALUE")
     graph.add_argument("--package-path", action="append", metavar="DIR")
@@ -63,14 +70,15 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(ns: argparse.Namespace) -> int:
-    if not os.path.isfile(ns.path):
-        raise UsageError(f"graph needs one launch file; {ns.path!r} is not a file")
+    if not os.path.exists(ns.path):
+        raise UsageError(f"graph needs a launch file or a folder; {ns.path!r} does not exist")
     output: str | None = ns.output
     extension = os.path.splitext(output)[1].lower() if output else ".dot"
     if extension not in TEXT_FORMATS and extension not in IMAGE_FORMATS:
         known = ", ".join(sorted({*TEXT_FORMATS, *IMAGE_FORMATS}))
         raise UsageError(f"cannot tell the format of {output!r}: use one of {known}")
-    result = lint_paths([ns.path], lint_options(ns))
+    config = load_config(ns)
+    result = lint_command_paths(ns, lint_options(ns, config), config)
     graph = build_graph(result)
     if output is None:
         sys.stdout.write(to_dot(graph))

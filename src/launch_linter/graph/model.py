@@ -3,6 +3,11 @@
 A transform defines its child frame (each frame has one parent in tf), so a diagnostic at
 a transform marks its edge and its child frame. Only errors and warnings mark; ``info``
 diagnostics (what could not be resolved) show as ``?`` in the labels instead.
+
+Linting a folder gives several launch trees. Each entry point (a root file that no other
+root includes) becomes one cluster with its own frames: separate launch files usually
+describe separate robots or configurations, where ``base_link`` is not one frame. A file
+that is also included by another root is drawn inside that root's cluster only.
 """
 
 from __future__ import annotations
@@ -24,6 +29,7 @@ class Frame:
     label: str
     resolved: bool
     flagged: bool
+    cluster: int = 0
 
 
 @dataclass(frozen=True)
@@ -35,6 +41,7 @@ class Edge:
     conditional: bool
     flagged: bool
     tooltip: str
+    cluster: int = 0
 
 
 @dataclass(frozen=True)
@@ -44,24 +51,46 @@ class TfGraph:
     edges: tuple[Edge, ...]
     notes: tuple[str, ...]
     """Diagnostics that are not at a transform (parse errors, roslaunch errors)."""
+    clusters: tuple[str, ...] = ()
+    """One title per entry point when there is more than one (``cluster`` indexes it)."""
+
+    @property
+    def legend(self) -> tuple[str, ...]:
+        """The legend lines this picture needs: none for what it does not show."""
+        lines = []
+        if any(e.flagged for e in self.edges) or any(f.flagged for f in self.frames):
+            lines.append("red: errors or warnings at the transform")
+        if any(e.conditional for e in self.edges):
+            lines.append("dashed: present only under a condition")
+        if any(not f.resolved for f in self.frames):
+            lines.append("dotted: a frame the linter could not resolve")
+        return tuple(lines)
 
 
 def _numbers(values: Iterable[float]) -> str:
     return " ".join(f"{v:g}" for v in values)
 
 
-def _frame_key(transform: StaticTransform, which: str, index: int) -> tuple[str, str, bool]:
+def _frame_key(
+    transform: StaticTransform, which: str, index: int, cluster: int = 0
+) -> tuple[str, str, bool]:
     """(key, label, resolved) of the parent or child frame of ``transform``."""
     normalised = transform.parent if which == "parent" else transform.child
     written = transform.parent_written if which == "parent" else transform.child_written
+    prefix = f"{cluster}|" if cluster else ""
     if normalised is not None and transform.knows(Field(which)):
-        return normalised, normalised, True
+        return prefix + normalised, normalised, True
     # Unresolved frames are distinct vertices: two unknowns need not be the same frame.
-    return f"?{index}:{which}", written or "?", False
+    return f"{prefix}?{index}:{which}", written or "?", False
 
 
-def _edge_label(transform: StaticTransform, rules: list[str]) -> tuple[str, ...]:
-    lines = [transform.qualified_name or "?"]
+def _edge_label(
+    transform: StaticTransform, rules: list[str], unnamed: int = 0
+) -> tuple[str, ...]:
+    # An unnamed node (ROS 2 allows it) is named by its executable and its position
+    # among the unnamed nodes of its tree.
+    name = transform.qualified_name or f"{transform.executable or 'node'} #{unnamed}"
+    lines = [name]
     if transform.translation is None or transform.is_unresolved(Field.TRANSLATION):
         lines.append("xyz ?")
     else:
@@ -81,6 +110,26 @@ def _edge_label(transform: StaticTransform, rules: list[str]) -> tuple[str, ...]
     return tuple(lines)
 
 
+def entry_points(result: LintResult) -> list[int]:
+    """Indices of the trees whose root no other tree includes."""
+    included: set[str] = set()
+    for tree in result.trees:
+        included.update(f for f in tree.files if f != tree.root)
+    return [i for i, tree in enumerate(result.trees) if tree.root not in included]
+
+
+def _placed_transforms(result: LintResult) -> list[tuple[int, StaticTransform]]:
+    """(cluster, transform) for each transform to draw; one cluster when one tree."""
+    trees = result.trees
+    if len(trees) <= 1:
+        return [(0, t) for t in result.transforms]
+    return [
+        (cluster, transform)
+        for cluster, index in enumerate(entry_points(result))
+        for transform in trees[index].transforms
+    ]
+
+
 def build_graph(result: LintResult) -> TfGraph:
     """The graph of every transform in ``result``, marked with its diagnostics."""
     at: dict[tuple[str, int, int], list[Diagnostic]] = {}
@@ -90,31 +139,35 @@ def build_graph(result: LintResult) -> TfGraph:
     edges: list[Edge] = []
     placed: set[tuple[str, int, int]] = set()
     seen: set[tuple[object, ...]] = set()
-    for index, transform in enumerate(result.transforms):
-        identity = (transform.path, transform.line, transform.column, transform.args,
+    unnamed: dict[int, int] = {}
+    for index, (cluster, transform) in enumerate(_placed_transforms(result)):
+        identity = (cluster, transform.path, transform.line, transform.column, transform.args,
                     transform.condition)
         if identity in seen:
             continue  # one element reached twice with the same values draws one edge
         seen.add(identity)
+        if transform.name is None:
+            unnamed[cluster] = unnamed.get(cluster, 0) + 1
         where = (transform.path, transform.line, transform.column)
         placed.add(where)
         found = at.get(where, [])
         serious = [d for d in found if d.severity is not Severity.INFO]
         rules = sorted({d.rule for d in serious})
-        parent = _frame_key(transform, "parent", index)
-        child = _frame_key(transform, "child", index)
+        parent = _frame_key(transform, "parent", index, cluster)
+        child = _frame_key(transform, "child", index, cluster)
         for key, label, resolved in (parent, child):
-            frames.setdefault(key, Frame(key, label, resolved, False))
+            frames.setdefault(key, Frame(key, label, resolved, False, cluster))
         if serious:
-            frames[child[0]] = Frame(child[0], child[1], child[2], True)
+            frames[child[0]] = Frame(child[0], child[1], child[2], True, cluster)
         edges.append(
             Edge(
                 parent=parent[0],
                 child=child[0],
-                label=_edge_label(transform, rules),
+                label=_edge_label(transform, rules, unnamed.get(cluster, 0)),
                 conditional=not transform.condition.always,
                 flagged=bool(serious),
                 tooltip="\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found),
+                cluster=cluster,
             )
         )
     unplaced = [
@@ -125,11 +178,16 @@ def build_graph(result: LintResult) -> TfGraph:
              for d in unplaced[:MAX_NOTES]]
     if len(unplaced) > MAX_NOTES:
         notes.append(f"... and {len(unplaced) - MAX_NOTES} more")
+    clusters: tuple[str, ...] = ()
+    if len(result.trees) > 1:
+        clusters = tuple(result.trees[i].root for i in entry_points(result))
     roots = ", ".join(f.path for f in result.files)
+    if len(result.files) > 3:
+        roots = f"{len(result.files)} launch files, {len(clusters)} entry point(s)"
     errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
     warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
     title = (
         f"{roots}: {len(edges)} static transform(s), {len(frames)} frame(s), "
         f"{errors} error(s), {warnings} warning(s)"
     )
-    return TfGraph(title, tuple(frames.values()), tuple(edges), tuple(notes))
+    return TfGraph(title, tuple(frames.values()), tuple(edges), tuple(notes), clusters)

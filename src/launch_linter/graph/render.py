@@ -11,7 +11,6 @@ import json
 from launch_linter.graph.model import TfGraph
 
 RED = "#c62828"
-LEGEND = "red: errors or warnings at the transform; dashed: present only under a condition"
 GREY = "#616161"
 LEFT = "\\l"
 NEWLINE = "\n"
@@ -31,7 +30,8 @@ def _ids(graph: TfGraph) -> dict[str, str]:
 def to_dot(graph: TfGraph) -> str:
     """The graph in Graphviz DOT: dashed edges are conditional, red ones have findings."""
     ids = _ids(graph)
-    caption = "".join(line + "\n" for line in (graph.title, LEGEND, *graph.notes))
+    legend = ("; ".join(graph.legend),) if graph.legend else ()
+    caption = "".join(line + "\n" for line in (graph.title, *legend, *graph.notes))
     label = _dot_string(caption, LEFT)
     lines = [
         "digraph tf {",
@@ -40,13 +40,24 @@ def to_dot(graph: TfGraph) -> str:
         "  node [shape=ellipse, fontname=Helvetica, fontsize=11];",
         "  edge [fontname=Helvetica, fontsize=9];",
     ]
-    for frame in graph.frames:
-        attributes = [f"label={_dot_string(frame.label)}"]
-        if not frame.resolved:
-            attributes.append("style=dotted")
-        if frame.flagged:
-            attributes.append(f'color="{RED}", fontcolor="{RED}", penwidth=2')
-        lines.append(f"  {ids[frame.key]} [{', '.join(attributes)}];")
+    clustered = len(graph.clusters) > 1
+    for cluster in range(max(len(graph.clusters), 1)):
+        indent = "  "
+        if clustered:
+            lines.append(f"  subgraph cluster_{cluster} {{")
+            lines.append(f"    label={_dot_string(graph.clusters[cluster])}; style=rounded;")
+            indent = "    "
+        for frame in graph.frames:
+            if frame.cluster != cluster and clustered:
+                continue
+            attributes = [f"label={_dot_string(frame.label)}"]
+            if not frame.resolved:
+                attributes.append("style=dotted")
+            if frame.flagged:
+                attributes.append(f'color="{RED}", fontcolor="{RED}", penwidth=2')
+            lines.append(f"{indent}{ids[frame.key]} [{', '.join(attributes)}];")
+        if clustered:
+            lines.append("  }")
     for edge in graph.edges:
         attributes = [f"label={_dot_string(NEWLINE.join(edge.label))}"]
         if edge.conditional:
@@ -84,8 +95,16 @@ def to_mermaid(graph: TfGraph) -> str:
     ids = _ids(graph)
     # The front matter is YAML, where a JSON string is a valid double-quoted scalar.
     lines = ["---", f"title: {json.dumps(graph.title)}", "---", "flowchart TD"]
-    for frame in graph.frames:
-        lines.append(f"  {ids[frame.key]}([{_mermaid_text([frame.label])}])")
+    clustered = len(graph.clusters) > 1
+    for cluster in range(max(len(graph.clusters), 1)):
+        if clustered:
+            lines.append(f"  subgraph c{cluster} [{_mermaid_text([graph.clusters[cluster]])}]")
+        for frame in graph.frames:
+            if clustered and frame.cluster != cluster:
+                continue
+            lines.append(f"  {ids[frame.key]}([{_mermaid_text([frame.label])}])")
+        if clustered:
+            lines.append("  end")
     red_links: list[int] = []
     for index, edge in enumerate(graph.edges):
         arrow = "-.->" if edge.conditional else "-->"

@@ -73,6 +73,60 @@ class Belief:
         }
 
 
+class Applicability(str, Enum):
+    """ruff's model: a safe fix keeps the meaning the author intended; an unsafe one may
+    change what the launch file does and wants a human to look."""
+
+    SAFE = "safe"
+    UNSAFE = "unsafe"
+
+
+@dataclass(frozen=True)
+class TokenEdit:
+    """Replace the argument words ``tokens[start:end]`` with ``text`` ("" deletes them
+    and the blank before them)."""
+
+    start: int
+    end: int
+    text: str
+
+
+@dataclass(frozen=True)
+class Edit:
+    """A replacement of the bytes ``[start, end)`` of the file ``path``."""
+
+    path: str
+    start: int
+    end: int
+    content: str
+
+    def to_json(self) -> dict:  # type: ignore[type-arg]
+        return {"path": self.path, "start": self.start, "end": self.end, "content": self.content}
+
+
+@dataclass(frozen=True)
+class Fix:
+    """How to fix a diagnostic: edits of the argument words ``tokens`` as written (what a
+    rule knows), turned into byte ``edits`` of the file once it has been located there.
+
+    ``safe_from_distro``: an unsafe fix that is safe when the target ROS 2 distribution
+    (``--ros-distro``) is this one or newer."""
+
+    applicability: Applicability
+    message: str
+    tokens: tuple[str, ...] = ()
+    token_edits: tuple[TokenEdit, ...] = ()
+    edits: tuple[Edit, ...] = ()
+    safe_from_distro: str | None = None
+
+    def to_json(self) -> dict:  # type: ignore[type-arg]
+        return {
+            "applicability": self.applicability.value,
+            "message": self.message,
+            "edits": [e.to_json() for e in self.edits],
+        }
+
+
 @dataclass(frozen=True)
 class Diagnostic:
     rule: str
@@ -85,6 +139,7 @@ class Diagnostic:
     node: str | None = None
     related: tuple[Location, ...] = ()
     belief: Belief | None = None
+    fix: Fix | None = None
 
     @property
     def sort_key(self) -> tuple[str, int, int, str, str]:
@@ -104,4 +159,5 @@ class Diagnostic:
                 {"path": r.path, "line": r.line, "column": r.column} for r in self.related
             ],
             "belief": self.belief.to_json() if self.belief else None,
+            "fix": self.fix.to_json() if self.fix and self.fix.edits else None,
         }

@@ -9,7 +9,7 @@ from urllib.parse import quote
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.model.diagnostic import Diagnostic, Location, Severity
+from launch_linter.model.diagnostic import Diagnostic, Fix, Location, Severity
 from launch_linter.rules import RULES, Rule
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -101,8 +101,30 @@ def _result(diagnostic: Diagnostic, rule_index: dict[str, int]) -> dict[str, Any
         properties["node"] = diagnostic.node
     if diagnostic.belief is not None:
         properties["belief"] = diagnostic.belief.to_json()
+    if diagnostic.fix is not None and diagnostic.fix.edits:
+        out["fixes"] = [_fix(diagnostic.fix)]
+        properties["fixApplicability"] = diagnostic.fix.applicability.value
     out["properties"] = properties
     return out
+
+
+def _fix(fix: Fix) -> dict[str, Any]:
+    """A SARIF 2.1.0 ``fix``: one ``artifactChange`` per file, byte-offset regions."""
+    changes: dict[str, list[dict[str, Any]]] = {}
+    for edit in fix.edits:
+        changes.setdefault(edit.path, []).append(
+            {
+                "deletedRegion": {"byteOffset": edit.start, "byteLength": edit.end - edit.start},
+                "insertedContent": {"text": edit.content},
+            }
+        )
+    return {
+        "description": {"text": f"{fix.message} ({fix.applicability.value} fix)"},
+        "artifactChanges": [
+            {"artifactLocation": {"uri": artifact_uri(path)}, "replacements": replacements}
+            for path, replacements in changes.items()
+        ],
+    }
 
 
 def sarif_document(result: LintResult, beliefs: BeliefSet, version: str) -> dict[str, Any]:

@@ -35,6 +35,23 @@ def summary(diagnostics: Iterable[Diagnostic], files: int) -> str:
     )
 
 
+def statistics(diagnostics: Iterable[Diagnostic]) -> str:
+    """ruff's ``--statistics``: a count per rule with its severity, most frequent first,
+    and how many of them a fix is offered for."""
+    counts: dict[tuple[str, str], list[int]] = {}
+    for d in diagnostics:
+        entry = counts.setdefault((d.rule, d.severity.value), [0, 0])
+        entry[0] += 1
+        if d.fix is not None and d.fix.edits:
+            entry[1] += 1
+    rows = sorted(counts.items(), key=lambda item: (-item[1][0], item[0]))
+    lines = []
+    for (rule, severity), (count, fixable) in rows:
+        note = f"  [{fixable} fixable]" if fixable else ""
+        lines.append(f"{count:>6}  {rule:<26} {severity}{note}")
+    return "\n".join(lines) + ("\n" if lines else "")
+
+
 def format_transform(t: StaticTransform) -> str:
     rotation = (
         f"{t.rotation.kind.value}({', '.join(f'{v:g}' for v in t.rotation.values)})"

@@ -105,3 +105,53 @@ def default_package_roots(launch_file: str) -> list[str]:
             break
         directory = directory.parent
     return [str(package.parent)]
+
+
+def nearest_package_xml(launch_file: str) -> str | None:
+    """The ``package.xml`` of the package that holds ``launch_file`` (walking up)."""
+    directory = os.path.dirname(os.path.abspath(launch_file))
+    for _ in range(MAX_WALK_UP):
+        candidate = os.path.join(directory, "package.xml")
+        if os.path.isfile(candidate):
+            return candidate
+        parent = os.path.dirname(directory)
+        if parent == directory:
+            return None
+        directory = parent
+    return None
+
+
+def package_ros_version(manifest: str) -> int | None:
+    """Which ROS a ``package.xml`` builds for: 2 for an ``ament_*`` build type (or
+    buildtool), 1 for catkin; None when it does not say (or cannot be read)."""
+    try:
+        with open(manifest, "rb") as handle:
+            document = parse_xml(
+                handle.read(MAX_MANIFEST_BYTES), text_tags=("build_type", "buildtool_depend")
+            )
+    except (OSError, XmlError):
+        return None
+    build_type: str | None = None
+    buildtools: list[str] = []
+    for child in document.root.children:
+        if child.tag == "export":
+            for grandchild in child.children:
+                if grandchild.tag == "build_type" and build_type is None:
+                    build_type = grandchild.text.strip()
+        elif child.tag == "buildtool_depend":
+            buildtools.append(child.text.strip())
+    if build_type is not None:
+        if build_type.startswith("ament"):
+            return 2
+        if build_type == "catkin":
+            return 1
+        return None
+    if any(tool.startswith("ament") for tool in buildtools):
+        return 2
+    if "catkin" in buildtools:
+        return 1
+    # ``ament_python`` packages often name no buildtool; without a build type a
+    # format-1 manifest is ROS 1 (ROS 2 packages use format 2 or 3).
+    if document.root.get("format") in (None, "1"):
+        return 1
+    return None

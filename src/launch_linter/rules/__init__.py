@@ -18,6 +18,7 @@ from launch_linter.rules import (
     ned_transform,
     parse_error,
     py_arguments_single_string,
+    quaternion_w_first,
     reversed_name,
     ros2_bad_flag,
     ros2_positional_args,
@@ -65,6 +66,7 @@ RULE_MODULES = (
     py_arguments_single_string,
     component_default_frames,
     ros2_schema,
+    quaternion_w_first,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

@@ -10,9 +10,11 @@ from typing import Callable
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
+    Applicability,
     Belief,
     Category,
     Diagnostic,
+    Fix,
     Location,
     Problem,
     Severity,
@@ -46,6 +48,8 @@ class Finding:
     related: tuple[Location, ...] = ()
     belief: Belief | None = None
     severity: Severity | None = None
+    fix: Fix | None = None
+    """Word edits that fix it (see ``rules._fixes``); the engine locates them in the file."""
 
 
 Check = Callable[[RuleContext], typing.Iterable[Finding]]
@@ -59,6 +63,8 @@ class Rule:
     summary: str
     doc: str
     check: Check
+    fix: Applicability | None = None
+    """The kind of fix the rule offers (its module's ``FIX``), None for none."""
 
     def diagnostic(self, finding: Finding, override: Severity | None = None) -> Diagnostic:
         """``finding`` stamped with this rule's metadata; ``override`` (configuration or
@@ -74,6 +80,7 @@ class Rule:
             node=finding.node,
             related=finding.related,
             belief=finding.belief,
+            fix=finding.fix,
         )
 
 
@@ -83,6 +90,7 @@ def finding_at(
     related: Iterable[StaticTransform | Location] = (),
     belief: Belief | None = None,
     severity: Severity | None = None,
+    fix: Fix | None = None,
 ) -> Finding:
     """A finding located at ``transform``'s node, ``related`` pointing at other places."""
     locations = tuple(
@@ -97,6 +105,7 @@ def finding_at(
         related=locations,
         belief=belief,
         severity=severity,
+        fix=fix,
     )
 
 
@@ -123,6 +132,7 @@ def rule_from_module(module: ModuleType) -> Rule:
         summary=doc.splitlines()[0] if doc else module.ID,
         doc=doc,
         check=module.check,
+        fix=getattr(module, "FIX", None),
     )
 
 

@@ -30,18 +30,47 @@ rejects. Nothing in the launch output points at the cause.
         args="0 0 0.2 0 0 0 base_link laser"/>
 </launch>
 ```
+
+## Fix
+Safe: removes the period given to ROS 1 `tf2_ros`, which then reads the transform that
+was meant.
 """
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
 from launch_linter.model.transform import ArgForm, Field, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.rules._fixes import fixable, number_text, replace_words
 
 ID = "bad_arity"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
+FIX = Applicability.SAFE
+
+
+def _period_fix(transform: StaticTransform) -> Fix | None:
+    """Drop the last non-remapping word: the period ROS 1 tf2_ros misreads."""
+    if not (
+        transform.ros_version == 1
+        and transform.package == "tf2_ros"
+        and transform.form in (ArgForm.YPR, ArgForm.QUATERNION)
+        and transform.period_ms is not None
+        and fixable(transform)
+    ):
+        return None
+    words = [i for i, t in enumerate(transform.tokens) if ":=" not in t]
+    if len(words) not in (9, 10):
+        return None
+    last = words[-1]
+    try:
+        if float(transform.tokens[last]) != transform.period_ms:
+            return None
+    except ValueError:
+        return None
+    message = f"remove the period {number_text(transform.period_ms)}"
+    return replace_words(transform, FIX, message, [(last, last + 1, "")])
 
 
 def _fix(transform: StaticTransform) -> str:
@@ -59,5 +88,6 @@ def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         if transform.arity_issue is None or transform.is_unresolved(Field.ARITY):
             continue
-        yield finding_at(transform, transform.arity_issue + _fix(transform)
+        yield finding_at(
+            transform, transform.arity_issue + _fix(transform), fix=_period_fix(transform)
         )

@@ -26,15 +26,21 @@ transformed through it; `roswtf` warns about it.
         args="0 0 0.2 0 0 0 1 base_link laser"/>
 </launch>
 ```
+
+## Fix
+Unsafe: a quaternion that is not of unit length (and not zero or infinite) is replaced
+by its normalised form; whether the direction written is the one meant is for a human to
+judge.
 """
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
 ID = "bad_quaternion"
 CATEGORY = Category.TF
@@ -43,6 +49,31 @@ SEVERITY = Severity.ERROR
 TF2_TOLERANCE = 0.01
 """tf2's ``QUATERNION_NORMALIZATION_TOLERANCE`` on abs(|q|² - 1)."""
 ROSWTF_TOLERANCE = 1e-6
+FIX = Applicability.UNSAFE
+
+
+def _normalise_fix(transform: StaticTransform, values: tuple[float, ...]) -> Fix | None:
+    if not fixable(transform) or not all(math.isfinite(v) for v in values):
+        return None
+    norm = math.sqrt(sum(v * v for v in values))
+    if norm <= NULL_TOLERANCE:
+        return None
+    edits = []
+    for position, value in enumerate(values):
+        index = value_index(transform, 3 + position)
+        if index is None:
+            return None
+        try:
+            if float(transform.tokens[index]) != value:
+                return None
+        except ValueError:
+            return None
+        written = number_text(value / norm)
+        if written != transform.tokens[index]:
+            edits.append((index, index + 1, written))
+    if not edits:
+        return None
+    return replace_words(transform, FIX, "normalise the quaternion", edits)
 
 
 def _written(values: tuple[float, ...]) -> str:
@@ -90,4 +121,5 @@ def check(context: RuleContext) -> Iterator[Finding]:
             transform,
             f"quaternion (qx, qy, qz, qw) = {_written(rotation.values)} {problem}",
             severity=severity,
+            fix=_normalise_fix(transform, rotation.values),
         )

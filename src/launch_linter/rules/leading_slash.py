@@ -26,17 +26,32 @@ start with a '/'`), and tools such as cartographer refuse such frame ids outrigh
         args="0 0 0.2 0 0 0 base_link laser 100"/>
 </launch>
 ```
+
+## Fix
+Safe: strips one leading `/` from the frame id (tf2 strips exactly one, so the frame
+is the same).
 """
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.rules._fixes import fixable, frame_index, replace_words
 
 ID = "leading_slash"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
+FIX = Applicability.SAFE
+
+
+def _fix(transform: StaticTransform, role: str, written: str) -> Fix | None:
+    index = frame_index(transform, role) if fixable(transform) else None
+    if index is None or transform.tokens[index] != written:
+        return None
+    stripped = written[1:]
+    return replace_words(transform, FIX, f"write '{stripped}'", [(index, index + 1, stripped)])
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -50,4 +65,5 @@ def check(context: RuleContext) -> Iterator[Finding]:
             yield finding_at(transform,
                 f"{role} frame '{written}' starts with '/': tf2 names it '{written[1:]}' "
                 f"and rejects lookups of '{written}'; write '{written.lstrip('/')}'",
+                fix=_fix(transform, role, written),
             )

@@ -29,18 +29,58 @@ is easy to get wrong.
         args="--z 0.2 --frame-id base_link --child-frame-id laser"/>
 </launch>
 ```
+
+## Fix
+Unsafe, or safe when `--ros-distro` (or the `ros-distro` configuration key) names Humble
+or a newer distribution: rewrites the positional arguments to the flags. Foxy and older
+have no flags, so there the rewrite would break the node.
 """
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import ArgIssue, ArgIssueKind
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import ArgIssue, ArgIssueKind, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.rules._fixes import (
+    FLAGS_FROM,
+    QUATERNION_FLAGS,
+    YPR_FLAGS,
+    fixable,
+    replace_words,
+)
 
 ID = "ros2_positional_args"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
+FIX = Applicability.UNSAFE
+
+
+def _flags_fix(transform: StaticTransform) -> Fix | None:
+    tokens = transform.tokens
+    if not fixable(transform) or any(":=" in t or (t.startswith("-") and not _number(t))
+                                     for t in tokens):
+        return None
+    rotation = transform.rotation
+    if rotation is None:
+        return None
+    flags = YPR_FLAGS if rotation.kind is RotationKind.YPR else QUATERNION_FLAGS
+    if len(tokens) != len(flags) + 2:
+        return None
+    words = [f"{flag} {tokens[i]}" for i, flag in enumerate(flags)]
+    words.append(f"--frame-id {tokens[-2]} --child-frame-id {tokens[-1]}")
+    text = " ".join(words)
+    return replace_words(
+        transform, FIX, f"write: {text}", [(0, len(tokens), text)], safe_from_distro=FLAGS_FROM
+    )
+
+
+def _number(word: str) -> bool:
+    try:
+        float(word)
+    except ValueError:
+        return False
+    return True
 
 
 def message(issue: ArgIssue) -> str | None:
@@ -62,4 +102,4 @@ def check(context: RuleContext) -> Iterator[Finding]:
         for issue in transform.arg_issues:
             text = message(issue)
             if text is not None:
-                yield finding_at(transform, text)
+                yield finding_at(transform, text, fix=_flags_fix(transform))

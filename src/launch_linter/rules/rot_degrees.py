@@ -27,6 +27,10 @@ another 117°), not by a quarter turn, and nothing complains at run time.
 </launch>
 ```
 
+## Fix
+Unsafe: writes each suspect angle in radians. A value above 2π written on purpose (a
+full turn and more, in radians) would be changed.
+
 ## Known problems
 An angle in degrees between -2π and 2π (such as `5`) cannot be told from radians and is
 not reported.
@@ -36,13 +40,15 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import Field, RotationKind
+from launch_linter.model.diagnostic import Applicability, Category, Fix, Severity
+from launch_linter.model.transform import Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at
+from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
 ID = "rot_degrees"
 CATEGORY = Category.MAY_SEMANTIC
 SEVERITY = Severity.WARNING
+FIX = Applicability.UNSAFE
 
 ANGLE_NAMES = ("yaw", "pitch", "roll")
 FULL_TURN = 2 * math.pi
@@ -62,6 +68,29 @@ def looks_like_degrees(value: float) -> bool:
     return math.isfinite(value) and abs(value) > FULL_TURN and not is_radian_multiple(value)
 
 
+def _radians_fix(transform: StaticTransform, values: tuple[float, ...]) -> Fix | None:
+    if not fixable(transform):
+        return None
+    edits = []
+    for position, value in enumerate(values):
+        if not looks_like_degrees(value):
+            continue
+        index = value_index(transform, 3 + position)
+        if index is None or not _reads_as(transform.tokens[index], value):
+            return None
+        edits.append((index, index + 1, number_text(math.radians(value))))
+    if not edits:
+        return None
+    return replace_words(transform, FIX, "write the angles in radians", edits)
+
+
+def _reads_as(word: str, value: float) -> bool:
+    try:
+        return float(word) == value
+    except ValueError:
+        return False
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         rotation = transform.rotation
@@ -79,4 +108,5 @@ def check(context: RuleContext) -> Iterator[Finding]:
         yield finding_at(transform,
             f"{', '.join(suspects)}: static_transform_publisher reads yaw, pitch and roll in "
             f"radians, and an angle above 2π is probably in degrees",
+            fix=_radians_fix(transform, rotation.values),
         )

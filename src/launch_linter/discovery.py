@@ -1,0 +1,197 @@
+"""Which files a folder holds to lint: launch files by name and content, each once.
+
+A folder is walked for every launch file ROS 1 and ROS 2 name that way (``*.launch``,
+``*.launch.xml``, ``*_launch.xml``, ``*.launch.py``, ``*_launch.py``, ``*.launch.yaml``,
+``*.launch.yml``, ``*_launch.yaml``, ``*_launch.yml``) and for ``*.xml`` files whose root
+element is ``<launch>``. It skips version-control folders and the other default
+exclusions (replaced by ``exclude``, extended by ``extend_exclude``, ruff's convention),
+the ``build/``, ``install/``, ``log/`` and ``devel/`` folders of catkin and colcon
+workspaces (only where they are workspace folders: beside a ``src/`` folder, or marked
+with ``COLCON_IGNORE``/``CATKIN_IGNORE``/``AMENT_IGNORE``), and whatever the injected
+``ignored`` predicate rejects (the command line passes the ``.gitignore`` rules there;
+this module stays standard-library only). A file named explicitly is always linted. Each
+file is taken once, by its real path, under the first name it was found by.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Callable
+
+LAUNCH_SUFFIXES = (
+    ".launch",
+    ".launch.xml",
+    "_launch.xml",
+    ".launch.yaml",
+    ".launch.yml",
+    "_launch.yaml",
+    "_launch.yml",
+    ".launch.py",
+    "_launch.py",
+)
+VCS_FOLDERS = (".git", ".hg", ".svn", ".bzr", "_darcs", "CVS", ".jj", ".pijul")
+DEFAULT_EXCLUDE: tuple[str, ...] = (
+    *VCS_FOLDERS,
+    ".*",  # hidden folders (editor and tool caches); the walk always skipped them
+    "__pycache__",
+    "node_modules",
+    "venv",
+)
+WORKSPACE_FOLDERS = ("build", "install", "log", "devel", "devel_isolated", "build_isolated",
+                     "install_isolated")
+WORKSPACE_MARKERS = ("COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE")
+MAX_DISCOVERED_FILES = 200_000
+LAUNCH_HEAD_BYTES = 4096
+
+Ignored = Callable[[str, bool], bool]
+"""``ignored(absolute_path, is_folder)``: True to leave the path out."""
+
+# The first element of an XML document: after the declaration, comments, doctype and
+# processing instructions.
+_PROLOGUE = re.compile(rb"\s*(?:<\?.*?\?>|<!--.*?-->|<!DOCTYPE[^>]*>|\s)*", re.DOTALL)
+_LAUNCH_ROOT = re.compile(rb"<launch[\s>/]")
+_PY_LAUNCH = re.compile(rb"^def generate_launch_description\s*\(", re.MULTILINE)
+_YAML_LAUNCH = re.compile(rb"(?:\xef\xbb\xbf)?(?:\s*#[^\n]*\n|\s*\n|---[^\n]*\n)*launch\s*:")
+CONTENT_SUFFIXES = (".xml", ".py", ".yaml", ".yml")
+MAX_CONTENT_BYTES = 256 * 1024
+
+
+@dataclass(frozen=True)
+class InputFile:
+    path: str
+    """Absolute path."""
+    display: str
+    """As the user gave it (relative stays relative)."""
+
+
+def is_launch_name(name: str) -> bool:
+    """Whether a file name alone makes it a launch file."""
+    return name.endswith(LAUNCH_SUFFIXES)
+
+
+def has_launch_root(path: str) -> bool:
+    """Whether the XML file at ``path`` has ``<launch>`` as its root element."""
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(LAUNCH_HEAD_BYTES)
+    except OSError:
+        return False
+    if head.startswith(b"\xef\xbb\xbf"):
+        head = head[3:]
+    prologue = _PROLOGUE.match(head)
+    start = prologue.end() if prologue else 0
+    if start >= len(head) - 8:
+        # A prologue longer than the head read (a long licence comment): the old test.
+        return b"<launch" in head
+    return _LAUNCH_ROOT.match(head, start) is not None
+
+
+def has_launch_content(path: str, name: str) -> bool:
+    """Whether a file that is not named like a launch file is one by its content: XML
+    with a ``<launch>`` root, a Python file defining ``generate_launch_description`` (what
+    ``ros2 launch`` calls), or YAML whose top-level key is ``launch:``."""
+    if name.endswith(".xml"):
+        return has_launch_root(path)
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_CONTENT_BYTES)
+    except OSError:
+        return False
+    if name.endswith(".py"):
+        return _PY_LAUNCH.search(data) is not None
+    return _YAML_LAUNCH.match(data) is not None
+
+
+def is_workspace_folder(directory: str, name: str) -> bool:
+    """A colcon/catkin output folder: named like one and beside ``src/`` or marked."""
+    if name not in WORKSPACE_FOLDERS:
+        return False
+    full = os.path.join(directory, name)
+    if os.path.isdir(os.path.join(directory, "src")):
+        return True
+    return any(os.path.exists(os.path.join(full, marker)) for marker in WORKSPACE_MARKERS)
+
+
+@dataclass(frozen=True)
+class Exclusions:
+    """Glob patterns (ruff's ``exclude``/``extend-exclude``) matched against a path's
+    base name, its path relative to ``base`` and its absolute path."""
+
+    patterns: tuple[str, ...] = DEFAULT_EXCLUDE
+    base: str = "."
+
+    @classmethod
+    def of(
+        cls,
+        exclude: Sequence[str] | None = None,
+        extend_exclude: Sequence[str] = (),
+        base: str = ".",
+    ) -> Exclusions:
+        chosen = tuple(exclude) if exclude is not None else DEFAULT_EXCLUDE
+        return cls(chosen + tuple(extend_exclude), os.path.abspath(base))
+
+    def excludes(self, absolute: str) -> bool:
+        name = os.path.basename(absolute)
+        relative = os.path.relpath(absolute, self.base).replace(os.sep, "/")
+        for pattern in self.patterns:
+            cleaned = pattern.rstrip("/")
+            if fnmatch.fnmatchcase(name, cleaned):
+                return True
+            if "/" in cleaned:
+                anchored = cleaned[2:] if cleaned.startswith("./") else cleaned
+                if fnmatch.fnmatchcase(relative, anchored) or fnmatch.fnmatchcase(
+                    absolute.replace(os.sep, "/"), anchored
+                ):
+                    return True
+        return False
+
+
+def discover(
+    paths: Sequence[str],
+    exclusions: Exclusions | None = None,
+    ignored: Ignored | None = None,
+) -> list[InputFile]:
+    """Input files: each file named, and launch files found under each folder named."""
+    rules = exclusions if exclusions is not None else Exclusions()
+    found: list[InputFile] = []
+    seen: set[str] = set()
+
+    def add(path: str) -> None:
+        real = os.path.realpath(path)
+        if real not in seen and len(found) < MAX_DISCOVERED_FILES:
+            seen.add(real)
+            found.append(InputFile(os.path.abspath(path), os.path.normpath(path)))
+
+    def skip(absolute: str, is_folder: bool) -> bool:
+        return rules.excludes(absolute) or (ignored is not None and ignored(absolute, is_folder))
+
+    for given in paths:
+        if not os.path.isdir(given):
+            add(given)
+            continue
+        visited: set[str] = set()
+        for directory, subdirs, files in os.walk(given, followlinks=False):
+            real_dir = os.path.realpath(directory)
+            if real_dir in visited:
+                subdirs[:] = []
+                continue
+            visited.add(real_dir)
+            subdirs[:] = sorted(
+                d
+                for d in subdirs
+                if not is_workspace_folder(directory, d)
+                and not skip(os.path.abspath(os.path.join(directory, d)), True)
+            )
+            for name in sorted(files):
+                full = os.path.join(directory, name)
+                if not (is_launch_name(name) or name.endswith(CONTENT_SUFFIXES)):
+                    continue
+                if skip(os.path.abspath(full), False):
+                    continue
+                if is_launch_name(name) or has_launch_content(full, name):
+                    add(full)
+    return found

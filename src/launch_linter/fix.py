@@ -1,0 +1,290 @@
+"""Fixes: find a rule's word edits in the file's bytes, apply them, show them as a diff.
+
+A rule says which argument words to replace (:class:`~launch_linter.model.diagnostic.Fix`
+``token_edits``, relative to the words it read). Here they become byte edits of the file:
+the element the diagnostic points at is found at its line and column, then its ``args``
+attribute (XML) or its ``arguments=[...]`` list of string literals (Python). A fix is
+dropped, never guessed, when the attribute holds a substitution, an entity or a comment,
+or its words are not the ones the rule read. Every byte outside the edited words is kept.
+"""
+
+from __future__ import annotations
+
+import ast
+import difflib
+import re
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import replace
+from typing import Tuple
+
+from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
+from launch_linter.rules._fixes import distro_at_least
+
+MAX_FIX_BYTES = 8 * 1024 * 1024
+MAX_FIX_PASSES = 8
+
+_ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
+_WORD = re.compile(rb"[^ \t\r\n]+")
+
+Span = Tuple[int, int]
+
+
+def _line_starts(data: bytes) -> list[int]:
+    starts = [0]
+    index = data.find(b"\n")
+    while index >= 0:
+        starts.append(index + 1)
+        index = data.find(b"\n", index + 1)
+    return starts
+
+
+def _xml_word_spans(data: bytes, line: int, column: int) -> list[Span] | None:
+    """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
+    starts = _line_starts(data)
+    if not 1 <= line <= len(starts):
+        return None
+    begin = starts[line - 1]
+    position = begin + max(column - 1, 0)
+    if data[position : position + 1] != b"<":
+        position = data.find(b"<", begin)
+        if position < 0 or (line < len(starts) and position >= starts[line]):
+            return None
+    end = position + 1
+    quote = 0
+    while end < len(data):  # the end of the start tag: a '>' outside quotes
+        byte = data[end]
+        if quote:
+            if byte == quote:
+                quote = 0
+        elif byte in b"\"'":
+            quote = byte
+        elif byte == ord(">"):
+            break
+        end += 1
+    found: Span | None = None
+    for match in _ATTRIBUTE.finditer(data, position, end):
+        if match.group(1) == b"args":
+            group = 2 if match.group(2) is not None else 3
+            found = (match.start(group), match.end(group))
+    if found is None:
+        return None
+    value = data[found[0] : found[1]]
+    if b"$(" in value or b"&" in value or b"<" in value:
+        return None
+    return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
+
+
+def _python_word_spans(data: bytes, line: int, column: int) -> list[Span] | None:
+    """Byte spans (quotes included) of the string items of ``arguments=[...]`` of the call
+    at line:column; None unless every item is a plain one-line string literal."""
+    try:
+        tree = ast.parse(data)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return None
+    starts = _line_starts(data)
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Call) or node.lineno != line:
+            continue
+        for keyword in node.keywords:
+            if keyword.arg != "arguments" or not isinstance(keyword.value, (ast.List, ast.Tuple)):
+                continue
+            spans: list[Span] = []
+            for item in keyword.value.elts:
+                if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
+                    return None
+                if item.end_lineno != item.lineno or item.end_col_offset is None:
+                    return None
+                base = starts[item.lineno - 1]
+                spans.append((base + item.col_offset, base + item.end_col_offset))
+            return spans
+    return None
+
+
+def _python_literal(text: str, like: bytes) -> str:
+    quote = "'" if like[-1:] == b"'" else '"'
+    return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
+
+
+def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
+    """The byte edits of ``fix`` in ``data`` (the file ``path``); () when not found."""
+    python = path.endswith(".py")
+    spans = (
+        _python_word_spans(data, line, column)
+        if python
+        else _xml_word_spans(data, line, column)
+        if not path.endswith((".yaml", ".yml"))
+        else None
+    )
+    if spans is None:
+        return ()
+    words = [data[a:b] for a, b in spans]
+    if python:
+        try:
+            read = [ast.literal_eval(w.decode("utf-8")) for w in words]
+        except (ValueError, SyntaxError, UnicodeDecodeError):
+            return ()
+        # ``arguments`` items are whole words only when none holds a blank.
+        if any(not isinstance(r, str) or not r or r.split() != [r] for r in read):
+            return ()
+        written = tuple(read)
+    else:
+        written = tuple(w.decode("utf-8", "replace") for w in words)
+    if written != fix.tokens:
+        return ()
+    edits: list[Edit] = []
+    for token_edit in fix.token_edits:
+        first, last = token_edit.start, token_edit.end - 1
+        if not 0 <= first <= last < len(spans):
+            return ()
+        start, end = spans[first][0], spans[last][1]
+        if token_edit.text == "":
+            # Delete the words with the separator before them (after them for the first).
+            if first > 0:
+                start = spans[first - 1][1]
+            elif last + 1 < len(spans):
+                end = spans[last + 1][0]
+            content = ""
+        elif python:
+            items = token_edit.text.split()
+            content = ", ".join(_python_literal(i, words[first]) for i in items)
+        else:
+            content = token_edit.text
+        edits.append(Edit(path, start, end, content))
+    return tuple(edits)
+
+
+def read_bytes(path: str) -> bytes | None:
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_FIX_BYTES + 1)
+    except OSError:
+        return None
+    return data if len(data) <= MAX_FIX_BYTES else None
+
+
+def with_located_fixes(
+    diagnostics: Sequence[Diagnostic],
+    distro: str | None = None,
+    sources: Mapping[str, bytes] | None = None,
+) -> tuple[Diagnostic, ...]:
+    """Each diagnostic with its fix located in its file (or without a fix when it cannot
+    be), a fix that is safe for the target distribution marked safe."""
+    cache: dict[str, bytes | None] = dict(sources or {})
+    out: list[Diagnostic] = []
+    for diagnostic in diagnostics:
+        fix = diagnostic.fix
+        if fix is None:
+            out.append(diagnostic)
+            continue
+        if diagnostic.path not in cache:
+            cache[diagnostic.path] = read_bytes(diagnostic.path)
+        data = cache[diagnostic.path]
+        edits = (
+            locate(fix, diagnostic.path, diagnostic.line, diagnostic.column, data)
+            if data is not None
+            else ()
+        )
+        if not edits:
+            out.append(replace(diagnostic, fix=None))
+            continue
+        applicability = fix.applicability
+        if fix.safe_from_distro is not None and distro_at_least(distro, fix.safe_from_distro):
+            applicability = Applicability.SAFE
+        out.append(replace(diagnostic, fix=replace(fix, edits=edits, applicability=applicability)))
+    return tuple(out)
+
+
+def wanted(diagnostic: Diagnostic, unsafe: bool) -> bool:
+    fix = diagnostic.fix
+    return bool(
+        fix is not None
+        and fix.edits
+        and (unsafe or fix.applicability is Applicability.SAFE)
+    )
+
+
+def apply_edits(data: bytes, fixes: Iterable[Fix]) -> tuple[bytes, list[Fix]]:
+    """``data`` with every fix whose edits overlap no earlier fix's applied; the fixes
+    applied. A fix is all or nothing."""
+    taken: list[tuple[int, int]] = []
+    applied: list[Fix] = []
+    chosen: list[Edit] = []
+    for fix in fixes:
+        spans = [(e.start, e.end) for e in fix.edits]
+        if any((a < d and c < b) or a == b == c == d for a, b in spans for c, d in taken):
+            continue
+        taken.extend(spans)
+        chosen.extend(fix.edits)
+        applied.append(fix)
+    out = data
+    for edit in sorted(chosen, key=lambda e: (e.start, e.end), reverse=True):
+        out = out[: edit.start] + edit.content.encode("utf-8") + out[edit.end :]
+    return out, applied
+
+
+def fixes_by_file(diagnostics: Iterable[Diagnostic], unsafe: bool) -> dict[str, list[Fix]]:
+    grouped: dict[str, list[Fix]] = {}
+    for diagnostic in diagnostics:
+        fix = diagnostic.fix
+        if wanted(diagnostic, unsafe) and fix is not None:
+            listed = grouped.setdefault(diagnostic.path, [])
+            if fix not in listed:
+                listed.append(fix)
+    return grouped
+
+
+def unified_diff(path: str, before: bytes, after: bytes) -> str:
+    old = before.decode("utf-8", "replace").splitlines(keepends=True)
+    new = after.decode("utf-8", "replace").splitlines(keepends=True)
+    return "".join(difflib.unified_diff(old, new, f"a/{path}", f"b/{path}"))
+
+
+def fix_until_stable(
+    lint: Callable[[], Sequence[Diagnostic]],
+    unsafe: bool,
+    write: Callable[[str, bytes], None],
+    read: Callable[[str], bytes | None] = read_bytes,
+) -> tuple[dict[str, int], Sequence[Diagnostic]]:
+    """Apply fixes, lint again, repeat while something changes (bounded). Returns the
+    count of fixes applied per rule and the diagnostics of the last lint."""
+    counts: dict[str, int] = {}
+    diagnostics = lint()
+    for _ in range(MAX_FIX_PASSES):
+        grouped = fixes_by_file(diagnostics, unsafe)
+        rule_of = {id(d.fix): d.rule for d in diagnostics if d.fix is not None}
+        changed = False
+        for path, fixes in grouped.items():
+            data = read(path)
+            if data is None:
+                continue
+            fixed, applied = apply_edits(data, fixes)
+            if fixed != data:
+                write(path, fixed)
+                changed = True
+                for fix in applied:
+                    rule = rule_of.get(id(fix), "?")
+                    counts[rule] = counts.get(rule, 0) + 1
+        if not changed:
+            break
+        diagnostics = lint()
+    return counts, diagnostics
+
+
+def write_file(path: str, data: bytes) -> None:
+    """Replace the file's bytes, keeping its permissions (written in place)."""
+    with open(path, "r+b") as handle:
+        handle.write(data)
+        handle.truncate()
+
+
+__all__ = [
+    "apply_edits",
+    "fix_until_stable",
+    "fixes_by_file",
+    "locate",
+    "read_bytes",
+    "unified_diff",
+    "wanted",
+    "with_located_fixes",
+    "write_file",
+]

@@ -1,0 +1,97 @@
+"""``.gitignore`` rules for folder discovery (an edge module: it uses ``pathspec``).
+
+:func:`gitignore_predicate` gives the ``ignored(path, is_folder)`` predicate that
+:func:`launch_linter.discovery.discover` accepts. Every ``.gitignore`` from the
+repository's top (the nearest folder up holding ``.git``; without one, every folder up)
+down to the path's folder applies, a deeper file overriding a shallower one, as
+git does. A folder that is ignored is not entered.
+"""
+
+from __future__ import annotations
+
+import os
+
+import pathspec
+
+MAX_GITIGNORE_BYTES = 1024 * 1024
+MAX_WALK_UP = 64
+
+
+class GitIgnore:
+    """The ``.gitignore`` files met so far, read once each."""
+
+    def __init__(self) -> None:
+        self._specs: dict[str, pathspec.GitIgnoreSpec | None] = {}
+        self._tops: dict[str, str] = {}
+
+    def _spec(self, directory: str) -> pathspec.GitIgnoreSpec | None:
+        if directory not in self._specs:
+            spec = None
+            try:
+                with open(os.path.join(directory, ".gitignore"), "rb") as handle:
+                    data = handle.read(MAX_GITIGNORE_BYTES)
+                lines = data.decode("utf-8", "replace").splitlines()
+                spec = pathspec.GitIgnoreSpec.from_lines(lines)
+            except (OSError, ValueError):
+                spec = None  # no .gitignore, or one pathspec cannot read: nothing ignored
+            self._specs[directory] = spec
+        return self._specs[directory]
+
+    def _top(self, directory: str) -> str:
+        """The repository's top folder above ``directory`` (or ``directory`` itself)."""
+        if directory in self._tops:
+            return self._tops[directory]
+        current = directory
+        top = ""  # no repository: every .gitignore up the folders applies
+        for _ in range(MAX_WALK_UP):
+            if os.path.exists(os.path.join(current, ".git")):
+                top = current
+                break
+            parent = os.path.dirname(current)
+            if parent == current:
+                break
+            current = parent
+        self._tops[directory] = top
+        return top
+
+    def ignored(self, path: str, is_folder: bool) -> bool:
+        path = os.path.abspath(path)
+        directory = os.path.dirname(path)
+        top = self._top(directory)
+        chain: list[str] = []
+        current = directory
+        for _ in range(MAX_WALK_UP):
+            chain.append(current)
+            if current == top:
+                break
+            parent = os.path.dirname(current)
+            if parent == current:
+                break
+            current = parent
+        verdict = False
+        for folder in reversed(chain):  # the top first: deeper files override
+            spec = self._spec(folder)
+            if spec is None:
+                continue
+            relative = os.path.relpath(path, folder).replace(os.sep, "/")
+            if is_folder:
+                relative += "/"
+            result = _check(spec, relative)
+            if result is not None:
+                verdict = result
+        return verdict
+
+
+def _check(spec: pathspec.GitIgnoreSpec, relative: str) -> bool | None:
+    """True (ignored), False (re-included by a ``!`` pattern) or None (no pattern)."""
+    check_file = getattr(spec, "check_file", None)
+    if check_file is not None:
+        result = check_file(relative)
+        include = getattr(result, "include", None)
+        return None if include is None else bool(include)
+    return True if spec.match_file(relative) else None
+
+
+def gitignore_predicate() -> GitIgnore:
+    """A fresh set of ``.gitignore`` rules; pass its ``ignored`` method to discovery."""
+    return GitIgnore()
