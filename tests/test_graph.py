@@ -221,3 +221,23 @@ def test_the_legend_shows_only_what_the_picture_has(
     assert main(["graph", "--beliefs", "none", str(flagged)]) == 0
     dot = capsys.readouterr().out
     assert "red: errors or warnings" in dot and "dashed:" not in dot
+
+
+WS = Path(__file__).resolve().parent / "fixtures" / "robot_ws"
+
+
+def test_whole_tree_of_a_workspace_folder(capsys: pytest.CaptureFixture[str]) -> None:
+    """URDF joints in blue with their joint in the label, movable ones dashed, findings red."""
+    launch = WS / "src" / "demo_bringup" / "launch" / "robot.launch"
+    assert main(["graph", "--beliefs", "none", "--package-path", str(WS), str(launch)]) == 0
+    dot = capsys.readouterr().out
+    lines = dot.splitlines()
+    wheel = next(line for line in lines if "left_wheel_joint" in line)
+    assert "style=dashed" in wheel and "#1565c0" in wheel
+    base = next(line for line in lines if "URDF fixed joint base_joint" in line)
+    assert "style=dashed" not in base and "#1565c0" in base
+    laser = next(line for line in lines if "laser_tf" in line)
+    assert "#c62828" in laser and "multiple_parents" in laser
+    assert main(["graph", "--beliefs", "none", "--package-path", str(WS),
+                 str(WS / "src" / "demo_bringup")]) == 0
+    assert "URDF fixed joint base_joint" in capsys.readouterr().out

@@ -14,7 +14,7 @@ from types import ModuleType
 
 from launch_linter import __version__
 from launch_linter.commands import check, explain, rules, transforms
-from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError
+from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError, check_numbers
 
 CORE_COMMANDS = (check, transforms, rules, explain)
 
@@ -61,6 +61,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_USAGE
     handler: Callable[[argparse.Namespace], int] = ns.handler
     try:
+        check_numbers(vars(ns))
         return handler(ns)
     except UsageError as exc:
         sys.stderr.write(f"launch-linter: error: {exc}\n")

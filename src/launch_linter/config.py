@@ -12,12 +12,14 @@ from __future__ import annotations
 
 import difflib
 import importlib
+import math
 import os
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.model.diagnostic import Severity
+from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules import RULES, RULES_BY_ID
 from launch_linter.suppressions import PathIgnore
 from launch_linter.toml_fallback import NoTomlParser, loads_without_parser
@@ -140,8 +142,9 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         values["severity"] = _severities(_table(data["severity"], f"{path}: 'severity'"), path)
     if "min-z" in data:
         z = data["min-z"]
-        if isinstance(z, bool) or not isinstance(z, (int, float)):
-            raise ConfigError(f"{path}: 'min-z' must be a number")
+        if isinstance(z, bool) or not isinstance(z, (int, float)) or not math.isfinite(z) \
+                or abs(z) > 1e6:
+            raise ConfigError(f"{path}: 'min-z' must be a number, finite, not {z!r}")
         values["min_z"] = float(z)
     if "beliefs" in data:
         beliefs = data["beliefs"]
@@ -210,8 +213,7 @@ def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
 
 def _read_toml(path: str) -> dict[str, Any]:
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_CONFIG_BYTES + 1)
+        data = read_regular_file(path, MAX_CONFIG_BYTES + 1)
     except OSError as exc:
         raise ConfigError(f"cannot read configuration file {path}: {exc.strerror or exc}") from None
     if len(data) > MAX_CONFIG_BYTES:
@@ -230,6 +232,8 @@ def _read_toml(path: str) -> dict[str, Any]:
         document: dict[str, Any] = parser.loads(text)
     except parser.TOMLDecodeError as exc:
         raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+    except RecursionError:
+        raise ConfigError(f"{path}: nested too deeply") from None
     return document
 
 

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 from collections.abc import Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from typing import List, Tuple
 
@@ -17,10 +19,12 @@ from launch_linter.discovery import (
 )
 from launch_linter.fix import with_located_fixes
 from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.model.diagnostic import Diagnostic, Severity
-from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
+from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import (
     PackageIndex,
@@ -81,6 +85,11 @@ class LintResult:
     def transforms(self) -> tuple[StaticTransform, ...]:
         return tuple(t for tree in self.trees for t in tree.transforms)
 
+    @property
+    def joints(self) -> tuple[tuple[str, RobotJoint], ...]:
+        """(root, joint) for every URDF joint a tree's robot_state_publisher publishes."""
+        return tuple((tree.root, j) for tree in self.trees for j in tree.joints)
+
 
 def _display_function(item: InputFile) -> object:
     relative = not os.path.isabs(item.display)
@@ -129,7 +138,8 @@ def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None
 
 
 def load_options_for(
-    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
+    robots: RobotCache | None = None,
 ) -> LoadOptions:
     roots = (
         tuple(options.package_paths)
@@ -144,6 +154,7 @@ def load_options_for(
         packages=cache[roots],
         display_path=_display_function(item),  # type: ignore[arg-type]
         ros_version=ros_version_for(item.path, options, {}),
+        robots=robots,
     )
 
 
@@ -188,15 +199,59 @@ def finish_diagnostics(
 Linted = Tuple[LaunchTree, FileRecord, List[Diagnostic]]
 
 
+REPORT_HINT = "please report it, with the file, at the project's issue tracker"
+
+
+def internal_error_tree(item: InputFile, what: str, line: int = 1) -> LaunchTree:
+    """The tree of a file the linter failed on: its status and one problem saying so."""
+    message = f"internal error while linting this file ({what}); {REPORT_HINT}"
+    problem = Problem("parse_error", item.display, line, 1, message[:MAX_INTERNAL_MESSAGE])
+    return LaunchTree(item.display, FileStatus.INTERNAL_ERROR, (), (problem,), (item.display,))
+
+
+def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
+    """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
+    tree = internal_error_tree(item, what, line)
+    rule = RULES_BY_ID["parse_error"]
+    found = [Diagnostic(p.rule, rule.category, rule.severity, p.path, p.line, p.column,
+                        p.message) for p in tree.problems]
+    return tree, _file_record(item, tree), found
+
+
+MAX_INTERNAL_MESSAGE = 500
+
+
+def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
+              cache: dict[tuple[str, ...], PackageIndex],
+              robots: RobotCache | None = None) -> Linted:
+    """One file, isolated: an unexpected exception costs this file only."""
+    try:
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
+        return tree, _file_record(item, tree), check_tree(tree, rules, options)
+    except (KeyboardInterrupt, SystemExit):
+        raise
+    except BaseException as exc:  # one bad file never loses a run
+        return _internal_error(item, f"{type(exc).__name__}: {exc}", _line_of(exc, item.path))
+
+
+def _line_of(exc: BaseException, path: str) -> int:
+    """The line of ``path`` being worked on when ``exc`` was raised, if the trace says."""
+    trace = exc.__traceback__
+    line = 1
+    while trace is not None:
+        if trace.tb_frame.f_code.co_filename == path:
+            line = trace.tb_lineno
+        trace = trace.tb_next
+    return line
+
+
 def _lint_chunk(
     items: Sequence[InputFile], options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
 ) -> list[Linted]:
     rules = selected_rules(options)
-    out: list[Linted] = []
-    for item in items:
-        tree = load_tree(item.path, load_options_for(item, options, cache))
-        out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
-    return out
+    # One cache per chunk: a description included by many launch files is expanded once.
+    robots = RobotCache()
+    return [_lint_one(item, options, rules, cache, robots) for item in items]
 
 
 _worker_packages: dict[tuple[str, ...], PackageIndex] = {}
@@ -208,13 +263,47 @@ def _lint_chunk_in_worker(items: Sequence[InputFile], options: LintOptions) -> l
 
 
 def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Linted]:
-    # Several chunks per worker balance uneven files; map() keeps the input order, so the
-    # result is the serial one.
+    # Several chunks per worker balance uneven files; results are put back in input order,
+    # so the result is the serial one.
     size = max(1, -(-len(inputs) // (options.jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
+    results: list[list[Linted] | None] = [None] * len(chunks)
     with ProcessPoolExecutor(max_workers=min(options.jobs, len(chunks))) as pool:
-        done = pool.map(_lint_chunk_in_worker, chunks, [options] * len(chunks))
-        return [linted for chunk in done for linted in chunk]
+        futures = [pool.submit(_lint_chunk_in_worker, chunk, options) for chunk in chunks]
+        for index, future in enumerate(futures):
+            with contextlib.suppress(BrokenProcessPool):
+                results[index] = future.result()
+    # A worker that died (killed, out of memory, a crash in C code) breaks the pool and
+    # takes the unfinished chunks with it: their files are tried again one by one.
+    lost = [item for index, chunk in enumerate(chunks) if results[index] is None
+            for item in chunk]
+    retried = _lint_alone(lost, options) if lost else {}
+    out: list[Linted] = []
+    for index, chunk in enumerate(chunks):
+        result = results[index]
+        out.extend(result if result is not None else [retried[item.path] for item in chunk])
+    return out
+
+
+def _lint_alone(items: Sequence[InputFile], options: LintOptions) -> dict[str, Linted]:
+    """Each file in a one-worker pool, in order, so that the file being linted when the
+    worker dies is the one that killed it: it is reported, the files after it go on."""
+    out: dict[str, Linted] = {}
+    remaining = list(items)
+    while remaining:
+        again: list[InputFile] = []
+        with ProcessPoolExecutor(max_workers=1) as pool:
+            futures = [pool.submit(_lint_chunk_in_worker, [item], options) for item in remaining]
+            for position, item in enumerate(remaining):
+                future = futures[position]
+                try:
+                    out[item.path] = future.result()[0]
+                except BrokenProcessPool:
+                    out[item.path] = _internal_error(item, "the worker process linting it died")
+                    again = remaining[position + 1:]
+                    break
+        remaining = again
+    return out
 
 
 def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:

@@ -129,3 +129,26 @@ def test_one_report_per_later_transform_with_a_new_parent(edges: list[tuple[int,
         if any(c2 == c and p2 != p for p2, c2 in edges[:i])
     ]
     assert [d.line for d in found] == expected
+
+
+def test_urdf_joint_and_included_launch_file() -> None:
+    from robot_ws import ws_lint
+
+    (found,) = ws_lint("demo_bringup/launch/robot.launch", RULE)
+    assert found.path.endswith("sensors.launch")
+    assert "URDF joint 'laser_joint'" in found.message
+    assert found.related[0].path.endswith("common.xacro")
+
+
+def test_urdf_part_switched_off_by_an_arg() -> None:
+    from robot_ws import ws_lint
+
+    assert ws_lint("demo_bringup/launch/robot.launch", RULE, {"lidar": "false"}) == ()
+
+
+def test_description_without_state_publisher_is_not_published() -> None:
+    from robot_ws import ws_lint
+
+    assert ws_lint("demo_description/launch/upload.launch", RULE) == ()
+    (found,) = ws_lint("demo_description/launch/plain.launch", RULE)
+    assert "URDF joint 'gps_joint'" in found.message

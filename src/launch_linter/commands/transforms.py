@@ -16,7 +16,9 @@ from launch_linter.report import json_report, text
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    transforms = subparsers.add_parser("transforms", help="print every static transform found")
+    transforms = subparsers.add_parser(
+        "transforms", help="print every static transform and URDF edge found"
+    )
     add_resolution_options(transforms)
     transforms.add_argument("--format", choices=("text", "json"), default="text")
     transforms.set_defaults(handler=run)
@@ -30,4 +32,6 @@ def run(ns: argparse.Namespace) -> int:
     else:
         for transform in result.transforms:
             sys.stdout.write(text.format_transform(transform) + "\n")
+        for _, joint in result.joints:
+            sys.stdout.write(text.format_joint(joint) + "\n")
     return EXIT_OK

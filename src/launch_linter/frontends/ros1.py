@@ -18,9 +18,21 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
 from launch_linter.decode import decode_ros1, is_number
+from launch_linter.frontends.robot.describe import RobotCache
+from launch_linter.frontends.robot.sources import (
+    DESCRIPTION_PARAM,
+    FRAME_NODE_PACKAGES,
+    FRAME_PARAMS,
+    from_ros1_param,
+    is_description_name,
+    params_from_yaml,
+    with_node_params,
+)
 from launch_linter.frontends.tokens import split_args
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     ALWAYS,
     DECODED_FIELDS,
@@ -80,6 +92,8 @@ class LoadOptions:
     display_path: Callable[[str], str] = relative_to_cwd
     ros_version: int | None = None
     """1 or 2 to read an XML root file as that ROS's launch XML; None: by its content."""
+    robots: RobotCache | None = None
+    """Robot descriptions expanded in this run (None: a new cache per tree)."""
 
 
 class _AnonNames:
@@ -190,6 +204,10 @@ class Ros1Loader:
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
+        self.descriptions: list[DescriptionSource] = []
+        self.nodes: list[NodeRecord] = []
+        self.node_params: list[tuple[str, str]] = []
+        """Frame parameters set beside a node (``NODE/param``): full name, value."""
         self.anon = _AnonNames()
         self.root_display = ""
         self.node_names: dict[str, tuple[str, Element]] = {}
@@ -198,6 +216,9 @@ class Ros1Loader:
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
         """The element whose attribute is being resolved (for errors found meanwhile)."""
+        self.budget = Budget()
+        self._path = ""
+        """The file being walked (where the budget ran out, if it does)."""
 
     # -- diagnostics -------------------------------------------------------------------
     def _report(
@@ -233,13 +254,18 @@ class Ros1Loader:
         if root is None:
             return self._tree(FileStatus.PARSE_ERROR)
         context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
-        self._launch_conditions(root, context)
+        self._path = absolute
         try:
+            self._launch_conditions(root, context)
             self._walk(root.children, context)
         except RecursionError:
             # MAX_NESTING keeps real files far from this; it is the last line of defence.
             self._report("unresolved", absolute, root,
                          "launch tree nested too deeply to follow; the rest is not read")
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._path, self._element or root,
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
@@ -251,6 +277,8 @@ class Ros1Loader:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
+            descriptions=tuple(self.descriptions),
+            nodes=tuple(with_node_params(self.nodes, self.node_params)),
         )
 
     def _command_line_args(self) -> dict[str, Value]:
@@ -353,6 +381,7 @@ class Ros1Loader:
             anon=lambda anon_id: self.anon.make(anon, anon_id),
             filename=filename,
             missing_arg=missing,
+            budget=self.budget,
         )
 
     def _resolve_text(self, text: str, element: Element, label: str, context: _Context,
@@ -446,7 +475,10 @@ class Ros1Loader:
 
     # -- tags --------------------------------------------------------------------------
     def _walk(self, elements: list[Element], context: _Context) -> None:
+        step = self.budget.step
         for element in elements:
+            step()
+            self._element = element
             tag = element.tag
             if tag == "node":
                 self._node(element, context)
@@ -589,18 +621,21 @@ class Ros1Loader:
     def _param(self, element: Element, context: _Context,
                anon: dict[str, str] | None = None) -> None:
         attrib = element.attrib
-        if ("if" in attrib or "unless" in attrib) and self._condition(
-            element, context, anon
-        ) is None:
-            return
+        condition = ALWAYS
+        if "if" in attrib or "unless" in attrib:
+            found = self._condition(element, context, anon)
+            if found is None:
+                return
+            condition = found
         written = self._resolve(element, "value", context, anon)
         count = int(written is not None)
+        sources: dict[str, Value] = {}
         for key in ("textfile", "binfile", "command"):
             text = attrib.get(key)
             if text is not None:
                 count += 1
-                if "$" in text:
-                    self._substitute(text, element, key, context, anon)
+                sources[key] = (self._substitute(text, element, key, context, anon)
+                                if "$" in text else (text,))
         if count != 1:
             self._error(context, element,
                         "<param> tag must have one and only one of value/textfile/binfile.")
@@ -608,8 +643,20 @@ class Ros1Loader:
         if name_text is None:
             self._error(context, element, "<param> tag is missing required attribute: 'name'")
             return
-        if "$" in name_text:
-            self._substitute(name_text.strip(), element, "name", context, anon)
+        name_value = ((name_text.strip(),) if "$" not in name_text
+                      else self._substitute(name_text.strip(), element, "name", context, anon))
+        if DESCRIPTION_PARAM in name_text and is_description_name(resolved_text(name_value)):
+            if written is not None:
+                sources["value"] = written
+            self._description(element, context, _conjoin(context.condition, condition), sources)
+        elif "/" in name_text and name_text.rsplit("/", 1)[-1] in FRAME_PARAMS and anon is None:
+            # ``<param name="hector_mapping/pub_map_odom_transform" .../>`` beside the node.
+            full = resolved_text(name_value)
+            text = None if written is None else resolved_text(written)
+            if full is not None:
+                always = _conjoin(context.condition, condition).always
+                self.node_params.append((full, text if text is not None and always
+                                         else UNKNOWN_VALUE))
         param_type = attrib.get("type")
         if written is not None and param_type is not None:
             value = resolved_text(written)
@@ -617,6 +664,35 @@ class Ros1Loader:
                        else _param_value_problem(value.strip(), param_type or "auto"))
             if problem is not None:
                 self._error(context, element, f"Invalid <param> tag: {problem}")
+
+    def _description(self, element: Element, context: _Context, condition: Condition,
+                     values: dict[str, Value]) -> None:
+        source = from_ros1_param(values, self._display(context.filename), element.line,
+                                 element.column, condition, os.path.dirname(context.filename))
+        if source is not None:
+            self.descriptions.append(source)
+
+    def _frame_node(self, element: Element, context: _Context, condition: Condition,
+                    name: str | None, package: str, executable: str) -> None:
+        """Keep a node that publishes tf or owns a frame, with its frame params."""
+        params: list[tuple[str, str]] = []
+        for sub in element.children:
+            if sub.tag == "param":
+                key, value = sub.attrib.get("name"), sub.attrib.get("value")
+                if not key or value is None or key.rsplit("/", 1)[-1] not in FRAME_PARAMS:
+                    continue
+                known: str | None = value
+                if "$" in value:
+                    # Anonymous names are left alone: resolving one here would renumber.
+                    known = None if "$(anon" in value else resolved_text(self._resolve_text(
+                        value, sub, "value", context, dict(context.anon)))
+                params.append((key, UNKNOWN_VALUE if known is None else known))
+            elif sub.tag == "rosparam" and sub.text:
+                params.extend(params_from_yaml(sub.text))
+        self.nodes.append(NodeRecord(
+            self._display(context.filename), element.line, element.column, package,
+            executable, name, tuple(params), _conjoin(context.condition, condition),
+        ))
 
     def _rosparam(self, element: Element, context: _Context,
                   anon: dict[str, str] | None = None) -> None:
@@ -753,6 +829,8 @@ class Ros1Loader:
             ns = _COLLAPSE_SLASHES.sub("/", ns)
         if not is_test and name_text and not ns_unresolved:
             self._register_name(element, context, name_text, ns)
+        if package_text in FRAME_NODE_PACKAGES and type_text is not None:
+            self._frame_node(element, context, condition, name_text, package_text, type_text)
         if is_test or package is None or node_type is None:
             return
         if type_text is not None and type_text != STATIC_TF_TYPE:
@@ -880,15 +958,18 @@ class Ros1Loader:
             self._error(context, element,
                         f"cannot read included file {path}: {exc.strerror or exc}")
             return
+        self.budget.produce(len(data))
         root = self._parse(absolute, data)
         if root is None:
             return
+        self._path = absolute
         child.filename = absolute
         child.scope = child.side_scope = None
         child.chain = (*context.chain, absolute)
         child.included_from = (self._display(context.filename), element.line)
         self._launch_conditions(root, child)
         self._walk(root.children, child)
+        self._path = context.filename
         if not pass_all:
             unused = [name for name in args_passed if name not in child.arg_names]
             if unused:
@@ -904,6 +985,10 @@ class Ros1Loader:
         ]
         for candidate in candidates:
             if os.path.isfile(candidate):
+                return os.path.abspath(candidate)
+        # A folder, device or FIFO of that name is found, so that reading it says what it is.
+        for candidate in candidates:
+            if os.path.exists(candidate):
                 return os.path.abspath(candidate)
         return None
 

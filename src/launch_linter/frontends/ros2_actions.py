@@ -107,6 +107,9 @@ class RunNode:
     pushed_namespace: bool = True
     """False for ``ros2 run`` in an executable action: launch_ros's pushed namespace
     applies to ``Node`` actions only."""
+    parameters: tuple[Params | ParamsUnknown, ...] = ()
+    """Kept for the nodes that tf rules need (robot_state_publisher's description,
+    localization and odometry frame parameters)."""
 
 
 def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:

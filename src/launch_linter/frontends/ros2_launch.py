@@ -22,6 +22,13 @@ import shlex
 from dataclasses import dataclass, field
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.robot.sources import (
+    FRAME_NODE_PACKAGES,
+    FRAME_PARAMS,
+    from_file_value,
+    from_ros2_value,
+    is_description_name,
+)
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
     Action,
@@ -44,8 +51,10 @@ from launch_linter.frontends.ros2_actions import (
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     DECODED_FIELDS,
     ArgForm,
@@ -56,6 +65,7 @@ from launch_linter.model.transform import (
     StaticTransform,
 )
 from launch_linter.resolve.ros2_substitution import (
+    Call,
     Ros2Scope,
     Subs,
     SubstitutionError,
@@ -140,7 +150,12 @@ class Ros2Loader:
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
+        self.descriptions: list[DescriptionSource] = []
+        self.nodes: list[NodeRecord] = []
         self.budget = _Budget()
+        self.work = Budget()
+        self._where: Where | None = None
+        """The action being run (where the work budget ran out, if it does)."""
         self.root_display = ""
 
     # -- diagnostics -------------------------------------------------------------------
@@ -165,15 +180,20 @@ class Ros2Loader:
                 self._report("parse_error", Where(absolute, 1, 1),
                              f"cannot read file: {exc.strerror or exc}")
                 return self._tree(FileStatus.UNREADABLE)
-        read = self._read_file(absolute, data)
-        if read.actions is None:
-            return self._tree(FileStatus.PARSE_ERROR)
-        configs: dict[str, Value] = {
-            name: (value,) if value else () for name, value in self.options.args.items()
-        }
-        scope = _Scope(configs, dict(self.options.env), Condition())
-        frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition())
-        self._run(read.actions, scope, frame)
+        try:
+            read = self._read_file(absolute, data)
+            if read.actions is None:
+                return self._tree(FileStatus.PARSE_ERROR)
+            configs: dict[str, Value] = {
+                name: (value,) if value else () for name, value in self.options.args.items()
+            }
+            scope = _Scope(configs, dict(self.options.env), Condition())
+            frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition())
+            self._run(read.actions, scope, frame)
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._where or Where(absolute, 1, 1),
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
@@ -185,6 +205,8 @@ class Ros2Loader:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
+            descriptions=tuple(self.descriptions),
+            nodes=tuple(self.nodes),
         )
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:
@@ -192,7 +214,7 @@ class Ros2Loader:
         if display not in self.files:
             self.files.append(display)
         if absolute.endswith(".py"):
-            read = read_python(absolute, data)
+            read = read_python(absolute, data, self.work)
         elif absolute.endswith((".yaml", ".yml")):
             read = read_yaml(absolute, data)
         else:
@@ -214,7 +236,7 @@ class Ros2Loader:
             return anon[name]
 
         return Ros2Scope(scope.configs, scope.env, self.options.packages.find, anonymous,
-                         frame.filename)
+                         frame.filename, self.work)
 
     def _resolve(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> Value:
         try:
@@ -253,7 +275,10 @@ class Ros2Loader:
     # -- actions -----------------------------------------------------------------------
     def _run(self, actions: tuple[Action, ...] | list[Action], scope: _Scope, frame: _Frame
              ) -> None:
+        step = self.work.step
         for action in actions:
+            step()
+            self._where = action.where
             self.budget.actions += 1
             if self.budget.actions > MAX_ACTIONS_PER_TREE:
                 self._report("roslaunch_error", action.where,
@@ -408,6 +433,7 @@ class Ros2Loader:
             self._report("roslaunch_error", action.where,
                          f"cannot read included file {path}: {exc.strerror or exc}")
             return
+        self.work.produce(len(data))
         read = self._read_file(absolute, data)
         if read.actions is None:
             return
@@ -439,6 +465,9 @@ class Ros2Loader:
             return
         package = self._resolve(action.package, scope, frame, action.where)
         executable = self._resolve(action.executable, scope, frame, action.where)
+        package_text = resolved_text(package)
+        if package_text in FRAME_NODE_PACKAGES:
+            self._frame_node(action, scope, frame, package_text, resolved_text(executable))
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return
@@ -453,6 +482,50 @@ class Ros2Loader:
         self._emit(action.where, scope, frame, package, executable, action.name,
                    action.namespace, decoded, values, action.args_written, action.unknown,
                    pushed_namespace=action.pushed_namespace)
+
+    def _frame_node(self, action: RunNode, scope: _Scope, frame: _Frame, package: str,
+                    executable: str | None) -> None:
+        """Keep a node that tf rules need, with its frame parameters and, for
+        robot_state_publisher, its ``robot_description``."""
+        where = action.where
+        name_value = (None if action.name is None
+                      else self._resolve(action.name, scope, frame, where))
+        name = None if name_value is None else resolved_text(name_value)
+        params: list[tuple[str, str]] = []
+        for group in action.parameters:
+            if not isinstance(group, Params):
+                continue
+            for key, subs in group.items:
+                short = key.rsplit(".", 1)[-1]
+                if is_description_name(short):
+                    self._ros2_description(subs, scope, frame, where, name)
+                elif short in FRAME_PARAMS:
+                    text = resolved_text(self._resolve(subs, scope, frame, where))
+                    params.append((short, UNKNOWN_VALUE if text is None else text))
+        self.nodes.append(NodeRecord(
+            self._display(frame.filename), where.line, where.column, package,
+            executable or "", name, tuple(params), frame.condition,
+        ))
+
+    def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
+                          node: str | None) -> None:
+        command = None
+        for sub in subs:
+            if isinstance(sub, Call) and sub.name == "command" and sub.args:
+                command = self._resolve(sub.args[0], scope, frame, where)
+                break
+            if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
+                # open(path).read() or $(file-content path): a URDF file read as it is.
+                path = self._resolve(sub.args[0], scope, frame, where)
+                self.descriptions.append(from_file_value(
+                    path, self._display(frame.filename), where.line, where.column,
+                    frame.condition, node, os.path.dirname(frame.filename)))
+                return
+        value = self._resolve(subs, scope, frame, where) if command is None else ()
+        source = from_ros2_value(value, command, self._display(frame.filename), where.line,
+                                 where.column, frame.condition, node)
+        if source is not None:
+            self.descriptions.append(source)
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)
@@ -595,6 +668,10 @@ def _locate(path: str, including_file: str) -> str | None:
     ]
     for candidate in candidates:
         if os.path.isfile(candidate):
+            return os.path.abspath(candidate)
+    # A folder, device or FIFO of that name is found, so that reading it says what it is.
+    for candidate in candidates:
+        if os.path.exists(candidate):
             return os.path.abspath(candidate)
     return None
 

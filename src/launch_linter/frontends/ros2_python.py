@@ -54,6 +54,7 @@ from launch_linter.frontends.ros2_actions import (
     Where,
     ros2_run,
 )
+from launch_linter.model.budget import Budget
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
 from launch_linter.resolve.safe_eval import subscript_index
@@ -98,6 +99,14 @@ class SubsVal:
     """A launch substitution object (or a list of them): evaluated only when it runs."""
 
     subs: Subs
+
+
+@dataclass(frozen=True)
+class OpenFile:
+    """``open(path)``: nothing is opened; ``.read()`` gives the file's text as the
+    ``file-content`` substitution (a robot description read from a URDF file)."""
+
+    path: Subs
 
 
 @dataclass(frozen=True)
@@ -191,7 +200,7 @@ class ConfigsVal:
 
 
 BUILTINS = ("str", "int", "float", "bool", "len", "list", "tuple", "dict", "range", "print",
-            "sorted", "enumerate", "zip", "min", "max", "abs", "round")
+            "sorted", "enumerate", "zip", "min", "max", "abs", "round", "open")
 
 
 def _starts_actions(node: ast.AST) -> bool:
@@ -365,6 +374,12 @@ class Interpreter:
             self.run_block(node.orelse, env)
             self.run_block(node.finalbody, env)
         elif isinstance(node, ast.With):
+            for item in node.items:
+                # ``with open(path) as f``: f.read() is the file's text, read by nobody.
+                if isinstance(item.optional_vars, ast.Name):
+                    value = self.eval(item.context_expr, env)
+                    if isinstance(value, OpenFile):
+                        env.vars[item.optional_vars.id] = value
             self.run_block(node.body, env)
         elif isinstance(node, ast.Break):
             raise _Break
@@ -601,7 +616,8 @@ class Interpreter:
             return base
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
-        if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal)):
+        if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,
+                             OpenFile)):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"
@@ -847,6 +863,8 @@ class Interpreter:
     def builtin(self, name: str, args: list[object], node: ast.Call) -> object:
         if name == "print":
             return None
+        if name == "open" and args and isinstance(args[0], (str, LazyStr)):
+            return OpenFile(self.subs(args[0], node, "file name"))
         if any(isinstance(a, Unknown) for a in args):
             return next(a for a in args if isinstance(a, Unknown))
         if name == "str" and len(args) == 1:
@@ -900,6 +918,8 @@ class Interpreter:
     def method(self, method: BoundMethod, args: list[object], kwargs: dict[str, object],
                node: ast.Call) -> object:
         target, name = method.target, method.name
+        if isinstance(target, OpenFile) and name == "read" and not args:
+            return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, list):
             if name == "append" and len(args) == 1:
                 self.extend(target, [args[0]])
@@ -1178,6 +1198,7 @@ class Interpreter:
             arguments=items,
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
+            parameters=self.parameters(pick("parameters"), node),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
@@ -1530,13 +1551,14 @@ def _comments(data: bytes) -> tuple[tuple[int, str], ...]:
     return tuple(found)
 
 
-def read_python(path: str, data: bytes) -> FileRead:
+def read_python(path: str, data: bytes, budget: Budget | None = None) -> FileRead:
     """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes)."""
     if len(data) > MAX_BYTES:
         message = f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
     try:
-        source = data.decode("utf-8")
+        # A byte order mark is allowed, as Python itself allows it.
+        source = data.decode("utf-8-sig")
         tree = ast.parse(source, filename=path)
     except UnicodeDecodeError as exc:
         message = f"not UTF-8 text: {exc.reason}"
@@ -1551,6 +1573,10 @@ def read_python(path: str, data: bytes) -> FileRead:
     lines = sorted({n.lineno for n in ast.walk(tree) if isinstance(n, (ast.stmt, ast.Call))})
     interpreter = Interpreter(path, source)
     actions = _launch_description(interpreter, tree)
+    if budget is not None:
+        # The interpreter's own step limit bounds one file; the root file's budget bounds
+        # a file included many times.
+        budget.step(interpreter.steps)
     return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
 
 

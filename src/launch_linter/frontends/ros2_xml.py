@@ -197,6 +197,7 @@ class _Reader:
             namespace=self.subs(entity, "namespace"),
             arguments=arguments,
             args_written=entity.attrs.get("args", ""),
+            parameters=self.params(entity.lists.get("param", [])),
         )
 
     def executable(self, entity: Entity, where: Where, condition: Predicate | None

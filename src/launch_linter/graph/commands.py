@@ -93,6 +93,6 @@ def run(ns: argparse.Namespace) -> int:
         except OSError as exc:
             raise UsageError(f"cannot write {output}: {exc.strerror or exc}") from None
     sys.stderr.write(
-        f"wrote {output}: {len(graph.edges)} static transform(s), {len(graph.frames)} frame(s)\n"
+        f"wrote {output}: {len(graph.edges)} edge(s), {len(graph.frames)} frame(s)\n"
     )
     return EXIT_OK

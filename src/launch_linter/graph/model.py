@@ -1,4 +1,5 @@
-"""The transform tree as a graph: frames are vertices, static transforms are edges.
+"""The transform tree as a graph: frames are vertices, static transforms and the URDF joints
+that a tree's robot_state_publisher publishes are edges.
 
 A transform defines its child frame (each frame has one parent in tf), so a diagnostic at
 a transform marks its edge and its child frame. Only errors and warnings mark; ``info``
@@ -18,6 +19,7 @@ from dataclasses import dataclass
 
 from launch_linter.engine import LintResult
 from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Field, RotationKind, StaticTransform
 
 MAX_NOTES = 12
@@ -42,6 +44,10 @@ class Edge:
     flagged: bool
     tooltip: str
     cluster: int = 0
+    source: str = "launch"
+    """``launch`` (a static transform) or ``urdf`` (a joint of a robot description)."""
+    dynamic: bool = False
+    """A movable URDF joint (revolute, continuous, prismatic, floating, planar)."""
 
 
 @dataclass(frozen=True)
@@ -62,6 +68,10 @@ class TfGraph:
             lines.append("red: errors or warnings at the transform")
         if any(e.conditional for e in self.edges):
             lines.append("dashed: present only under a condition")
+        if any(e.source == "urdf" for e in self.edges):
+            lines.append("blue: a URDF joint (robot_state_publisher)")
+        if any(e.dynamic for e in self.edges):
+            lines.append("dashed blue: a movable URDF joint")
         if any(not f.resolved for f in self.frames):
             lines.append("dotted: a frame the linter could not resolve")
         return tuple(lines)
@@ -130,6 +140,30 @@ def _placed_transforms(result: LintResult) -> list[tuple[int, StaticTransform]]:
     ]
 
 
+def _placed_joints(result: LintResult) -> list[tuple[int, RobotJoint]]:
+    """(cluster, joint) for each URDF joint to draw, clustered like the transforms."""
+    trees = result.trees
+    if len(trees) <= 1:
+        return [(0, j) for tree in trees for j in tree.joints]
+    return [
+        (cluster, joint)
+        for cluster, index in enumerate(entry_points(result))
+        for joint in trees[index].joints
+    ]
+
+
+def _joint_label(joint: RobotJoint, rules: list[str]) -> tuple[str, ...]:
+    lines = [f"URDF {joint.joint_type} joint {joint.name}"]
+    lines.append("xyz ?" if joint.translation is None else f"xyz {_numbers(joint.translation)}")
+    lines.append("rpy ?" if joint.rpy is None else f"rpy {_numbers(joint.rpy)}")
+    if not joint.condition.always:
+        lines.append(joint.condition.describe())
+    lines.append(f"{os.path.basename(joint.path)}:{joint.line}")
+    if rules:
+        lines.append("! " + ", ".join(rules))
+    return tuple(lines)
+
+
 def build_graph(result: LintResult) -> TfGraph:
     """The graph of every transform in ``result``, marked with its diagnostics."""
     at: dict[tuple[str, int, int], list[Diagnostic]] = {}
@@ -170,6 +204,32 @@ def build_graph(result: LintResult) -> TfGraph:
                 cluster=cluster,
             )
         )
+    for cluster, joint in _placed_joints(result):
+        drawn = (cluster, joint.path, joint.line, joint.column, joint.parent, joint.child,
+                 joint.translation, joint.rpy, joint.condition)
+        if drawn in seen:
+            continue
+        seen.add(drawn)
+        where = (joint.path, joint.line, joint.column)
+        placed.add(where)
+        found = at.get(where, [])
+        serious = [d for d in found if d.severity is not Severity.INFO]
+        rules = sorted({d.rule for d in serious})
+        prefix = f"{cluster}|" if cluster else ""
+        ends = []
+        for which, frame in (("parent", joint.parent), ("child", joint.child)):
+            key = prefix + (frame if frame is not None else f"?urdf{len(edges)}:{which}")
+            frames.setdefault(key, Frame(key, frame or "?", frame is not None, False, cluster))
+            ends.append(key)
+        if serious:
+            frames[ends[1]] = Frame(ends[1], frames[ends[1]].label, frames[ends[1]].resolved,
+                                    True, cluster)
+        edges.append(Edge(
+            parent=ends[0], child=ends[1], label=_joint_label(joint, rules),
+            conditional=not joint.condition.always, flagged=bool(serious),
+            tooltip="\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found),
+            cluster=cluster, source="urdf", dynamic=joint.dynamic,
+        ))
     unplaced = [
         d for d in result.diagnostics
         if (d.path, d.line, d.column) not in placed and d.severity is not Severity.INFO
@@ -186,8 +246,10 @@ def build_graph(result: LintResult) -> TfGraph:
         roots = f"{len(result.files)} launch files, {len(clusters)} entry point(s)"
     errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
     warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
+    urdf = sum(1 for e in edges if e.source == "urdf")
     title = (
-        f"{roots}: {len(edges)} static transform(s), {len(frames)} frame(s), "
+        f"{roots}: {len(edges) - urdf} static transform(s), {urdf} URDF joint(s), "
+        f"{len(frames)} frame(s), "
         f"{errors} error(s), {warnings} warning(s)"
     )
     return TfGraph(title, tuple(frames.values()), tuple(edges), tuple(notes), clusters)

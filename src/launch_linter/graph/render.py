@@ -9,8 +9,10 @@ from __future__ import annotations
 import json
 
 from launch_linter.graph.model import TfGraph
+from launch_linter.report.escape import printable
 
 RED = "#c62828"
+BLUE = "#1565c0"
 GREY = "#616161"
 LEFT = "\\l"
 NEWLINE = "\n"
@@ -18,9 +20,12 @@ NEWLINE = "\n"
 
 def _dot_string(text: str, line_break: str = "\\n") -> str:
     """A quoted DOT string; ``line_break`` is ``\\n`` (centred) or ``\\l`` (left)."""
-    # Backslashes first: DOT gives \N, \G, \l ... a meaning inside labels.
-    escaped = text.replace("\\", "\\\\").replace('"', '\\"')
-    return '"' + escaped.replace("\r", "").replace("\n", line_break) + '"'
+    # Control characters, NUL and lone surrogates become visible escapes first (Graphviz
+    # stops at a NUL and cannot encode a surrogate); then backslashes, which DOT gives a
+    # meaning (\N, \G, \l ...) inside labels.
+    lines = (printable(line).replace("\\", "\\\\").replace('"', '\\"')
+             for line in text.replace("\r", "").split("\n"))
+    return '"' + line_break.join(lines) + '"'
 
 
 def _ids(graph: TfGraph) -> dict[str, str]:
@@ -60,10 +65,12 @@ def to_dot(graph: TfGraph) -> str:
             lines.append("  }")
     for edge in graph.edges:
         attributes = [f"label={_dot_string(NEWLINE.join(edge.label))}"]
-        if edge.conditional:
+        if edge.conditional or edge.dynamic:
             attributes.append("style=dashed")
         if edge.flagged:
             attributes.append(f'color="{RED}", fontcolor="{RED}", penwidth=2')
+        elif edge.source == "urdf":
+            attributes.append(f'color="{BLUE}", fontcolor="{BLUE}"')
         else:
             attributes.append(f'fontcolor="{GREY}"')
         if edge.tooltip:
@@ -85,8 +92,7 @@ _MERMAID_ESCAPES = {
 
 
 def _mermaid_text(lines: tuple[str, ...] | list[str]) -> str:
-    escaped = ["".join(_MERMAID_ESCAPES.get(c, c) for c in line if c not in "\r\n")
-               for line in lines]
+    escaped = ["".join(_MERMAID_ESCAPES.get(c, c) for c in printable(line)) for line in lines]
     return '"' + "<br/>".join(escaped) + '"'
 
 
@@ -94,7 +100,7 @@ def to_mermaid(graph: TfGraph) -> str:
     """The graph as a Mermaid flowchart (renders in GitHub Markdown)."""
     ids = _ids(graph)
     # The front matter is YAML, where a JSON string is a valid double-quoted scalar.
-    lines = ["---", f"title: {json.dumps(graph.title)}", "---", "flowchart TD"]
+    lines = ["---", f"title: {json.dumps(printable(graph.title))}", "---", "flowchart TD"]
     clustered = len(graph.clusters) > 1
     for cluster in range(max(len(graph.clusters), 1)):
         if clustered:
@@ -106,13 +112,16 @@ def to_mermaid(graph: TfGraph) -> str:
         if clustered:
             lines.append("  end")
     red_links: list[int] = []
+    blue_links: list[int] = []
     for index, edge in enumerate(graph.edges):
-        arrow = "-.->" if edge.conditional else "-->"
+        arrow = "-.->" if edge.conditional or edge.dynamic else "-->"
         lines.append(
             f"  {ids[edge.parent]} {arrow}|{_mermaid_text(edge.label)}| {ids[edge.child]}"
         )
         if edge.flagged:
             red_links.append(index)
+        elif edge.source == "urdf":
+            blue_links.append(index)
     for note_index, note in enumerate(graph.notes):
         lines.append(f"  note{note_index}[{_mermaid_text([note])}]")
     lines.append(f"  classDef flagged stroke:{RED},color:{RED},stroke-width:2px")
@@ -125,6 +134,8 @@ def to_mermaid(graph: TfGraph) -> str:
         lines.append(f"  class {','.join(unresolved)} unresolved")
     if graph.notes:
         lines.append(f"  class {','.join(f'note{i}' for i in range(len(graph.notes)))} flagged")
+    if blue_links:
+        lines.append(f"  linkStyle {','.join(map(str, blue_links))} stroke:{BLUE},color:{BLUE}")
     if red_links:
         lines.append(
             f"  linkStyle {','.join(map(str, red_links))} stroke:{RED},color:{RED},stroke-width:2px"

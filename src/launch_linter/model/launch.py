@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 from launch_linter.model.diagnostic import Problem
+from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.model.transform import StaticTransform
 
 
@@ -13,6 +14,8 @@ class FileStatus(str, Enum):
     OK = "ok"
     PARSE_ERROR = "parse_error"
     UNREADABLE = "unreadable"
+    INTERNAL_ERROR = "internal_error"
+    """The linter itself failed on this file (a bug to report); the other files are fine."""
 
 
 @dataclass(frozen=True)
@@ -45,3 +48,9 @@ class LaunchTree:
     files: tuple[str, ...]
     comments: tuple[Comment, ...] = ()
     element_lines: tuple[tuple[str, int], ...] = ()
+    descriptions: tuple[DescriptionSource, ...] = ()
+    """The ``robot_description`` sources the launch files give."""
+    nodes: tuple[NodeRecord, ...] = ()
+    """Launched nodes that tf rules need (robot_state_publisher, localization, odometry)."""
+    joints: tuple[RobotJoint, ...] = ()
+    """URDF joints of the descriptions a robot_state_publisher of the tree publishes."""

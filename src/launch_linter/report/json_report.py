@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import json
+import os
 from typing import Any
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
+from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.report.escape import json_safe
 
 JSON_VERSION = 1
 
@@ -55,6 +58,44 @@ def transform_json(t: StaticTransform) -> dict[str, Any]:
         "period_ms": t.period_ms,
         "condition": "always" if t.condition.always else "unknown",
         "unresolved": list(t.unresolved_names),
+        "source": "launch",
+    }
+
+
+def _shown(path: str | None) -> str | None:
+    """A description file as paths are shown elsewhere: relative below the working folder."""
+    if path is None:
+        return None
+    relative = os.path.relpath(path)
+    return path if relative.startswith("..") else relative
+
+
+def joint_json(root: str, j: RobotJoint) -> dict[str, Any]:
+    """A URDF joint as a tf edge (an additive part of the transforms contract)."""
+    source = j.source
+    return {
+        "path": j.path,
+        "line": j.line,
+        "column": j.column,
+        "root": root,
+        "source": "urdf",
+        "name": j.name,
+        "joint_type": j.joint_type,
+        "dynamic": j.dynamic,
+        "parent": j.parent,
+        "child": j.child,
+        "translation": list(j.translation) if j.translation is not None else None,
+        "rotation": {"kind": "rpy", "values": list(j.rpy)} if j.rpy is not None else None,
+        "condition": "always" if j.condition.always else "unknown",
+        "unresolved": list(j.unresolved),
+        "description": {
+            "path": source.path,
+            "line": source.line,
+            "column": source.column,
+            "kind": source.kind.value,
+            "file": _shown(source.file),
+            "args": {name: value for name, value in source.args},
+        },
     }
 
 
@@ -63,8 +104,10 @@ def transforms_document(result: LintResult) -> dict[str, Any]:
         "version": JSON_VERSION,
         "files": _files(result),
         "transforms": [transform_json(t) for t in result.transforms],
+        "urdf_edges": [joint_json(root, j) for root, j in result.joints],
     }
 
 
 def dumps(document: dict[str, Any]) -> str:
-    return json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False, default=str)
+    return json.dumps(json_safe(document), indent=2, ensure_ascii=False, allow_nan=False,
+                      default=str)

@@ -5,6 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Tuple, Union
 
+MAX_REASON = 300
+"""Longest reason kept in a hole."""
+
 
 @dataclass(frozen=True)
 class Hole:
@@ -12,6 +15,12 @@ class Hole:
 
     text: str
     reason: str
+
+    def __post_init__(self) -> None:
+        # A reason quotes the reasons of the values it was made from: values that refer to
+        # each other would double it at each level.
+        if len(self.reason) > MAX_REASON:
+            object.__setattr__(self, "reason", self.reason[: MAX_REASON - 3] + "...")
 
 
 Part = Union[str, Hole]

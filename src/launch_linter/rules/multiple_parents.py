@@ -36,16 +36,17 @@ publishes `base_footprint -> laser`, or the two frames of one transform were swa
 ```
 
 ## Known problems
-Only static transforms are seen: a parent given by a URDF (`robot_state_publisher`) or by
-a node that publishes tf at run time is not.
+URDF joints count when a `robot_state_publisher` of the same launch tree publishes the
+description (`robot_description` from xacro, a URDF file or literal text); a parent given
+by a node that publishes tf at run time (odometry, localization) is not seen.
 """
 from __future__ import annotations
 
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.transform import StaticTransform
-from launch_linter.rules._api import Finding, RuleContext, can_coexist, finding_at, place
+from launch_linter.rules._api import MAX_LISTED, MAX_RELATED, Finding, RuleContext, summarised
+from launch_linter.rules._tree import Edge, coexist, finding_on, place, tree_edges
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
@@ -53,26 +54,34 @@ SEVERITY = Severity.ERROR
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    by_child: dict[str, list[tuple[str, StaticTransform]]] = {}
-    for transform in context.tree.transforms:
-        signature = transform.signature
-        if signature is None or signature[0] == signature[1]:
+    by_child: dict[str, list[tuple[str, Edge]]] = {}
+    for edge in tree_edges(context.tree):
+        parent, child = edge.parent, edge.child
+        if parent == child:
             continue
-        parent, child = signature
         earlier = by_child.setdefault(child, [])
-        rivals: dict[str, StaticTransform] = {}
+        rivals: dict[str, Edge] = {}
         for other_parent, other in earlier:
-            if other_parent != parent and can_coexist(other, transform):
+            if other_parent != parent and coexist(other, edge):
                 rivals.setdefault(other_parent, other)
-        earlier.append((parent, transform))
+        earlier.append((parent, edge))
         if not rivals:
             continue
-        others = " and ".join(f"'{p}' ({place(t, transform)})" for p, t in rivals.items())
-        conditional = any(not t.condition.always for t in (transform, *rivals.values()))
+        others = " and ".join(summarised(
+            [f"'{p}' ({_where(t, edge)})" for p, t in rivals.items()], MAX_LISTED))
+        conditional = any(not t.condition.always for t in (edge, *rivals.values()))
         gets = "may get" if conditional else "gets"
-        yield finding_at(transform,
-            f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' here and "
+        here = "here" if edge.joint is None else f"here (URDF joint '{edge.joint.name}')"
+        yield finding_on(
+            edge,
+            f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' {here} and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",
-            rivals.values(),
+            tuple(list(rivals.values())[:MAX_RELATED]),
         )
+
+
+def _where(edge: Edge, seen_from: Edge) -> str:
+    if edge.joint is None:
+        return place(edge, seen_from)
+    return f"URDF joint '{edge.joint.name}', {edge.location.path}:{edge.location.line}"

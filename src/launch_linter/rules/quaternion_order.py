@@ -41,7 +41,7 @@ from launch_linter.model.transform import NULL_TOLERANCE, Field, RotationKind, S
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 from launch_linter.rules._fixes import fixable, number_text, replace_words, value_index
 
-ID = "quaternion_w_first"
+ID = "quaternion_order"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
 FIX = Applicability.UNSAFE

@@ -9,7 +9,7 @@ from launch_linter.model import Diagnostic
 Lint = Callable[..., List[Tuple[str, int]]]
 LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
 
-RULE = "quaternion_w_first"
+RULE = "quaternion_order"
 NODE = """<launch>
   <node pkg="tf2_ros" type="static_transform_publisher" name="a"
         args="{}"/>

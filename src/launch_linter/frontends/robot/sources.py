@@ -1,0 +1,164 @@
+"""Robot-description sources and frame-relevant nodes, as the launch front-ends see them.
+
+The front-ends hand over resolved values (``Value``s, holes included); this module decides
+whether they give a ``robot_description`` and how (xacro command, URDF file, literal text)
+and keeps the node parameters that the frame-authority rule reads.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shlex
+from collections.abc import Sequence
+from dataclasses import replace
+
+from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
+from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
+from launch_linter.model.transform import Condition
+from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
+
+DESCRIPTION_PARAM = "robot_description"
+FRAME_NODE_PACKAGES = frozenset({
+    "robot_state_publisher", "amcl", "nav2_amcl", "slam_toolbox", "gmapping",
+    "slam_gmapping", "cartographer_ros", "hector_mapping", "robot_localization",
+    "fuse_optimizers", "rtabmap_ros", "rtabmap_slam", "diff_drive_controller",
+    "controller_manager", "husky_base", "jackal_base", "turtlebot3_bringup",
+    "turtlebot3_node", "kobuki_node", "rf2o_laser_odometry", "laser_scan_matcher",
+    "map_server", "nav2_map_server", "karto", "slam_karto", "lama_ros", "iris_lama_ros",
+})
+FRAME_PARAMS = ("world_frame", "map_frame", "odom_frame", "base_link_frame", "publish_tf",
+                "tf_broadcast", "enable_odom_tf", "publish_odom_tf", "provide_odom_frame",
+                "publish_frame_projected_to_2d", "two_d_mode", "mode", "transform_publish_period",
+                "global_frame_id", "odom_frame_id", "base_frame_id", "base_frame",
+                "pub_map_odom_transform")
+
+_PLACEHOLDER = re.compile("\x00([0-9]+)\x00")
+_YAML_LINE = re.compile(r"^\s*([A-Za-z_][\w/]*)\s*:\s*([^#\n]*?)\s*(?:#.*)?$", re.MULTILINE)
+
+
+def is_description_name(name: str | None) -> bool:
+    return name is not None and (name == DESCRIPTION_PARAM
+                                 or name.endswith("/" + DESCRIPTION_PARAM))
+
+
+def words_of(value: Value) -> list[Word]:
+    """The words of a command as the shell splits them (roslaunch uses ``shlex``), each
+    with whether it is resolved. A hole stands in as a placeholder without spaces, so
+    that the spaces of a ``$(find pkg)`` written in it do not split it."""
+    written: list[str] = []
+    pieces: list[str] = []
+    for part in value:
+        if isinstance(part, str):
+            pieces.append(part)
+        else:
+            pieces.append(f"\x00{len(written)}\x00")
+            written.append(part.text)
+    marked = "".join(pieces)
+    try:
+        split = shlex.split(marked)
+    except ValueError:
+        split = marked.split()
+    return [(_PLACEHOLDER.sub(lambda m: written[int(m.group(1))], word), "\x00" not in word)
+            for word in split]
+
+
+def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
+                    condition: Condition, directory: str) -> DescriptionSource | None:
+    """The description a ROS 1 ``<param name="robot_description" ...>`` gives."""
+    command = values.get("command")
+    if command is not None:
+        words = words_of(command)
+        if len(words) == 2 and words[0][0].rsplit("/", 1)[-1] == "cat":
+            file = words[1][0] if words[1][1] else None
+            return DescriptionSource(path, line, column, DescriptionKind.FILE,
+                                     _absolute(file, directory), condition=condition,
+                                     reason=None if file else f"{words[1][0]!r} is not resolved")
+        parsed = xacro_command(words)
+        if parsed is None:
+            return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
+                                     condition=condition,
+                                     reason=f"command {text_of(command)!r} is not a xacro call")
+        file, args, reason = parsed
+        return DescriptionSource(path, line, column, DescriptionKind.XACRO,
+                                 _absolute(file, directory), args, condition, reason=reason)
+    textfile = values.get("textfile")
+    if textfile is not None:
+        file = resolved_text(textfile)
+        return DescriptionSource(path, line, column, DescriptionKind.FILE,
+                                 _absolute(file, directory), condition=condition,
+                                 reason=None if file else _why(textfile))
+    value = values.get("value")
+    if value is not None:
+        text = resolved_text(value)
+        if text is not None and literal_kind(text):
+            return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
+                                     condition=condition, text=text)
+    return None
+
+
+def _absolute(file: str | None, directory: str) -> str | None:
+    if file is None:
+        return None
+    return file if os.path.isabs(file) else os.path.normpath(os.path.join(directory, file))
+
+
+def _why(value: Value) -> str:
+    reasons = [p.reason for p in value if isinstance(p, Hole)]
+    return "; ".join(reasons) or "unresolved"
+
+
+def params_from_yaml(text: str) -> list[tuple[str, str]]:
+    """The frame parameters set in ``<rosparam>`` text (flat ``key: value`` lines only)."""
+    found: list[tuple[str, str]] = []
+    for match in _YAML_LINE.finditer(text):
+        key = match.group(1).rsplit("/", 1)[-1]
+        if key in FRAME_PARAMS:
+            found.append((key, match.group(2).strip("'\"")))
+    return found
+
+
+def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
+                    column: int, condition: Condition, node: str | None
+                    ) -> DescriptionSource | None:
+    """The description a ROS 2 ``robot_description`` parameter gives: ``command`` is the
+    resolved text of its ``Command``/``$(command ...)`` when it has one."""
+    if command is not None:
+        parsed = xacro_command(words_of(command))
+        if parsed is None:
+            return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
+                                     condition=condition, node=node,
+                                     reason=f"command {text_of(command)!r} is not a xacro call")
+        file, args, reason = parsed
+        return DescriptionSource(path, line, column, DescriptionKind.XACRO,
+                                 _absolute(file, "/"), args, condition, node, reason=reason)
+    text = resolved_text(value)
+    if text is not None and literal_kind(text):
+        return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
+                                 condition=condition, node=node, text=text)
+    return None
+
+
+def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, str]]
+                     ) -> list[NodeRecord]:
+    """``nodes`` with the frame parameters set outside them by their private name
+    (``NODE/param``, any namespace before it); a node's own ``<param>`` comes first."""
+    if not params:
+        return list(nodes)
+    out: list[NodeRecord] = []
+    for node in nodes:
+        extra = tuple(
+            (key.rsplit("/", 1)[-1], value) for key, value in params
+            if node.name is not None and key.rstrip("/").rsplit("/", 2)[-2:-1] == [node.name]
+        )
+        out.append(replace(node, params=node.params + extra) if extra else node)
+    return out
+
+
+def from_file_value(value: Value, path: str, line: int, column: int, condition: Condition,
+                    node: str | None, directory: str) -> DescriptionSource:
+    """A description read from the URDF file that ``value`` names."""
+    file = resolved_text(value)
+    return DescriptionSource(path, line, column, DescriptionKind.FILE,
+                             _absolute(file, directory), condition=condition, node=node,
+                             reason=None if file else _why(value))

@@ -1,0 +1,112 @@
+"""URDF joints as tf edges, from a description expanded by :mod:`.xacro` (a plain URDF
+file expands to itself)."""
+
+from __future__ import annotations
+
+import math
+import typing
+
+from launch_linter.frontends.robot.xacro import ExpandedNode, XacroProblem
+from launch_linter.model.robot import DescriptionSource, RobotJoint
+from launch_linter.model.transform import Condition, ConditionLiteral
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
+
+Display = typing.Callable[[str], str]  # typing's Callable: a run-time alias (3.8)
+
+
+def _vector(node: ExpandedNode | None, name: str) -> tuple[tuple[float, float, float] | None,
+                                                            str | None]:
+    """An origin's ``xyz``/``rpy`` (0 0 0 when absent), or None and why."""
+    if node is None or name not in node.attrib:
+        return (0.0, 0.0, 0.0), None
+    if name in node.unknown:
+        return None, node.unknown[name]
+    words = node.attrib[name].split()
+    if len(words) != 3:
+        return None, f"origin {name}={node.attrib[name]!r} is not three numbers"
+    try:
+        values = tuple(float(w) for w in words)
+    except ValueError:
+        return None, f"origin {name}={node.attrib[name]!r} is not three numbers"
+    if not all(math.isfinite(v) for v in values):
+        return None, f"origin {name}={node.attrib[name]!r} is not finite"
+    return (values[0], values[1], values[2]), None
+
+
+def _first(node: ExpandedNode, tag: str) -> ExpandedNode | None:
+    for child in node.children:
+        if child.tag == tag:
+            return child
+    return None
+
+
+def _condition(marks: tuple[str, ...]) -> Condition:
+    literals = tuple(
+        ConditionLiteral("xacro:" + mark[1:], False) if mark.startswith("!")
+        else ConditionLiteral("xacro:" + mark, True)
+        for mark in marks
+    )
+    return Condition(literals)
+
+
+def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
+              outer: Condition) -> list[RobotJoint]:
+    """The joints directly under ``<robot>``, as edges of the tf tree."""
+    out: list[RobotJoint] = []
+    if root.tag != "robot":
+        return out
+    for joint in root.children:
+        if joint.tag != "joint":
+            continue
+        unresolved: list[str] = []
+        reasons: list[str] = []
+        frames: dict[str, str | None] = {}
+        for end in ("parent", "child"):
+            element = _first(joint, end)
+            if element is None or "link" not in element.attrib:
+                frames[end] = None
+                unresolved.append(end)
+                reasons.append(f"joint has no <{end} link=...>")
+            elif "link" in element.unknown:
+                frames[end] = None
+                unresolved.append(end)
+                reasons.append(element.unknown["link"])
+            else:
+                frames[end] = element.attrib["link"]
+        origin = _first(joint, "origin")
+        xyz, why_xyz = _vector(origin, "xyz")
+        rpy, why_rpy = _vector(origin, "rpy")
+        if why_xyz is not None:
+            unresolved.append("translation")
+            reasons.append(why_xyz)
+        if why_rpy is not None:
+            unresolved.append("rotation")
+            reasons.append(why_rpy)
+        out.append(RobotJoint(
+            path=display(joint.path), line=joint.line, column=joint.column,
+            name=joint.attrib.get("name", ""), joint_type=joint.attrib.get("type", ""),
+            parent=frames["parent"], child=frames["child"], translation=xyz, rpy=rpy,
+            source=source, condition=outer & _condition(joint.conditions),
+            unresolved=tuple(unresolved), reasons=tuple(reasons),
+        ))
+    return out
+
+
+def literal_root(text: str, path: str, line: int) -> tuple[ExpandedNode | None,
+                                                           list[XacroProblem]]:
+    """A URDF written in a launch file, as an expanded tree (no xacro in it)."""
+    try:
+        document = parse_xml(text.encode("utf-8"))
+    except XmlError as exc:
+        return None, [XacroProblem(path, line, f"literal robot description is not "
+                                               f"well-formed XML: {exc.message}", True)]
+
+    def convert(element: Element) -> ExpandedNode:
+        node = ExpandedNode(element.tag, path, line, 1, ())
+        node.attrib = dict(element.attrib)
+        # Only joints and their direct children matter; deeper levels are not copied.
+        if element.tag in ("robot", "joint"):
+            node.children = [convert(child) for child in element.children]
+        return node
+
+    return convert(document.root), []

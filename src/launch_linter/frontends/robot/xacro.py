@@ -1,0 +1,642 @@
+"""xacro, expanded without running anything.
+
+The real ``xacro`` evaluates ``${...}`` with Python's ``eval`` and can read any file; robot
+descriptions are untrusted input to the linter, so this expander follows xacro's in-order
+processing tag by tag but evaluates expressions with :mod:`launch_linter.resolve.safe_eval`
+and reads only the files the description includes, through the bounded XML reader.
+
+Supported: ``xacro:property`` (text and block properties, ``default``, ``scope``, lazy
+evaluation as in xacro), ``xacro:arg`` with values from the xacro call, ``$(arg)``,
+``$(find)``, ``$(env)``/``$(optenv)`` (explicit environment only), ``xacro:include``
+(relative and ``$(find)``), ``xacro:macro`` with parameters, defaults (``:=``, ``^``,
+``^|``) and block parameters (``*origin``, ``**content``), ``xacro:insert_block``,
+``xacro:if``/``xacro:unless``, ``xacro:element`` and ``xacro:attribute``.
+
+What cannot be known becomes *unknown* rather than an error: an attribute keeps a reason
+(``ExpandedNode.unknown``); a conditional whose value is unknown keeps its content, marked
+with the condition text (``ExpandedNode.conditions``). Problems are returned as
+:class:`XacroProblem` records; bounds on files, include depth, macro depth, elements made
+and total work end the expansion with a problem, never a hang.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import typing
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
+
+from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
+
+MAX_FILES = 200
+"""Most distinct files one description may read."""
+MAX_INCLUDE_DEPTH = 32
+MAX_MACRO_DEPTH = 64
+MAX_OUTPUT_ELEMENTS = 100_000
+MAX_WORK = 1_000_000
+"""Work units for one expansion: one per element visited and per substitution made."""
+MAX_TEXT = 65_536
+"""Longest attribute value an expansion may produce."""
+
+_PREFIX = "xacro:"
+# xacro's lexer: ``$${``/``$$(`` escapes, ``${expr}``, and ``$(...)`` whose words may hold
+# ``${expr}`` (evaluated first, as xacro does).
+_TOKEN = re.compile(r"\$\$[{(]|\$\{[^}]*\}|\$\((?:[^$)]|\$\{[^}]*\})*\)")
+_IDENTIFIER = re.compile(r"[A-Za-z_]\w*\Z")
+_MATH_PREFIX = re.compile(r"\bmath\.")
+_GLOB = re.compile(r"[*?\[]")
+
+
+class _Abort(Exception):
+    """A bound was reached: the expansion stops."""
+
+    def __init__(self, message: str, path: str, line: int) -> None:
+        super().__init__(message)
+        self.message = message
+        self.path = path
+        self.line = line
+
+
+class _Unknown(Exception):
+    """A value the expander cannot know statically; ``reason`` says why."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class XacroProblem:
+    """Something the expander could not follow, with where it was."""
+
+    path: str
+    line: int
+    message: str
+    fatal: bool = False
+    """True when the expansion stopped (a bound was reached or the root is unreadable)."""
+
+
+class ExpandedNode:
+    """An element of the expanded document, with where it was written."""
+
+    __slots__ = ("attrib", "children", "column", "conditions", "line", "path", "tag",
+                 "unknown")
+
+    def __init__(self, tag: str, path: str, line: int, column: int,
+                 conditions: tuple[str, ...]) -> None:
+        self.tag = tag
+        self.path = path
+        self.line = line
+        self.column = column
+        self.attrib: dict[str, str] = {}
+        self.unknown: dict[str, str] = {}
+        """Attribute name -> why its value is unknown."""
+        self.children: list[ExpandedNode] = []
+        self.conditions = conditions
+        """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
+        (``unless`` texts start with ``!``)."""
+
+
+@dataclass
+class Expansion:
+    """The result of expanding one description file with some args."""
+
+    root: ExpandedNode | None
+    problems: list[XacroProblem]
+    files: list[str]
+
+
+@dataclass
+class _Property:
+    text: str | None
+    """Unevaluated text, or None once evaluated."""
+    value: str | None
+    """Evaluated text; None while unevaluated or when unknown."""
+    reason: str | None = None
+    block: tuple[Element, str] | None = None
+    """For a block property: the ``xacro:property`` element and its file."""
+
+
+@dataclass
+class _Macro:
+    params: list[str]
+    defaults: dict[str, tuple[str | None, str | None]]
+    """param -> (forwarded name, default text)."""
+    body: Element
+    path: str
+
+
+@dataclass
+class _Block:
+    element: Element
+    path: str
+    content_only: bool
+    scope: _Table
+
+
+class _Table:
+    """A scope of properties (and, separately, macros) with a parent, like xacro's Table."""
+
+    def __init__(self, parent: _Table | None = None) -> None:
+        self.parent = parent
+        self.properties: dict[str, _Property] = {}
+        self.macros: dict[str, _Macro] = {}
+        self.blocks: dict[str, _Block] = {}
+
+    def find_property(self, name: str) -> tuple[_Table, _Property] | None:
+        table: _Table | None = self
+        while table is not None:
+            found = table.properties.get(name)
+            if found is not None:
+                return table, found
+            table = table.parent
+        return None
+
+    def find_macro(self, name: str) -> _Macro | None:
+        table: _Table | None = self
+        while table is not None:
+            found = table.macros.get(name)
+            if found is not None:
+                return found
+            table = table.parent
+        return None
+
+    def find_block(self, name: str) -> _Block | None:
+        table: _Table | None = self
+        while table is not None:
+            found = table.blocks.get(name)
+            if found is not None:
+                return found
+            table = table.parent
+        return None
+
+
+def _literal(text: str) -> str:
+    """xacro's ``_eval_literal``, written as text that the evaluator's "auto" rule reads
+    back as the same Python value (ints, floats with a dot, booleans, strings)."""
+    if len(text) >= 2 and text[0] == "'" and text[-1] == "'":
+        return text[1:-1]
+    if "_" in text:
+        return text
+    try:
+        return str(int(text))
+    except ValueError:
+        pass
+    try:
+        number = float(text)
+    except ValueError:
+        return text
+    shown = repr(number)
+    return shown if "." in shown else text
+
+
+class _Symbols(typing.Mapping[str, typing.Optional[str]]):
+    """The properties visible from a table, evaluated on demand, as the evaluator's args."""
+
+    def __init__(self, expander: XacroExpander, table: _Table) -> None:
+        self._expander = expander
+        self._table = table
+
+    def __contains__(self, name: object) -> bool:
+        return isinstance(name, str) and self._table.find_property(name) is not None
+
+    def __getitem__(self, name: str) -> str | None:
+        found = self._table.find_property(name)
+        if found is None:
+            raise KeyError(name)
+        value = self._expander.property_value(name, found[0], found[1])
+        return None if value is None else _literal(value)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(())
+
+    def __len__(self) -> int:
+        return 0
+
+
+class XacroExpander:
+    """Expands one description file; make a new one per (file, args)."""
+
+    def __init__(
+        self,
+        args: Mapping[str, str | None],
+        find: Callable[[str], str | None],
+        env: Mapping[str, str] | None = None,
+    ) -> None:
+        self.args: dict[str, str | None] = dict(args)
+        """xacro args; None is an arg given with a value the linter does not know."""
+        self.find = find
+        self.env = dict(env or {})
+        self.problems: list[XacroProblem] = []
+        self.files: list[str] = []
+        self._include_stack: list[str] = []
+        self._macro_depth = 0
+        self._work = 0
+        self._made = 0
+        self._resolving: list[str] = []
+        self._path = ""
+        self._line = 1
+
+    # -- entry -------------------------------------------------------------------------
+    def expand(self, path: str) -> Expansion:
+        absolute = os.path.abspath(path)
+        root: ExpandedNode | None = None
+        try:
+            element = self._read(absolute, None)
+            if element is not None:
+                root = self._node(element, absolute, ())
+                self._include_stack.append(absolute)
+                self._children(element.children, absolute, _Table(), root, ())
+        except _Abort as stop:
+            self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True))
+            root = None
+        except RecursionError:
+            self.problems.append(XacroProblem(
+                self._path or absolute, self._line, "description nested too deeply", True))
+            root = None
+        return Expansion(root, self.problems, self.files)
+
+    # -- bounds and problems -------------------------------------------------------------
+    def _charge(self, units: int = 1) -> None:
+        self._work += units
+        if self._work > MAX_WORK:
+            raise _Abort(f"expansion needs more than {MAX_WORK:,} steps; stopped",
+                         self._path, self._line)
+
+    def _problem(self, path: str, line: int, message: str) -> None:
+        if len(self.problems) < 1000:
+            self.problems.append(XacroProblem(path, line, message))
+
+    def _read(self, absolute: str, at: tuple[str, int] | None) -> Element | None:
+        where = at or (absolute, 1)
+        if absolute not in self.files:
+            if len(self.files) >= MAX_FILES:
+                raise _Abort(f"description reads more than {MAX_FILES} files", *where)
+            self.files.append(absolute)
+        try:
+            data = read_launch_bytes(absolute)
+        except OSError as exc:
+            if at is None:
+                raise _Abort(f"cannot read {absolute}: {exc.strerror or exc}", *where) from None
+            self._problem(where[0], where[1], f"cannot read included file {absolute}: "
+                          f"{exc.strerror or exc}")
+            return None
+        try:
+            return parse_xml(data).root
+        except XmlError as exc:
+            message = f"{absolute}:{exc.line}: not well-formed XML: {exc.message}"
+            if at is None:
+                raise _Abort(message, absolute, exc.line) from None
+            self._problem(where[0], where[1], message)
+            return None
+
+    # -- text substitution -------------------------------------------------------------
+    def evaluate_text(self, text: str, table: _Table) -> str:
+        """xacro's ``eval_text``; raises :class:`_Unknown` for what cannot be known."""
+        if "$" not in text:
+            return text
+        self._charge()
+        parts: list[str] = []
+        position = 0
+        for match in _TOKEN.finditer(text):
+            parts.append(text[position:match.start()])
+            position = match.end()
+            token = match.group()
+            if token in ("$${", "$$("):
+                parts.append(token[1:])
+            elif token.startswith("${"):
+                parts.append(self._expression(token[2:-1], table))
+            else:
+                inner = token[2:-1]
+                if "${" in inner:
+                    inner = self.evaluate_text(inner, table)
+                parts.append(self._extension(inner.strip(), table))
+            if sum(len(p) for p in parts) > MAX_TEXT:
+                raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path,
+                             self._line)
+        parts.append(text[position:])
+        return "".join(parts)
+
+    def _expression(self, source: str, table: _Table) -> str:
+        source = _MATH_PREFIX.sub("", source.strip())
+        scope = EvalScope(args=_Symbols(self, table), env={}, find=lambda _: None,
+                          anon=lambda name: name, dirname=None)
+        self._charge(len(source) + 1)
+        try:
+            return evaluate(source, scope)
+        except _Unknown:
+            raise
+        except EvalError as exc:
+            raise _Unknown(f"${{{source}}}: {exc.reason}") from None
+
+    def _extension(self, body: str, table: _Table) -> str:
+        words = body.split()
+        if not words:
+            raise _Unknown("empty $()")
+        command, rest = words[0], words[1:]
+        if command == "arg" and len(rest) == 1:
+            name = rest[0]
+            if name not in self.args:
+                raise _Unknown(f"$(arg {name}): the arg is not declared and not given")
+            value = self.args[name]
+            if value is None:
+                raise _Unknown(f"$(arg {name}): its value is not known")
+            return value
+        if command == "find" and len(rest) == 1:
+            found = self.find(rest[0])
+            if found is None:
+                raise _Unknown(f"$(find {rest[0]}): package not found under the package path")
+            return found
+        if command == "env" and len(rest) == 1:
+            if rest[0] not in self.env:
+                raise _Unknown(f"$(env {rest[0]}): not given with --env")
+            return self.env[rest[0]]
+        if command == "optenv" and rest:
+            return self.env.get(rest[0], " ".join(rest[1:]))
+        if command == "eval":
+            return self._expression(body[len("eval"):], table)
+        raise _Unknown(f"$({body}) is not supported")
+
+    def property_value(self, name: str, table: _Table, prop: _Property) -> str | None:
+        if prop.block is not None:
+            raise _Unknown(f"block property '{name}' used as a value")
+        if prop.text is None:
+            if prop.reason is not None:
+                raise _Unknown(prop.reason)
+            return prop.value
+        if name in self._resolving:
+            chain = " -> ".join([*self._resolving, name])
+            prop.text, prop.reason = None, f"circular property definition: {chain}"
+            raise _Unknown(prop.reason)
+        self._resolving.append(name)
+        try:
+            prop.value = self.evaluate_text(prop.text, table)
+        except _Unknown as unknown:
+            prop.reason = unknown.reason
+            raise
+        finally:
+            prop.text = None
+            self._resolving.pop()
+        return prop.value
+
+    # -- elements ----------------------------------------------------------------------
+    def _node(self, element: Element, path: str, conditions: tuple[str, ...],
+              tag: str | None = None) -> ExpandedNode:
+        self._made += 1
+        if self._made > MAX_OUTPUT_ELEMENTS:
+            raise _Abort(f"expansion makes more than {MAX_OUTPUT_ELEMENTS:,} elements", path,
+                         element.line)
+        return ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
+
+    def _attributes(self, element: Element, node: ExpandedNode, table: _Table) -> None:
+        for name, text in element.attrib.items():
+            if name.startswith(_PREFIX) or name.startswith("xmlns"):
+                continue
+            try:
+                node.attrib[name] = self.evaluate_text(text, table)
+            except _Unknown as unknown:
+                node.attrib[name] = text
+                node.unknown[name] = unknown.reason
+
+    def _children(self, elements: list[Element], path: str, table: _Table,
+                  out: ExpandedNode, conditions: tuple[str, ...]) -> None:
+        for element in elements:
+            self._charge()
+            self._path, self._line = path, element.line
+            tag = element.tag
+            if not tag.startswith(_PREFIX):
+                node = self._node(element, path, conditions)
+                self._attributes(element, node, table)
+                out.children.append(node)
+                self._children(element.children, path, table, node, conditions)
+                continue
+            try:
+                self._directive(element, tag[len(_PREFIX):], path, table, out, conditions)
+            except _Unknown as unknown:
+                self._problem(path, element.line, f"<{tag}>: {unknown.reason}")
+
+    def _directive(self, element: Element, what: str, path: str, table: _Table,
+                   out: ExpandedNode, conditions: tuple[str, ...]) -> None:
+        attrib = element.attrib
+        if what == "property":
+            self._property(element, path, table)
+        elif what == "arg":
+            name = attrib.get("name", "")
+            if name not in self.args:
+                default = attrib.get("default")
+                try:
+                    self.args[name] = (None if default is None
+                                       else self.evaluate_text(default, table))
+                except _Unknown:
+                    self.args[name] = None
+                    raise
+        elif what == "macro":
+            self._define_macro(element, path, table)
+        elif what == "include":
+            self._include(element, path, table, out, conditions)
+        elif what in ("if", "unless"):
+            text = attrib.get("value", "")
+            try:
+                keep: bool | None = _boolean(self.evaluate_text(text, table))
+            except _Unknown as unknown:
+                self._problem(path, element.line,
+                              f"<xacro:{what} value={text!r}>: {unknown.reason}; "
+                              "its content is kept as conditional")
+                keep = None
+            if keep is None:
+                mark = text if what == "if" else "!" + text
+                self._children(element.children, path, table, out, (*conditions, mark))
+            elif keep == (what == "if"):
+                self._children(element.children, path, table, out, conditions)
+        elif what == "insert_block":
+            self._insert_block(element, path, table, out, conditions)
+        elif what == "element":
+            name = self.evaluate_text(attrib.get("xacro:name", ""), table)
+            if not name:
+                raise _Unknown("xacro:element: empty name")
+            node = self._node(element, path, conditions, name)
+            self._attributes(element, node, table)
+            out.children.append(node)
+            self._children(element.children, path, table, node, conditions)
+        elif what == "attribute":
+            name = self.evaluate_text(attrib.get("name", ""), table)
+            try:
+                out.attrib[name] = self.evaluate_text(attrib.get("value", ""), table)
+            except _Unknown as unknown:
+                out.attrib[name] = attrib.get("value", "")
+                out.unknown[name] = unknown.reason
+        elif what == "call":
+            raise _Unknown("xacro:call (a macro named at run time) is not supported")
+        else:
+            self._call(element, what, path, table, out, conditions)
+
+    def _property(self, element: Element, path: str, table: _Table) -> None:
+        attrib = element.attrib
+        name = self.evaluate_text(attrib.get("name", ""), table)
+        if not _IDENTIFIER.match(name):
+            raise _Unknown(f"property name {name!r} is not a valid identifier")
+        target = table
+        scope = attrib.get("scope")
+        if scope == "parent" and table.parent is not None:
+            target = table.parent
+        elif scope == "global":
+            while target.parent is not None:
+                target = target.parent
+        if "default" in attrib and table.find_property(name) is not None:
+            return
+        text = attrib.get("value", attrib.get("default"))
+        if text is None:
+            target.properties[name] = _Property(None, None, block=(element, path))
+            return
+        prop = _Property(text, None)
+        if attrib.get("lazy_eval", "true").lower() in ("false", "0") or target is not table:
+            # A property set in another scope is evaluated here, where its names are seen.
+            try:
+                prop = _Property(None, self.evaluate_text(text, table))
+            except _Unknown as unknown:
+                prop = _Property(None, None, unknown.reason)
+        target.properties[name] = prop
+
+    def _define_macro(self, element: Element, path: str, table: _Table) -> None:
+        name = element.attrib.get("name", "")
+        if name.startswith(_PREFIX):
+            name = name[len(_PREFIX):]
+        params: list[str] = []
+        defaults: dict[str, tuple[str | None, str | None]] = {}
+        for word in element.attrib.get("params", "").split():
+            param, sep, default = word.partition(":=")
+            if not sep:
+                param, sep, default = word.partition("=")
+            params.append(param)
+            if not sep:
+                continue
+            if default.startswith("^"):
+                forward = param
+                defaults[param] = (forward, default[2:] if default.startswith("^|") else None)
+            else:
+                defaults[param] = (None, default.strip("'\""))
+        table.macros[name] = _Macro(params, defaults, element, path)
+
+    def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
+                 conditions: tuple[str, ...]) -> None:
+        if "ns" in element.attrib:
+            raise _Unknown("xacro:include with ns= is not supported")
+        filename = self.evaluate_text(element.attrib.get("filename", ""), table)
+        if _GLOB.search(filename):
+            raise _Unknown(f"include pattern {filename!r} is not followed")
+        target = os.path.normpath(os.path.join(os.path.dirname(path), filename))
+        if target in self._include_stack:
+            chain = [os.path.basename(p) for p in [*self._include_stack, target]]
+            raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
+        if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
+            raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
+        if not os.path.isfile(target):
+            if element.attrib.get("optional", "").lower() in ("true", "1"):
+                return
+            raise _Unknown(f"included file {filename} not found")
+        included = self._read(target, (path, element.line))
+        if included is None:
+            return
+        self._include_stack.append(target)
+        try:
+            self._children(included.children, target, table, out, conditions)
+        finally:
+            self._include_stack.pop()
+
+    def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
+                      conditions: tuple[str, ...]) -> None:
+        name = self.evaluate_text(element.attrib.get("name", ""), table)
+        block = table.find_block(name)
+        if block is None:
+            found = table.find_property(name)
+            if found is None or found[1].block is None:
+                raise _Unknown(f"undefined block '{name}'")
+            block_element, block_path = found[1].block
+            self._children(block_element.children, block_path, table, out, conditions)
+            return
+        # xacro evaluates a block in the caller's scope, before the macro body sees it.
+        if block.content_only:
+            self._children(block.element.children, block.path, block.scope, out, conditions)
+        else:
+            self._children([block.element], block.path, block.scope, out, conditions)
+
+    def _call(self, element: Element, name: str, path: str, table: _Table,
+              out: ExpandedNode, conditions: tuple[str, ...]) -> None:
+        macro = table.find_macro(name)
+        if macro is None:
+            raise _Unknown(f"unknown macro '{name}'")
+        if self._macro_depth >= MAX_MACRO_DEPTH:
+            raise _Abort(f"macros nested deeper than {MAX_MACRO_DEPTH} (recursive macro?)",
+                         path, element.line)
+        scoped = _Table(table)
+        params = list(macro.params)
+        for attribute, text in element.attrib.items():
+            if attribute not in params:
+                raise _Unknown(f"invalid parameter '{attribute}' of macro '{name}'")
+            params.remove(attribute)
+            scoped.properties[attribute] = self._evaluated(text, table)
+        blocks = list(element.children)
+        for param in [p for p in params if p.startswith("*")]:
+            if not blocks:
+                raise _Unknown(f"not enough blocks for macro '{name}'")
+            params.remove(param)
+            content_only = param.startswith("**")
+            scoped.blocks[param.lstrip("*")] = _Block(blocks.pop(0), path, content_only, table)
+        if blocks:
+            raise _Unknown(f"unused block <{blocks[0].tag}> in call of macro '{name}'")
+        for param in list(params):
+            if param not in macro.defaults:
+                continue
+            forward, default = macro.defaults[param]
+            params.remove(param)
+            if forward is not None:
+                found = table.find_property(forward)
+                if found is not None:
+                    value = _Property(None, None)
+                    try:
+                        value.value = self.property_value(forward, found[0], found[1])
+                    except _Unknown as unknown:
+                        value.reason = unknown.reason
+                    scoped.properties[param] = value
+                    continue
+                if default is None:
+                    raise _Unknown(f"undefined property to forward: {forward}")
+            scoped.properties[param] = self._evaluated(default or "", table)
+        if params:
+            raise _Unknown(f"undefined parameters [{','.join(params)}] of macro '{name}'")
+        self._macro_depth += 1
+        try:
+            self._children(macro.body.children, macro.path, scoped, out, conditions)
+        finally:
+            self._macro_depth -= 1
+
+    def _evaluated(self, text: str, table: _Table) -> _Property:
+        try:
+            return _Property(None, self.evaluate_text(text, table))
+        except _Unknown as unknown:
+            return _Property(None, None, unknown.reason)
+
+
+def _boolean(value: str) -> bool | None:
+    """xacro's ``get_boolean_value``; None when the text is not a boolean."""
+    if value in ("true", "True"):
+        return True
+    if value in ("false", "False"):
+        return False
+    try:
+        return bool(int(value))
+    except ValueError:
+        pass
+    try:
+        return bool(float(value))
+    except ValueError:
+        raise _Unknown(f"conditional value {value!r} is not a boolean") from None
+
+
+def expand(path: str, args: Mapping[str, str | None],
+           find: Callable[[str], str | None],
+           env: Mapping[str, str] | None = None) -> Expansion:
+    """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``)."""
+    return XacroExpander(args, find, env).expand(path)

@@ -1,0 +1,101 @@
+"""Robot descriptions found in launch files, and the tf edges their URDF joints give."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import Enum
+
+from launch_linter.model.transform import Condition
+
+UNKNOWN_VALUE = "\x00unknown"
+"""The value recorded for a node's frame parameter that the linter cannot resolve."""
+MOVABLE_JOINTS = ("revolute", "continuous", "prismatic", "floating", "planar")
+
+
+class DescriptionKind(str, Enum):
+    """How a launch file gives ``robot_description``."""
+
+    XACRO = "xacro"
+    """``xacro FILE name:=value ...`` run by the launch file (``command=``, ``Command``)."""
+    FILE = "file"
+    """A URDF file read as it is (``textfile=``, ``open(path).read()``)."""
+    LITERAL = "literal"
+    """URDF text written in the launch file itself."""
+
+
+@dataclass(frozen=True)
+class DescriptionSource:
+    """A ``robot_description`` a launch file gives, where it does, and what it names.
+
+    ``file`` is the absolute path of the description (None when unresolved, then
+    ``reason`` says why); ``args`` are the ``name:=value`` words of the xacro call (a value
+    of None is unresolved); ``text`` is a literal URDF.
+    """
+
+    path: str
+    line: int
+    column: int
+    kind: DescriptionKind
+    file: str | None
+    args: tuple[tuple[str, str | None], ...] = ()
+    condition: Condition = field(default_factory=Condition)
+    node: str | None = None
+    text: str | None = None
+    reason: str | None = None
+
+
+@dataclass(frozen=True)
+class RobotJoint:
+    """One URDF joint as a tf edge: parent link -> child link, at the joint's file:line.
+
+    ``dynamic`` is true for movable joints (robot_state_publisher publishes them from
+    joint states); their frame and parent are known, their values are not constant.
+    ``rpy`` is roll, pitch, yaw as URDF writes it. ``unresolved`` names the fields that
+    could not be known (``parent``, ``child``, ``translation``, ``rotation``) and
+    ``reasons`` why.
+    """
+
+    path: str
+    line: int
+    column: int
+    name: str
+    joint_type: str
+    parent: str | None
+    child: str | None
+    translation: tuple[float, float, float] | None
+    rpy: tuple[float, float, float] | None
+    source: DescriptionSource
+    condition: Condition = field(default_factory=Condition)
+    unresolved: tuple[str, ...] = ()
+    reasons: tuple[str, ...] = ()
+
+    @property
+    def dynamic(self) -> bool:
+        return self.joint_type in MOVABLE_JOINTS
+
+    @property
+    def signature(self) -> tuple[str, str] | None:
+        if self.parent is None or self.child is None:
+            return None
+        return (self.parent, self.child)
+
+
+@dataclass(frozen=True)
+class NodeRecord:
+    """A launched node that rules about frame authority need: which program it runs, and
+    the frame parameters it is given (as ``(name, value)`` pairs, resolved ones only)."""
+
+    path: str
+    line: int
+    column: int
+    package: str
+    executable: str
+    name: str | None = None
+    params: tuple[tuple[str, str], ...] = ()
+    condition: Condition = field(default_factory=Condition)
+
+    def param(self, name: str) -> str | None:
+        for key, value in self.params:
+            if key == name or key.endswith("/" + name):
+                return value
+        return None

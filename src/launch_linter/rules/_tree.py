@@ -1,0 +1,146 @@
+"""The whole tf tree of one entry point, as the tree rules see it: launch static transforms
+and URDF joints as one list of edges, each with its source."""
+
+from __future__ import annotations
+
+import math
+import typing
+from dataclasses import dataclass
+
+from launch_linter.model.diagnostic import Location
+from launch_linter.model.launch import LaunchTree
+from launch_linter.model.robot import RobotJoint
+from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
+from launch_linter.rules._api import Finding
+
+Quaternion = typing.Tuple[float, float, float, float]
+"""(x, y, z, w)."""
+
+
+def quaternion_from_ypr(yaw: float, pitch: float, roll: float) -> Quaternion:
+    """tf's yaw-pitch-roll (= URDF's fixed-axis roll-pitch-yaw) as a quaternion."""
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    return (
+        sr * cp * cy - cr * sp * sy,
+        cr * sp * cy + sr * cp * sy,
+        cr * cp * sy - sr * sp * cy,
+        cr * cp * cy + sr * sp * sy,
+    )
+
+
+def normalised(q: Quaternion) -> Quaternion | None:
+    norm = math.sqrt(sum(v * v for v in q))
+    if not math.isfinite(norm) or norm < 1e-9:
+        return None
+    return (q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm)
+
+
+def same_rotation(a: Quaternion, b: Quaternion, tolerance: float = 1e-4) -> bool:
+    """Equal rotations (q and -q are the same rotation)."""
+    dot = abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3])
+    return dot >= 1.0 - tolerance
+
+
+@dataclass(frozen=True)
+class Edge:
+    """One parent -> child edge of the tf tree and where it comes from."""
+
+    parent: str
+    child: str
+    translation: tuple[float, float, float] | None
+    rotation: Quaternion | None
+    condition: Condition
+    location: Location
+    transform: StaticTransform | None = None
+    joint: RobotJoint | None = None
+
+    @property
+    def kind(self) -> str:
+        return "urdf" if self.joint is not None else "launch"
+
+    @property
+    def dynamic(self) -> bool:
+        return self.joint is not None and self.joint.dynamic
+
+    @property
+    def node(self) -> str | None:
+        return self.transform.name if self.transform is not None else None
+
+    def describe(self) -> str:
+        """How a message names this edge's source."""
+        if self.joint is not None:
+            via = self.joint.source
+            return (f"URDF joint '{self.joint.name}' ({self.location.path}:{self.location.line}"
+                    f", robot_description at {via.path}:{via.line})")
+        name = self.transform.name if self.transform is not None else None
+        shown = f"static transform '{name}'" if name else "static transform"
+        return f"{shown} ({self.location.path}:{self.location.line})"
+
+    def same_values(self, other: Edge) -> bool | None:
+        """Whether the two edges carry the same transform; None when either is unknown."""
+        if (self.translation is None or other.translation is None or self.rotation is None
+                or other.rotation is None):
+            return None
+        mine, theirs = self.translation, other.translation
+        close = all(abs(mine[i] - theirs[i]) <= 1e-6 for i in range(3))
+        return close and same_rotation(self.rotation, other.rotation, 1e-9)
+
+
+def _transform_edge(t: StaticTransform) -> Edge | None:
+    signature = t.signature
+    if signature is None:
+        return None
+    rotation: Quaternion | None = None
+    if t.rotation is not None and not t.is_unresolved(Field.ROTATION):
+        values = t.rotation.values
+        if t.rotation.kind is RotationKind.YPR and len(values) == 3:
+            rotation = quaternion_from_ypr(values[0], values[1], values[2])
+        elif len(values) == 4:
+            rotation = normalised((values[0], values[1], values[2], values[3]))
+    translation = None if t.is_unresolved(Field.TRANSLATION) else t.translation
+    return Edge(signature[0], signature[1], translation, rotation, t.condition,
+                Location(t.path, t.line, t.column), transform=t)
+
+
+def _joint_edge(j: RobotJoint) -> Edge | None:
+    if j.parent is None or j.child is None:
+        return None
+    rotation = None if j.rpy is None else quaternion_from_ypr(j.rpy[2], j.rpy[1], j.rpy[0])
+    return Edge(j.parent, j.child, j.translation, rotation, j.condition,
+                Location(j.path, j.line, j.column), joint=j)
+
+
+def tree_edges(tree: LaunchTree) -> list[Edge]:
+    """URDF joints first (the robot's own structure), then launch static transforms in
+    tree order, so that a finding lands on the launch file that adds to the robot."""
+    edges: list[Edge] = []
+    for joint in tree.joints:
+        edge = _joint_edge(joint)
+        if edge is not None:
+            edges.append(edge)
+    for transform in tree.transforms:
+        edge = _transform_edge(transform)
+        if edge is not None:
+            edges.append(edge)
+    return edges
+
+
+def coexist(a: Edge, b: Edge) -> bool:
+    return not a.condition.excludes(b.condition)
+
+
+def place(edge: Edge, seen_from: Edge) -> str:
+    if edge.location.path == seen_from.location.path:
+        return f"line {edge.location.line}"
+    return f"{edge.location.path}:{edge.location.line}"
+
+
+def finding_on(edge: Edge, message: str, related: tuple[Edge, ...] = ()) -> Finding:
+    """A finding at an edge (a launch node or a URDF joint)."""
+    return Finding(
+        path=edge.location.path, line=edge.location.line, column=edge.location.column,
+        message=message, node=edge.node if edge.joint is None else edge.joint.name,
+        related=tuple(r.location for r in related),
+    )

@@ -1,0 +1,94 @@
+"""The same parent -> child edge published by two sources with different values.
+
+## What it does
+Follows the whole launch tree of an entry point, with the URDF joints of the robot
+descriptions that its `robot_state_publisher` publishes, and reports an edge (parent →
+child, frame ids compared without one leading `/`) published by two sources with different
+translation or rotation: two static transforms in different files (within one file it is
+`dup_sig`), or a static transform and a URDF joint. An edge that the URDF makes a movable
+joint and a launch file also publishes as a static transform is reported whatever the
+values. Sources under mutually exclusive conditions are never compared.
+
+## Why is this bad?
+tf2 keeps one transform per edge. With two publishers that disagree, the sensor mount or
+the robot's body is wherever the last message put it, and for a movable joint the static
+transform overwrites the joint's motion. The usual cause is a bringup file and an included
+sensors file (or the URDF) that both describe the same mount, one of them out of date.
+
+## Example
+```xml
+<launch>
+  <param name="robot_description" value="&lt;robot name='r'&gt;
+    &lt;joint name='laser_joint' type='fixed'&gt;
+      &lt;parent link='base_link'/&gt;&lt;child link='laser'/&gt;
+      &lt;origin xyz='0.1 0 0.2'/&gt;
+    &lt;/joint&gt;&lt;/robot&gt;"/>
+  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="laser_tf"
+        args="0.1 0 0.3 0 0 0 base_link laser"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <param name="robot_description" value="&lt;robot name='r'&gt;
+    &lt;joint name='laser_joint' type='fixed'&gt;
+      &lt;parent link='base_link'/&gt;&lt;child link='laser'/&gt;
+      &lt;origin xyz='0.1 0 0.2'/&gt;
+    &lt;/joint&gt;&lt;/robot&gt;"/>
+  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+</launch>
+```
+
+## Known problems
+Two launch files that publish the same edge with the same values are not reported (the
+copy is redundant, not wrong). Values that are not resolved are not compared.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._tree import Edge, coexist, finding_on, tree_edges
+
+ID = "conflicting_transform"
+CATEGORY = Category.TF
+SEVERITY = Severity.ERROR
+
+
+def _conflict(a: Edge, b: Edge) -> str:
+    """Why the two sources conflict, or an empty text when they do not."""
+    if a.joint is not None and b.joint is not None:
+        return ""
+    if a.joint is None and b.joint is None and a.location.path == b.location.path:
+        return ""  # dup_sig's case
+    movable = a if a.dynamic else b if b.dynamic else None
+    if movable is not None and movable.joint is not None:
+        return (f"the URDF makes it the movable {movable.joint.joint_type} joint "
+                f"'{movable.joint.name}', and the static transform freezes it")
+    same = a.same_values(b)
+    if same is None or same:
+        return ""
+    return "with different values; tf2 keeps whichever arrives last"
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    seen: dict[tuple[str, str], list[Edge]] = {}
+    for edge in tree_edges(context.tree):
+        earlier = seen.setdefault((edge.parent, edge.child), [])
+        for other in earlier:
+            if not coexist(other, edge):
+                continue
+            why = _conflict(other, edge)
+            if why:
+                yield finding_on(
+                    edge,
+                    f"'{edge.parent}' -> '{edge.child}' is also published by "
+                    f"{other.describe()}, {why}",
+                    (other,),
+                )
+                break
+        earlier.append(edge)

@@ -1,0 +1,122 @@
+"""robot_description sources in ROS 1 and ROS 2 launch files (XML, YAML, Python)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from launch_linter import LintOptions, lint_paths
+from launch_linter.model.launch import LaunchTree
+from launch_linter.model.robot import DescriptionKind
+
+WS = Path(__file__).resolve().parent.parent / "fixtures" / "robot_ws"
+XACRO = "$(find demo_description)/urdf/robot.urdf.xacro"
+RSP1 = '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+
+
+def tree(tmp_path: Path, name: str, text: str, args: dict[str, str] | None = None
+         ) -> LaunchTree:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    options = LintOptions(args=args or {}, package_paths=(str(WS),))
+    return lint_paths([str(path)], options).trees[0]
+
+
+@pytest.mark.parametrize("command", [
+    f"$(find xacro)/xacro --inorder {XACRO} use_lidar:=false",
+    f"$(find xacro)/xacro.py {XACRO} use_lidar:=false",
+    f"xacro {XACRO} use_lidar:=false",
+])
+def test_ros1_xacro_command(tmp_path: Path, command: str) -> None:
+    found = tree(tmp_path, "a.launch", f'<launch><param name="robot_description" '
+                 f'command="{command}"/>{RSP1}</launch>')
+    (source,) = found.descriptions
+    assert source.kind is DescriptionKind.XACRO and source.args == (("use_lidar", "false"),)
+    assert "sonar" in {j.child for j in found.joints}
+
+
+def test_ros1_arg_left_open_is_an_unknown_xacro_arg(tmp_path: Path) -> None:
+    found = tree(tmp_path, "a.launch", f'<launch><arg name="l"/><param name="robot_description" '
+                 f'command="xacro {XACRO} use_lidar:=$(arg l)"/>{RSP1}</launch>')
+    (source,) = found.descriptions
+    assert source.args == (("use_lidar", None),)
+    lidar = [j for j in found.joints if j.child in ("laser", "sonar")]
+    assert len(lidar) == 2 and lidar[0].condition.excludes(lidar[1].condition)
+
+
+def test_ros1_textfile_and_literal(tmp_path: Path) -> None:
+    text = (f'<launch><param name="robot_description" textfile="$(find demo_description)/urdf/'
+            f'plain.urdf"/><group ns="two"><param name="robot_description" value="&lt;robot '
+            f'name=\'x\'&gt;&lt;joint name=\'k\' type=\'fixed\'&gt;&lt;parent link=\'a\'/&gt;'
+            f'&lt;child link=\'b\'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/></group>{RSP1}</launch>')
+    found = tree(tmp_path, "a.launch", text)
+    assert [s.kind for s in found.descriptions] == [DescriptionKind.FILE, DescriptionKind.LITERAL]
+    assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps"), ("a", "b")]
+
+
+def test_ros1_param_inside_the_state_publisher(tmp_path: Path) -> None:
+    found = tree(tmp_path, "a.launch", '<launch><node pkg="robot_state_publisher" '
+                 'type="robot_state_publisher" name="rsp"><param name="robot_description" '
+                 f'command="xacro {XACRO}"/></node></launch>')
+    assert len(found.joints) == 8
+
+
+def test_ros2_xml_command(tmp_path: Path) -> None:
+    text = ('<launch><node pkg="robot_state_publisher" exec="robot_state_publisher">'
+            '<param name="robot_description" value="$(command \'xacro $(find-pkg-share '
+            'demo_description)/urdf/robot.urdf.xacro use_lidar:=false\')"/></node></launch>')
+    found = tree(tmp_path, "a.launch.xml", text)
+    assert "sonar" in {j.child for j in found.joints}
+
+
+def test_ros2_yaml_command(tmp_path: Path) -> None:
+    text = ("launch:\n- node:\n    pkg: robot_state_publisher\n    exec: robot_state_publisher\n"
+            "    param:\n    - name: robot_description\n      value: \"$(command 'xacro "
+            "$(find-pkg-share demo_description)/urdf/robot.urdf.xacro')\"\n")
+    found = tree(tmp_path, "a.launch.yaml", text)
+    assert "laser" in {j.child for j in found.joints}
+
+
+def test_ros2_python_command_with_launch_configuration() -> None:
+    options = LintOptions(package_paths=(str(WS),))
+    path = WS / "src" / "demo_ros2" / "launch" / "bringup.launch.py"
+    found = lint_paths([str(path)], options).trees[0]
+    (source,) = found.descriptions
+    assert source.args == (("use_lidar", "false"),)
+    assert {"sonar", "arm_link"} <= {j.child for j in found.joints}
+    assert not any(j.child == "laser" for j in found.joints)
+
+
+@pytest.mark.parametrize("read", [
+    "description = open(urdf).read()",
+    "with open(urdf, 'r') as handle:\n        description = handle.read()",
+])
+def test_ros2_python_urdf_file_read(tmp_path: Path, read: str) -> None:
+    text = f'''import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    urdf = os.path.join(get_package_share_directory("demo_description"), "urdf", "plain.urdf")
+    {read}
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{{"robot_description": description}}]),
+    ])
+'''
+    found = tree(tmp_path, "a.launch.py", text)
+    (source,) = found.descriptions
+    assert source.kind is DescriptionKind.FILE
+    assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]
+    assert not found.problems
+
+
+def test_ros2_xml_file_content(tmp_path: Path) -> None:
+    text = ('<launch><node pkg="robot_state_publisher" exec="robot_state_publisher">'
+            '<param name="robot_description" value="$(file-content $(find-pkg-share '
+            'demo_description)/urdf/plain.urdf)"/></node></launch>')
+    found = tree(tmp_path, "a.launch.xml", text)
+    assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]

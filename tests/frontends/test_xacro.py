@@ -1,0 +1,140 @@
+"""Our xacro expander and URDF reader: features, unknowns and hostile input."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from launch_linter import LintOptions, lint_paths
+from launch_linter.frontends.robot.describe import RobotCache, xacro_command
+from launch_linter.frontends.robot.urdf import joints_of
+from launch_linter.frontends.robot.xacro import Expansion, expand
+from launch_linter.model.robot import DescriptionKind, DescriptionSource, RobotJoint
+from launch_linter.model.transform import Condition
+from launch_linter.resolve.packages import PackageIndex
+
+WS = Path(__file__).resolve().parent.parent / "fixtures" / "robot_ws"
+HOSTILE = WS / "src" / "hostile" / "urdf"
+HEAD = '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+
+
+def run(tmp_path: Path, body: str, args: dict[str, str | None] | None = None
+        ) -> Expansion:
+    path = tmp_path / "r.xacro"
+    path.write_text(HEAD + body + "</robot>", encoding="utf-8")
+    return expand(str(path), args or {}, lambda _: None)
+
+
+def joints(expansion: Expansion) -> list[RobotJoint]:
+    assert expansion.root is not None
+    source = DescriptionSource("x.launch", 1, 1, DescriptionKind.XACRO, "r.xacro")
+    return joints_of(expansion.root, source, str, Condition())
+
+
+def joint(parent: str, child: str, origin: str = "") -> str:
+    return (f'<joint name="j" type="fixed"><parent link="{parent}"/><child link="{child}"/>'
+            f'{origin}</joint>')
+
+
+def test_unknown_arg_makes_the_frame_unresolved(tmp_path: Path) -> None:
+    (found,) = joints(run(tmp_path, joint("$(arg p)base", "c")))
+    assert found.parent is None and found.unresolved == ("parent",)
+    assert "$(arg p)" in found.reasons[0]
+
+
+def test_arg_given_with_an_unknown_value(tmp_path: Path) -> None:
+    body = '<xacro:arg name="p" default="x_"/>' + joint("$(arg p)base", "c")
+    (found,) = joints(run(tmp_path, body, {"p": None}))
+    assert found.parent is None and "not known" in found.reasons[0]
+
+
+def test_conditional_with_unknown_value_keeps_content_as_alternatives(tmp_path: Path) -> None:
+    body = (f'<xacro:if value="$(arg a)">{joint("base_link", "x")}</xacro:if>'
+            f'<xacro:unless value="$(arg a)">{joint("base_footprint", "x")}</xacro:unless>')
+    first, second = joints(run(tmp_path, body, {"a": None}))
+    assert not first.condition.always and first.condition.excludes(second.condition)
+
+
+def test_escapes_and_python_are_not_run(tmp_path: Path) -> None:
+    body = joint("a", "b", '<origin xyz="$${x} 0 0" rpy="${open(\'/etc/passwd\')} 0 0"/>')
+    (found,) = joints(run(tmp_path, body))
+    assert found.translation is None and found.rpy is None
+    assert "open" in " ".join(found.reasons)
+
+
+def test_circular_properties(tmp_path: Path) -> None:
+    body = ('<xacro:property name="a" value="${b}"/><xacro:property name="b" value="${a}"/>'
+            + joint("base", "c", '<origin xyz="${a} 0 0"/>'))
+    (found,) = joints(run(tmp_path, body))
+    assert found.translation is None and "circular" in found.reasons[0]
+
+
+def test_unknown_macro_and_bad_parameters_are_problems(tmp_path: Path) -> None:
+    body = ('<xacro:macro name="m" params="a"><link name="${a}"/></xacro:macro>'
+            '<xacro:nope/><xacro:m b="1"/><xacro:m/>')
+    messages = [p.message for p in run(tmp_path, body).problems]
+    assert any("unknown macro 'nope'" in m for m in messages)
+    assert any("invalid parameter 'b'" in m for m in messages)
+    assert any("undefined parameters [a]" in m for m in messages)
+
+
+@pytest.mark.parametrize("name, message", [
+    ("recursive.xacro", "macros nested deeper"),
+    ("cycle_a.xacro", "include cycle"),
+    ("doubling.xacro", "longer than"),
+    ("wide.xacro", "more than 100,000 elements"),
+])
+def test_hostile_descriptions_end_with_a_problem(name: str, message: str) -> None:
+    expansion = expand(str(HOSTILE / name), {}, lambda _: None)
+    assert expansion.root is None
+    (problem,) = [p for p in expansion.problems if p.fatal]
+    assert message in problem.message
+
+
+def test_bombs_in_values_stay_unresolved() -> None:
+    expansion = expand(str(HOSTILE / "bomb.xacro"), {}, lambda _: None)
+    found = joints(expansion)
+    assert [j.unresolved for j in found] == [("translation", "rotation"), ("child",)]
+
+
+def test_hostile_launch_file_gives_diagnostics_not_a_crash() -> None:
+    options = LintOptions(package_paths=(str(WS),), select=frozenset({"unresolved"}))
+    result = lint_paths([str(WS / "src" / "hostile" / "launch" / "hostile.launch")], options)
+    text = "\n".join(d.message for d in result.diagnostics)
+    for expected in ("macros nested deeper", "include cycle", "longer than", "cannot read",
+                     "not a xacro call", "URDF joint 'j'"):
+        assert expected in text
+
+
+def test_variant_b_escape_keeps_literal_text() -> None:
+    path = WS / "src" / "demo_description" / "urdf" / "features.urdf.xacro"
+    found = joints(expand(str(path), {"variant": "b"}, lambda _: None))
+    (last,) = [j for j in found if j.name == "variant_b_joint"]
+    assert last.translation is None and "${not evaluated}" in last.reasons[0]
+
+
+@pytest.mark.parametrize("command, file, args", [
+    ("/opt/ros/noetic/share/xacro/xacro --inorder robot.xacro a:=1", "robot.xacro",
+     (("a", "1"),)),
+    ("python /opt/xacro/xacro.py robot.xacro", "robot.xacro", ()),
+    ("rosrun xacro xacro robot.xacro b:=x -o out.urdf", "robot.xacro", (("b", "x"),)),
+    ("xacro robot.xacro", "robot.xacro", ()),
+])
+def test_xacro_commands(command: str, file: str, args: object) -> None:
+    parsed = xacro_command([(w, True) for w in command.split()])
+    assert parsed == (file, args, None)
+
+
+def test_not_xacro() -> None:
+    assert xacro_command([("cat", True), ("robot.urdf", True)]) is None
+
+
+def test_one_expansion_per_file_and_args() -> None:
+    cache = RobotCache()
+    index = PackageIndex([str(WS)])
+    path = str(WS / "src" / "demo_description" / "urdf" / "robot.urdf.xacro")
+    first = cache.expansion(path, (), index, {})
+    assert cache.expansion(path, (), index, {}) is first
+    assert cache.expansion(path, (("use_lidar", "false"),), index, {}) is not first
+    assert len(cache) == 2
