@@ -40,8 +40,9 @@ import subprocess
 import sys
 import tempfile
 import time
+import typing
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 from xml.parsers import expat
 
@@ -52,7 +53,8 @@ DRIVER = ROOT / "scripts" / "roslaunch_oracle_driver.py"
 SYSTEM_PYTHON = "/usr/bin/python3"
 SECTIONS = ("per-file", "process", "startup", "files", "nodes", "jobs")
 
-Pass = Callable[[Sequence[str]], None]
+# typing's spellings: the alias is evaluated at run time (Python 3.8).
+Pass = typing.Callable[[typing.Sequence[str]], None]
 
 
 def spread(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
@@ -197,7 +199,7 @@ def per_file_section(files: list[str], runs: int) -> None:
             cpu = [c for _, c in measured]
             wall = [w for w, _ in measured]
             ratio = ("" if label == "launch-linter" else
-                     spread([o / c for o, c in zip(ours, cpu, strict=True)], digits=2))
+                     spread([o / c for o, c in zip(ours, cpu)], digits=2))
             print(f"{name:13s} {len(group):6d} {label:20s} {spread(cpu, 1e6):>22s} "
                   f"{spread(wall, 1e6):>22s} {ratio:>20s}")
     ros1 = groups.get("ROS 1 XML", [])
@@ -206,7 +208,7 @@ def per_file_section(files: list[str], runs: int) -> None:
         print(f"roslaunch: not measured ({SYSTEM_PYTHON} cannot import roslaunch)")
         return
     wall, cpu = measured
-    speed_up = [t / o for t, o in zip(sorted(cpu), sorted(ours_cpu["ROS 1 XML"]), strict=True)]
+    speed_up = [t / o for t, o in zip(sorted(cpu), sorted(ours_cpu["ROS 1 XML"]))]
     print(f"{'ROS 1 XML':13s} {len(ros1):6d} {'roslaunch XmlLoader':20s} "
           f"{spread(cpu, 1e6):>22s} {spread(wall, 1e6):>22s}")
     print(f"roslaunch / launch-linter on ROS 1 XML (CPU, runs paired by rank): "

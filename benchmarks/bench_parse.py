@@ -37,7 +37,7 @@ import subprocess
 import sys
 import time
 import xml.etree.ElementTree as ET
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 from launch_linter.frontends.dispatch import front_end, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
@@ -48,7 +48,7 @@ CORPUS = os.path.join(ROOT, "..", "shared", "corpus")
 DRIVER = os.path.join(ROOT, "scripts", "roslaunch_oracle_driver.py")
 SYSTEM_PYTHON = "/usr/bin/python3"
 
-Items = list[tuple[str, bytes]]
+Items = List[Tuple[str, bytes]]
 
 
 def latest_files(corpus: str) -> list[str]:

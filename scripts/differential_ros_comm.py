@@ -35,7 +35,7 @@ import tarfile
 import tempfile
 from collections import Counter
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, Tuple
 
 from launch_linter.frontends import ros1
 from launch_linter.frontends.dispatch import load_tree
@@ -49,7 +49,7 @@ DEFAULT_MIRROR = "/work/.mirror/ros+ros_comm/repo"
 SYSTEM_PYTHON = "/usr/bin/python3"
 EXTENSIONS = (".launch", ".xml", ".test")
 
-NodeKey = tuple[Any, ...]
+NodeKey = Tuple[Any, ...]
 
 
 class _EveryType(str):
@@ -67,7 +67,7 @@ class _EveryType(str):
         return str.__hash__(self)
 
 
-class _EveryPackage(tuple[str, ...]):
+class _EveryPackage(Tuple[str, ...]):
     """Contains every package name."""
 
     def __contains__(self, item: object) -> bool:

@@ -28,7 +28,7 @@ from collections import Counter
 from collections.abc import Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Optional, Tuple
 
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import TF_PACKAGES, LoadOptions, ns_join
@@ -40,7 +40,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHARED = os.path.join(os.path.dirname(REPO), "shared")
 SYSTEM_PYTHON = "/usr/bin/python3"
 
-Key = tuple[str | None, str, str, str, str]
+Key = Tuple[Optional[str], str, str, str, str]
 
 
 def oracle_available() -> bool:
@@ -286,7 +286,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         example = report.refused_examples.get(kind)
         print(f"  {count:6d}  {kind}" + (f"\n          e.g. {example}" if example else ""))
     corpus_figures(trees)
-    with_stub_packages(ns, folder, results, dict(zip(paths, trees, strict=True)))
+    with_stub_packages(ns, folder, results, dict(zip(paths, trees)))
     return 0
 
 

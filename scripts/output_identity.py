@@ -44,7 +44,7 @@ def run(command: str, paths: list[str], jobs: int | None) -> bytes:
 
 
 def first_difference(old: bytes, new: bytes) -> str:
-    for number, (a, b) in enumerate(zip(old.splitlines(), new.splitlines(), strict=False), 1):
+    for number, (a, b) in enumerate(zip(old.splitlines(), new.splitlines()), 1):
         if a != b:
             return f"line {number}:\n  - {a[:300]!r}\n  + {b[:300]!r}"
     return f"lengths differ: {len(old.splitlines())} lines before, {len(new.splitlines())} now"

@@ -16,6 +16,7 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
+from typing import Optional, Tuple
 
 from launch_linter.frontends.robot.urdf import joints_of
 from launch_linter.frontends.robot.xacro import expand
@@ -25,7 +26,7 @@ from launch_linter.resolve.packages import PackageIndex
 
 DRIVER = Path(__file__).resolve().parent / "xacro_oracle_driver.py"
 TEXT_SUFFIXES = (".xacro", ".urdf", "package.xml", ".yaml", ".launch")
-Joint = tuple[str, str, str | None, str | None, tuple[float, ...], tuple[float, ...]]
+Joint = Tuple[str, str, Optional[str], Optional[str], Tuple[float, ...], Tuple[float, ...]]
 
 
 def export_git(git_dir: str, out: str) -> None:
@@ -80,16 +81,16 @@ def same(expected: list[Joint], got: list[Joint]) -> int | None:
     if len(expected) != len(got):
         return None
     unknown = 0
-    for x, y in zip(expected, got, strict=False):
+    for x, y in zip(expected, got):
         frames_differ = any(b is not None and a != b
-                            for a, b in zip(x[2:4], y[2:4], strict=False))
+                            for a, b in zip(x[2:4], y[2:4]))
         if x[:2] != y[:2] or frames_differ:
             return None
         if None in y[2:4] or not y[4] or not y[5]:
             unknown += 1
         for ours, theirs in ((y[4], x[4]), (y[5], x[5])):
             if ours and (len(ours) != len(theirs)
-                         or any(abs(p - q) > 1e-6 for p, q in zip(ours, theirs, strict=False))):
+                         or any(abs(p - q) > 1e-6 for p, q in zip(ours, theirs))):
                 return None
     return unknown
 

@@ -194,7 +194,7 @@ def test_rules_table(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["rules"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert len(lines) == len(RULES)
-    for rule, line in zip(RULES, lines, strict=True):
+    for rule, line in zip(RULES, lines):
         assert line.split()[:3] == [rule.id, rule.category.value, rule.severity.value]
         assert line.endswith(rule.summary)
 

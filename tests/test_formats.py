@@ -244,7 +244,7 @@ def test_every_rule_is_described_with_its_documentation(result: LintResult) -> N
     driver = sarif_of(result)["runs"][0]["tool"]["driver"]
     assert driver["name"] == "launch-linter" and driver["version"] == "9.9"
     assert [r["id"] for r in driver["rules"]] == [r.id for r in RULES]
-    for descriptor, rule in zip(driver["rules"], RULES, strict=True):
+    for descriptor, rule in zip(driver["rules"], RULES):
         assert descriptor["help"]["markdown"] == rule.doc
         assert descriptor["shortDescription"]["text"] == rule.summary
         level = {"error": "error", "warning": "warning", "info": "note"}[rule.severity.value]

@@ -1,5 +1,4 @@
 """Launch-Linter: find mistakes in the static transforms that ROS launch files declare."""
-
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import json
+import os
 import re
-from importlib import resources
 
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
 from launch_linter.resolve.xml_safe import read_regular_file
@@ -47,8 +47,11 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
     if spec in ("bundled", "study"):
         name = BUNDLED if spec == "bundled" else STUDY
         try:
-            text = resources.files("launch_linter").joinpath("data", name).read_text("utf-8")
-        except (FileNotFoundError, OSError) as exc:
+            # The package data sits beside this module (importlib.resources.files needs 3.9).
+            path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
+            with open(path, encoding="utf-8") as handle:
+                text = handle.read()
+        except OSError as exc:
             raise BeliefsNotFound(f"the {spec} beliefs file is not installed: {exc}") from None
         return BeliefSet.from_json(json.loads(text), spec, min_z)
     try:

@@ -11,6 +11,7 @@ Command-line flags override the file key by key; for the tables ``args``, ``env`
 from __future__ import annotations
 
 import difflib
+import importlib
 import math
 import os
 from collections.abc import Iterable, Mapping, Sequence
@@ -21,6 +22,7 @@ from launch_linter.model.diagnostic import Severity
 from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules import RULES, RULES_BY_ID
 from launch_linter.suppressions import PathIgnore
+from launch_linter.toml_fallback import NoTomlParser, loads_without_parser
 
 CONFIG_NAME = ".launch-linter.toml"
 PYPROJECT = "pyproject.toml"
@@ -51,7 +53,7 @@ class ConfigError(ValueError):
     """The configuration file cannot be used; the message names the file and the key."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Config:
     """What a configuration file sets; None (or empty) where it sets nothing."""
 
@@ -98,7 +100,7 @@ def _scalar_text(value: Any, where: str) -> str:
     # roslaunch writes booleans in lower case.
     if isinstance(value, bool):
         return "true" if value else "false"
-    if isinstance(value, str | int | float):
+    if isinstance(value, (str, int, float)):
         return str(value)
     raise ConfigError(f"{where} must be a string, number or boolean, not {type(value).__name__}")
 
@@ -143,7 +145,7 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         values["severity"] = _severities(_table(data["severity"], f"{path}: 'severity'"), path)
     if "min-z" in data:
         z = data["min-z"]
-        if isinstance(z, bool) or not isinstance(z, int | float) or not math.isfinite(z) \
+        if isinstance(z, bool) or not isinstance(z, (int, float)) or not math.isfinite(z) \
                 or abs(z) > 1e6:
             raise ConfigError(f"{path}: 'min-z' must be a number, finite, not {z!r}")
         values["min_z"] = float(z)
@@ -229,14 +231,36 @@ def _read_toml(path: str) -> dict[str, Any]:
         raise ConfigError(f"cannot read configuration file {path}: {exc.strerror or exc}") from None
     if len(data) > MAX_CONFIG_BYTES:
         raise ConfigError(f"{path}: larger than {MAX_CONFIG_BYTES} bytes")
-    import tomllib  # only when a configuration file is read: most runs have none
 
     try:
-        return tomllib.loads(data.decode("utf-8"))
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+    parser = _toml_parser()
+    if parser is None:
+        try:
+            return loads_without_parser(text)
+        except NoTomlParser as exc:
+            raise ConfigError(f"{path}: {exc}") from None
+    try:
+        document: dict[str, Any] = parser.loads(text)
+    except parser.TOMLDecodeError as exc:
         raise ConfigError(f"{path}: not valid TOML: {exc}") from None
     except RecursionError:
         raise ConfigError(f"{path}: nested too deeply") from None
+    return document
+
+
+def _toml_parser() -> Any:
+    """``tomllib`` (Python 3.11), else ``tomli`` (the package's dependency before 3.11), else
+    ``None``: a standalone linter, which carries only the standard library, on an older Python.
+    Both names are fixed here; nothing a configuration says is ever imported."""
+    for name in ("tomllib", "tomli"):
+        try:
+            return importlib.import_module(name)
+        except ImportError:
+            continue
+    return None
 
 
 def _pyproject_table(document: Mapping[str, Any]) -> Any:

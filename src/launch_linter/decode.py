@@ -77,7 +77,7 @@ def is_number(text: str) -> bool:
     return whole
 
 
-@dataclass(slots=True)
+@dataclass
 class Decoded:
     """What the program makes of the words (treat as read-only)."""
 

@@ -98,7 +98,7 @@ def stod(text: str) -> tuple[float | None, str]:
     return value, "ok" if match.end() == len(stripped) else "partial"
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Ros2Decoded:
     form: ArgForm
     """``YPR``, ``QUATERNION`` or ``INVALID`` (nothing could be decoded)."""
@@ -430,7 +430,7 @@ def _result(reader: _Reader, form: ArgForm, parent: str | None, child: str | Non
     )
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ComponentParam:
     """A parameter given to the component: its text, and whether launch passes it as a
     string (rather than a number) to the node."""
@@ -465,7 +465,7 @@ def decode_component(params: Mapping[str, ComponentParam], complete: bool = True
             values.append(reader.number(slot, param.text, slot))
     frames = [
         params[name].text if name in params else default
-        for name, default in zip(COMPONENT_PARAMS[7:], COMPONENT_DEFAULT_FRAMES, strict=True)
+        for name, default in zip(COMPONENT_PARAMS[7:], COMPONENT_DEFAULT_FRAMES)
     ]
     for name in COMPONENT_PARAMS[7:]:
         param = params.get(name)

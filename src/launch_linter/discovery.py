@@ -20,7 +20,7 @@ import os
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Callable  # noqa: UP035 (subscripted at run time: Python 3.8)
+from typing import Callable
 
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 

@@ -6,7 +6,7 @@ import contextlib
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import List, Optional, Tuple  # noqa: UP035 - aliases evaluated at run time (Python 3.8)
+from typing import List, Optional, Tuple
 
 from launch_linter.discovery import (
     MAX_DISCOVERED_FILES,
@@ -60,7 +60,7 @@ FILES_PER_JOB = 300
 millisecond, a worker's start and the results it sends back tens of milliseconds."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LintOptions:
     """How to resolve launch files and which rules to run."""
 
@@ -85,7 +85,7 @@ class LintOptions:
     None: from evidence in the files, else unknown."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LintResult:
     files: tuple[FileRecord, ...]
     trees: tuple[LaunchTree, ...]
@@ -235,7 +235,7 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]  # noqa: UP006, UP045
+Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
 """A file's tree (None when not kept and there is no directive), record and diagnostics."""
 
 

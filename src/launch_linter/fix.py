@@ -15,6 +15,7 @@ import difflib
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
+from typing import Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
 from launch_linter.rules._fixes import distro_at_least
@@ -25,7 +26,7 @@ MAX_FIX_PASSES = 8
 _ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _WORD = re.compile(rb"[^ \t\r\n]+")
 
-Span = tuple[int, int]
+Span = Tuple[int, int]
 
 
 def _line_starts(data: bytes) -> list[int]:

@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import json
 import os
-from functools import cache
+from functools import lru_cache
 
 DATA = "precision.json"
 
 
-@cache
+@lru_cache(maxsize=None)
 def _table() -> dict[str, dict[str, dict[str, float]]]:
     # A plain file next to the module: a standalone linter (which embeds modules without
     # their data) finds none and says "not measured".

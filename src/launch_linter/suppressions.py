@@ -36,7 +36,7 @@ _DIRECTIVE = re.compile(
 )
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Directive:
     """One ``launch-linter:`` comment; ``target`` is the element line it covers."""
 
@@ -49,7 +49,7 @@ class Directive:
     """Start line of the next element; None for ``disable-file`` or when none follows."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Malformed:
     """A comment that starts with ``launch-linter:`` but is not a directive."""
 
@@ -58,7 +58,7 @@ class Malformed:
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class PathIgnore:
     """``per-path-ignores``: rules (or categories) ignored in files matching ``pattern``.
 
@@ -78,7 +78,11 @@ class PathIgnore:
             return False
         if "/" not in self.pattern:
             return glob_match(self.pattern, os.path.basename(absolute))
-        return glob_match(self.pattern.removeprefix("./"), relative)
+        return glob_match(_without_dot_slash(self.pattern), relative)
+
+
+def _without_dot_slash(pattern: str) -> str:
+    return pattern[2:] if pattern.startswith("./") else pattern
 
 
 @lru_cache(maxsize=256)

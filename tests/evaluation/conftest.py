@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable, Dict, List, Tuple
 
 import pytest
 from evaluation_helpers import build_db
 
-MakeDb = Callable[[list[dict[str, Any]]], tuple[Path, Path]]
+MakeDb = Callable[[List[Dict[str, Any]]], Tuple[Path, Path]]
 
 
 @pytest.fixture

@@ -1,4 +1,7 @@
+from __future__ import annotations
+
 import csv
+import importlib.util
 import shutil
 from pathlib import Path
 from typing import Any
@@ -8,6 +11,8 @@ from conftest import MakeDb
 from evaluation_helpers import launch, node
 
 from launch_linter.cli import main
+from launch_linter.evaluation import chart
+from launch_linter.evaluation import evaluate as evaluate_module
 from launch_linter.evaluation.evaluate import EvaluationError, evaluate
 from launch_linter.evaluation.history import FIXED, PERSISTING
 from launch_linter.evaluation.table import CSV_COLUMNS, TOTAL_STUDY_RULES
@@ -93,6 +98,7 @@ def test_threshold_moves_only_the_belief_rules(make_db: MakeDb) -> None:
 
 def test_command_writes_every_output(make_db: MakeDb, tmp_path: Path,
                                      capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("matplotlib", reason="the chart needs the plot extra")
     _, db = make_db(corpus_rows())
     out = tmp_path / "out"
     assert main(["evaluate", "--db", str(db), "--out", str(out)]) == 0
@@ -108,6 +114,30 @@ def test_command_writes_every_output(make_db: MakeDb, tmp_path: Path,
     history = (out / "history.md").read_text(encoding="utf-8")
     assert "| rot_degrees | 1 | 1 | 1 | 0 | 0 | 100% | 1 | 1 | 0 |" in history
     assert "2 files (66.7%) with a fault" in capsys.readouterr().out
+
+
+def test_without_matplotlib_everything_but_the_chart_is_written_and_one_line_says_why(
+    make_db: MakeDb, tmp_path: Path, capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # As a plain install (no plot extra) finds it: matplotlib not installed.
+    monkeypatch.setattr(chart, "chart_available", lambda: False)
+    monkeypatch.setattr(evaluate_module, "chart_available", lambda: False)
+    _, db = make_db(corpus_rows())
+    out = tmp_path / "out"
+    assert main(["evaluate", "--db", str(db), "--out", str(out)]) == 0
+    assert sorted(p.name for p in out.iterdir()) == ["history.md", "table.csv", "table.md"]
+    captured = capsys.readouterr()
+    assert "rules.png" not in captured.out and "2 files (66.7%) with a fault" in captured.out
+    hints = [line for line in captured.err.splitlines() if "rules.png" in line]
+    assert hints == [
+        "launch-linter: rules.png not drawn: it needs matplotlib "
+        "(pip install 'launch-linter[plot]')"
+    ]
+
+
+def test_the_chart_is_looked_up_not_imported() -> None:
+    assert chart.chart_available() == (importlib.util.find_spec("matplotlib") is not None)
 
 
 def test_beliefs_option_replaces_the_mined_beliefs(make_db: MakeDb, tmp_path: Path) -> None:

@@ -1,3 +1,5 @@
+from __future__ import annotations
+
 from evaluation_helpers import launch, linted, node
 
 from launch_linter.evaluation.history import (

@@ -13,6 +13,7 @@ import json
 import subprocess
 import sys
 from pathlib import Path
+from typing import Optional, Tuple
 
 import pytest
 
@@ -36,7 +37,7 @@ CASES: list[tuple[Path, dict[str, str]]] = [
     (FIXTURES / "robot_real" / "urdf_tutorial" / "08-macroed.urdf.xacro", {}),
     (FIXTURES / "robot_real" / "turtlebot3" / "turtlebot3_burger.urdf", {}),
 ]
-Joint = tuple[str, str, str | None, str | None, tuple[float, ...], tuple[float, ...]]
+Joint = Tuple[str, str, Optional[str], Optional[str], Tuple[float, ...], Tuple[float, ...]]
 
 pytestmark = pytest.mark.skipif(
     importlib.util.find_spec("xacro") is None,
@@ -73,7 +74,7 @@ def ours(path: Path, args: dict[str, str]) -> list[Joint]:
 def test_joints_equal_the_real_xacros(path: Path, args: dict[str, str]) -> None:
     expected, got = oracle(path, args), ours(path, args)
     assert [j[:4] for j in got] == [j[:4] for j in expected]
-    for mine, theirs in zip(got, expected, strict=False):
+    for mine, theirs in zip(got, expected):
         assert mine[4] == pytest.approx(theirs[4], abs=1e-9), mine[0]
         assert mine[5] == pytest.approx(theirs[5], abs=1e-9), mine[0]
     assert got, "a case without joints tests nothing"

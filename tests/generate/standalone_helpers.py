@@ -18,6 +18,7 @@ from typing import Any
 from launch_linter.cli import main as cli_main
 from launch_linter.engine import LintOptions, discover, lint_paths
 from launch_linter.model.beliefs import BELIEF_FORMAT
+from launch_linter.resolve.safe_eval import subscript_index
 
 REPO = Path(__file__).resolve().parents[2]
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
@@ -92,7 +93,7 @@ NEWEST_MINOR = 13
 """The newest Python 3 the tests look for."""
 
 
-@functools.cache
+@functools.lru_cache(maxsize=None)
 def other_pythons() -> tuple[str, ...]:
     """Working interpreters of Python 3.8 to 3.13 other than this one (pyenv's, then those
     on PATH), oldest first."""
@@ -150,7 +151,8 @@ class Generated:
                 and isinstance(node.targets[0].value, ast.Name)
                 and node.targets[0].value.id == "MODULES"
             ):
-                out[ast.literal_eval(node.targets[0].slice)] = ast.literal_eval(node.value)
+                key = ast.literal_eval(subscript_index(node.targets[0]))
+                out[key] = ast.literal_eval(node.value)
         return out
 
 

@@ -7,13 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from launch_linter.generate import backport, embed
+from launch_linter.generate import embed
 from launch_linter.rules import RULE_MODULES
-
-EDIT_MARKS = (
-    backport.COMPAT_MODULE, "_typing.", "import typing as _typing", "__future__", "isinstance(",
-    "issubclass(", "removeprefix(", "removesuffix(",
-)
 
 
 @pytest.fixture(scope="module")
@@ -26,28 +21,18 @@ def test_the_check_command_and_every_rule_are_embedded(embedding: embed.Embeddin
     assert {
         "launch_linter", "launch_linter.cli", "launch_linter.engine", "launch_linter.rules",
         "launch_linter.report.json_report", "launch_linter.report.text",
-        "launch_linter.beliefs_files", backport.COMPAT_MODULE,
+        "launch_linter.beliefs_files",
     } <= names
     assert {m.__name__ for m in RULE_MODULES} <= names
     assert not [n for n in names if embed._is_under(n, embed.EXCLUDED)]
 
 
-def test_modules_are_the_package_files_with_only_python_3_8_edits(
-    embedding: embed.Embedding,
-) -> None:
+def test_modules_are_the_package_files_verbatim(embedding: embed.Embedding) -> None:
     root = embed.package_root()
     for module in embedding.modules:
-        if module.name == backport.COMPAT_MODULE:
-            continue
         original = (root / module.path).read_text(encoding="utf-8")
-        assert module.original_sha256 == embed.hashlib.sha256(original.encode()).hexdigest()
-        lines, embedded = original.splitlines(), module.source.splitlines()
-        # Every line keeps its number, so tracebacks point at the package's lines.
-        assert len(embedded) == len(lines), module.path
-        for before, after in zip(lines, embedded, strict=True):
-            if before != after:
-                rewritten = any(mark in after for mark in EDIT_MARKS) or " | " in before
-                assert rewritten or not after.strip(" )]:,"), (module.path, before, after)
+        assert module.source == original, module.path
+        assert module.sha256 == embed.hashlib.sha256(original.encode()).hexdigest()
     assert [m.name for m in embedding.modules] == sorted(m.name for m in embedding.modules)
 
 
@@ -124,11 +109,17 @@ def test_lazy_imports_are_followed_when_possible_and_noted_otherwise(tmp_path: P
     )
 
 
-def test_code_that_python_3_8_cannot_run_is_refused(tmp_path: Path) -> None:
+def test_a_standard_module_newer_than_python_3_8_is_refused(tmp_path: Path) -> None:
     root = _package(tmp_path, {
         "__init__.py": "",
         "beliefs_files.py": "",
-        "cli.py": "from functools import cache\n",
+        "cli.py": "import tomllib\n",
     })
-    with pytest.raises(embed.EmbedError, match=r"cli.py:1: functools.cache needs Python 3.9"):
+    with pytest.raises(embed.EmbedError, match=r"cli.py:1: imports tomllib, new in Python 3.11"):
         embed.collect(root)
+
+
+def test_standard_modules_are_told_from_installed_ones() -> None:
+    assert embed._in_stdlib("json") and embed._in_stdlib("sys") and embed._in_stdlib("ast")
+    assert not embed._in_stdlib("yaml") and not embed._in_stdlib("no_such_module_here")
+    assert not embed._in_stdlib("tomllib")

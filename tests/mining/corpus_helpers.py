@@ -7,9 +7,8 @@ import json
 import os
 import sqlite3
 import subprocess
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable, Dict, List
 
 
 def node(name: str, args: str, pkg: str = "tf") -> str:
@@ -20,7 +19,7 @@ def launch(*nodes: str) -> str:
     return "<launch>\n" + "\n".join(nodes) + "\n</launch>\n"
 
 
-MakeCorpus = Callable[[list[dict[str, Any]]], Path]
+MakeCorpus = Callable[[List[Dict[str, Any]]], Path]
 
 
 def write_corpus(root: Path, rows: list[dict[str, Any]]) -> Path:

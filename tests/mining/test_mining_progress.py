@@ -1,3 +1,5 @@
+from __future__ import annotations
+
 import io
 
 from launch_linter.mining.progress import Progress

@@ -2,16 +2,16 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
+from typing import Callable, List, Tuple
 
 import pytest
 
 from launch_linter import LintOptions, lint_paths, lint_text
 from launch_linter.model import Diagnostic
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
 
 
 def run_rule(

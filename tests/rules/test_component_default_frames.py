@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 from launch_linter import LintOptions, lint_text
 from launch_linter.model import Diagnostic
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
 
 
 def run_rule(text: str, rule: str, path: str) -> tuple[Diagnostic, ...]:

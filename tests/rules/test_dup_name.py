@@ -1,12 +1,14 @@
-from collections.abc import Callable
+from __future__ import annotations
+
 from dataclasses import replace
+from typing import Callable, List, Tuple
 
 from launch_linter.model import Diagnostic, LaunchTree, Location, Severity
 from launch_linter.rules import RULES_BY_ID, RuleContext
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
-LintTree = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
+LintTree = Callable[..., Tuple[Diagnostic, ...]]
 
 RULE = "dup_name"
 

@@ -1,12 +1,14 @@
-from collections.abc import Callable
+from __future__ import annotations
+
 from pathlib import Path
+from typing import Callable, List, Tuple
 
 from launch_linter import LintOptions, lint_paths
 from launch_linter.model import Diagnostic, Location
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
-LintTree = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
+LintTree = Callable[..., Tuple[Diagnostic, ...]]
 
 RULE = "dup_sig"
 

@@ -1,11 +1,11 @@
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 from robot_ws import ws_lint
 
 RULE = "frame_authority"
-Lint = Callable[..., list[tuple[str, int]]]
+Lint = Callable[..., List[Tuple[str, int]]]
 MAP_ODOM = ('<node pkg="tf2_ros" type="static_transform_publisher" name="t" '
             'args="0 0 0 0 0 0 map odom"/>')
 

@@ -1,9 +1,11 @@
-from collections.abc import Callable
+from __future__ import annotations
+
+from typing import Callable, List, Tuple
 
 from launch_linter.model import Diagnostic, Severity
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
 
 RULE = "leading_slash"
 

@@ -1,3 +1,5 @@
+from __future__ import annotations
+
 import re
 
 from launch_linter import LintOptions, lint_text

@@ -1,11 +1,11 @@
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 from robot_ws import ws_lint
 
 RULE = "optical_frame_rotation"
-Lint = Callable[..., list[tuple[str, int]]]
+Lint = Callable[..., List[Tuple[str, int]]]
 
 
 def static(args: str) -> str:

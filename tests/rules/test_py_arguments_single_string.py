@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 from launch_linter import LintOptions, lint_text
 from launch_linter.model import Diagnostic
 
-Lint = Callable[..., list[tuple[str, int]]]
+Lint = Callable[..., List[Tuple[str, int]]]
 
 
 def run_rule(text: str, rule: str, path: str) -> tuple[Diagnostic, ...]:

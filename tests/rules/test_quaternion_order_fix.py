@@ -1,13 +1,13 @@
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 from launch_linter.engine import lint_text
 from launch_linter.fix import apply_edits
 from launch_linter.model import Diagnostic
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
 
 RULE = "quaternion_order"
 NODE = """<launch>

@@ -1,12 +1,12 @@
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
 import pytest
 from robot_ws import ws_lint
 
 RULE = "rep105_order"
-Lint = Callable[..., list[tuple[str, int]]]
+Lint = Callable[..., List[Tuple[str, int]]]
 
 
 def static(parent: str, child: str) -> str:

@@ -1,11 +1,13 @@
-from collections.abc import Callable
+from __future__ import annotations
+
+from typing import Callable, List, Tuple
 
 import pytest
 
 from launch_linter.model import Diagnostic
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
 
 RULE = "reversed_name"
 

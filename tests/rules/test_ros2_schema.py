@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Callable, List, Tuple
 
-Lint = Callable[..., list[tuple[str, int]]]
+Lint = Callable[..., List[Tuple[str, int]]]
 
 GOOD = """<launch>
   <node pkg="tf2_ros" exec="static_transform_publisher" namespace="r"

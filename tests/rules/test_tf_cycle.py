@@ -1,4 +1,6 @@
-from collections.abc import Callable
+from __future__ import annotations
+
+from typing import Callable, List, Tuple
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -6,9 +8,9 @@ from hypothesis import strategies as st
 from launch_linter import LintOptions, lint_text
 from launch_linter.model import Diagnostic
 
-Lint = Callable[..., list[tuple[str, int]]]
-LintDiagnostics = Callable[..., tuple[Diagnostic, ...]]
-LintTree = Callable[..., tuple[Diagnostic, ...]]
+Lint = Callable[..., List[Tuple[str, int]]]
+LintDiagnostics = Callable[..., Tuple[Diagnostic, ...]]
+LintTree = Callable[..., Tuple[Diagnostic, ...]]
 
 RULE = "tf_cycle"
 

@@ -2,7 +2,17 @@
 
 from __future__ import annotations
 
+import importlib.util
+
 from launch_linter.evaluation.table import FaultTable
+
+PLOT_HINT = "pip install 'launch-linter[plot]'"
+"""How to get matplotlib, which only the chart needs (a plain install leaves it out)."""
+
+
+def chart_available() -> bool:
+    """Whether matplotlib is installed (looked up, not imported: importing it is slow)."""
+    return importlib.util.find_spec("matplotlib") is not None
 
 
 def write_chart(table: FaultTable, path: str, title: str) -> None:
@@ -28,12 +38,12 @@ def write_chart(table: FaultTable, path: str, title: str) -> None:
             [p + height / 2 for p in positions], study, height, label="study (Table IV)",
             color="#ff7f0e",
         )
-        for bar, value in zip(bars, ours, strict=True):
+        for bar, value in zip(bars, ours):
             axes.annotate(
                 f"{value:.2f}", (bar.get_width(), bar.get_y() + bar.get_height() / 2),
                 xytext=(3, 0), textcoords="offset points", va="center", fontsize=7,
             )
-        for bar, row in zip(study_bars, rows, strict=True):
+        for bar, row in zip(study_bars, rows):
             if row.study is not None:
                 axes.annotate(
                     f"{row.study.percent:g}",

@@ -22,7 +22,8 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(ns: argparse.Namespace) -> int:
     # Imported here: every command line builds this parser, few evaluate.
-    from launch_linter.evaluation.evaluate import EvaluationError, evaluate, write_outputs
+    from launch_linter.evaluation.chart import PLOT_HINT, chart_available
+    from launch_linter.evaluation.evaluate import CHART, EvaluationError, evaluate, write_outputs
 
     try:
         evaluation = evaluate(ns.db, ns.min_z, ns.beliefs)
@@ -43,6 +44,8 @@ def run(ns: argparse.Namespace) -> int:
         f"history: {fixed} faults of earlier versions fixed, {persisting} persisting\n"
         f"wrote {', '.join(paths)}\n"
     )
+    if not chart_available():
+        sys.stderr.write(f"launch-linter: {CHART} not drawn: it needs matplotlib ({PLOT_HINT})\n")
     for where, reason in evaluation.scope.not_linted:
         sys.stderr.write(f"launch-linter: warning: {where}: {reason}\n")
     return EXIT_OK

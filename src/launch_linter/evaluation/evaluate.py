@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from launch_linter.beliefs_files import BeliefsNotFound, load_beliefs
 from launch_linter.engine import LintOptions
-from launch_linter.evaluation.chart import write_chart
+from launch_linter.evaluation.chart import chart_available, write_chart
 from launch_linter.evaluation.history import History, follow_history, render_history
 from launch_linter.evaluation.lint import Linted, LintOutcome, Version, lint_bytes
 from launch_linter.evaluation.study import STUDY_FILES
@@ -31,6 +31,7 @@ from launch_linter.resolve.xml_safe import read_launch_bytes
 from launch_linter.rules import rules_for_profile
 
 OUTPUTS = ("table.md", "table.csv", "rules.png", "history.md")
+CHART = "rules.png"
 
 STUDY = "study"
 """Table IV reproduces the study: its checks and severities (docs/severity.md)."""
@@ -40,7 +41,7 @@ class EvaluationError(Exception):
     """The database or its corpus cannot be evaluated."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Scope:
     """What was evaluated, for the outputs' preambles."""
 
@@ -57,7 +58,7 @@ class Scope:
     """The highest z of any belief mined into the database (None when there is none)."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Evaluation:
     scope: Scope
     table: FaultTable
@@ -227,10 +228,14 @@ def preamble(scope: Scope, table: FaultTable) -> list[str]:
 
 
 def write_outputs(evaluation: Evaluation, out: str) -> list[str]:
-    """Write table.md, table.csv, rules.png and history.md into ``out``; their paths."""
+    """Write table.md, table.csv, rules.png and history.md into ``out``; their paths.
+
+    rules.png only with matplotlib (the ``plot`` extra): without it the other files are
+    written and rules.png is not among the paths."""
     os.makedirs(out, exist_ok=True)
     lines = preamble(evaluation.scope, evaluation.table)
-    paths = [os.path.join(out, name) for name in OUTPUTS]
+    with_chart = chart_available()
+    paths = [os.path.join(out, n) for n in OUTPUTS if with_chart or n != CHART]
     texts = {
         "table.md": render_table(evaluation.table, lines),
         "table.csv": render_csv(evaluation.table),
@@ -239,9 +244,11 @@ def write_outputs(evaluation: Evaluation, out: str) -> list[str]:
     for name, text in texts.items():
         with open(os.path.join(out, name), "w", encoding="utf-8") as handle:
             handle.write(text)
+    if not with_chart:
+        return paths
     write_chart(
         evaluation.table,
-        os.path.join(out, "rules.png"),
+        os.path.join(out, CHART),
         f"Files with each fault: {evaluation.table.files} latest files of immature "
         f"repositories (z ≥ {evaluation.scope.min_z:g}) vs the study's {STUDY_FILES}",
     )

@@ -32,7 +32,7 @@ FIXED, PERSISTING, GONE = "fixed", "persisting", "gone"
 OUTCOMES = (FIXED, PERSISTING, GONE)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Fault:
     """One fault of an earlier version, and what became of it in the latest version."""
 
@@ -46,7 +46,7 @@ class Fault:
     outcome: str
 
 
-@dataclass(slots=True)
+@dataclass
 class RuleHistory:
     diagnostics: int = 0
     """Diagnostics on earlier versions, before counting a repeated fault once."""
@@ -62,7 +62,7 @@ class RuleHistory:
         return sum(self.outcomes.values())
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class History:
     rules: dict[str, RuleHistory]
     faults: tuple[Fault, ...]

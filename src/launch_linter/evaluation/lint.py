@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Tuple
 
 from launch_linter.engine import (
     InputFile,
@@ -17,7 +18,7 @@ from launch_linter.model.diagnostic import Diagnostic
 from launch_linter.model.transform import StaticTransform
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Version:
     """One (repository, path, version) of the database."""
 
@@ -36,7 +37,7 @@ class Version:
         return self.head_paths or (self.path,)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Linted:
     """What the linter found in one version: its own transforms and the diagnostics located
     in it (not in files it includes, which are judged when they are linted themselves)."""
@@ -47,7 +48,7 @@ class Linted:
     diagnostics: tuple[Diagnostic, ...]
 
 
-LintOutcome = tuple[str, tuple[StaticTransform, ...], tuple[Diagnostic, ...]]
+LintOutcome = Tuple[str, Tuple[StaticTransform, ...], Tuple[Diagnostic, ...]]
 """(file status, own transforms, own diagnostics)."""
 
 

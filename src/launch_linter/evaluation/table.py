@@ -21,7 +21,7 @@ CSV_COLUMNS = (
 )
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RuleRow:
     """One line of the table: a rule, or a total over several rules."""
 
@@ -34,7 +34,7 @@ class RuleRow:
     study: StudyRow | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FaultTable:
     files: int
     """Files linted: the denominator of every percentage."""

@@ -89,7 +89,7 @@ _ENV_REFERENCE = re.compile(r"\$\((optenv|env|arg)\s+([^\s)]+)")
 """``$(optenv NAME ...)``, ``$(env NAME)``, ``$(arg NAME)`` in attribute text."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LoadOptions:
     """What the command line tells the loader."""
 
@@ -811,7 +811,7 @@ class Ros1Loader:
         self._required(element, "name", context, anon)
         self._required(element, "address", context, anon)
         values = dict(zip(_MACHINE_ATTRS, self._resolve_all(element, _MACHINE_ATTRS, context,
-                                                            anon), strict=True))
+                                                            anon)))
         default = values["default"]
         default_text = resolved_text(default) if default is not None else "false"
         if default_text is not None and (default_text or "false").lower() not in (

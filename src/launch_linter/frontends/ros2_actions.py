@@ -11,13 +11,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Union
 
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Subs, Text
 from launch_linter.resolve.value import Value
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Where:
     """Where an action is written: absolute path, 1-based line and column."""
 
@@ -26,7 +27,7 @@ class Where:
     column: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Predicate:
     """An ``if`` (``positive``) or ``unless`` condition on an action."""
 
@@ -34,7 +35,7 @@ class Predicate:
     expression: Subs
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class DeclareArg:
     where: Where
     condition: Predicate | None
@@ -42,7 +43,7 @@ class DeclareArg:
     default: Subs | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class SetVar:
     """``<let>`` / ``SetLaunchConfiguration``; ``value`` None unsets it."""
 
@@ -52,7 +53,7 @@ class SetVar:
     value: Subs | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class SetEnv:
     """``<set_env>`` / ``SetEnvironmentVariable``; ``value`` None unsets it."""
 
@@ -62,14 +63,14 @@ class SetEnv:
     value: Subs | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class PushNamespace:
     where: Where
     condition: Predicate | None
     namespace: Subs
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Group:
     """``<group>`` / ``GroupAction``: ``scoped`` keeps configurations set inside from
     leaking out; ``forwarding`` False starts the group without the outer ones."""
@@ -81,7 +82,7 @@ class Group:
     forwarding: Subs | bool = True
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Include:
     where: Where
     condition: Predicate | None
@@ -89,7 +90,7 @@ class Include:
     args: tuple[tuple[Subs, Subs], ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RunNode:
     """``<node>`` / ``Node``. ``arguments`` holds one entry per argv item, or None when
     the list cannot be known (``unknown`` says why)."""
@@ -127,7 +128,7 @@ def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | Non
     return items[2], items[3], tuple(items[4:])
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Params:
     """Parameters given by name (nested names joined with ``.``). launch gives each value
     YAML typing after substitution (``1.0`` is a double, ``map`` a string), whatever the
@@ -136,14 +137,14 @@ class Params:
     items: tuple[tuple[str, Subs], ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ParamsUnknown:
     """Parameters from somewhere the linter does not read (a file, an expression)."""
 
     reason: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Component:
     """``<composable_node>`` / ``ComposableNode`` inside a container or a load action."""
 
@@ -156,7 +157,7 @@ class Component:
     parameters: tuple[Params | ParamsUnknown, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LoadComponents:
     """``<node_container>``, ``<load_composable_node>`` and their Python classes."""
 
@@ -165,7 +166,7 @@ class LoadComponents:
     components: tuple[Component, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Deferred:
     """Actions known only when the launch runs (a Python ``OpaqueFunction``): ``expand``
     receives a resolver for substitutions at that point and returns the actions."""
@@ -175,7 +176,7 @@ class Deferred:
     expand: Callable[[Callable[[Subs], Value]], Sequence[Action]]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Unfollowed:
     """Something that may launch nodes but that the linter cannot follow."""
 
@@ -183,13 +184,18 @@ class Unfollowed:
     reason: str
 
 
-Action = (
-    DeclareArg | SetVar | SetEnv | PushNamespace | Group | Include | RunNode
-    | LoadComponents | Deferred | Unfollowed
+ACTION_TYPES = (
+    DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
+    LoadComponents, Deferred, Unfollowed,
 )
+"""The action classes, for ``isinstance`` (Python 3.8 has no run-time ``X | Y``)."""
+Action = Union[
+    DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
+    LoadComponents, Deferred, Unfollowed,
+]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Problem:
     """Something the reader of one file reports: ``rule`` is ``parse_error``,
     ``roslaunch_error`` or ``unresolved``."""
@@ -200,7 +206,7 @@ class Problem:
     message: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FileRead:
     """One file read by a ROS 2 front-end; ``actions`` is None when it is unreadable."""
 

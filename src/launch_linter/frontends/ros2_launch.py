@@ -102,7 +102,7 @@ def _environment_names(subs: Subs, depth: int = 0) -> list[str]:
     return names
 
 
-@dataclass(slots=True)
+@dataclass
 class _Scope:
     """Launch configurations and environment, shared by everything that runs in it."""
 
@@ -115,7 +115,7 @@ class _Scope:
         return _Scope(dict(self.configs), dict(self.env), condition)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class _Frame:
     """Where the actions being run come from."""
 
@@ -126,7 +126,7 @@ class _Frame:
     condition: Condition
 
 
-@dataclass(slots=True)
+@dataclass
 class _Budget:
     actions: int = 0
     anon: dict[str, str] = field(default_factory=dict)

@@ -33,6 +33,7 @@ from io import BytesIO
 from typing import Any
 
 from launch_linter.frontends.ros2_actions import (
+    ACTION_TYPES,
     Action,
     Component,
     DeclareArg,
@@ -57,6 +58,7 @@ from launch_linter.model.budget import Budget
 from launch_linter.model.launch import DIRECTIVE_MARKER
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
+from launch_linter.resolve.safe_eval import subscript_index
 from launch_linter.resolve.value import Value, holes, resolved_text
 from launch_linter.resolve.xml_safe import MAX_BYTES
 
@@ -84,7 +86,7 @@ _LEGACY_NODE_KEYWORDS = {
 # -- values -----------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Unknown:
     """A value the linter cannot know: why, and where it was written."""
 
@@ -100,7 +102,7 @@ class Unknown:
         return Opaque(prefix + self.text, f"line {self.line}: {self.reason}")
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class SubsVal:
     """A launch substitution object (or a list of them): evaluated only when it runs."""
 
@@ -115,7 +117,7 @@ class OpenFile:
     path: Subs
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LazyStr:
     """A Python string (or path) whose value the linter computes later, from the same
     facts launch would use: a package location, an environment variable."""
@@ -124,27 +126,27 @@ class LazyStr:
     path: bool = False
 
 
-@dataclass(slots=True)
+@dataclass
 class LaunchDescriptionVal:
     items: list[object]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class CondVal:
     predicate: Predicate
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class SourceVal:
     path: Subs
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ComponentVal:
     component: Component
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ModuleVal:
     """A name imported from a module: ``launch_ros.actions.Node``, ``os.path``."""
 
@@ -159,46 +161,46 @@ class ModuleVal:
         return self.dotted.rsplit(".", 1)[-1]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LaunchObject:
     """An instance of a launch class that starts no static transform."""
 
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Builtin:
     name: str
 
 
-@dataclass(slots=True)
+@dataclass
 class FuncVal:
     node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
     closure: Env
     defaults: dict[str, object]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class BoundMethod:
     target: object
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class HandlerVal:
     """A process event handler: the entities it starts when the event happens."""
 
     entities: list[object]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ContextVal:
     """The ``LaunchContext`` an ``OpaqueFunction`` receives."""
 
     resolver: Callable[[Subs], Value]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ConfigsVal:
     """``context.launch_configurations``."""
 
@@ -270,7 +272,7 @@ def _substitution(kind: str, arity: int) -> Callable[..., object]:
     return make
 
 
-@dataclass(slots=True)
+@dataclass
 class Interpreter:
     path: str
     source: str
@@ -348,7 +350,7 @@ class Interpreter:
 
     def guard(self, value: object) -> object:
         """An action added under an unknown Python ``if`` is present only under it."""
-        if not self.branches or not isinstance(value, Action):
+        if not self.branches or not isinstance(value, ACTION_TYPES):
             return value
         action: Action = value
         for predicate in reversed(self.branches):
@@ -379,7 +381,7 @@ class Interpreter:
             self.run_if(node, env)
         elif isinstance(node, ast.For):
             self.run_for(node, env)
-        elif isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             defaults = self.defaults(node.args, env)
             env.vars[node.name] = FuncVal(node, env, defaults)
         elif isinstance(node, ast.Import):
@@ -427,9 +429,9 @@ class Interpreter:
         values: dict[str, object] = {}
         positional = [*arguments.posonlyargs, *arguments.args]
         for arg, default in zip(positional[len(positional) - len(arguments.defaults):],
-                                arguments.defaults, strict=True):
+                                arguments.defaults):
             values[arg.arg] = self.eval(default, env)
-        for arg, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults, strict=True):
+        for arg, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults):
             if kw_default is not None:
                 values[arg.arg] = self.eval(kw_default, env)
         return values
@@ -437,10 +439,10 @@ class Interpreter:
     def assign(self, target: ast.expr, value: object, env: Env) -> None:
         if isinstance(target, ast.Name):
             env.vars[target.id] = value
-        elif isinstance(target, ast.Tuple | ast.List):
+        elif isinstance(target, (ast.Tuple, ast.List)):
             names = target.elts
-            if isinstance(value, list | tuple) and len(value) == len(names):
-                for name, item in zip(names, value, strict=True):
+            if isinstance(value, (list, tuple)) and len(value) == len(names):
+                for name, item in zip(names, value):
                     self.assign(name, item, env)
             else:
                 reason = value if isinstance(value, Unknown) else self.unknown(
@@ -449,15 +451,15 @@ class Interpreter:
                     self.assign(name, reason, env)
         elif isinstance(target, ast.Subscript):
             container = self.eval(target.value, env)
-            key = self.eval(target.slice, env)
-            if isinstance(container, dict) and isinstance(key, str | int | float | bool):
+            key = self.eval(subscript_index(target), env)
+            if isinstance(container, dict) and isinstance(key, (str, int, float, bool)):
                 container[key] = value
 
     def aug_assign(self, node: ast.AugAssign, env: Env) -> None:
         current = self.eval(node.target, env) if isinstance(node.target, ast.Name) else None
         value = self.eval(node.value, env)
         if isinstance(node.op, ast.Add) and isinstance(current, list) and isinstance(
-            value, list | tuple
+            value, (list, tuple)
         ):
             self.extend(current, value)
             return
@@ -518,7 +520,7 @@ class Interpreter:
             self.branches.pop()
 
     def iterate(self, value: object, node: ast.AST) -> list[object] | Unknown:
-        if isinstance(value, list | tuple):
+        if isinstance(value, (list, tuple)):
             return list(value)
         if isinstance(value, dict):
             return list(value)
@@ -547,7 +549,7 @@ class Interpreter:
     def eval(self, node: ast.expr, env: Env) -> object:
         self.step()
         if isinstance(node, ast.Constant):
-            if isinstance(node.value, str | int | float | bool) or node.value is None:
+            if isinstance(node.value, (str, int, float, bool)) or node.value is None:
                 return node.value
             return self.unknown(node, "unsupported constant")
         if isinstance(node, ast.Name):
@@ -561,7 +563,7 @@ class Interpreter:
             if node.id in BUILTINS:
                 return Builtin(node.id)
             return self.unknown(node, f"name '{node.id}' is not known here")
-        if isinstance(node, ast.List | ast.Tuple):
+        if isinstance(node, (ast.List, ast.Tuple)):
             items = self.sequence(node.elts, env, node)
             if isinstance(items, Unknown):
                 return items
@@ -589,8 +591,9 @@ class Interpreter:
                 return self.unknown(node, "depends on a condition the linter cannot decide")
             return self.eval(node.body if test else node.orelse, env)
         if isinstance(node, ast.Subscript):
-            return self.subscript(self.eval(node.value, env), self.eval(node.slice, env), node)
-        if isinstance(node, ast.ListComp | ast.GeneratorExp):
+            container = self.eval(node.value, env)
+            return self.subscript(container, self.eval(subscript_index(node), env), node)
+        if isinstance(node, (ast.ListComp, ast.GeneratorExp)):
             return self.comprehension(node, env)
         if isinstance(node, ast.Lambda):
             return FuncVal(node, env, self.defaults(node.args, env))
@@ -613,7 +616,7 @@ class Interpreter:
 
     def mapping(self, node: ast.Dict, env: Env) -> object:
         result: dict[object, object] = {}
-        for key_node, value_node in zip(node.keys, node.values, strict=True):
+        for key_node, value_node in zip(node.keys, node.values):
             value = self.eval(value_node, env)
             if key_node is None:
                 if not isinstance(value, dict):
@@ -621,15 +624,15 @@ class Interpreter:
                 result.update(value)
                 continue
             key = self.eval(key_node, env)
-            if not isinstance(key, str | int | float | bool) and key is not None:
+            if not isinstance(key, (str, int, float, bool)) and key is not None:
                 return self.unknown(key_node, "dictionary key is not a known constant")
             result[key] = value
         return result
 
     def truth(self, value: object) -> bool | None:
-        if isinstance(value, str | int | float | bool | list | tuple | dict) or value is None:
+        if isinstance(value, (str, int, float, bool, list, tuple, dict)) or value is None:
             return bool(value)
-        if isinstance(value, Unknown | SubsVal | LazyStr):
+        if isinstance(value, (Unknown, SubsVal, LazyStr)):
             return None
         return True
 
@@ -640,8 +643,8 @@ class Interpreter:
             return base
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
-        if isinstance(base, list | dict | str | SubsVal | LazyStr | LaunchDescriptionVal |
-                      ConfigsVal | OpenFile):
+        if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,
+                             OpenFile)):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"
@@ -662,7 +665,7 @@ class Interpreter:
             inner = self.eval(value.value, env)
             if isinstance(inner, LazyStr):
                 parts.extend(inner.subs)
-            elif isinstance(inner, str | int | float | bool):
+            elif isinstance(inner, (str, int, float, bool)):
                 parts.append(Text(str(inner)))
             elif isinstance(inner, Unknown):
                 return inner
@@ -676,7 +679,7 @@ class Interpreter:
         if isinstance(right, Unknown):
             return right
         if isinstance(op, ast.Add):
-            if isinstance(left, LazyStr | str) and isinstance(right, LazyStr | str):
+            if isinstance(left, (LazyStr, str)) and isinstance(right, (LazyStr, str)):
                 return self.text_value((*_as_subs(left), *_as_subs(right)), node)
             if isinstance(left, list) and isinstance(right, list):
                 if len(left) + len(right) > MAX_ITEMS:
@@ -687,13 +690,13 @@ class Interpreter:
                     return self.unknown(node, f"more than {MAX_ITEMS} items")
                 return left + right
         if isinstance(op, ast.Div) and isinstance(left, LazyStr) and left.path and isinstance(
-            right, str | LazyStr
+            right, (str, LazyStr)
         ):
             return LazyStr((Call("path-join", (left.subs, _as_subs(right)),
                                  self.segment(node)),), path=True)
         if isinstance(op, ast.Mod) and isinstance(left, str):
             args = right if isinstance(right, tuple) else (right,)
-            if all(isinstance(a, str | int | float | bool) for a in args) and (
+            if all(isinstance(a, (str, int, float, bool)) for a in args) and (
                 "%" not in _SAFE_PERCENT.sub("", left)
             ):
                 try:
@@ -706,14 +709,14 @@ class Interpreter:
         if isinstance(op, ast.Mult):
             count, item = (right, left) if isinstance(right, int) else (left, right)
             if isinstance(count, int) and not isinstance(count, bool) and isinstance(
-                item, str | list | tuple
+                item, (str, list, tuple)
             ):
                 if len(item) * max(count, 0) > MAX_ITEMS * 10:
                     return self.unknown(node, "value too large")
                 return item * count
         numbers = (int, float)
         if isinstance(left, numbers) and isinstance(right, numbers) and not isinstance(
-            op, ast.Pow | ast.LShift
+            op, (ast.Pow, ast.LShift)
         ):
             operations: dict[type, Callable[[Any, Any], object]] = {
                 ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b,
@@ -733,7 +736,7 @@ class Interpreter:
 
     def compare(self, node: ast.Compare, env: Env) -> object:
         left = self.eval(node.left, env)
-        for op, right_node in zip(node.ops, node.comparators, strict=True):
+        for op, right_node in zip(node.ops, node.comparators):
             right = self.eval(right_node, env)
             if not _plain(left) or not _plain(right):
                 return self.unknown(node, "compares a value the linter does not know")
@@ -763,7 +766,7 @@ class Interpreter:
             truth = self.truth(operand)
             return self.unknown(node, "depends on an unknown value") if truth is None else (
                 not truth)
-        if isinstance(operand, int | float) and not isinstance(operand, bool):
+        if isinstance(operand, (int, float)) and not isinstance(operand, bool):
             if isinstance(node.op, ast.USub):
                 return -operand
             if isinstance(node.op, ast.UAdd):
@@ -783,7 +786,7 @@ class Interpreter:
         try:
             if isinstance(base, dict):
                 return base[key]
-            if isinstance(base, list | tuple | str) and isinstance(key, int):
+            if isinstance(base, (list, tuple, str)) and isinstance(key, int):
                 return base[key]
         except (KeyError, IndexError, TypeError):
             return self.unknown(node, "the key or index is not there")
@@ -851,7 +854,7 @@ class Interpreter:
         spec = function.node.args
         local = self.scope(function.closure)
         names = [a.arg for a in (*spec.posonlyargs, *spec.args)]
-        for name, value in zip(names, args, strict=False):
+        for name, value in zip(names, args):
             local.vars[name] = value
         if len(args) > len(names):
             if spec.vararg is None:
@@ -892,7 +895,7 @@ class Interpreter:
         if any(isinstance(a, Unknown) for a in args):
             return next(a for a in args if isinstance(a, Unknown))
         if name == "str" and len(args) == 1:
-            if isinstance(args[0], str | int | float | bool) or args[0] is None:
+            if isinstance(args[0], (str, int, float, bool)) or args[0] is None:
                 return str(args[0])
             if isinstance(args[0], LazyStr):
                 return LazyStr(args[0].subs)
@@ -903,7 +906,7 @@ class Interpreter:
             return items if name == "list" else tuple(items)
         if name in ("list", "tuple", "dict") and not args:
             return {"list": [], "tuple": (), "dict": {}}[name]
-        if name == "len" and len(args) == 1 and isinstance(args[0], list | tuple | str | dict):
+        if name == "len" and len(args) == 1 and isinstance(args[0], (list, tuple, str, dict)):
             return len(args[0])
         bounds = [a for a in args if isinstance(a, int)]
         if name == "range" and len(bounds) == len(args) and 1 <= len(args) <= 3:
@@ -922,16 +925,16 @@ class Interpreter:
             if name == "enumerate" and len(sequences) == 1:
                 return [(i, v) for i, v in enumerate(sequences[0])]
             if name == "zip":
-                return [tuple(group) for group in zip(*sequences, strict=False)]
+                return [tuple(group) for group in zip(*sequences)]
             if name == "sorted" and len(sequences) == 1 and all(
-                isinstance(v, str | int | float) for v in sequences[0]
+                isinstance(v, (str, int, float)) for v in sequences[0]
             ):
                 try:
                     return sorted(sequences[0])  # type: ignore[type-var]
                 except TypeError:
                     return self.unknown(node, "cannot sort these values")
         if name in ("int", "float", "bool", "abs", "round", "min", "max") and all(
-            isinstance(a, str | int | float | bool) for a in args
+            isinstance(a, (str, int, float, bool)) for a in args
         ) and args:
             try:
                 return _PLAIN_BUILTINS[name](*args)
@@ -982,7 +985,7 @@ class Interpreter:
                 return None
         if isinstance(target, str):
             return self.string_method(target, name, args, node)
-        if isinstance(target, SubsVal | LazyStr) and name == "perform":
+        if isinstance(target, (SubsVal, LazyStr)) and name == "perform":
             if len(args) == 1 and isinstance(args[0], ContextVal):
                 return _performed(args[0].resolver, target.subs, node, self)
             return self.unknown(node, "perform() without the launch context")
@@ -1002,8 +1005,8 @@ class Interpreter:
 
     def string_method(self, target: str, name: str, args: list[object], node: ast.Call
                       ) -> object:
-        if name == "join" and len(args) == 1 and isinstance(args[0], list | tuple) and all(
-            isinstance(item, str | LazyStr) for item in args[0]
+        if name == "join" and len(args) == 1 and isinstance(args[0], (list, tuple)) and all(
+            isinstance(item, (str, LazyStr)) for item in args[0]
         ):
             parts: list[Sub] = []
             for position, item in enumerate(args[0]):
@@ -1013,7 +1016,7 @@ class Interpreter:
             return self.text_value(tuple(parts), node)
         if name == "format":
             return self.format(target, args, node)
-        if not all(isinstance(a, str | int) for a in args):
+        if not all(isinstance(a, (str, int)) for a in args):
             return self.unknown(node, f"str.{name}() on unknown values")
         simple: dict[str, Callable[..., object]] = {
             "split": str.split, "strip": str.strip, "lstrip": str.lstrip,
@@ -1053,7 +1056,7 @@ class Interpreter:
             value = args[index]
             if isinstance(value, LazyStr):
                 parts.extend(value.subs)
-            elif isinstance(value, str | int | float | bool):
+            elif isinstance(value, (str, int, float, bool)):
                 parts.extend(literal(str(value)))
             else:
                 return self.unknown(node, "str.format() of an unknown value")
@@ -1089,12 +1092,12 @@ class Interpreter:
         if dotted in ("os.getenv", "os.environ.get") and args and isinstance(args[0], str):
             call_args: tuple[Subs, ...] = (literal(args[0]),)
             if len(args) > 1:
-                default = _as_subs(args[1]) if isinstance(args[1], str | LazyStr) else None
+                default = _as_subs(args[1]) if isinstance(args[1], (str, LazyStr)) else None
                 if default is None:
                     return self.unknown(node, "default is not text")
                 call_args += (default,)
             return LazyStr((Call("env", call_args, self.segment(node)),))
-        if not all(isinstance(a, str | LazyStr) for a in args) or not args:
+        if not all(isinstance(a, (str, LazyStr)) for a in args) or not args:
             return self.unknown(node, "path of unknown values")
         if all(isinstance(a, str) for a in args):
             texts = [a for a in args if isinstance(a, str)]
@@ -1105,7 +1108,7 @@ class Interpreter:
                 "os.path.expanduser": lambda p: p,
             }
             return operations[dotted](*texts)
-        parts = tuple(_as_subs(a) for a in args if isinstance(a, str | LazyStr))
+        parts = tuple(_as_subs(a) for a in args if isinstance(a, (str, LazyStr)))
         if dotted in ("os.path.join", "pathlib.Path"):
             return LazyStr((Call("path-join", parts, self.segment(node)),),
                            path=dotted == "pathlib.Path")
@@ -1115,7 +1118,7 @@ class Interpreter:
         return self.unknown(node, f"{dotted}() of a value known only at launch time")
 
     def ament(self, name: str, args: list[object], node: ast.Call) -> object:
-        if len(args) != 1 or not isinstance(args[0], str | LazyStr):
+        if len(args) != 1 or not isinstance(args[0], (str, LazyStr)):
             return self.unknown(node, f"{name}() of an unknown package")
         kind = {"get_package_share_directory": "find-pkg-share",
                 "get_package_share_path": "find-pkg-share",
@@ -1135,16 +1138,16 @@ class Interpreter:
         """A value as launch's ``SomeSubstitutionsType``."""
         if isinstance(value, str):
             return literal(value)
-        if isinstance(value, SubsVal | LazyStr):
+        if isinstance(value, (SubsVal, LazyStr)):
             return value.subs
         if isinstance(value, Unknown):
             return (value.hole(),)
-        if isinstance(value, list | tuple):
+        if isinstance(value, (list, tuple)):
             parts: list[Sub] = []
             for item in value:
                 parts.extend(self.subs(item, node, what))
             return tuple(parts)
-        if isinstance(value, int | float) and not isinstance(value, bool):
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
             self.problem("roslaunch_error", node, f"{what} {value!r} is a number: launch "
                          f"only takes text or substitutions ('Failed to normalize given item "
                          f"of type {type(value).__name__}')")
@@ -1167,17 +1170,17 @@ class Interpreter:
     def actions(self, value: object, node: ast.AST) -> tuple[Action, ...]:
         """Launch entities given as a list (or one), flattened into actions."""
         found: list[Action] = []
-        pending: list[object] = list(value) if isinstance(value, list | tuple) else [value]
+        pending: list[object] = list(value) if isinstance(value, (list, tuple)) else [value]
         while pending:
             item = pending.pop(0)
             if isinstance(item, LaunchDescriptionVal):
                 pending[:0] = item.items
-            elif isinstance(item, list | tuple):
+            elif isinstance(item, (list, tuple)):
                 pending[:0] = list(item)
             elif isinstance(item, Unknown):
                 found.append(Unfollowed(Where(self.path, item.line, 1),
                                         f"launch entity not followed: {item.describe()}"))
-            elif isinstance(item, Action):
+            elif isinstance(item, ACTION_TYPES):
                 found.append(item)
         return tuple(found)
 
@@ -1186,7 +1189,7 @@ class Interpreter:
         initial = self.arg(args, kwargs, 0, "initial_entities")
         if initial is None:
             return LaunchDescriptionVal([])
-        if isinstance(initial, list | tuple):
+        if isinstance(initial, (list, tuple)):
             return LaunchDescriptionVal([self.guard(item) for item in initial])
         return LaunchDescriptionVal([initial])
 
@@ -1200,7 +1203,7 @@ class Interpreter:
         unknown = ""
         if arguments is None:
             items = ()
-        elif isinstance(arguments, list | tuple):
+        elif isinstance(arguments, (list, tuple)):
             items = tuple(self.subs(item, node, "arguments item") for item in arguments)
         else:
             items = None
@@ -1236,7 +1239,7 @@ class Interpreter:
         """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
         other processes are not transforms."""
         cmd = self.arg(args, kwargs, 0, "cmd")
-        if not isinstance(cmd, list | tuple) or kwargs.get("shell") is True:
+        if not isinstance(cmd, (list, tuple)) or kwargs.get("shell") is True:
             return LaunchObject("ExecuteProcess")
         run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
         if run is None:
@@ -1339,9 +1342,9 @@ class Interpreter:
         pairs: list[tuple[Subs, Subs]] = []
         if isinstance(launch_arguments, dict):
             launch_arguments = list(launch_arguments.items())
-        if isinstance(launch_arguments, list | tuple):
+        if isinstance(launch_arguments, (list, tuple)):
             for pair in launch_arguments:
-                if isinstance(pair, tuple | list) and len(pair) == 2:
+                if isinstance(pair, (tuple, list)) and len(pair) == 2:
                     pairs.append((self.subs(pair[0], node, "argument name"),
                                   self.subs(pair[1], node, "argument value")))
         elif launch_arguments is not None:
@@ -1364,7 +1367,7 @@ class Interpreter:
         function = self.arg(args, kwargs, 0, "function")
         extra_args = kwargs.get("args") or []
         extra_kwargs = kwargs.get("kwargs") or {}
-        if not isinstance(function, FuncVal) or not isinstance(extra_args, list | tuple) or (
+        if not isinstance(function, FuncVal) or not isinstance(extra_args, (list, tuple)) or (
             not isinstance(extra_kwargs, dict)
         ):
             return Unfollowed(self.where(node), f"line {node.lineno}: OpaqueFunction of "
@@ -1432,7 +1435,7 @@ class Interpreter:
     def launch_PathJoinSubstitution(self, args: list[object], kwargs: dict[str, object],
                                     node: ast.Call) -> object:
         parts = self.arg(args, kwargs, 0, "substitutions")
-        if not isinstance(parts, list | tuple):
+        if not isinstance(parts, (list, tuple)):
             return self.unknown(node, "PathJoinSubstitution of an unknown list")
         return SubsVal((Call("path-join", tuple(self.subs(p, node, "path part") for p in parts),
                              self.segment(node)),))
@@ -1477,7 +1480,7 @@ class Interpreter:
     def parameters(self, value: object, node: ast.Call) -> tuple[Params | ParamsUnknown, ...]:
         if value is None:
             return ()
-        if not isinstance(value, list | tuple):
+        if not isinstance(value, (list, tuple)):
             return (ParamsUnknown(f"line {node.lineno}: parameters are not a list"),)
         out: list[Params | ParamsUnknown] = []
         for entry in value:
@@ -1504,16 +1507,16 @@ class Interpreter:
                 complete = self.flatten(value, f"{prefix}{key}.", items, node) and complete
             elif isinstance(value, bool):
                 items.append((prefix + key, literal(str(value).lower())))
-            elif isinstance(value, int | float):
+            elif isinstance(value, (int, float)):
                 items.append((prefix + key, literal(repr(value))))
-            elif isinstance(value, str | SubsVal | LazyStr | Unknown):
+            elif isinstance(value, (str, SubsVal, LazyStr, Unknown)):
                 items.append((prefix + key, self.subs(value, node, "parameter")))
         return complete
 
     def _container(self, args: list[object], kwargs: dict[str, object], node: ast.Call
                    ) -> object:
         descriptions = kwargs.get("composable_node_descriptions") or []
-        if not isinstance(descriptions, list | tuple):
+        if not isinstance(descriptions, (list, tuple)):
             return Unfollowed(self.where(node), f"line {node.lineno}: composable nodes of "
                                                 f"{self.segment(node)} are unknown")
         components = tuple(d.component for d in descriptions if isinstance(d, ComponentVal))
@@ -1544,7 +1547,7 @@ _SAFE_PERCENT = re.compile(r"%(?:[-+ #0]*\d{0,3}(?:\.\d{0,3})?[sdifgeEr]|%)")
 
 
 def _plain(value: object) -> bool:
-    return isinstance(value, str | int | float | bool | list | tuple | dict) or value is None
+    return isinstance(value, (str, int, float, bool, list, tuple, dict)) or value is None
 
 
 def _performed(resolver: Callable[[Subs], Value], subs: Subs, node: ast.AST,
@@ -1608,7 +1611,7 @@ def read_python(path: str, data: bytes, budget: Budget | None = None) -> FileRea
     # Statement lines only place directives: skipped (with the tokenizer) in the many files
     # that hold none.
     lines = (
-        sorted({n.lineno for n in ast.walk(tree) if isinstance(n, ast.stmt | ast.Call)})
+        sorted({n.lineno for n in ast.walk(tree) if isinstance(n, (ast.stmt, ast.Call))})
         if comments else ()
     )
     interpreter = Interpreter(path, source)

@@ -45,7 +45,7 @@ from launch_linter.resolve.ros2_substitution import (
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
 
-@dataclass(slots=True)
+@dataclass
 class Entity:
     """One launch entity, whichever the file format."""
 

@@ -18,7 +18,7 @@ _SHLEX_SPECIAL = re.compile(r"[\"'\\]")
 _NO_HOLES: frozenset[int] = frozenset()
 
 
-@dataclass(slots=True)
+@dataclass
 class Words:
     """The argv words of one ``args`` value (treat as read-only)."""
 

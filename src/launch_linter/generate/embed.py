@@ -3,29 +3,30 @@
 The set is found, not listed: starting from the command line (``launch_linter.cli``, for
 the ``check`` command) the imports of each module are followed through the package's own
 source files. An import at module level must be satisfiable from the standard library of
-Python 3.8 (or the compat module); one inside a function (a lazy import) is followed when
+Python 3.8; one inside a function (a lazy import) is followed when
 the module it reaches can be embedded, and otherwise noted as unavailable in the
 standalone linter. The edge packages (mining, generate, evaluation, graph) are never
 embedded; ``beliefs_files`` is, but the standalone linter answers its reads of the
 package's beliefs files from the embedded tables.
+
+Modules are embedded verbatim: the core is written so that Python 3.8 runs it as it stands
+(``tests/test_python38.py`` keeps it so), hence a standalone linter carries the core files
+exactly as released and their digests match the package's files.
 """
 
 from __future__ import annotations
 
 import ast
 import hashlib
+import importlib.util
 import sys
+import sysconfig
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from launch_linter.generate import backport
-
 PACKAGE = "launch_linter"
 ROOTS = ("launch_linter.cli", "launch_linter.beliefs_files")
-DATA_READERS = ("launch_linter.beliefs_files",)
-"""Modules that read package data; the standalone linter answers those reads itself
-(its ``bundled`` beliefs are the embedded tables)."""
 EXCLUDED = (
     "launch_linter.__main__",
     "launch_linter.evaluation",
@@ -35,8 +36,28 @@ EXCLUDED = (
     "launch_linter.mining",
 )
 """Edges reached only from commands other than ``check``."""
-COMPAT_SOURCE = "compat.py"
-STDLIB = frozenset(sys.stdlib_module_names) - frozenset(backport.MODULES_NEWER)
+MODULES_NEWER = {"graphlib": "3.9", "zoneinfo": "3.9", "tomllib": "3.11"}
+"""Standard modules that Python 3.8, the oldest the standalone linter runs on, lacks."""
+
+
+def _in_stdlib(top: str) -> bool:
+    """Whether ``top`` is a standard module of this Python (and of Python 3.8)."""
+    if top in MODULES_NEWER:
+        return False
+    if sys.version_info >= (3, 10):
+        return top in sys.stdlib_module_names
+    if top in sys.builtin_module_names:
+        return True
+    # Before 3.10 there is no list: a module found under the standard library's folder
+    # (and not in its site-packages) is standard. find_spec of a top-level name runs nothing.
+    spec = importlib.util.find_spec(top)
+    origin = spec.origin if spec is not None else None
+    if origin is None:
+        return False
+    paths = sysconfig.get_paths()
+    stdlib = (paths["stdlib"], paths["platstdlib"])
+    site = (paths["purelib"], paths["platlib"])
+    return origin.startswith(stdlib) and not origin.startswith(site)
 
 
 class EmbedError(ValueError):
@@ -49,7 +70,7 @@ class EmbedError(ValueError):
         self.problems = problems
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Module:
     """One embedded module: its import name, file (relative, ``/``-separated), source."""
 
@@ -57,15 +78,15 @@ class Module:
     path: str
     is_package: bool
     source: str
-    """As embedded (after the Python 3.8 edits)."""
-    original_sha256: str
-    """Of the package file as read, so that a reviewer can match it to a release."""
+    """The package file's text, verbatim."""
+    sha256: str
+    """Of that text, so that a reviewer can match it to a release."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Embedding:
     modules: tuple[Module, ...]
-    """Sorted by name (the compat module, ``_launch_linter_compat``, sorts first)."""
+    """Sorted by name."""
     notes: tuple[str, ...]
     """What the standalone linter cannot do that the package can (lazy imports left out)."""
 
@@ -75,7 +96,7 @@ class Embedding:
         return sources_sha256(sorted((m.name, m.source) for m in self.modules))
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class _Import:
     target: str
     line: int
@@ -125,6 +146,12 @@ class _Package:
         return found[0].relative_to(self.root).as_posix()
 
 
+def _is_type_checking(test: ast.expr) -> bool:
+    return (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING") or (
+        isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING"
+    )
+
+
 def _guarded(handlers: list[ast.ExceptHandler]) -> bool:
     def names(node: ast.expr | None) -> Iterator[str]:
         if isinstance(node, ast.Name):
@@ -144,7 +171,7 @@ def _imports(source: str, name: str, is_package: bool, package: _Package) -> Ite
     base = name if is_package else name.rpartition(".")[0]
 
     def visit(node: ast.AST, lazy: bool) -> Iterator[_Import]:
-        if isinstance(node, ast.If) and backport.is_type_checking(node.test):
+        if isinstance(node, ast.If) and _is_type_checking(node.test):
             for statement in node.orelse:
                 yield from visit(statement, lazy)
             return
@@ -172,7 +199,7 @@ def _imports(source: str, name: str, is_package: bool, package: _Package) -> Ite
                     if package.file_of(candidate) is not None:
                         yield _Import(candidate, node.lineno, lazy)
             return
-        inner = lazy or isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda)
+        inner = lazy or isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
         for child in ast.iter_child_nodes(node):
             yield from visit(child, inner)
 
@@ -229,10 +256,10 @@ class _Closure:
             if _is_under(item.target, EXCLUDED):
                 return f"imports {item.target}, which the standalone linter does not carry"
             return None
-        if top == "__future__" or top in STDLIB or top in backport.COMPAT_IMPORT:
+        if top == "__future__" or _in_stdlib(top):
             return None
-        if top in backport.MODULES_NEWER:
-            return f"imports {top}, new in Python {backport.MODULES_NEWER[top]}"
+        if top in MODULES_NEWER:
+            return f"imports {top}, new in Python {MODULES_NEWER[top]}"
         return f"imports {top}, which is not in the standard library"
 
 
@@ -257,7 +284,7 @@ def collect(root: Path) -> Embedding:
                 where = f"{package.relative(name)}:{item.line}"
                 top = item.target.split(".")[0]
                 if top != PACKAGE:
-                    if top not in STDLIB and top not in (*backport.COMPAT_IMPORT, "__future__"):
+                    if top != "__future__" and not _in_stdlib(top):
                         notes.append(f"{where}: needs {top} (not in the standard library)")
                     continue
                 if _is_under(item.target, EXCLUDED):
@@ -270,36 +297,17 @@ def collect(root: Path) -> Embedding:
                 pending = True
     if problems:
         raise EmbedError(sorted(set(problems)))
-    return _rewrite(package, sorted(chosen), tuple(sorted(set(notes))))
+    return _verbatim(package, sorted(chosen), tuple(sorted(set(notes))))
 
 
-def _rewrite(package: _Package, names: list[str], notes: tuple[str, ...]) -> Embedding:
-    types = backport.Types()
-    for name in names:
-        types = types | backport.module_types(package.source(name), package.relative(name))
-    problems: list[str] = []
+def _verbatim(package: _Package, names: list[str], notes: tuple[str, ...]) -> Embedding:
     modules: list[Module] = []
-    compat = (Path(__file__).parent / COMPAT_SOURCE).read_text(encoding="utf-8")
-    modules.append(
-        Module(backport.COMPAT_MODULE, f"{PACKAGE}/generate/{COMPAT_SOURCE}", False, compat,
-               hashlib.sha256(compat.encode("utf-8")).hexdigest())
-    )
-    for name in sorted(names):
-        original = package.source(name)
-        path = package.relative(name)
-        try:
-            source = backport.backport(original, path, types)
-        except backport.BackportError as exc:
-            problems.extend(exc.problems)
-            continue
-        allowed = ("importlib.resources",) if name in DATA_READERS else ()
-        problems.extend(backport.python38_problems(source, path, types, allowed))
+    for name in names:
+        source = package.source(name)
         found = package.file_of(name)
         assert found is not None
-        digest = hashlib.sha256(original.encode("utf-8")).hexdigest()
-        modules.append(Module(name, path, found[1], source, digest))
-    if problems:
-        raise EmbedError(problems)
+        digest = hashlib.sha256(source.encode("utf-8")).hexdigest()
+        modules.append(Module(name, package.relative(name), found[1], source, digest))
     return Embedding(tuple(modules), notes)
 
 

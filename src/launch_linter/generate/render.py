@@ -64,7 +64,7 @@ class Code(str):
     __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RenderOptions:
     beliefs_source: str
     """As given to ``generate --beliefs`` (``bundled``, ``study`` or a file name)."""
@@ -90,7 +90,7 @@ def py_literal(value: object) -> Code:
         return Code(f"float({repr(value)!r})")
     if isinstance(value, str):
         return Code(ascii(value))
-    if isinstance(value, tuple | list):
+    if isinstance(value, (tuple, list)):
         items = [py_literal(v) for v in value]
         if isinstance(value, tuple):
             return Code("(" + ", ".join(items) + ("," if len(items) == 1 else "") + ")")
@@ -152,7 +152,7 @@ def belief_rows(beliefs: Sequence[Belief], cls: str) -> list[Code]:
 
 
 def _finalize(value: object) -> object:
-    if isinstance(value, Code | jinja2.Undefined):
+    if isinstance(value, (Code, jinja2.Undefined)):
         # An undefined value raises its own error when printed.
         return value
     raise RenderError(
@@ -183,7 +183,7 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
         if not (
             _MODULE_NAME.fullmatch(module.name)
             and _MODULE_PATH.fullmatch(module.path)
-            and _SHA256.fullmatch(module.original_sha256)
+            and _SHA256.fullmatch(module.sha256)
         ):
             raise RenderError(f"not an embeddable module: {module.name!r} ({module.path!r})")
     selected = beliefs.restricted(options.classes)
@@ -204,7 +204,7 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
             # Checked above to hold only these characters, so they may stand in a comment.
             "path": Code(m.path),
             "is_package": m.is_package,
-            "sha256": Code(m.original_sha256),
+            "sha256": Code(m.sha256),
             "literal": source_literal(m.source),
         }
         for m in embedding.modules

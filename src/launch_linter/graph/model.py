@@ -25,7 +25,7 @@ from launch_linter.model.transform import Field, RotationKind, StaticTransform
 MAX_NOTES = 12
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Frame:
     key: str
     label: str
@@ -34,7 +34,7 @@ class Frame:
     cluster: int = 0
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Edge:
     parent: str
     child: str
@@ -50,7 +50,7 @@ class Edge:
     """A movable URDF joint (revolute, continuous, prismatic, floating, planar)."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class TfGraph:
     title: str
     frames: tuple[Frame, ...]

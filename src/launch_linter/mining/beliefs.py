@@ -20,7 +20,7 @@ import json
 from collections import Counter, defaultdict
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Tuple, Union
 
 from launch_linter.mining.stats import z_score
 from launch_linter.model.beliefs import BELIEF_CLASSES, BELIEF_FORMAT
@@ -29,12 +29,12 @@ from launch_linter.model.diagnostic import Belief
 MIN_SUPPORT = 2
 """Beliefs with fewer cases than this are not stored: one file proves no convention."""
 
-Key = tuple[str, ...] | str
+Key = Union[Tuple[str, ...], str]
 
 IMPLICATION_CLASSES = ("sig_implication", "name_implication")
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class MinedTransform:
     """What the miner needs of one stored transform."""
 

@@ -29,7 +29,7 @@ if TYPE_CHECKING:
     from launch_linter.mining.ingest import IngestReport
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class MineReport:
     files: int
     transforms: int
@@ -41,9 +41,9 @@ def created_now() -> str:
     # SOURCE_DATE_EPOCH (reproducible-builds.org) lets the bundled file be rebuilt byte-for-byte.
     epoch = os.environ.get("SOURCE_DATE_EPOCH")
     moment = (
-        datetime.datetime.fromtimestamp(int(epoch), datetime.UTC)
+        datetime.datetime.fromtimestamp(int(epoch), datetime.timezone.utc)
         if epoch and epoch.isdigit()
-        else datetime.datetime.now(datetime.UTC)
+        else datetime.datetime.now(datetime.timezone.utc)
     )
     return moment.replace(microsecond=0).isoformat().replace("+00:00", "Z")
 

@@ -38,7 +38,7 @@ class CorpusError(Exception):
     """The corpus cannot be read (missing folder, malformed manifest line, …)."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class CorpusEntry:
     """One file of the corpus and where to read it."""
 
@@ -51,7 +51,7 @@ class CorpusEntry:
     """Where ``$(find)`` looks (the repository folder; nothing for a manifest corpus)."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Corpus:
     root: str
     kind: str
@@ -62,7 +62,7 @@ class Corpus:
     """Names given to ``--mature`` that match no repository."""
 
 
-@dataclass(slots=True)
+@dataclass
 class IngestReport:
     files: int = 0
     """Files in the corpus."""
@@ -178,7 +178,7 @@ def _read_folders(root: str, mature: Sequence[str]) -> Corpus:
 
 
 # -- parsing -------------------------------------------------------------------------------
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ParseJob:
     sha256: str
     source: str

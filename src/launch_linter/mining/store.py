@@ -21,7 +21,7 @@ import time
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from types import TracebackType
-from typing import Any
+from typing import Any, Tuple
 
 from launch_linter.mining.beliefs import MinedTransform, decode_key, encode_key
 from launch_linter.model.diagnostic import Belief
@@ -126,7 +126,7 @@ TRANSFORM_COLUMNS = (
     "launch_format",
 )
 
-TransformRow = tuple[Any, ...]
+TransformRow = Tuple[Any, ...]
 
 
 class StoreError(Exception):
@@ -161,7 +161,7 @@ def _schema(conn: sqlite3.Connection) -> set[tuple[str, str, str]]:
     return {(kind, name, " ".join(sql.split())) for kind, name, sql in rows}
 
 
-@functools.lru_cache(maxsize=None)  # noqa: UP033 - Python 3.8 has no functools.cache
+@functools.lru_cache(maxsize=None)
 def _expected_schema() -> frozenset[tuple[str, str, str]]:
     conn = sqlite3.connect(":memory:")
     try:
@@ -171,14 +171,14 @@ def _expected_schema() -> frozenset[tuple[str, str, str]]:
         conn.close()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RepoInfo:
     name: str
     commits: int | None
     named_mature: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FileRef:
     """One (repository, path, version) of the corpus."""
 
@@ -188,7 +188,7 @@ class FileRef:
     latest: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ParsedContent:
     """A distinct content and what the front-end made of it."""
 
@@ -199,7 +199,7 @@ class ParsedContent:
     rows: tuple[TransformRow, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class StoredVersion:
     """One stored (repository, path, version), as the evaluation reads it back."""
 

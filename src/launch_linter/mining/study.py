@@ -66,7 +66,7 @@ def study_document(data: Mapping[str, Any], source: str, created: str) -> dict[s
     """The study's beliefs as a ``launch-linter-beliefs/1`` document."""
     beliefs: Sequence[Belief] = study_beliefs(data)
     p0 = data.get("p0_used_by_source", 0.85)
-    if not isinstance(p0, int | float):
+    if not isinstance(p0, (int, float)):
         raise StudyFormatError("'p0_used_by_source' must be a number")
     return beliefs_document(
         beliefs,

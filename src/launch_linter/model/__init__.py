@@ -1,4 +1,5 @@
 """Frozen data classes shared by every layer: no behaviour beyond small helpers."""
+from __future__ import annotations
 
 from launch_linter.model.diagnostic import (
     Belief,

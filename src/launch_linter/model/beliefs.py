@@ -32,7 +32,7 @@ def _key(value: Any) -> tuple[str, ...] | str:
     raise BeliefFormatError(f"belief key must be a string or a list of strings, not {value!r}")
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class BeliefSet:
     """Beliefs at or above ``min_z``; ``source`` names where they came from."""
 

@@ -24,7 +24,7 @@ class Category(str, Enum):
     LAUNCH = "launch"
 
 
-@dataclass(frozen=True, slots=True, order=True)
+@dataclass(frozen=True, order=True)
 class Location:
     path: str
     line: int
@@ -48,7 +48,7 @@ class Problem:
     related: tuple[Location, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Belief:
     """A mined MAY-Implied belief: ``if`` (signature or name) implies ``then``."""
 
@@ -127,7 +127,7 @@ class Fix:
         }
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Diagnostic:
     rule: str
     category: Category

@@ -19,7 +19,7 @@ class FileStatus(str, Enum):
     """The linter itself failed on this file (a bug to report); the other files are fine."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class FileRecord:
     """One input file and how reading it went."""
 
@@ -28,7 +28,7 @@ class FileRecord:
     transforms: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Comment:
     """An XML comment (or YAML/Python comment) with the line it ends on."""
 
@@ -47,7 +47,7 @@ def holds_directive(comments: Iterable[tuple[int, str]]) -> bool:
     return any(DIRECTIVE_MARKER in text for _, text in comments)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class LaunchTree:
     """Everything read from one root file, its includes included."""
 

@@ -86,7 +86,7 @@ class RotationKind(str, Enum):
     QUATERNION = "quaternion"
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Rotation:
     """A rotation as written: ``values`` is (yaw, pitch, roll) or (qx, qy, qz, qw)."""
 
@@ -107,7 +107,7 @@ class Rotation:
         )
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ConditionLiteral:
     """One unresolved ``if``/``unless`` test: the attribute text and whether it must be true."""
 
@@ -118,7 +118,7 @@ class ConditionLiteral:
         return ConditionLiteral(self.text, not self.positive)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Condition:
     """A presence condition: the conjunction of unresolved literals (empty means always)."""
 
@@ -149,7 +149,7 @@ class Condition:
 ALWAYS = Condition()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class NumberIssue:
     """A numeric argument that the program does not read as written."""
 
@@ -186,7 +186,7 @@ class ArgIssue:
     split: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class StaticTransform:
     """One ``static_transform_publisher`` node, resolved as far as statically possible.
 

@@ -19,6 +19,7 @@ import os
 import shlex
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Tuple, Union
 
 from launch_linter.model.budget import Budget
 from launch_linter.resolve import safe_eval
@@ -39,14 +40,14 @@ MAX_VALUE_CHARS = 4 * 1024 * 1024
 """Longest value one substitution may build."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Text:
     """Literal text."""
 
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Call:
     """A substitution call: ``name`` with its arguments; ``written`` is how it appeared."""
 
@@ -55,7 +56,7 @@ class Call:
     written: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Opaque:
     """A piece the linter cannot evaluate (a Python expression it does not model)."""
 
@@ -63,8 +64,8 @@ class Opaque:
     reason: str
 
 
-Sub = Text | Call | Opaque
-Subs = tuple[Sub, ...]
+Sub = Union[Text, Call, Opaque]
+Subs = Tuple[Sub, ...]
 
 
 class SubstitutionSyntaxError(Exception):
@@ -79,7 +80,7 @@ class SubstitutionError(Exception):
     """ROS 2 launch refuses this substitution when it runs."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Ros2Scope:
     """What a substitution can see at one place of a launch tree."""
 

@@ -60,9 +60,9 @@ import math
 import operator
 import re
 import warnings
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, Final, NamedTuple, TypeAlias
+from typing import Any, Callable, Final, NamedTuple, Tuple
 
 from launch_linter.model.budget import Budget
 
@@ -78,6 +78,7 @@ __all__ = [
     "EvalScope",
     "EvalUnresolved",
     "evaluate",
+    "subscript_index",
 ]
 
 MAX_SOURCE_CHARS: Final = 10_000
@@ -105,6 +106,19 @@ _TEXT_ITEMS_PER_UNIT: Final = 4
 # Arithmetic on integers of about 100,000 bits takes milliseconds.
 _BITS_PER_UNIT: Final = 32
 _MAX_MESSAGE: Final = 200
+
+
+def subscript_index(node: ast.Subscript) -> ast.expr:
+    """``node.slice`` as Python 3.9+ parses it: Python 3.8 wraps an index in ``ast.Index``
+    and a tuple holding slices (``a[1:2, 3]``) in ``ast.ExtSlice``."""
+    inner: Any = node.slice
+    kind = type(inner).__name__
+    if kind == "Index":
+        index: ast.expr = inner.value
+        return index
+    if kind == "ExtSlice":
+        return ast.copy_location(ast.Tuple(elts=list(inner.dims), ctx=ast.Load()), node)
+    return node.slice
 
 
 class EvalError(Exception):
@@ -223,7 +237,7 @@ def _check_shape(tree: ast.Expression) -> None:
 # (never mutated after creation), plus the two classes below. No other object is ever
 # created, so Python's operators applied to values can only run CPython's own code.
 
-_Impl: TypeAlias = Callable[["_Interpreter", tuple[object, ...]], object]
+_Impl = Callable[["_Interpreter", Tuple[object, ...]], object]
 
 
 class _Function:
@@ -372,7 +386,7 @@ class _Interpreter:
     def meta(self, value: object) -> _Meta:
         if isinstance(value, str):
             return _Meta(len(value), 1, False)
-        if isinstance(value, bool | float) or value is None:
+        if isinstance(value, (bool, float)) or value is None:
             return _SCALAR
         if isinstance(value, int):
             digits = max(1, value.bit_length() // 3)
@@ -386,7 +400,7 @@ class _Interpreter:
             inner = self.meta(value.items)
             return self.remember(value, inner._replace(opaque=True))
         elements: Sequence[object]
-        if isinstance(value, list | tuple):
+        if isinstance(value, (list, tuple)):
             elements = value
         elif isinstance(value, dict):
             elements = [*value.keys(), *value.values()]
@@ -409,7 +423,7 @@ class _Interpreter:
 
     def checked(self, value: object) -> object:
         """Apply the size bounds to a freshly produced value."""
-        if isinstance(value, bool | float | str | _Function) or value is None:
+        if isinstance(value, (bool, float, str, _Function)) or value is None:
             if isinstance(value, str) and len(value) > MAX_ITEMS:
                 raise EvalError(f"text result would be longer than {MAX_ITEMS:,} characters")
             return value
@@ -465,7 +479,7 @@ class _Interpreter:
         if isinstance(node, ast.IfExp):
             chosen = node.body if _truthy(self.eval(node.test)) else node.orelse
             return self.eval(chosen)
-        if isinstance(node, ast.Tuple | ast.List):
+        if isinstance(node, (ast.Tuple, ast.List)):
             return self._sequence(node)
         if isinstance(node, ast.Dict):
             return self._dict(node)
@@ -478,7 +492,7 @@ class _Interpreter:
 
     def _constant(self, node: ast.Constant) -> object:
         value = node.value
-        if value is None or isinstance(value, bool | int | float | str):
+        if value is None or isinstance(value, (bool, int, float, str)):
             return self.checked(value)
         raise EvalError(f"{type(value).__name__} literals are not allowed in $(eval)")
 
@@ -531,7 +545,7 @@ class _Interpreter:
             # Big-integer arithmetic is the one costly operation on small-looking values.
             self.charge((left.bit_length() + right.bit_length()) // _BITS_PER_UNIT)
         result = _attempt(None, function, left, right)
-        if meta is not None and isinstance(result, list | tuple):
+        if meta is not None and isinstance(result, (list, tuple)):
             self.remember(result, meta)
         return self.checked(result)
 
@@ -558,9 +572,9 @@ class _Interpreter:
     def _plan_repeat(self, left: object, right: object) -> _Meta | None:
         """Refuse a repetition or product whose result would be too big, before building it."""
         sequence: object
-        if isinstance(left, str | list | tuple) and isinstance(right, int):
+        if isinstance(left, (str, list, tuple)) and isinstance(right, int):
             sequence, count = left, right
-        elif isinstance(left, int) and isinstance(right, str | list | tuple):
+        elif isinstance(left, int) and isinstance(right, (str, list, tuple)):
             sequence, count = right, left
         elif isinstance(left, int) and isinstance(right, int):
             if left.bit_length() + right.bit_length() > MAX_INT_BITS + 1:
@@ -575,7 +589,7 @@ class _Interpreter:
                 raise EvalError(f"text result would be longer than {MAX_ITEMS:,} characters")
             self.bulk(len(sequence) * count)
             return None
-        assert isinstance(sequence, list | tuple)
+        assert isinstance(sequence, (list, tuple))
         inner = self.meta(sequence)
         if inner.weight * count > MAX_ITEMS:
             raise EvalError(f"result would have more than {MAX_ITEMS:,} items")
@@ -613,7 +627,7 @@ class _Interpreter:
     def _compare(self, node: ast.Compare) -> object:
         left = self.eval(node.left)
         result: object = True
-        for op, comparator in zip(node.ops, node.comparators, strict=True):
+        for op, comparator in zip(node.ops, node.comparators):
             right = self.eval(comparator)
             result = self.compare(op, left, right)
             if not _truthy(result):
@@ -622,12 +636,12 @@ class _Interpreter:
         return result
 
     def compare(self, op: ast.cmpop, left: object, right: object) -> object:
-        if isinstance(op, ast.Is | ast.IsNot):
+        if isinstance(op, (ast.Is, ast.IsNot)):
             if not (_is_singleton(left) or _is_singleton(right)):
                 raise EvalError("'is' is only supported against None, True or False")
             return (left is right) == isinstance(op, ast.Is)
-        if isinstance(op, ast.In | ast.NotIn):
-            if not isinstance(right, str | list | tuple | dict | _MapObject):
+        if isinstance(op, (ast.In, ast.NotIn)):
+            if not isinstance(right, (str, list, tuple, dict, _MapObject)):
                 raise EvalError(f"argument of type {_type_name(right)!r} is not iterable")
             self.bulk(self.meta(right).weight)
             found = _attempt(None, operator.contains, right, left)
@@ -649,7 +663,7 @@ class _Interpreter:
 
     def _dict(self, node: ast.Dict) -> object:
         result: dict[object, object] = {}
-        for key_node, value_node in zip(node.keys, node.values, strict=True):
+        for key_node, value_node in zip(node.keys, node.values):
             if key_node is None:
                 raise EvalError("dict unpacking (**) is not allowed in $(eval)")
             key = self.eval(key_node)
@@ -659,23 +673,24 @@ class _Interpreter:
 
     def _subscript(self, node: ast.Subscript) -> object:
         container = self.eval(node.value)
-        if isinstance(node.slice, ast.Slice):
+        key = subscript_index(node)
+        if isinstance(key, ast.Slice):
             bounds = [
                 None if part is None else self.eval(part)
-                for part in (node.slice.lower, node.slice.upper, node.slice.step)
+                for part in (key.lower, key.upper, key.step)
             ]
             return self.slice(container, bounds[0], bounds[1], bounds[2])
-        index = self.eval(node.slice)
+        index = self.eval(key)
         return self.index(container, index)
 
     def slice(self, container: object, lower: object, upper: object, step: object) -> object:
-        if not isinstance(container, str | list | tuple):
+        if not isinstance(container, (str, list, tuple)):
             raise EvalError(f"{_type_name(container)!r} object cannot be sliced")
         for bound in (lower, upper, step):
             if bound is not None and not isinstance(bound, int):
                 raise EvalError("slice indices must be integers or None")
         result = _attempt(None, operator.getitem, container, slice(lower, upper, step))
-        if isinstance(result, list | tuple):
+        if isinstance(result, (list, tuple)):
             outer = self.meta(container)
             weight = min(outer.weight, len(result) * outer.widest)
             self.remember(result, outer._replace(weight=weight))
@@ -683,7 +698,7 @@ class _Interpreter:
         return self.checked(result)
 
     def index(self, container: object, index: object) -> object:
-        if isinstance(container, str | list | tuple):
+        if isinstance(container, (str, list, tuple)):
             if not isinstance(index, int):
                 raise EvalError(
                     f"{_type_name(container)} indices must be integers or slices, "
@@ -718,7 +733,7 @@ class _Interpreter:
         args = tuple(self.eval(arg) for arg in arg_nodes)
         self.charge(1 + len(receiver) // 64)
         if name != "join" and not all(
-            isinstance(a, str | int) and not isinstance(a, bool) for a in args
+            isinstance(a, (str, int)) and not isinstance(a, bool) for a in args
         ):
             raise EvalError(f"str.{name}() takes only text or integer arguments here")
         if name == "join":
@@ -743,7 +758,7 @@ class _Interpreter:
 
     def items(self, value: object, caller: str) -> Sequence[object]:
         """The elements iterating ``value`` would give, for the iterable kinds of value."""
-        if isinstance(value, str | list | tuple):
+        if isinstance(value, (str, list, tuple)):
             return value
         if isinstance(value, dict):
             return list(value)
@@ -782,7 +797,7 @@ def _short_repr(value: object) -> str:
         return f"<int of {value.bit_length()} bits>"
     if isinstance(value, str) and len(value) > _MAX_MESSAGE:
         return repr(value[:_MAX_MESSAGE]) + "..."
-    if isinstance(value, list | tuple | dict):
+    if isinstance(value, (list, tuple, dict)):
         return f"<{_type_name(value)} of {len(value)} items>"
     return repr(value)
 
@@ -923,7 +938,7 @@ def _fn_list(it: _Interpreter, args: tuple[object, ...]) -> object:
     it.bulk(len(result))
     if isinstance(source, str):
         it.remember(result, _Meta(len(result), 1, False))
-    elif isinstance(source, list | tuple):
+    elif isinstance(source, (list, tuple)):
         it.remember(result, it.meta(source))
     elif isinstance(source, _MapObject):
         it.remember(result, it.meta(source.items))
@@ -951,7 +966,7 @@ def _fn_map(it: _Interpreter, args: tuple[object, ...]) -> object:
     sources = [it.items(source, "map()") for source in args[1:]]
     # Charged up front so that an oversized map is refused before any call is made.
     it.charge(min(len(source) for source in sources))
-    results = [it.call(function, group) for group in zip(*sources, strict=False)]
+    results = [it.call(function, group) for group in zip(*sources)]
     it.meta(results)
     return _MapObject(results)
 
@@ -976,7 +991,7 @@ def _fn_int(it: _Interpreter, args: tuple[object, ...]) -> object:
         return _attempt("int()", int, value, base)
     if isinstance(value, str):
         _check_int_text("int()", value)
-    elif not isinstance(value, int | float):
+    elif not isinstance(value, (int, float)):
         raise EvalError(
             f"int() argument must be a string or a real number, not {_type_name(value)!r}"
         )
@@ -988,7 +1003,7 @@ def _fn_float(it: _Interpreter, args: tuple[object, ...]) -> object:
     if not args:
         return 0.0
     value = args[0]
-    if not isinstance(value, str | int | float):
+    if not isinstance(value, (str, int, float)):
         raise EvalError(
             f"float() argument must be a string or a real number, not {_type_name(value)!r}"
         )
@@ -1003,7 +1018,7 @@ def _fn_bool(it: _Interpreter, args: tuple[object, ...]) -> object:
 def _fn_len(it: _Interpreter, args: tuple[object, ...]) -> object:
     _arity("len", args, 1, 1)
     value = args[0]
-    if not isinstance(value, str | list | tuple | dict):
+    if not isinstance(value, (str, list, tuple, dict)):
         raise EvalError(f"object of type {_type_name(value)!r} has no len()")
     return len(value)
 
@@ -1011,7 +1026,7 @@ def _fn_len(it: _Interpreter, args: tuple[object, ...]) -> object:
 def _fn_abs(it: _Interpreter, args: tuple[object, ...]) -> object:
     _arity("abs", args, 1, 1)
     value = args[0]
-    if not isinstance(value, int | float):
+    if not isinstance(value, (int, float)):
         raise EvalError(f"bad operand type for abs(): {_type_name(value)!r}")
     return abs(value)
 
@@ -1020,7 +1035,7 @@ def _fn_round(it: _Interpreter, args: tuple[object, ...]) -> object:
     _arity("round", args, 1, 2)
     value = args[0]
     digits = args[1] if len(args) == 2 else None
-    if not isinstance(value, int | float):
+    if not isinstance(value, (int, float)):
         raise EvalError(f"type {_type_name(value)} doesn't define __round__ method")
     if digits is None:
         return _attempt("round()", round, value)
@@ -1096,7 +1111,7 @@ def _math_function(name: str, function: Callable[..., object]) -> _Impl:
         for arg in args:
             if isinstance(arg, _Function):
                 raise EvalError(f"{name}() cannot take a function as argument")
-            if isinstance(arg, list | tuple | dict | _MapObject):
+            if isinstance(arg, (list, tuple, dict, _MapObject)):
                 it.bulk(it.meta(arg).weight)
         for arg in args:
             if isinstance(arg, int):

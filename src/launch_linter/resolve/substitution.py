@@ -13,6 +13,7 @@ import os
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Optional, Tuple
 
 from launch_linter.model.budget import Budget
 from launch_linter.resolve import safe_eval
@@ -29,7 +30,7 @@ class SubstitutionError(Exception):
     """roslaunch refuses this value; the message is close to roslaunch's own."""
 
 
-@dataclass(slots=True)
+@dataclass
 class SubstitutionScope:
     """What a substitution can see at one place of a launch file (treat as read-only).
 
@@ -135,7 +136,7 @@ def _words(body: str) -> list[str]:
     return [w for w in body.split(" ") if w]
 
 
-Command = tuple[str, str, tuple[str, ...] | None]
+Command = Tuple[str, str, Optional[Tuple[str, ...]]]
 """A ``$(…)`` of a text: its body, the text it replaces (``$(body)``) and its words, or
 None when roslaunch refuses the command (:func:`_check_command` says why)."""
 

@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Tuple, Union
 
 MAX_REASON = 300
 """Longest reason kept in a hole."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Hole:
     """An unresolved piece of text: the substitution as written and why it is unknown."""
 
@@ -22,8 +23,8 @@ class Hole:
             object.__setattr__(self, "reason", self.reason[: MAX_REASON - 3] + "...")
 
 
-Part = str | Hole
-Value = tuple[Part, ...]
+Part = Union[str, Hole]
+Value = Tuple[Part, ...]
 
 
 def literal(text: str) -> Value:

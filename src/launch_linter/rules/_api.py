@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+import typing
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from types import ModuleType
+from typing import Callable
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
@@ -21,7 +23,7 @@ from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RuleContext:
     """Everything a rule may look at: one launch tree and the selected beliefs."""
 
@@ -58,10 +60,10 @@ class Finding:
     """Word edits that fix it (see ``rules._fixes``); the engine locates them in the file."""
 
 
-Check = Callable[[RuleContext], Iterable[Finding]]
+Check = Callable[[RuleContext], typing.Iterable[Finding]]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Rule:
     id: str
     category: Category

@@ -8,14 +8,15 @@ transform may be the one that the belief asks for.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
+from typing import Callable, Optional, Tuple, Union
 
 from launch_linter.model.diagnostic import Belief, Severity
 from launch_linter.model.transform import Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
 
-Key = tuple[str, ...] | str
-KeyOf = Callable[[StaticTransform], Key | None]
+Key = Union[Tuple[str, ...], str]
+KeyOf = Callable[[StaticTransform], Optional[Key]]
 
 
 def signature_of(transform: StaticTransform) -> Key | None:

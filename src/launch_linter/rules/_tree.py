@@ -13,7 +13,7 @@ from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding
 
-Quaternion = typing.Tuple[float, float, float, float]  # noqa: UP006 - a run-time alias (3.8)
+Quaternion = typing.Tuple[float, float, float, float]
 """(x, y, z, w)."""
 
 

@@ -35,7 +35,6 @@ rejects. Nothing in the launch output points at the cause.
 Safe: removes the period given to ROS 1 `tf2_ros`, which then reads the transform that
 was meant.
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

@@ -29,6 +29,7 @@ frame is published at a pose nobody wrote down.
 ```
 Or compute it with `$(eval)`: `args="0.1 0 0.3 $(eval pi/2) 0 0 base_link camera_link"`.
 """
+from __future__ import annotations
 
 import math
 import re

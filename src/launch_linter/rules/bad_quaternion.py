@@ -32,7 +32,6 @@ Unsafe: a quaternion that is not of unit length (and not zero or infinite) is re
 by its normalised form; whether the direction written is the one meant is for a human to
 judge.
 """
-
 from __future__ import annotations
 
 import math

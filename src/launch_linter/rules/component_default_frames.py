@@ -38,7 +38,6 @@ leading `/` tf2 rejects on lookup), while the frames that were meant stay unconn
 </launch>
 ```
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

@@ -40,6 +40,7 @@ copy that should be removed.
 Only static transform nodes are compared: a static transform publisher that shares its
 name with another kind of node is not seen.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

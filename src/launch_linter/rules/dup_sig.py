@@ -31,6 +31,7 @@ next time someone edits only one of them.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

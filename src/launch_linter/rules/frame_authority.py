@@ -76,7 +76,7 @@ LOCALIZATION = {
 ODOMETRY = {("rf2o_laser_odometry", ANY)}
 FILTERS = ("ekf_localization_node", "ukf_localization_node", "ekf_node", "ukf_node")
 BASES = ("base_link", "base_footprint")
-Published = typing.Tuple[str, typing.Tuple[str, ...]]  # noqa: UP006 - run-time alias (3.8)
+Published = typing.Tuple[str, typing.Tuple[str, ...]]
 """A parent frame and the child frames it may publish."""
 
 

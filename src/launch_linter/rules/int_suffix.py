@@ -39,6 +39,7 @@ A series can skip a number on purpose (a removed sensor); a name built from an u
 substitution that starts with the stem makes the stem's series unknown, and it is not
 reported.
 """
+from __future__ import annotations
 
 import re
 from collections.abc import Callable, Iterator
@@ -58,7 +59,7 @@ _SYNTHETIC_STEM = "_anon"
 MAX_LISTED = 6
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class _Kind:
     label: str
     field: Field

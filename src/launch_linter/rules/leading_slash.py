@@ -31,7 +31,6 @@ start with a '/'`), and tools such as cartographer refuse such frame ids outrigh
 Safe: strips one leading `/` from the frame id (tf2 strips exactly one, so the frame
 is the same).
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

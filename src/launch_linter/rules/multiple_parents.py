@@ -40,7 +40,6 @@ URDF joints count when a `robot_state_publisher` of the same launch tree publish
 description (`robot_description` from xacro, a URDF file or literal text); a parent given
 by a node that publishes tf at run time (odometry, localization) is not seen.
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

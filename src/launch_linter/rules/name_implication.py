@@ -36,6 +36,7 @@ Names are chosen freely and the same name can mean different things in different
 projects; treat the message as a question. A file with a node whose name depends on an
 unresolved substitution is not judged.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -33,6 +33,7 @@ node, or a name copied onto a node that does something else.
 Names are chosen freely; a node may keep a conventional name for a deliberate offset.
 Nodes whose name or translation is unresolved are not judged.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -33,6 +33,7 @@ The laser may really be mounted turned; the belief only says this is unusual for
 name (the study found such a case, where a comment explained the change). Nodes whose
 name or rotation is unresolved are not judged.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -28,6 +28,7 @@ not the same place seen in NED axes.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -22,6 +22,7 @@ roslaunch refuses the whole file, so none of its transforms are published.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterable
 

@@ -37,7 +37,6 @@ Node(package='tf2_ros', executable='static_transform_publisher',
      arguments=['--z', '0.2', '--frame-id', 'base_link', '--child-frame-id', 'laser'])
 ```
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

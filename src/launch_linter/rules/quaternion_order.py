@@ -62,7 +62,7 @@ def _reorder_fix(transform: StaticTransform, values: tuple[float, ...]) -> Fix |
         return None
     reordered = (values[1], values[2], values[3], values[0])
     edits = []
-    for index, value in zip(indices, reordered):  # noqa: B905 (Python 3.8: no strict=)
+    for index, value in zip(indices, reordered):
         assert index is not None
         text = number_text(value)
         if text != transform.tokens[index]:

@@ -27,7 +27,6 @@ next reader, or the frames were swapped and the transform is the inverse of the 
 </launch>
 ```
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

@@ -34,7 +34,6 @@ points at the node that died.
 </launch>
 ```
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

@@ -50,7 +50,6 @@ Unsafe, or safe when `--ros-distro` (or the `ros-distro` configuration key) name
 or a newer distribution: rewrites the positional arguments to the flags. Foxy and older
 have no flags, so there the rewrite would break the node.
 """
-
 from __future__ import annotations
 
 from collections.abc import Iterator

@@ -29,6 +29,7 @@ roslaunch refuses to start the whole launch tree, so nothing in it runs.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterable
 

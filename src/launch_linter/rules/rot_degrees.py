@@ -35,7 +35,6 @@ full turn and more, in radians) would be changed.
 An angle in degrees between -2π and 2π (such as `5`) cannot be told from radians and is
 not reported.
 """
-
 from __future__ import annotations
 
 import math
@@ -101,7 +100,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             continue
         suspects = [
             f"{name} {value:g} ({value:g}° is {math.radians(value):.6g} rad)"
-            for name, value in zip(ANGLE_NAMES, rotation.values, strict=True)
+            for name, value in zip(ANGLE_NAMES, rotation.values)
             if looks_like_degrees(value)
         ]
         if not suspects:

@@ -25,6 +25,7 @@ always meant a different parent or child, so the frame that was meant never join
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

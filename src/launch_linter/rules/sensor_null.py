@@ -31,7 +31,6 @@ is placed at the wrong spot of the robot.
 ## Known problems
 A null transform is sometimes meant, to give a sensor frame a second name (an alias).
 """
-
 from __future__ import annotations
 
 import re

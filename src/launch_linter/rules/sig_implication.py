@@ -37,6 +37,7 @@ The beliefs are conventions of the mined corpus, not laws of tf: a file may publ
 other half of the family from somewhere else (an included file, a URDF, a driver). A
 file whose frames depend on unresolved substitutions is not judged.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -33,6 +33,7 @@ sign or order mistake in the argument list.
 A convention is not a law: a map that is deliberately placed off the world origin is
 right. Transforms whose translation is unresolved are not judged.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -35,6 +35,7 @@ A sensor that is mounted turned (a lidar facing backwards) does need a rotation;
 belief only says that this is unusual. Transforms whose rotation is unresolved are not
 judged.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

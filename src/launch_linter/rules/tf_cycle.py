@@ -36,6 +36,7 @@ relation is declared in both directions.
 Only static transforms are seen. A very large, densely connected graph is searched for at
 most a bounded number of loops.
 """
+from __future__ import annotations
 
 from collections.abc import Iterator
 

@@ -29,6 +29,7 @@ clean result is not mistaken for a checked one.
 ```
 or give the value on the command line: `launch-linter check --arg laser_frame:=laser`.
 """
+from __future__ import annotations
 
 from collections.abc import Iterable
 

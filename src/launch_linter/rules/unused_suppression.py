@@ -29,6 +29,7 @@ misspelt rule id silences nothing at all while looking as if it did.
 </launch>
 ```
 """
+from __future__ import annotations
 
 from collections.abc import Iterable
 

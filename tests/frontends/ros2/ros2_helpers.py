@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
+from typing import Callable
 
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform

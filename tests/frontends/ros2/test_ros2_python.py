@@ -231,8 +231,7 @@ def test_includes_of_every_form(load: Load) -> None:
     assert (nodes["from_xml"].child, nodes["from_xml"].launch_format) == ("gps", "ros2-xml")
     assert (nodes["from_py"].child, nodes["from_py"].path) == ("imu",
                                                                 "ws/robot/launch/c.launch.py")
-    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.problems,
-                                                                strict=True)] == [
+    assert [(r, "not found" in d.message) for (r, _), d in zip(rules(tree), tree.problems)] == [
         ("roslaunch_error", True),
     ]
 

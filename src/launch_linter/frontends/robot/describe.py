@@ -26,7 +26,7 @@ _XACRO_NAMED = re.compile(r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]""")
 MAX_DESCRIPTIONS_PER_TREE = 50
 
 # Aliases are evaluated at run time: typing's spelling keeps them working on Python 3.8.
-Word = typing.Tuple[str, bool]  # noqa: UP006
+Word = typing.Tuple[str, bool]
 """A command word and whether it is fully resolved."""
 
 
@@ -48,9 +48,9 @@ class RobotCache:
         return len(self._expansions)
 
 
-XacroCall = typing.Tuple[  # noqa: UP006 - a run-time alias (3.8)
-    typing.Optional[str], typing.Tuple[typing.Tuple[str, typing.Optional[str]], ...],  # noqa: UP006, UP045
-    typing.Optional[str],  # noqa: UP045
+XacroCall = typing.Tuple[
+    typing.Optional[str], typing.Tuple[typing.Tuple[str, typing.Optional[str]], ...],
+    typing.Optional[str],
 ]
 
 

@@ -192,7 +192,7 @@ def _literal(text: str) -> str:
     return shown if "." in shown else text
 
 
-class _Symbols(typing.Mapping[str, typing.Optional[str]]):  # noqa: UP045 - a base class (3.8)
+class _Symbols(typing.Mapping[str, typing.Optional[str]]):
     """The properties visible from a table, evaluated on demand, as the evaluator's args."""
 
     def __init__(self, expander: XacroExpander, table: _Table) -> None:
