@@ -198,9 +198,9 @@ def test_did_you_mean(argv: list[str], hint: str, capsys: pytest.CaptureFixture[
 
 def test_rules_table_and_explain_say_the_fix_kind(capsys: pytest.CaptureFixture[str]) -> None:
     main(["rules"])
-    rows = {line.split()[0]: line.split()[3] for line in capsys.readouterr().out.splitlines()}
-    assert rows["leading_slash"] == "safe" and rows["rot_degrees"] == "unsafe"
-    assert rows["dup_sig"] == "-"
+    rows = {line.split()[0]: line for line in capsys.readouterr().out.splitlines()}
+    assert "[fix: safe;" in rows["leading_slash"] and "[fix: unsafe;" in rows["rot_degrees"]
+    assert "fix:" not in rows["dup_sig"]
     main(["explain", "bad_arity"])
     assert capsys.readouterr().out.startswith("bad_arity (tf, error, safe fix)")
 

@@ -20,11 +20,16 @@ def run(ns: argparse.Namespace) -> int:
 
     width = max(len(r.id) for r in RULES)
     for rule in RULES:
+        # The contract's columns first (id, category, severity, summary); what this version
+        # adds follows the summary, so a reader of the four columns is not misled.
+        notes = [f"precision {precision_text(rule.id)}"]
         study = study_severity(rule.id, rule.severity)
-        fix = rule.fix.value if rule.fix else "-"
+        if study is not rule.severity:
+            notes.insert(0, f"study: {study.value}")
+        if rule.fix:
+            notes.insert(0, f"fix: {rule.fix.value}")
         sys.stdout.write(
             f"{rule.id:<{width}}  {rule.category.value:<12}  {rule.severity.value:<7}  "
-            f"{fix:<6}  study={study.value:<7}  {precision_text(rule.id):<32}  "
-            f"{rule.summary}\n"
+            f"{rule.summary}  [{'; '.join(notes)}]\n"
         )
     return EXIT_OK
