@@ -1,0 +1,170 @@
+"""The limits of the xacro expander, what it produces (the expanded tree, its problems),
+and its tables of properties, macros and blocks with their scoping."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from launch_linter.resolve.xml_safe import Element
+
+MAX_FILES = 200
+"""Most distinct files one description may read."""
+MAX_INCLUDE_DEPTH = 32
+MAX_MACRO_DEPTH = 64
+MAX_OUTPUT_ELEMENTS = 100_000
+MAX_WORK = 1_000_000
+"""Work units for one expansion: one per element visited and per substitution made."""
+MAX_TEXT = 65_536
+"""Longest attribute value an expansion may produce."""
+
+_PREFIX = "xacro:"
+# xacro's lexer: ``$${``/``$$(`` escapes, ``${expr}``, and ``$(...)`` whose words may hold
+# ``${expr}`` (evaluated first, as xacro does).
+_TOKEN = re.compile(r"\$\$[{(]|\$\{[^}]*\}|\$\((?:[^$)]|\$\{[^}]*\})*\)")
+_IDENTIFIER = re.compile(r"[A-Za-z_]\w*\Z")
+_MATH_PREFIX = re.compile(r"\bmath\.")
+_GLOB = re.compile(r"[*?\[]")
+
+
+class _Abort(Exception):
+    """A bound was reached: the expansion stops."""
+
+    def __init__(self, message: str, path: str, line: int) -> None:
+        super().__init__(message)
+        self.message = message
+        self.path = path
+        self.line = line
+
+
+class _Unknown(Exception):
+    """A value the expander cannot know statically; ``reason`` says why."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class XacroProblem:
+    """Something the expander could not follow, with where it was."""
+
+    path: str
+    line: int
+    message: str
+    fatal: bool = False
+    """True when the expansion stopped (a bound was reached or the root is unreadable)."""
+
+
+class ExpandedNode:
+    """An element of the expanded document, with where it was written."""
+
+    __slots__ = ("attrib", "children", "column", "conditions", "line", "path", "tag",
+                 "unknown")
+
+    def __init__(self, tag: str, path: str, line: int, column: int,
+                 conditions: tuple[str, ...]) -> None:
+        self.tag = tag
+        self.path = path
+        self.line = line
+        self.column = column
+        self.attrib: dict[str, str] = {}
+        self.unknown: dict[str, str] = {}
+        """Attribute name -> why its value is unknown."""
+        self.children: list[ExpandedNode] = []
+        self.conditions = conditions
+        """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
+        (``unless`` texts start with ``!``)."""
+
+
+@dataclass
+class Expansion:
+    """The result of expanding one description file with some args."""
+
+    root: ExpandedNode | None
+    problems: list[XacroProblem]
+    files: list[str]
+
+
+@dataclass
+class _Property:
+    text: str | None
+    """Unevaluated text, or None once evaluated."""
+    value: str | None
+    """Evaluated text; None while unevaluated or when unknown."""
+    reason: str | None = None
+    block: tuple[Element, str] | None = None
+    """For a block property: the ``xacro:property`` element and its file."""
+
+
+@dataclass
+class _Macro:
+    params: list[str]
+    defaults: dict[str, tuple[str | None, str | None]]
+    """param -> (forwarded name, default text)."""
+    body: Element
+    path: str
+
+
+@dataclass
+class _Block:
+    element: Element
+    path: str
+    content_only: bool
+    scope: _Table
+
+
+class _Table:
+    """A scope of properties (and, separately, macros) with a parent, like xacro's Table."""
+
+    def __init__(self, parent: _Table | None = None) -> None:
+        self.parent = parent
+        self.properties: dict[str, _Property] = {}
+        self.macros: dict[str, _Macro] = {}
+        self.blocks: dict[str, _Block] = {}
+
+    def find_property(self, name: str) -> tuple[_Table, _Property] | None:
+        table: _Table | None = self
+        while table is not None:
+            found = table.properties.get(name)
+            if found is not None:
+                return table, found
+            table = table.parent
+        return None
+
+    def find_macro(self, name: str) -> _Macro | None:
+        table: _Table | None = self
+        while table is not None:
+            found = table.macros.get(name)
+            if found is not None:
+                return found
+            table = table.parent
+        return None
+
+    def find_block(self, name: str) -> _Block | None:
+        table: _Table | None = self
+        while table is not None:
+            found = table.blocks.get(name)
+            if found is not None:
+                return found
+            table = table.parent
+        return None
+
+
+def _literal(text: str) -> str:
+    """xacro's ``_eval_literal``, written as text that the evaluator's "auto" rule reads
+    back as the same Python value (ints, floats with a dot, booleans, strings)."""
+    if len(text) >= 2 and text[0] == "'" and text[-1] == "'":
+        return text[1:-1]
+    if "_" in text:
+        return text
+    try:
+        return str(int(text))
+    except ValueError:
+        pass
+    try:
+        number = float(text)
+    except ValueError:
+        return text
+    shown = repr(number)
+    return shown if "." in shown else text

@@ -1,0 +1,455 @@
+"""The ROS 1 loader's foundation: options, the loader context, and reading, scoping and
+resolving (substitutions, ``if``/``unless``, required attributes) as roslaunch does."""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+
+from launch_linter.frontends.robot.describe import RobotCache
+from launch_linter.frontends.robot.sources import with_node_params
+from launch_linter.frontends.ros1_checks import _bool_attribute
+from launch_linter.frontends.ros1_names import make_global_ns
+from launch_linter.model.budget import Budget, BudgetExceeded
+from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
+from launch_linter.model.robot import DescriptionSource, NodeRecord
+from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
+from launch_linter.resolve.packages import PackageIndex
+from launch_linter.resolve.substitution import (
+    SubstitutionError,
+    SubstitutionScope,
+    resolve,
+    to_bool,
+)
+from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
+
+STATIC_TF_TYPE = "static_transform_publisher"
+TF_PACKAGES = ("tf", "tf2_ros")
+MAX_INCLUDE_DEPTH = 32
+MAX_NESTING = 100
+"""Most ``<group>``/``<include>`` levels followed, all files of a tree together."""
+MAX_FILES_PER_TREE = 2_000
+
+# Attributes roslaunch resolves for each tag, in its order (after ``if``/``unless``).
+_ARG_ATTRS = ("name", "value", "default", "doc")
+_NODE_LATE_ATTRS = ("machine", "args", "output", "respawn", "respawn_delay", "cwd",
+                    "launch-prefix", "required")
+_PARAM_VALUE_ATTRS = ("value", "textfile", "binfile", "command")
+_ROSPARAM_ATTRS = ("command", "ns", "file", "param", "subst_value")
+_MACHINE_OLD_ATTRS = ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")
+_MACHINE_ATTRS = ("env-loader", "ssh-port", "user", "password", "default", "timeout")
+
+
+def relative_to_cwd(path: str) -> str:
+    """``os.path.relpath(path)``, quicker for the usual case of a path below the cwd."""
+    folder = os.getcwd()
+    if path.startswith(folder) and path[len(folder):len(folder) + 1] == os.sep:
+        return os.path.normpath(path[len(folder) + 1:])
+    return os.path.relpath(path)
+
+
+_VALUE_ERRORS = ("Invalid <param> tag", "included file not found", "<group> tag has an empty",
+                 "<node> tag has an empty", "cannot turn")
+"""Errors about a value that may come from the environment (a syntax error never does)."""
+_ENV_REFERENCE = re.compile(r"\$\((optenv|env|arg)\s+([^\s)]+)")
+"""``$(optenv NAME ...)``, ``$(env NAME)``, ``$(arg NAME)`` in attribute text."""
+
+
+@dataclass(frozen=True)
+class LoadOptions:
+    """What the command line tells the loader."""
+
+    args: Mapping[str, str] = field(default_factory=dict)
+    env: Mapping[str, str] = field(default_factory=dict)
+    packages: PackageIndex = field(default_factory=lambda: PackageIndex([]))
+    display_path: Callable[[str], str] = relative_to_cwd
+    study_errors: bool = False
+    """True (the ``study`` profile): report as ``roslaunch_error``, as the study counted
+    them, what the default reports as ``unresolved`` info because the file alone cannot
+    decide it: an error whose cause depends on the environment (``$(optenv)``/``$(env)``
+    not given with ``--env``, a ``~`` path in ROS 2)."""
+    ros_version: int | None = None
+    """1 or 2 to read an XML root file as that ROS's launch XML; None: by its content."""
+    robots: RobotCache | None = None
+    """Robot descriptions expanded in this run (None: a new cache per tree)."""
+
+
+class _AnonNames:
+    """roslaunch's anonymous names, made stable: ``id_anon<N>``, N counted per root."""
+
+    def __init__(self) -> None:
+        self.count = 0
+
+    def make(self, table: dict[str, str], anon_id: str) -> str:
+        if anon_id not in table:
+            self.count += 1
+            table[anon_id] = f"{anon_id}_anon{self.count}"
+        return table[anon_id]
+
+
+class _Context:
+    """roslaunch's ``LoaderContext``, plus what static resolution needs to know."""
+
+    __slots__ = ("anon", "arg_names", "args", "chain", "condition", "depth", "filename",
+                 "include_args", "included_from", "ns", "ns_unresolved", "open_args",
+                 "pass_all_args", "scope", "side_scope")
+
+    def __init__(self, ns: str, filename: str, args: dict[str, Value], open_args: bool) -> None:
+        self.ns = ns
+        self.ns_unresolved = ""
+        """Why the namespace is unknown (the blocking substitutions); empty when known."""
+        self.filename = filename
+        self.args = args
+        self.open_args = open_args
+        """Whether args the linter does not know may be set (the root's command line)."""
+        self.arg_names: dict[str, bool] = {}
+        """Args declared here; the value says whether under an unresolved condition."""
+        self.anon: dict[str, str] = {}
+        self.condition = ALWAYS
+        self.chain: tuple[str, ...] = (filename,)
+        self.included_from: tuple[str, int] | None = None
+        self.pass_all_args = False
+        self.include_args: dict[str, Value] | None = None
+        self.depth = 0
+        self.scope: SubstitutionScope | None = None
+        """Made on first use; it reads ``args`` and ``anon`` live, so only a change of
+        file or of those dicts themselves resets it."""
+        self.side_scope: tuple[dict[str, str], SubstitutionScope] | None = None
+        """The last scope made for another anonymous-name table (a node's children)."""
+
+    def copy(self) -> _Context:
+        """A child context: roslaunch deep-copies args and anonymous names."""
+        child = _Context(self.ns, self.filename, dict(self.args), self.open_args)
+        child.ns_unresolved = self.ns_unresolved
+        child.arg_names = dict(self.arg_names)
+        child.anon = dict(self.anon)
+        child.condition = self.condition
+        child.chain = self.chain
+        child.included_from = self.included_from
+        child.pass_all_args = self.pass_all_args
+        child.include_args = self.include_args
+        child.depth = self.depth
+        return child
+
+
+class Ros1Base:
+    """Reading, diagnostics, scopes and resolution of one root file's tree."""
+
+    def __init__(self, options: LoadOptions) -> None:
+        self.options = options
+        self.transforms: list[StaticTransform] = []
+        self.problems: list[Problem] = []
+        self.files: list[str] = []
+        self.comments: list[Comment] = []
+        self.element_lines: list[tuple[str, int]] = []
+        self.descriptions: list[DescriptionSource] = []
+        self.nodes: list[NodeRecord] = []
+        self.node_params: list[tuple[str, str]] = []
+        """Frame parameters set beside a node (``NODE/param``): full name, value."""
+        self.anon = _AnonNames()
+        self.root_display = ""
+        self.node_names: dict[str, tuple[str, Element]] = {}
+        """Resolved node name -> (file, element) of its first node."""
+        self._displays: dict[str, str] = {}
+        self._missing_reported: set[tuple[str, str]] = set()
+        self._element: Element | None = None
+        self._env_args: dict[str, str] = {}
+        """Args whose value comes from the environment -> the substitution it comes from."""
+        """The element whose attribute is being resolved (for errors found meanwhile)."""
+        self.budget = Budget()
+        self._path = ""
+        """The file being walked (where the budget ran out, if it does)."""
+
+    # -- diagnostics -------------------------------------------------------------------
+    def _report(
+        self, rule: str, path: str, element: Element | None, message: str,
+        node: str | None = None, related: tuple[Location, ...] = (),
+    ) -> None:
+        line, column = (element.line, element.column) if element else (1, 1)
+        self.problems.append(
+            Problem(rule, self._display(path), line, column, message, node, related)
+        )
+
+    def _error(self, context: _Context, element: Element | None, message: str) -> None:
+        source = (
+            None if element is None or self.options.study_errors
+            or not message.startswith(_VALUE_ERRORS) else self._env_source(element)
+        )
+        if source is not None:
+            self._report("unresolved", context.filename, element,
+                         f"{message}, but the value depends on the environment ({source}): "
+                         f"not checked (give it with --env)")
+            return
+        self._report("roslaunch_error", context.filename, element, message)
+
+    def _env_source(self, element: Element) -> str | None:
+        """The environment substitution (or home path) one of the element's attributes
+        depends on, directly or through an ``$(arg)``; None when there is none."""
+        for text in element.attrib.values():
+            found = self._env_in_text(text)
+            if found is not None:
+                return found
+        return None
+
+    def _env_in_text(self, text: str) -> str | None:
+        # A leading "~" is a private name here, not a home directory: roslaunch expands no
+        # "~" in paths, and $(env HOME) without --env is already unresolved.
+        if "$(" not in text:
+            return None
+        for match in _ENV_REFERENCE.finditer(text):
+            command, name = match.group(1), match.group(2)
+            if command == "arg":
+                if name in self._env_args:
+                    return self._env_args[name]
+            elif name not in self.options.env:
+                return f"$({command} {name})"
+        return None
+
+    def _display(self, path: str) -> str:
+        shown = self._displays.get(path)
+        if shown is None:
+            shown = self._displays[path] = self.options.display_path(path)
+        return shown
+
+    # -- entry -------------------------------------------------------------------------
+    def load(self, path: str, data: bytes | None = None) -> LaunchTree:
+        absolute = os.path.abspath(path)
+        self.root_display = self._display(absolute)
+        if data is None:
+            try:
+                data = read_launch_bytes(absolute)
+            except OSError as exc:
+                self._report("parse_error", absolute, None,
+                             f"cannot read file: {exc.strerror or exc}")
+                return self._tree(FileStatus.UNREADABLE)
+        root = self._parse(absolute, data)
+        if root is None:
+            return self._tree(FileStatus.PARSE_ERROR)
+        context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
+        self._path = absolute
+        try:
+            self._launch_conditions(root, context)
+            self._walk(root.children, context)
+        except RecursionError:
+            # MAX_NESTING keeps real files far from this; it is the last line of defence.
+            self._report("unresolved", absolute, root,
+                         "launch tree nested too deeply to follow; the rest is not read")
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._path, self._element or root,
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
+        return self._tree(FileStatus.OK)
+
+    def _tree(self, status: FileStatus) -> LaunchTree:
+        return LaunchTree(
+            root=self.root_display,
+            status=status,
+            transforms=tuple(self.transforms),
+            problems=tuple(self.problems),
+            files=tuple(self.files),
+            comments=tuple(self.comments),
+            element_lines=tuple(self.element_lines),
+            descriptions=tuple(self.descriptions),
+            nodes=tuple(with_node_params(self.nodes, self.node_params)),
+        )
+
+    def _command_line_args(self) -> dict[str, Value]:
+        """``NAME:=VALUE`` arguments as rosgraph's ``load_mappings`` keeps them: names and
+        values stripped, empty ones and ``_private`` parameter assignments dropped."""
+        args: dict[str, Value] = {}
+        for name, value in self.options.args.items():
+            name, value = name.strip(), value.strip()
+            if not name or not value:
+                continue
+            if len(name) > 1 and name[0] == "_" and name[1] != "_":
+                continue
+            args[name] = (value,)
+        return args
+
+    def _root_namespace(self) -> str:
+        ns = self.options.args.get("__ns") or self.options.env.get("ROS_NAMESPACE") or "/"
+        try:
+            return make_global_ns(ns)
+        except ValueError:
+            return "/"
+
+    def _parse(self, absolute: str, data: bytes) -> Element | None:
+        display = self._display(absolute)
+        if display not in self.files:
+            self.files.append(display)
+        try:
+            document = parse_xml(data, text_tags=("rosparam",), collect=("launch",))
+        except XmlError as exc:
+            self.problems.append(Problem(
+                "parse_error", display, exc.line, exc.column,
+                f"not well-formed XML: {exc.message}",
+            ))
+            return None
+        if document.comments and holds_directive(document.comments):
+            self.comments += [Comment(display, line, text) for line, text in document.comments]
+            self.element_lines += [(display, line) for line in document.element_lines]
+        # roslaunch takes the one <launch> element of the document, wherever it is.
+        launches = document.collected
+        if len(launches) != 1:
+            where = document.root if not launches else launches[1]
+            message = (
+                f"no <launch> element (the root element is <{document.root.tag}>)"
+                if not launches else "more than one <launch> element"
+            )
+            self.problems.append(Problem("parse_error", display, where.line, where.column, message))
+            return None
+        return launches[0]
+
+    def _launch_conditions(self, launch: Element, context: _Context) -> None:
+        """roslaunch evaluates ``if``/``unless`` on ``<launch>`` and ignores the outcome;
+        it fails on a value that is not a boolean and crashes on a substitution there."""
+        if_text, unless_text = launch.get("if"), launch.get("unless")
+        if if_text is not None and unless_text is not None:
+            self._error(context, launch, "cannot set both 'if' and 'unless' on the same tag")
+            return
+        text = if_text if if_text is not None else unless_text
+        if text is None:
+            return
+        if "$" in text:
+            self._error(context, launch,
+                        "roslaunch cannot resolve substitutions in if/unless of <launch>")
+            return
+        try:
+            to_bool((text,))
+        except ValueError as exc:
+            self._error(context, launch, str(exc))
+
+    # -- substitution helpers ---------------------------------------------------------
+    def _scope(self, context: _Context, anon: dict[str, str] | None) -> SubstitutionScope:
+        if anon is None or anon is context.anon:
+            if context.scope is None:
+                context.scope = self._new_scope(context, context.anon)
+            return context.scope
+        side = context.side_scope
+        if side is None or side[0] is not anon:
+            side = context.side_scope = (anon, self._new_scope(context, anon))
+        return side[1]
+
+    def _new_scope(self, context: _Context, anon: dict[str, str]) -> SubstitutionScope:
+        # The scope is kept in the context, so what it holds must not lead back to the
+        # context: a reference cycle would leave the whole load to the garbage collector.
+        filename, open_args = context.filename, context.open_args
+
+        def missing(name: str) -> str:
+            if open_args:
+                return f"arg '{name}' is not set (give it with --arg {name}:=VALUE)"
+            # Only the args passed to an included file exist there: roslaunch fails.
+            message = (f"included file [{self._display(filename)}] requires the "
+                       f"'{name}' arg to be set")
+            if (filename, name) not in self._missing_reported:
+                self._missing_reported.add((filename, name))
+                self._report("roslaunch_error", filename, self._element, message)
+            return message
+
+        return SubstitutionScope(
+            args=context.args,
+            env=self.options.env,
+            find=self.options.packages.find,
+            anon=lambda anon_id: self.anon.make(anon, anon_id),
+            filename=filename,
+            missing_arg=missing,
+            budget=self.budget,
+        )
+
+    def _resolve_text(self, text: str, element: Element, label: str, context: _Context,
+                      anon: dict[str, str] | None = None) -> Value:
+        if "$" not in text:
+            return (text,) if text else ()
+        return self._substitute(text, element, label, context, anon)
+
+    def _substitute(self, text: str, element: Element, label: str, context: _Context,
+                    anon: dict[str, str] | None) -> Value:
+        self._element = element
+        scope = context.scope if anon is None else None
+        try:
+            return resolve(text, scope or self._scope(context, anon))
+        except SubstitutionError as exc:
+            self._error(context, element, f"<{element.tag}> {label}: {exc}")
+            return (Hole(text, str(exc)),)
+
+    def _resolve(self, element: Element, attribute: str, context: _Context,
+                 anon: dict[str, str] | None = None) -> Value | None:
+        """The attribute's value (None when absent); roslaunch errors become holes."""
+        text = element.attrib.get(attribute)
+        if text is None:
+            return None
+        if "$" not in text:
+            return (text,) if text else ()
+        return self._substitute(text, element, attribute, context, anon)
+
+    def _resolve_all(self, element: Element, attributes: Iterable[str], context: _Context,
+                     anon: dict[str, str] | None = None) -> list[Value | None]:
+        return [self._resolve(element, a, context, anon) for a in attributes]
+
+    def _present(self, element: Element, attributes: Iterable[str], context: _Context,
+                 anon: dict[str, str] | None = None) -> dict[str, Value]:
+        """The values of those of ``attributes`` that ``element`` has, resolved in order."""
+        attrib = element.attrib
+        found: dict[str, Value] = {}
+        for attribute in attributes:
+            text = attrib.get(attribute)
+            if text is not None:
+                found[attribute] = (
+                    ((text,) if text else ()) if "$" not in text
+                    else self._substitute(text, element, attribute, context, anon)
+                )
+        return found
+
+    def _required(self, element: Element, attribute: str, context: _Context,
+                  anon: dict[str, str] | None = None) -> Value | None:
+        text = element.attrib.get(attribute)
+        if text is None:
+            self._error(context, element,
+                        f"<{element.tag}> tag is missing required attribute: '{attribute}'")
+            return None
+        if "$" not in text:
+            return (text,) if text else ()
+        return self._substitute(text, element, attribute, context, anon)
+
+    def _condition(self, element: Element, context: _Context,
+                   anon: dict[str, str] | None = None) -> Condition | None:
+        """The extra presence condition of ``element``; None when it is skipped."""
+        attrib = element.attrib
+        if "if" not in attrib and "unless" not in attrib:
+            return ALWAYS
+        if_value = self._resolve(element, "if", context, anon)
+        unless_value = self._resolve(element, "unless", context, anon)
+        if if_value is not None and unless_value is not None:
+            self._error(context, element, "cannot set both 'if' and 'unless' on the same tag")
+        positive = if_value is not None
+        value = if_value if if_value is not None else unless_value
+        assert value is not None
+        try:
+            truth = to_bool(value)
+        except ValueError as exc:
+            self._error(context, element, f"{'if' if positive else 'unless'}: {exc}")
+            truth = None
+        if truth is None:
+            return Condition((ConditionLiteral(text_of(value), positive),))
+        return ALWAYS if truth == positive else None
+
+    def _check_bool(self, context: _Context, element: Element, value: Value | None,
+                    label: str) -> bool | None:
+        """A strict boolean attribute: its value, or None when absent, unknown or bad."""
+        text = resolved_text(value) if value is not None else None
+        if text is None:
+            return None
+        problem = _bool_attribute(text, label)
+        if problem is not None:
+            self._error(context, element, problem)
+            return None
+        return text.lower() == "true"
+
+    # -- defined by a subclass, further on ---------------------------------------------------
+    def _walk(self, elements: list[Element], context: _Context) -> None:
+        """Defined by :class:`.ros1_tags.Ros1Tags`."""
+        raise NotImplementedError

@@ -1,0 +1,364 @@
+"""The ROS 1 loader's tags other than ``<node>`` and ``<include>``: ``<group>``,
+``<arg>``, ``<param>``, ``<rosparam>``, ``<remap>``, ``<env>``, ``<machine>``."""
+
+from __future__ import annotations
+
+import os
+
+from launch_linter.frontends.robot.sources import (
+    DESCRIPTION_PARAM,
+    FRAME_PARAMS,
+    from_ros1_param,
+    is_description_name,
+    params_from_yaml,
+)
+from launch_linter.frontends.ros1_base import (
+    _MACHINE_ATTRS,
+    _MACHINE_OLD_ATTRS,
+    _ROSPARAM_ATTRS,
+    MAX_NESTING,
+    Ros1Base,
+    _Context,
+)
+from launch_linter.frontends.ros1_checks import (
+    _checkable_path,
+    _conjoin,
+    _is_int,
+    _is_positive_number,
+    _param_value_problem,
+    _reasons,
+    rosparam_body_problem,
+)
+from launch_linter.frontends.ros1_names import (
+    _canonical_name,
+    _is_legal_name,
+    make_global_ns,
+    ns_join,
+)
+from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
+from launch_linter.model.transform import ALWAYS, Condition
+from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
+from launch_linter.resolve.xml_safe import Element
+
+
+class Ros1Tags(Ros1Base):
+    """The tags of a launch file, walked in order as roslaunch does."""
+
+    # -- tags --------------------------------------------------------------------------
+    def _walk(self, elements: list[Element], context: _Context) -> None:
+        step = self.budget.step
+        for element in elements:
+            step()
+            self._element = element
+            tag = element.tag
+            if tag == "node":
+                self._node(element, context)
+            elif tag == "arg":
+                self._arg(element, context)
+            elif tag == "group":
+                self._group(element, context)
+            elif tag == "include":
+                self._include(element, context)
+            elif tag == "param":
+                self._param(element, context)
+            elif tag == "rosparam":
+                self._rosparam(element, context)
+            elif tag == "remap":
+                self._remap(element, context)
+            elif tag == "env":
+                self._env(element, context)
+            elif tag == "machine":
+                self._machine(element, context)
+            elif tag == "test":
+                self._node(element, context, is_test=True)
+
+    def _namespace(self, element: Element, context: _Context) -> tuple[str, str] | None:
+        """The namespace inside ``element`` and why it is unresolved ("" when it is not);
+        None when roslaunch refuses it (``~`` names)."""
+        if "ns" not in element.attrib:
+            return context.ns, context.ns_unresolved
+        ns_value = self._resolve(element, "ns", context) or ()
+        ns = text_of(ns_value)
+        if not ns:
+            self._error(context, element, f"<{element.tag}> tag has an empty 'ns' attribute")
+            return context.ns, context.ns_unresolved
+        try:
+            joined = make_global_ns(ns if ns.startswith("/") else ns_join(context.ns, ns))
+        except ValueError as exc:
+            self._error(context, element, str(exc))
+            return None
+        return joined, context.ns_unresolved or _reasons(ns_value)
+
+    def _child_namespace(self, element: Element, context: _Context) -> _Context | None:
+        """roslaunch's ``_ns_clear_params_attr`` up to the new context (``clear_params``,
+        resolved afterwards in the parent, is :meth:`_clear_params`)."""
+        namespace = self._namespace(element, context)
+        if namespace is None:
+            return None
+        child = context.copy()
+        child.ns, child.ns_unresolved = namespace
+        return child
+
+    def _clear_params(self, element: Element, context: _Context, needs_ns: bool,
+                      node_name: str | None = None) -> None:
+        value = self._resolve(element, "clear_params", context)
+        if value is None or not text_of(value):
+            return
+        if self._check_bool(context, element, value, "clear_params"):
+            if needs_ns and element.get("ns") is None:
+                self._error(context, element,
+                            "'ns' attribute must be set in order to use 'clear_params'")
+            elif not needs_ns and not node_name:
+                self._error(context, element,
+                            f"<{element.tag}> tag must have a 'name' attribute to use "
+                            f"'clear_params' attribute")
+
+    def _nested(self, element: Element, context: _Context) -> bool:
+        """Whether one more level of nesting may be followed."""
+        if context.depth < MAX_NESTING:
+            return True
+        self._report("unresolved", context.filename, element,
+                     f"<{element.tag}> nested deeper than {MAX_NESTING} levels; not followed")
+        return False
+
+    def _group(self, element: Element, context: _Context) -> None:
+        condition = self._condition(element, context)
+        if condition is None or not self._nested(element, context):
+            return
+        child = self._child_namespace(element, context)
+        self._clear_params(element, context, needs_ns=True)
+        if child is None:
+            return
+        child.condition = _conjoin(context.condition, condition)
+        child.depth += 1
+        self._walk(element.children, child)
+
+    def _declare(self, context: _Context, element: Element | None, name: str,
+                 value: Value | None, default: Value | None, condition: Condition) -> None:
+        """roslaunch's ``LoaderContext.add_arg``; a declaration under an unresolved
+        condition may or may not happen, so what it would set becomes a hole."""
+        conditional = not condition.always
+        earlier = context.arg_names.get(name)
+        if earlier is None:
+            context.arg_names[name] = conditional
+        elif conditional or earlier:
+            context.arg_names[name] = True
+        elif not context.pass_all_args and element is not None:
+            self._error(context, element, f"arg '{name}' has already been declared")
+        target = context.args if context.include_args is None else context.include_args
+        if conditional:
+            new = value if value is not None else default if name not in target else None
+            if new is not None and target.get(name) != new:
+                target[name] = (Hole(
+                    f"$(arg {name})",
+                    f"arg '{name}' is set under an unresolved condition ({condition.describe()})",
+                ),)
+            return
+        if value is not None:
+            if name in target and not context.pass_all_args and not earlier:
+                if element is not None:
+                    self._error(context, element,
+                                f"cannot override arg '{name}', which has already been set")
+                return
+            target[name] = value
+        elif default is not None and name not in target:
+            target[name] = default
+
+    def _arg(self, element: Element, context: _Context) -> None:
+        attrib = element.attrib
+        condition = (
+            self._condition(element, context) if "if" in attrib or "unless" in attrib
+            else ALWAYS
+        )
+        if condition is None:
+            return
+        name_value = self._required(element, "name", context)
+        value = self._resolve(element, "value", context)
+        default = self._resolve(element, "default", context)
+        doc = attrib.get("doc")
+        if doc is not None and "$" in doc:
+            self._substitute(doc, element, "doc", context, None)
+        if name_value is None:
+            return
+        if value is not None and default is not None:
+            self._error(context, element, "<arg> tag must have one and only one of value/default.")
+        name = resolved_text(name_value)
+        if name is None:
+            self._report("unresolved", context.filename, element,
+                         f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
+            return
+        for key in ("value", "default"):
+            source = self._env_in_text(attrib.get(key, ""))
+            if source is not None:
+                self._env_args[name] = source
+        self._declare(context, element, name, value, default, condition)
+
+    def _param(self, element: Element, context: _Context,
+               anon: dict[str, str] | None = None) -> None:
+        attrib = element.attrib
+        condition = ALWAYS
+        if "if" in attrib or "unless" in attrib:
+            found = self._condition(element, context, anon)
+            if found is None:
+                return
+            condition = found
+        written = self._resolve(element, "value", context, anon)
+        count = int(written is not None)
+        sources: dict[str, Value] = {}
+        for key in ("textfile", "binfile", "command"):
+            text = attrib.get(key)
+            if text is not None:
+                count += 1
+                sources[key] = (self._substitute(text, element, key, context, anon)
+                                if "$" in text else (text,))
+        if count != 1:
+            self._error(context, element,
+                        "<param> tag must have one and only one of value/textfile/binfile.")
+        name_text = attrib.get("name")
+        if name_text is None:
+            self._error(context, element, "<param> tag is missing required attribute: 'name'")
+            return
+        name_value = ((name_text.strip(),) if "$" not in name_text
+                      else self._substitute(name_text.strip(), element, "name", context, anon))
+        if DESCRIPTION_PARAM in name_text and is_description_name(resolved_text(name_value)):
+            if written is not None:
+                sources["value"] = written
+            self._description(element, context, _conjoin(context.condition, condition), sources)
+        elif "/" in name_text and name_text.rsplit("/", 1)[-1] in FRAME_PARAMS and anon is None:
+            # ``<param name="hector_mapping/pub_map_odom_transform" .../>`` beside the node.
+            full = resolved_text(name_value)
+            text = None if written is None else resolved_text(written)
+            if full is not None:
+                always = _conjoin(context.condition, condition).always
+                self.node_params.append((full, text if text is not None and always
+                                         else UNKNOWN_VALUE))
+        param_type = attrib.get("type")
+        if written is not None and param_type is not None:
+            value = resolved_text(written)
+            problem = (None if value is None
+                       else _param_value_problem(value.strip(), param_type or "auto"))
+            if problem is not None:
+                self._error(context, element, f"Invalid <param> tag: {problem}")
+
+    def _description(self, element: Element, context: _Context, condition: Condition,
+                     values: dict[str, Value]) -> None:
+        source = from_ros1_param(values, self._display(context.filename), element.line,
+                                 element.column, condition, os.path.dirname(context.filename))
+        if source is not None:
+            self.descriptions.append(source)
+
+    def _frame_node(self, element: Element, context: _Context, condition: Condition,
+                    name: str | None, package: str, executable: str) -> None:
+        """Keep a node that publishes tf or owns a frame, with its frame params."""
+        params: list[tuple[str, str]] = []
+        for sub in element.children:
+            if sub.tag == "param":
+                key, value = sub.attrib.get("name"), sub.attrib.get("value")
+                if not key or value is None or key.rsplit("/", 1)[-1] not in FRAME_PARAMS:
+                    continue
+                known: str | None = value
+                if "$" in value:
+                    # Anonymous names are left alone: resolving one here would renumber.
+                    known = None if "$(anon" in value else resolved_text(self._resolve_text(
+                        value, sub, "value", context, dict(context.anon)))
+                params.append((key, UNKNOWN_VALUE if known is None else known))
+            elif sub.tag == "rosparam" and sub.text:
+                params.extend(params_from_yaml(sub.text))
+        self.nodes.append(NodeRecord(
+            self._display(context.filename), element.line, element.column, package,
+            executable, name, tuple(params), _conjoin(context.condition, condition),
+        ))
+
+    def _rosparam(self, element: Element, context: _Context,
+                  anon: dict[str, str] | None = None) -> None:
+        if self._condition(element, context, anon) is None:
+            return
+        command, _ns, file, _param, subst = self._resolve_all(element, _ROSPARAM_ATTRS, context,
+                                                              anon)
+        substitute = self._check_bool(context, element, subst, "subst_value")
+        command_text = resolved_text(command) if command is not None else "load"
+        if command_text is not None and (command_text or "load") not in ("load", "dump", "delete"):
+            self._error(context, element, "command must be 'load', 'dump', or 'delete'")
+        if file is not None and command_text == "delete":
+            self._error(context, element, "'file' attribute is invalid with 'delete' command.")
+        file_text = None if file is None else resolved_text(file)
+        if file is not None and (command_text or "load") == "load" and file_text is not None and (
+            file_text == "" or _checkable_path(element.attrib.get("file", ""), file_text)
+        ) and not os.path.isfile(file_text):
+            self._error(context, element,
+                        f"error loading <rosparam> tag: file does not exist [{file_text}]")
+        body: Value | None = (element.text,) if element.text else ()
+        if substitute:
+            body = self._resolve_text(element.text, element, "text", context, anon)
+        if file is None and (command_text or "load") == "load" and body is not None:
+            text = resolved_text(body)
+            # An unresolved param=/ns= may well be set: only a certain absence counts.
+            has_param = any(
+                value is not None and (resolved_text(value) is None or bool(text_of(value)))
+                for value in (_param, _ns)
+            )
+            problem = None if text is None else rosparam_body_problem(text, has_param)
+            if problem is not None:
+                self._error(context, element, f"error loading <rosparam> tag: {problem}")
+
+    def _remap(self, element: Element, context: _Context) -> None:
+        if self._condition(element, context) is None:
+            return
+        ends = [self._required(element, a, context) for a in ("from", "to")]
+        texts = [resolved_text(v) if v is not None else None for v in ends]
+        for text in texts:
+            if text is None:
+                continue
+            name = _canonical_name(text)
+            if not name:
+                self._error(context, element, "remap from/to attributes cannot be empty")
+            elif not _is_legal_name(name):
+                self._error(context, element, f"remap [{name}] is not a valid ROS name")
+
+    def _env(self, element: Element, context: _Context,
+             anon: dict[str, str] | None = None) -> None:
+        if self._condition(element, context, anon) is None:
+            return
+        name = self._required(element, "name", context, anon)
+        self._required(element, "value", context, anon)
+        if name is not None and resolved_text(name) == "":
+            self._error(context, element, "Invalid <env> tag: 'name' attribute must be non-empty")
+
+    def _machine(self, element: Element, context: _Context) -> None:
+        if self._condition(element, context) is None:
+            return
+        # roslaunch resolves the rest of a <machine> in a copy of the context.
+        anon = dict(context.anon)
+        old = self._resolve_all(element, _MACHINE_OLD_ATTRS, context, anon)
+        if any(v for v in old):
+            self._error(context, element,
+                        "<machine>: ros-* attributes are not supported since ROS Fuerte")
+        self._required(element, "name", context, anon)
+        self._required(element, "address", context, anon)
+        values = dict(zip(_MACHINE_ATTRS, self._resolve_all(element, _MACHINE_ATTRS, context,
+                                                            anon)))
+        default = values["default"]
+        default_text = resolved_text(default) if default is not None else "false"
+        if default_text is not None and (default_text or "false").lower() not in (
+            "true", "false", "never"
+        ):
+            self._error(context, element, f"Invalid value for 'attribute': {default_text}")
+        port = values["ssh-port"]
+        port_text = resolved_text(port) if port is not None else None
+        if port_text is not None and not _is_int(port_text or "22"):
+            self._error(context, element, f"invalid ssh-port: {port_text}")
+        if any(child.tag == "env" for child in element.children):
+            self._error(context, element, "<machine>: <env> tag is not supported since ROS Fuerte")
+        timeout = values["timeout"]
+        timeout_text = resolved_text(timeout) if timeout is not None else None
+        if timeout_text is not None and not _is_positive_number(timeout_text):
+            self._error(context, element, f"'timeout' be a positive number: [{timeout_text}]")
+
+    # -- defined by a subclass, further on ---------------------------------------------------
+    def _include(self, element: Element, context: _Context) -> None:
+        """Defined by :class:`.ros1.Ros1Loader`."""
+        raise NotImplementedError
+
+    def _node(self, element: Element, context: _Context, is_test: bool = False) -> None:
+        """Defined by :class:`.ros1.Ros1Loader`."""
+        raise NotImplementedError

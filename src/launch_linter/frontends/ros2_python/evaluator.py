@@ -1,0 +1,340 @@
+"""The bounded evaluator of ROS 2 Python launch files: its state, and statements.
+
+It interprets a small, safe part of Python over the syntax tree (never compiled, never
+run); every step, loop, call depth and value size is bounded (``resolve/bounded.py``).
+Expressions are :mod:`.expressions`'s, calls :mod:`.calls`'s, and calls of the launch
+library :mod:`.launch_api`'s.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+from launch_linter.frontends.ros2_actions import (
+    ACTION_TYPES,
+    Action,
+    Group,
+    Predicate,
+    Problem,
+    Where,
+)
+from launch_linter.frontends.ros2_python.values import (
+    ACTION_NAMES,
+    Env,
+    FuncVal,
+    LazyStr,
+    ModuleVal,
+    OpenFile,
+    Unknown,
+    _Break,
+    _called_name,
+    _Continue,
+    _OutOfSteps,
+    _Return,
+)
+from launch_linter.resolve.bounded import PYTHON_MAX_ITEMS as MAX_ITEMS
+from launch_linter.resolve.bounded import PYTHON_MAX_STEPS as MAX_STEPS
+from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
+from launch_linter.resolve.ros2_substitution import Opaque, Subs, Text
+from launch_linter.resolve.safe_eval import subscript_index
+from launch_linter.resolve.value import Value, holes, resolved_text
+
+
+@dataclass
+class Evaluator:
+    """The state of one file's interpretation, and its statements, bounded in steps."""
+
+    path: str
+    source: str
+    problems: list[Problem] = field(default_factory=list)
+    steps: int = 0
+    depth: int = 0
+    branches: list[Predicate] = field(default_factory=list)
+    call_sites: list[ast.AST] = field(default_factory=list)
+    """Calls of the file's own functions being run, outermost first."""
+    lines: list[str] = field(default_factory=list)
+    scopes: list[Env] = field(default_factory=list)
+    """Every scope made, emptied at the end: a function and the scope it was defined in
+    refer to each other, a cycle that would keep the file's syntax tree alive until the
+    garbage collector finds it."""
+    deferring: bool = False
+    """Whether an ``OpaqueFunction`` will be run later, in its scopes (then they stay)."""
+    served: list[object] = field(default_factory=list)
+    """What a script gives ``LaunchService.include_launch_description``."""
+
+    # -- helpers -------------------------------------------------------------------------
+    def scope(self, parent: Env | None) -> Env:
+        env = Env(parent)
+        self.scopes.append(env)
+        return env
+
+    def forget_scopes(self) -> None:
+        if self.deferring:
+            return
+        for env in self.scopes:
+            env.vars.clear()
+            env.parent = None
+        self.scopes.clear()
+
+    def step(self) -> None:
+        self.steps += 1
+        if self.steps > MAX_STEPS:
+            raise _OutOfSteps
+
+    def segment(self, node: ast.AST) -> str:
+        """The first characters of the source text of ``node``, on one line."""
+        if not self.lines:
+            self.lines = self.source.splitlines(keepends=True)
+        first = getattr(node, "lineno", 0) - 1
+        last = getattr(node, "end_lineno", None)
+        if not 0 <= first < len(self.lines) or last is None:
+            return type(node).__name__
+        # Columns are UTF-8 byte offsets; three lines are plenty for a short excerpt.
+        chunk = [line.encode("utf-8") for line in self.lines[first:min(last, first + 3)]]
+        if last - 1 < first + 3:
+            chunk[-1] = chunk[-1][:getattr(node, "end_col_offset", None)]
+        chunk[0] = chunk[0][getattr(node, "col_offset", 0):]
+        text = " ".join(b"".join(chunk).decode("utf-8", "replace").split())
+        return text if len(text) <= 120 else text[:117] + "..."
+
+    def text_value(self, subs: Subs, node: ast.AST) -> object:
+        """Text when every part is known, else a lazy string; refused when too long."""
+        if sum(len(sub.text) for sub in subs if isinstance(sub, Text)) > MAX_TEXT:
+            return self.unknown(node, f"text longer than {MAX_TEXT} characters")
+        if all(isinstance(sub, Text) for sub in subs):
+            return "".join(sub.text for sub in subs if isinstance(sub, Text))
+        return LazyStr(subs)
+
+    def unknown(self, node: ast.AST, reason: str) -> Unknown:
+        return Unknown(reason, self.segment(node), getattr(node, "lineno", 1))
+
+    def where(self, node: ast.AST) -> Where:
+        """Where an action is reported: inside a helper function of the file, at the call
+        of that helper, so that each call is its own place (to point at and suppress)."""
+        site = self.call_sites[0] if self.call_sites else node
+        return Where(self.path, getattr(site, "lineno", 1), getattr(site, "col_offset", 0) + 1)
+
+    def problem(self, rule: str, node: ast.AST, message: str) -> None:
+        where = self.where(node)
+        self.problems.append(Problem(rule, where.line, where.column, message))
+
+    def guard(self, value: object) -> object:
+        """An action added under an unknown Python ``if`` is present only under it."""
+        if not self.branches or not isinstance(value, ACTION_TYPES):
+            return value
+        action: Action = value
+        for predicate in reversed(self.branches):
+            action = Group(action.where, predicate, (action,), scoped=False)
+        return action
+
+    # -- statements ------------------------------------------------------------------------
+    def run_block(self, body: Sequence[ast.stmt], env: Env) -> None:
+        for statement in body:
+            self.run(statement, env)
+
+    def run(self, node: ast.stmt, env: Env) -> None:
+        self.step()
+        if isinstance(node, ast.Expr):
+            self.eval(node.value, env)
+        elif isinstance(node, ast.Assign):
+            value = self.eval(node.value, env)
+            for target in node.targets:
+                self.assign(target, value, env)
+        elif isinstance(node, ast.AnnAssign):
+            if node.value is not None:
+                self.assign(node.target, self.eval(node.value, env), env)
+        elif isinstance(node, ast.AugAssign):
+            self.aug_assign(node, env)
+        elif isinstance(node, ast.Return):
+            raise _Return(None if node.value is None else self.eval(node.value, env))
+        elif isinstance(node, ast.If):
+            self.run_if(node, env)
+        elif isinstance(node, ast.For):
+            self.run_for(node, env)
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            defaults = self.defaults(node.args, env)
+            env.vars[node.name] = FuncVal(node, env, defaults)
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.asname:
+                    env.vars[alias.asname] = ModuleVal(alias.name)
+                else:
+                    top = alias.name.split(".")[0]
+                    env.vars[top] = ModuleVal(top)
+        elif isinstance(node, ast.ImportFrom):
+            module = node.module or ""
+            for alias in node.names:
+                if alias.name != "*":
+                    env.vars[alias.asname or alias.name] = ModuleVal(f"{module}.{alias.name}")
+        elif isinstance(node, ast.Try):
+            self.run_block(node.body, env)
+            self.run_block(node.orelse, env)
+            self.run_block(node.finalbody, env)
+        elif isinstance(node, ast.With):
+            for item in node.items:
+                # ``with open(path) as f``: f.read() is the file's text, read by nobody.
+                if isinstance(item.optional_vars, ast.Name):
+                    value = self.eval(item.context_expr, env)
+                    if isinstance(value, OpenFile):
+                        env.vars[item.optional_vars.id] = value
+            self.run_block(node.body, env)
+        elif isinstance(node, ast.Break):
+            raise _Break
+        elif isinstance(node, ast.Continue):
+            raise _Continue
+        elif isinstance(node, ast.ClassDef):
+            env.vars[node.name] = self.unknown(node, "classes are not interpreted")
+        elif isinstance(node, ast.While):
+            self.not_followed(node, "a while loop is not followed")
+
+    def not_followed(self, node: ast.stmt, reason: str) -> None:
+        """Report a statement skipped while it may start launch actions."""
+        for inner in ast.walk(node):
+            if isinstance(inner, ast.Call) and _called_name(inner.func) in ACTION_NAMES:
+                self.problem("unresolved", node, f"{reason}: the launch actions in it "
+                             f"(line {inner.lineno}) are not seen")
+                return
+
+    def defaults(self, arguments: ast.arguments, env: Env) -> dict[str, object]:
+        values: dict[str, object] = {}
+        positional = [*arguments.posonlyargs, *arguments.args]
+        for arg, default in zip(positional[len(positional) - len(arguments.defaults):],
+                                arguments.defaults):
+            values[arg.arg] = self.eval(default, env)
+        for arg, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults):
+            if kw_default is not None:
+                values[arg.arg] = self.eval(kw_default, env)
+        return values
+
+    def assign(self, target: ast.expr, value: object, env: Env) -> None:
+        if isinstance(target, ast.Name):
+            env.vars[target.id] = value
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            names = target.elts
+            if isinstance(value, (list, tuple)) and len(value) == len(names):
+                for name, item in zip(names, value):
+                    self.assign(name, item, env)
+            else:
+                reason = value if isinstance(value, Unknown) else self.unknown(
+                    target, "cannot unpack this value")
+                for name in names:
+                    self.assign(name, reason, env)
+        elif isinstance(target, ast.Subscript):
+            container = self.eval(target.value, env)
+            key = self.eval(subscript_index(target), env)
+            if isinstance(container, dict) and isinstance(key, (str, int, float, bool)):
+                container[key] = value
+
+    def aug_assign(self, node: ast.AugAssign, env: Env) -> None:
+        current = self.eval(node.target, env) if isinstance(node.target, ast.Name) else None
+        value = self.eval(node.value, env)
+        if isinstance(node.op, ast.Add) and isinstance(current, list) and isinstance(
+            value, (list, tuple)
+        ):
+            self.extend(current, value)
+            return
+        if isinstance(node.target, ast.Name):
+            env.vars[node.target.id] = self.binary(node.op, current, value, node)
+
+    def extend(self, target: list[object], items: Sequence[object]) -> None:
+        if len(target) + len(items) > MAX_ITEMS:
+            raise _OutOfSteps
+        target.extend(self.guard(item) for item in items)
+
+    def run_if(self, node: ast.If, env: Env) -> None:
+        test = self.truth(self.eval(node.test, env))
+        if test is True:
+            self.run_block(node.body, env)
+            return
+        if test is False:
+            self.run_block(node.orelse, env)
+            return
+        text = self.segment(node.test)
+        before = dict(env.vars)
+        results: list[dict[str, object]] = []
+        for positive, body in ((True, node.body), (False, node.orelse)):
+            env.vars = dict(before)
+            reason = f"Python condition at line {node.lineno} depends on an unknown value"
+            self.branches.append(Predicate(positive, (Opaque(f"python: {text}", reason),)))
+            try:
+                self.run_block(body, env)
+            finally:
+                self.branches.pop()
+            results.append(env.vars)
+        env.vars = self.merge(before, results[0], results[1], node)
+
+    def merge(self, before: dict[str, object], then: dict[str, object],
+              otherwise: dict[str, object], node: ast.If) -> dict[str, object]:
+        merged = dict(before)
+        text = self.segment(node.test)
+        for name in set(then) | set(otherwise):
+            a, b = then.get(name), otherwise.get(name)
+            if a is b:
+                merged[name] = a
+            elif isinstance(a, list) and isinstance(b, list):
+                merged[name] = [
+                    *self.under(a, True, text, node), *self.under(b, False, text, node)
+                ]
+            else:
+                merged[name] = self.unknown(node.test, f"'{name}' depends on the condition "
+                                                       f"'{text}'")
+        return merged
+
+    def under(self, items: list[object], positive: bool, text: str, node: ast.If
+              ) -> list[object]:
+        reason = f"Python condition at line {node.lineno} depends on an unknown value"
+        self.branches.append(Predicate(positive, (Opaque(f"python: {text}", reason),)))
+        try:
+            return [self.guard(item) for item in items]
+        finally:
+            self.branches.pop()
+
+    def iterate(self, value: object, node: ast.AST) -> list[object] | Unknown:
+        if isinstance(value, (list, tuple)):
+            return list(value)
+        if isinstance(value, dict):
+            return list(value)
+        if isinstance(value, str):
+            return list(value)
+        if isinstance(value, Unknown):
+            return value
+        return self.unknown(node, "cannot iterate over this value")
+
+    def run_for(self, node: ast.For, env: Env) -> None:
+        items = self.iterate(self.eval(node.iter, env), node.iter)
+        if isinstance(items, Unknown):
+            self.not_followed(node, f"the loop over {items.text} ({items.reason})")
+            return
+        for item in items:
+            self.assign(node.target, item, env)
+            try:
+                self.run_block(node.body, env)
+            except _Break:
+                return
+            except _Continue:
+                continue
+        self.run_block(node.orelse, env)
+
+    # -- defined by a subclass, further on ---------------------------------------------------
+    def binary(self, op: ast.operator, left: object, right: object, node: ast.AST) -> object:
+        """Defined by :class:`.expressions.Expressions`."""
+        raise NotImplementedError
+
+    def eval(self, node: ast.expr, env: Env) -> object:
+        """Defined by :class:`.expressions.Expressions`."""
+        raise NotImplementedError
+
+    def truth(self, value: object) -> bool | None:
+        """Defined by :class:`.expressions.Expressions`."""
+        raise NotImplementedError
+
+
+def _performed(resolver: Callable[[Subs], Value], subs: Subs, node: ast.AST,
+               interpreter: Evaluator) -> object:
+    value = resolver(subs)
+    text = resolved_text(value)
+    if text is not None:
+        return text
+    return interpreter.unknown(node, "; ".join(f"{h.text}: {h.reason}" for h in holes(value)))

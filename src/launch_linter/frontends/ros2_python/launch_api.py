@@ -1,0 +1,496 @@
+"""The launch API as the linter models it: one handler per launch class.
+
+:data:`HANDLERS` is the explicit table from a class name of ``launch``/``launch_ros``
+(whatever module it is imported from) to the method that builds the action, substitution
+or condition it stands for; any other launch class is an object that starts nothing.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable, Mapping, Sequence
+
+from launch_linter.frontends.ros2_actions import (
+    Action,
+    Component,
+    DeclareArg,
+    Deferred,
+    Group,
+    Include,
+    LoadComponents,
+    Params,
+    ParamsUnknown,
+    Predicate,
+    PushNamespace,
+    RunNode,
+    SetEnv,
+    SetVar,
+    Unfollowed,
+    Where,
+    ros2_run,
+)
+from launch_linter.frontends.ros2_python.calls import Calls
+from launch_linter.frontends.ros2_python.values import (
+    _LEGACY_NODE_KEYWORDS,
+    LAUNCH_ROOTS,
+    ComponentVal,
+    CondVal,
+    ContextVal,
+    FuncVal,
+    HandlerVal,
+    LaunchDescriptionVal,
+    LaunchObject,
+    LazyStr,
+    ModuleVal,
+    SourceVal,
+    SubsVal,
+    Unknown,
+    _keyword,
+    _OutOfSteps,
+    _starts_actions,
+)
+from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, literal
+from launch_linter.resolve.value import Value
+
+# -- the interpreter -----------------------------------------------------------------------
+
+
+def _substitution(kind: str, arity: int) -> Callable[..., object]:
+    """A launch substitution class, as a method of :class:`Interpreter`."""
+
+    def make(self: Interpreter, args: list[object], kwargs: dict[str, object],
+             node: ast.Call) -> object:
+        values = list(args) + list(kwargs.values())
+        subs = tuple(self.subs(v, node, "substitution argument")
+                     for v in values[:arity] if v is not None)
+        return SubsVal((Call(kind, subs, self.segment(node)),))
+
+    return make
+
+
+class Interpreter(Calls):
+    """The whole interpreter: the evaluator with the launch API."""
+
+    # -- the launch library ---------------------------------------------------------------
+    def library(self, module: ModuleVal, args: list[object], kwargs: dict[str, object],
+                node: ast.Call) -> object:
+        dotted, name = module.dotted, module.last
+        if dotted in ("os.path.join", "os.path.dirname", "os.path.abspath", "os.path.realpath",
+                      "os.path.normpath", "os.getenv", "os.environ.get", "pathlib.Path",
+                      "os.path.expanduser"):
+            return self.os_call(dotted, args, node)
+        if module.root == "ament_index_python":
+            return self.ament(name, args, node)
+        if module.root not in LAUNCH_ROOTS:
+            return self.unknown(node, f"calls '{dotted}', which the linter does not model")
+        if name == "Parameter" and ".substitutions" in dotted:
+            # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
+            return _substitution("param", 2)(self, args, kwargs, node)
+        handler = HANDLERS.get(name)
+        if handler is None:
+            if name in ("ParameterValue", "ParameterFile") and args:
+                return args[0] if name == "ParameterValue" else self.unknown(
+                    node, "parameters from a file")
+            return LaunchObject(name)
+        result: object = handler(self, args, kwargs, node)
+        return result
+
+    def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
+                                 node: ast.Call) -> object:
+        initial = self.arg(args, kwargs, 0, "initial_entities")
+        if initial is None:
+            return LaunchDescriptionVal([])
+        if isinstance(initial, (list, tuple)):
+            return LaunchDescriptionVal([self.guard(item) for item in initial])
+        return LaunchDescriptionVal([initial])
+
+    def launch_Node(self, args: list[object], kwargs: dict[str, object], node: ast.Call
+                    ) -> object:
+        def pick(*names: str) -> object:
+            return next((kwargs[n] for n in names if n in kwargs), None)
+
+        arguments = pick("arguments")
+        items: tuple[Subs, ...] | None
+        unknown = ""
+        if arguments is None:
+            items = ()
+        elif isinstance(arguments, (list, tuple)):
+            items = tuple(self.subs(item, node, "arguments item") for item in arguments)
+        else:
+            items = None
+            if isinstance(arguments, Unknown):
+                unknown = arguments.describe()
+            else:
+                unknown = f"line {node.lineno}: arguments is not a list"
+                if isinstance(arguments, str):
+                    self.problem("roslaunch_error", node, "arguments is one string, not a "
+                                 "list: launch passes each of its characters as an argument")
+        legacy = [k for k in _LEGACY_NODE_KEYWORDS if k in kwargs]
+        if legacy:
+            # Kept as a note: evidence of a Foxy target, an error on later distributions
+            # (the rule ros2_removed_keyword decides with the target distribution).
+            self.problem("ros2_removed_keyword", node, ", ".join(
+                f"{k}= (now {_LEGACY_NODE_KEYWORDS[k]}=)" for k in legacy))
+        executable = pick("executable", "node_executable")
+        return RunNode(
+            where=self.where(node),
+            condition=self.condition(kwargs, node),
+            package=self.optional_subs(pick("package"), node, "package"),
+            executable=self.optional_subs(executable, node, "executable"),
+            name=self.optional_subs(pick("name", "node_name"), node, "name"),
+            namespace=self.optional_subs(pick("namespace", "node_namespace"), node, "namespace"),
+            arguments=items,
+            args_written=self.segment(_keyword(node, "arguments") or node),
+            unknown=unknown,
+            parameters=self.parameters(pick("parameters"), node),
+        )
+
+    def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
+                              node: ast.Call) -> object:
+        """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
+        other processes are not transforms."""
+        cmd = self.arg(args, kwargs, 0, "cmd")
+        if not isinstance(cmd, (list, tuple)) or kwargs.get("shell") is True:
+            return LaunchObject("ExecuteProcess")
+        run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
+        if run is None:
+            return LaunchObject("ExecuteProcess")
+        package, executable, arguments = run
+        return RunNode(
+            where=self.where(node), condition=self.condition(kwargs, node), package=package,
+            executable=executable, name=None, namespace=None, arguments=arguments,
+            args_written=self.segment(_keyword(node, "cmd") or node), pushed_namespace=False,
+        )
+
+    def launch_DeclareLaunchArgument(self, args: list[object], kwargs: dict[str, object],
+                                     node: ast.Call) -> object:
+        name = self.arg(args, kwargs, 0, "name")
+        default = self.arg(args, kwargs, 1, "default_value")
+        return DeclareArg(self.where(node), self.condition(kwargs, node),
+                          self.subs(name, node, "argument name"),
+                          self.optional_subs(default, node, "default value"))
+
+    def _assignment(self, action: type[SetVar] | type[SetEnv], args: list[object],
+                    kwargs: dict[str, object], node: ast.Call, sets: bool) -> object:
+        """``Set…(name, value)`` or, with ``sets`` false, ``Unset…(name)``."""
+        where, condition = self.where(node), self.condition(kwargs, node)
+        name = self.subs(self.arg(args, kwargs, 0, "name"), node, "name")
+        value = self.subs(self.arg(args, kwargs, 1, "value"), node, "value") if sets else None
+        return action(where, condition, name, value)
+
+    def launch_SetLaunchConfiguration(self, args: list[object], kwargs: dict[str, object],
+                                      node: ast.Call) -> object:
+        return self._assignment(SetVar, args, kwargs, node, sets=True)
+
+    def launch_UnsetLaunchConfiguration(self, args: list[object], kwargs: dict[str, object],
+                                        node: ast.Call) -> object:
+        return self._assignment(SetVar, args, kwargs, node, sets=False)
+
+    def launch_SetEnvironmentVariable(self, args: list[object], kwargs: dict[str, object],
+                                      node: ast.Call) -> object:
+        return self._assignment(SetEnv, args, kwargs, node, sets=True)
+
+    def launch_UnsetEnvironmentVariable(self, args: list[object], kwargs: dict[str, object],
+                                        node: ast.Call) -> object:
+        return self._assignment(SetEnv, args, kwargs, node, sets=False)
+
+    def launch_PushRosNamespace(self, args: list[object], kwargs: dict[str, object],
+                                node: ast.Call) -> object:
+        return PushNamespace(self.where(node), self.condition(kwargs, node),
+                             self.subs(self.arg(args, kwargs, 0, "namespace"), node, "namespace"))
+
+    launch_PushROSNamespace = launch_PushRosNamespace
+
+    def launch_GroupAction(self, args: list[object], kwargs: dict[str, object],
+                           node: ast.Call) -> object:
+        actions = self.actions(self.arg(args, kwargs, 0, "actions"), node)
+        configurations = kwargs.get("launch_configurations")
+        if isinstance(configurations, dict):
+            where = self.where(node)
+            actions = tuple(
+                SetVar(where, None, self.subs(k, node, "name"), self.subs(v, node, "value"))
+                for k, v in configurations.items()
+            ) + actions
+        flags: list[bool | Subs] = []
+        for key in ("scoped", "forwarding"):
+            value = kwargs.get(key, True)
+            flags.append(value if isinstance(value, bool) else self.subs(value, node, key))
+        return Group(self.where(node), self.condition(kwargs, node), actions,
+                     scoped=flags[0], forwarding=flags[1])
+
+    def launch_TimerAction(self, args: list[object], kwargs: dict[str, object],
+                           node: ast.Call) -> object:
+        actions = self.actions(self.arg(args, kwargs, 1, "actions"), node)
+        return Group(self.where(node), self.condition(kwargs, node), actions, scoped=False)
+
+    def launch_RegisterEventHandler(self, args: list[object], kwargs: dict[str, object],
+                                    node: ast.Call) -> object:
+        handler = self.arg(args, kwargs, 0, "event_handler")
+        if not isinstance(handler, HandlerVal):
+            return LaunchObject("RegisterEventHandler")
+        where = self.where(node)
+        text = self.segment(node.args[0] if node.args else node)
+        reason = f"line {node.lineno}: runs only when the process event happens"
+        predicate = Predicate(True, (Opaque(f"python: {text}", reason),))
+        return Group(where, predicate, self.actions(handler.entities, node), scoped=False)
+
+    def _handler(self, args: list[object], kwargs: dict[str, object], node: ast.Call
+                 ) -> object:
+        return HandlerVal([v for k, v in kwargs.items() if k.startswith("on_")])
+
+    launch_OnProcessStart = _handler
+    launch_OnProcessExit = _handler
+    launch_OnExecutionComplete = _handler
+    launch_OnShutdown = _handler
+    launch_OnProcessIO = _handler
+
+    def launch_IncludeLaunchDescription(self, args: list[object], kwargs: dict[str, object],
+                                        node: ast.Call) -> object:
+        source = self.arg(args, kwargs, 0, "launch_description_source")
+        path = source.path if isinstance(source, SourceVal) else self.subs(
+            source, node, "launch file")
+        launch_arguments = kwargs.get("launch_arguments")
+        pairs: list[tuple[Subs, Subs]] = []
+        if isinstance(launch_arguments, dict):
+            launch_arguments = list(launch_arguments.items())
+        if isinstance(launch_arguments, (list, tuple)):
+            for pair in launch_arguments:
+                if isinstance(pair, (tuple, list)) and len(pair) == 2:
+                    pairs.append((self.subs(pair[0], node, "argument name"),
+                                  self.subs(pair[1], node, "argument value")))
+        elif launch_arguments is not None:
+            self.problem("unresolved", node, "launch_arguments of this include are unknown")
+        return Include(self.where(node), self.condition(kwargs, node), path, tuple(pairs))
+
+    def _source(self, args: list[object], kwargs: dict[str, object], node: ast.Call
+                ) -> object:
+        return SourceVal(self.subs(self.arg(args, kwargs, 0, "launch_file_path"), node,
+                                   "launch file"))
+
+    launch_PythonLaunchDescriptionSource = _source
+    launch_XMLLaunchDescriptionSource = _source
+    launch_YAMLLaunchDescriptionSource = _source
+    launch_AnyLaunchDescriptionSource = _source
+    launch_FrontendLaunchDescriptionSource = _source
+
+    def launch_OpaqueFunction(self, args: list[object], kwargs: dict[str, object],
+                              node: ast.Call) -> object:
+        function = self.arg(args, kwargs, 0, "function")
+        extra_args = kwargs.get("args") or []
+        extra_kwargs = kwargs.get("kwargs") or {}
+        if not isinstance(function, FuncVal) or not isinstance(extra_args, (list, tuple)) or (
+            not isinstance(extra_kwargs, dict)
+        ):
+            return Unfollowed(self.where(node), f"line {node.lineno}: OpaqueFunction of "
+                                                f"{self.segment(node)} is not followed")
+        where = self.where(node)
+
+        def expand(resolver: Callable[[Subs], Value]) -> Sequence[Action]:
+            return self.deferred(function, list(extra_args), dict(extra_kwargs), resolver,
+                                 node, where)
+
+        self.deferring = True
+        return Deferred(where, self.condition(kwargs, node), expand)
+
+    def deferred(self, function: FuncVal, args: list[object], kwargs: dict[str, object],
+                 resolver: Callable[[Subs], Value], node: ast.Call, where: Where
+                 ) -> Sequence[Action]:
+        self.steps = 0
+        # The file's problems were handed over when it was read; what the function's body
+        # meets now (a loop over an unknown value, ...) is reported through the actions.
+        recorded = len(self.problems)
+        try:
+            result = self.call_function(function, [ContextVal(resolver), *args],
+                                        {str(k): v for k, v in kwargs.items()}, node)
+        except (_OutOfSteps, RecursionError):
+            return (Unfollowed(where, f"line {node.lineno}: OpaqueFunction too complex to "
+                                      f"follow"),)
+        finally:
+            met = self.problems[recorded:]
+            del self.problems[recorded:]
+        name = getattr(function.node, "name", "<lambda>")
+        notes = tuple(
+            Unfollowed(Where(self.path, p.line, p.column),
+                       f"in OpaqueFunction {name}(): {p.message}")
+            for p in met
+        )
+        found = self.actions(result, node) if result is not None else ()
+        if not found and not notes and _starts_actions(function.node):
+            notes = (Unfollowed(where, f"line {node.lineno}: OpaqueFunction "
+                                       f"{name}() builds launch actions but "
+                                       f"returns none the linter can follow"),)
+        return (*notes, *found)
+
+    launch_LaunchConfiguration = _substitution("var", 2)
+    launch_EnvironmentVariable = _substitution("env", 2)
+    launch_FindPackageShare = _substitution("find-pkg-share", 1)
+    launch_FindPackagePrefix = _substitution("find-pkg-prefix", 1)
+    launch_FindExecutable = _substitution("find-exec", 1)
+    launch_PythonExpression = _substitution("eval", 1)
+    launch_AnonName = _substitution("anon", 1)
+    launch_Command = _substitution("command", 1)
+    launch_ThisLaunchFileDir = _substitution("dirname", 0)
+    launch_ThisLaunchFile = _substitution("filename", 0)
+    launch_NotSubstitution = _substitution("not", 1)
+    launch_AndSubstitution = _substitution("and", 2)
+    launch_OrSubstitution = _substitution("or", 2)
+    launch_EqualsSubstitution = _substitution("equals", 2)
+    launch_NotEqualsSubstitution = _substitution("not-equals", 2)
+    launch_IfElseSubstitution = _substitution("if", 3)
+    launch_LaunchLogDir = _substitution("launch_log_dir", 0)
+
+    def launch_TextSubstitution(self, args: list[object], kwargs: dict[str, object],
+                                node: ast.Call) -> object:
+        return SubsVal(self.subs(self.arg(args, kwargs, 0, "text"), node, "text"))
+
+    def launch_PathJoinSubstitution(self, args: list[object], kwargs: dict[str, object],
+                                    node: ast.Call) -> object:
+        parts = self.arg(args, kwargs, 0, "substitutions")
+        if not isinstance(parts, (list, tuple)):
+            return self.unknown(node, "PathJoinSubstitution of an unknown list")
+        return SubsVal((Call("path-join", tuple(self.subs(p, node, "path part") for p in parts),
+                             self.segment(node)),))
+
+    def launch_IfCondition(self, args: list[object], kwargs: dict[str, object],
+                           node: ast.Call) -> object:
+        value = self.arg(args, kwargs, 0, "predicate_expression")
+        return CondVal(Predicate(True, self.subs(value, node, "condition")))
+
+    def launch_UnlessCondition(self, args: list[object], kwargs: dict[str, object],
+                               node: ast.Call) -> object:
+        value = self.arg(args, kwargs, 0, "predicate_expression")
+        return CondVal(Predicate(False, self.subs(value, node, "condition")))
+
+    def launch_LaunchConfigurationEquals(self, args: list[object], kwargs: dict[str, object],
+                                         node: ast.Call) -> object:
+        name = self.subs(self.arg(args, kwargs, 0, "launch_configuration_name"), node, "name")
+        expected = self.subs(self.arg(args, kwargs, 1, "expected_value") or "", node, "value")
+        variable = Call("var", (name,), self.segment(node))
+        return CondVal(Predicate(True, (Call("equals", ((variable,), expected),
+                                             self.segment(node)),)))
+
+    def launch_LaunchConfigurationNotEquals(self, args: list[object],
+                                            kwargs: dict[str, object], node: ast.Call
+                                            ) -> object:
+        condition = self.launch_LaunchConfigurationEquals(args, kwargs, node)
+        assert isinstance(condition, CondVal)
+        return CondVal(Predicate(False, condition.predicate.expression))
+
+    def launch_ComposableNode(self, args: list[object], kwargs: dict[str, object],
+                              node: ast.Call) -> object:
+        return ComponentVal(Component(
+            where=self.where(node),
+            condition=self.condition(kwargs, node),
+            package=self.optional_subs(kwargs.get("package"), node, "package"),
+            plugin=self.optional_subs(kwargs.get("plugin"), node, "plugin"),
+            name=self.optional_subs(kwargs.get("name"), node, "name"),
+            namespace=self.optional_subs(kwargs.get("namespace"), node, "namespace"),
+            parameters=self.parameters(kwargs.get("parameters"), node),
+        ))
+
+    def parameters(self, value: object, node: ast.Call) -> tuple[Params | ParamsUnknown, ...]:
+        if value is None:
+            return ()
+        if not isinstance(value, (list, tuple)):
+            return (ParamsUnknown(f"line {node.lineno}: parameters are not a list"),)
+        out: list[Params | ParamsUnknown] = []
+        for entry in value:
+            if isinstance(entry, dict):
+                items: list[tuple[str, Subs]] = []
+                if not self.flatten(entry, "", items, node):
+                    out.append(ParamsUnknown(f"line {node.lineno}: a parameter name or value "
+                                             f"is unknown"))
+                out.append(Params(tuple(items)))
+            else:
+                reason = entry.describe() if isinstance(entry, Unknown) else (
+                    f"line {node.lineno}: parameters from a file")
+                out.append(ParamsUnknown(reason))
+        return tuple(out)
+
+    def flatten(self, entry: dict[object, object], prefix: str,
+                items: list[tuple[str, Subs]], node: ast.Call) -> bool:
+        complete = True
+        for key, value in entry.items():
+            if not isinstance(key, str):
+                complete = False
+                continue
+            if isinstance(value, dict):
+                complete = self.flatten(value, f"{prefix}{key}.", items, node) and complete
+            elif isinstance(value, bool):
+                items.append((prefix + key, literal(str(value).lower())))
+            elif isinstance(value, (int, float)):
+                items.append((prefix + key, literal(repr(value))))
+            elif isinstance(value, (str, SubsVal, LazyStr, Unknown)):
+                items.append((prefix + key, self.subs(value, node, "parameter")))
+        return complete
+
+    def _container(self, args: list[object], kwargs: dict[str, object], node: ast.Call
+                   ) -> object:
+        descriptions = kwargs.get("composable_node_descriptions") or []
+        if not isinstance(descriptions, (list, tuple)):
+            return Unfollowed(self.where(node), f"line {node.lineno}: composable nodes of "
+                                                f"{self.segment(node)} are unknown")
+        components = tuple(d.component for d in descriptions if isinstance(d, ComponentVal))
+        return LoadComponents(self.where(node), self.condition(kwargs, node), components)
+
+    launch_ComposableNodeContainer = _container
+    launch_LoadComposableNodes = _container
+
+
+HANDLERS: Mapping[
+    str, Callable[[Interpreter, list[object], dict[str, object], ast.Call], object]
+] = {
+    "LaunchDescription": Interpreter.launch_LaunchDescription,
+    "Node": Interpreter.launch_Node,
+    "ExecuteProcess": Interpreter.launch_ExecuteProcess,
+    "DeclareLaunchArgument": Interpreter.launch_DeclareLaunchArgument,
+    "SetLaunchConfiguration": Interpreter.launch_SetLaunchConfiguration,
+    "UnsetLaunchConfiguration": Interpreter.launch_UnsetLaunchConfiguration,
+    "SetEnvironmentVariable": Interpreter.launch_SetEnvironmentVariable,
+    "UnsetEnvironmentVariable": Interpreter.launch_UnsetEnvironmentVariable,
+    "PushRosNamespace": Interpreter.launch_PushRosNamespace,
+    "PushROSNamespace": Interpreter.launch_PushROSNamespace,
+    "GroupAction": Interpreter.launch_GroupAction,
+    "TimerAction": Interpreter.launch_TimerAction,
+    "RegisterEventHandler": Interpreter.launch_RegisterEventHandler,
+    "OnProcessStart": Interpreter.launch_OnProcessStart,
+    "OnProcessExit": Interpreter.launch_OnProcessExit,
+    "OnExecutionComplete": Interpreter.launch_OnExecutionComplete,
+    "OnShutdown": Interpreter.launch_OnShutdown,
+    "OnProcessIO": Interpreter.launch_OnProcessIO,
+    "IncludeLaunchDescription": Interpreter.launch_IncludeLaunchDescription,
+    "PythonLaunchDescriptionSource": Interpreter.launch_PythonLaunchDescriptionSource,
+    "XMLLaunchDescriptionSource": Interpreter.launch_XMLLaunchDescriptionSource,
+    "YAMLLaunchDescriptionSource": Interpreter.launch_YAMLLaunchDescriptionSource,
+    "AnyLaunchDescriptionSource": Interpreter.launch_AnyLaunchDescriptionSource,
+    "FrontendLaunchDescriptionSource": Interpreter.launch_FrontendLaunchDescriptionSource,
+    "OpaqueFunction": Interpreter.launch_OpaqueFunction,
+    "LaunchConfiguration": Interpreter.launch_LaunchConfiguration,
+    "EnvironmentVariable": Interpreter.launch_EnvironmentVariable,
+    "FindPackageShare": Interpreter.launch_FindPackageShare,
+    "FindPackagePrefix": Interpreter.launch_FindPackagePrefix,
+    "FindExecutable": Interpreter.launch_FindExecutable,
+    "PythonExpression": Interpreter.launch_PythonExpression,
+    "AnonName": Interpreter.launch_AnonName,
+    "Command": Interpreter.launch_Command,
+    "ThisLaunchFileDir": Interpreter.launch_ThisLaunchFileDir,
+    "ThisLaunchFile": Interpreter.launch_ThisLaunchFile,
+    "NotSubstitution": Interpreter.launch_NotSubstitution,
+    "AndSubstitution": Interpreter.launch_AndSubstitution,
+    "OrSubstitution": Interpreter.launch_OrSubstitution,
+    "EqualsSubstitution": Interpreter.launch_EqualsSubstitution,
+    "NotEqualsSubstitution": Interpreter.launch_NotEqualsSubstitution,
+    "IfElseSubstitution": Interpreter.launch_IfElseSubstitution,
+    "LaunchLogDir": Interpreter.launch_LaunchLogDir,
+    "TextSubstitution": Interpreter.launch_TextSubstitution,
+    "PathJoinSubstitution": Interpreter.launch_PathJoinSubstitution,
+    "IfCondition": Interpreter.launch_IfCondition,
+    "UnlessCondition": Interpreter.launch_UnlessCondition,
+    "LaunchConfigurationEquals": Interpreter.launch_LaunchConfigurationEquals,
+    "LaunchConfigurationNotEquals": Interpreter.launch_LaunchConfigurationNotEquals,
+    "ComposableNode": Interpreter.launch_ComposableNode,
+    "ComposableNodeContainer": Interpreter.launch_ComposableNodeContainer,
+    "LoadComposableNodes": Interpreter.launch_LoadComposableNodes,
+}
+"""Every launch class the linter models, by its name: the handler builds the action,
+substitution or condition it stands for from the call's arguments."""

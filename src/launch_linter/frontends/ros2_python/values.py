@@ -1,0 +1,244 @@
+"""The values of the ROS 2 Python launch-file interpreter.
+
+Plain Python values (``str``, numbers, lists, tuples, dicts) stand for themselves; the
+classes here stand for what the linter models without running it: an :class:`Unknown`
+(with why and where), launch substitutions kept unevaluated (:class:`SubsVal`), strings
+known only at launch time (:class:`LazyStr`), launch objects, conditions, the file's own
+functions and scopes.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from launch_linter.frontends.ros2_actions import Component, Predicate
+from launch_linter.resolve.ros2_substitution import Opaque, Subs, literal
+from launch_linter.resolve.value import Value
+
+LAUNCH_ROOTS = (
+    "launch", "launch_ros", "launch_xml", "launch_yaml", "launch_testing", "launch_pytest",
+)
+ACTION_NAMES = frozenset({
+    "Node", "IncludeLaunchDescription", "ComposableNodeContainer", "LoadComposableNodes",
+    "ComposableNode", "GroupAction", "OpaqueFunction", "TimerAction", "LaunchDescription",
+})
+
+_LEGACY_NODE_KEYWORDS = {
+    "node_executable": "executable",
+    "node_name": "name",
+    "node_namespace": "namespace",
+}
+"""launch_ros ``Node`` keywords of Foxy and before, and what replaced them."""
+
+
+# -- values -----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Unknown:
+    """A value the linter cannot know: why, and where it was written."""
+
+    reason: str
+    text: str
+    line: int
+
+    def describe(self) -> str:
+        return f"line {self.line}: {self.text}: {self.reason}"
+
+    def hole(self, prefix: str = "") -> Opaque:
+        """A substitution standing for this value: shows its text, says where and why."""
+        return Opaque(prefix + self.text, f"line {self.line}: {self.reason}")
+
+
+@dataclass(frozen=True)
+class SubsVal:
+    """A launch substitution object (or a list of them): evaluated only when it runs."""
+
+    subs: Subs
+
+
+@dataclass(frozen=True)
+class OpenFile:
+    """``open(path)``: nothing is opened; ``.read()`` gives the file's text as the
+    ``file-content`` substitution (a robot description read from a URDF file)."""
+
+    path: Subs
+
+
+@dataclass(frozen=True)
+class LazyStr:
+    """A Python string (or path) whose value the linter computes later, from the same
+    facts launch would use: a package location, an environment variable."""
+
+    subs: Subs
+    path: bool = False
+
+
+@dataclass
+class LaunchDescriptionVal:
+    items: list[object]
+
+
+@dataclass(frozen=True)
+class CondVal:
+    predicate: Predicate
+
+
+@dataclass(frozen=True)
+class SourceVal:
+    path: Subs
+
+
+@dataclass(frozen=True)
+class ComponentVal:
+    component: Component
+
+
+@dataclass(frozen=True)
+class ModuleVal:
+    """A name imported from a module: ``launch_ros.actions.Node``, ``os.path``."""
+
+    dotted: str
+
+    @property
+    def root(self) -> str:
+        return self.dotted.split(".")[0]
+
+    @property
+    def last(self) -> str:
+        return self.dotted.rsplit(".", 1)[-1]
+
+
+@dataclass(frozen=True)
+class LaunchObject:
+    """An instance of a launch class that starts no static transform."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class Builtin:
+    name: str
+
+
+@dataclass
+class FuncVal:
+    node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
+    closure: Env
+    defaults: dict[str, object]
+
+
+@dataclass(frozen=True)
+class BoundMethod:
+    target: object
+    name: str
+
+
+@dataclass(frozen=True)
+class HandlerVal:
+    """A process event handler: the entities it starts when the event happens."""
+
+    entities: list[object]
+
+
+@dataclass(frozen=True)
+class ContextVal:
+    """The ``LaunchContext`` an ``OpaqueFunction`` receives."""
+
+    resolver: Callable[[Subs], Value]
+
+
+@dataclass(frozen=True)
+class ConfigsVal:
+    """``context.launch_configurations``."""
+
+    resolver: Callable[[Subs], Value]
+
+
+BUILTINS = ("str", "int", "float", "bool", "len", "list", "tuple", "dict", "range", "print",
+            "sorted", "enumerate", "zip", "min", "max", "abs", "round", "open")
+
+
+def _starts_actions(node: ast.AST) -> bool:
+    """Whether a function's body calls a launch action class (a ``Node``, ...)."""
+    return any(
+        isinstance(inner, ast.Call) and _called_name(inner.func) in ACTION_NAMES
+        for inner in ast.walk(node)
+    )
+
+
+class Env:
+    """Python scopes: a function's locals in front of its enclosing scopes."""
+
+    def __init__(self, parent: Env | None = None) -> None:
+        self.vars: dict[str, object] = {}
+        self.parent = parent
+
+    def lookup(self, name: str) -> tuple[bool, object]:
+        env: Env | None = self
+        while env is not None:
+            if name in env.vars:
+                return True, env.vars[name]
+            env = env.parent
+        return False, None
+
+
+class _OutOfSteps(Exception):
+    pass
+
+
+class _Return(Exception):
+    def __init__(self, value: object) -> None:
+        self.value = value
+
+
+class _Break(Exception):
+    pass
+
+
+class _Continue(Exception):
+    pass
+
+
+def _text_of(value: object) -> str | None:
+    return value if isinstance(value, str) else None
+
+
+def _keyword(node: ast.Call, name: str) -> ast.expr | None:
+    return next((k.value for k in node.keywords if k.arg == name), None)
+
+
+def _called_name(node: ast.expr) -> str:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return ""
+
+
+def _as_subs(value: str | LazyStr) -> Subs:
+    return literal(value) if isinstance(value, str) else value.subs
+
+
+
+
+def _plain(value: object) -> bool:
+    return isinstance(value, (str, int, float, bool, list, tuple, dict)) or value is None
+
+
+_COMPARE: dict[type, Callable[[Any, Any], bool]] = {
+    ast.Eq: lambda a, b: a == b, ast.NotEq: lambda a, b: a != b,
+    ast.Lt: lambda a, b: a < b, ast.LtE: lambda a, b: a <= b,
+    ast.Gt: lambda a, b: a > b, ast.GtE: lambda a, b: a >= b,
+    ast.In: lambda a, b: a in b, ast.NotIn: lambda a, b: a not in b,
+    ast.Is: lambda a, b: a is b if a is None or b is None else a == b,
+    ast.IsNot: lambda a, b: a is not b if a is None or b is None else a != b,
+}
+
+_PLAIN_BUILTINS: dict[str, Callable[..., object]] = {
+    "int": int, "float": float, "bool": bool, "abs": abs, "round": round, "min": min,
+    "max": max,
+}

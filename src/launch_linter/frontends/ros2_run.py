@@ -1,0 +1,508 @@
+"""Running ROS 2 launch actions in order, with launch's rules: scopes of launch
+configurations and environment, conditions, namespaces pushed, groups and includes. The
+actions that start nodes are :mod:`.ros2_launch`'s."""
+
+from __future__ import annotations
+
+import os
+import shlex
+from dataclasses import dataclass, field
+
+from launch_linter.frontends.ros1 import LoadOptions
+from launch_linter.frontends.ros2_actions import (
+    Action,
+    Component,
+    DeclareArg,
+    Deferred,
+    FileRead,
+    Group,
+    Include,
+    LoadComponents,
+    Predicate,
+    PushNamespace,
+    RunNode,
+    SetEnv,
+    SetVar,
+    Unfollowed,
+    Where,
+)
+from launch_linter.frontends.ros2_python import read_python
+from launch_linter.frontends.ros2_xml import read_xml
+from launch_linter.frontends.ros2_yaml import read_yaml
+from launch_linter.model.budget import Budget, BudgetExceeded
+from launch_linter.model.diagnostic import Problem
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
+from launch_linter.model.robot import DescriptionSource, NodeRecord
+from launch_linter.model.transform import Condition, ConditionLiteral, LaunchFormat, StaticTransform
+from launch_linter.resolve.ros2_substitution import (
+    Call,
+    Ros2Scope,
+    Subs,
+    SubstitutionError,
+    Text,
+    resolve,
+    to_bool,
+    written,
+)
+from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+from launch_linter.resolve.xml_safe import read_launch_bytes
+
+STATIC_TF_EXECUTABLE = "static_transform_publisher"
+STATIC_TF_PACKAGE = "tf2_ros"
+STATIC_TF_PLUGIN = "tf2_ros::StaticTransformBroadcasterNode"
+MAX_INCLUDE_DEPTH = 32
+MAX_FILES_PER_TREE = 2_000
+MAX_ACTIONS_PER_TREE = 200_000
+NAMESPACE_KEY = "ros_namespace"
+"""The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
+
+def _environment_names(subs: Subs, depth: int = 0) -> list[str]:
+    """The environment variables (written as literal names) that ``subs`` reads."""
+    names: list[str] = []
+    if depth > 32:
+        return names
+    for sub in subs:
+        if isinstance(sub, Call):
+            if sub.name in ("env", "optenv") and sub.args:
+                first = sub.args[0]
+                if all(isinstance(part, Text) for part in first):
+                    names.append("".join(part.text for part in first if isinstance(part, Text)))
+            for argument in sub.args:
+                names.extend(_environment_names(argument, depth + 1))
+    return names
+
+
+@dataclass
+class _Scope:
+    """Launch configurations and environment, shared by everything that runs in it."""
+
+    configs: dict[str, Value]
+    env: dict[str, str]
+    condition: Condition
+    """The presence condition under which this scope was opened."""
+
+    def copy(self, condition: Condition) -> _Scope:
+        return _Scope(dict(self.configs), dict(self.env), condition)
+
+
+@dataclass(frozen=True)
+class _Frame:
+    """Where the actions being run come from."""
+
+    filename: str
+    launch_format: LaunchFormat
+    chain: tuple[str, ...]
+    included_from: tuple[str, int] | None
+    condition: Condition
+
+
+@dataclass
+class _Budget:
+    actions: int = 0
+    anon: dict[str, str] = field(default_factory=dict)
+
+
+def prefix_namespace(base: str | None, namespace: str | None) -> str | None:
+    """launch_ros's rule: a relative namespace goes under the pushed one."""
+    if base is None:
+        return namespace
+    if namespace is None:
+        return base
+    if namespace.startswith("/"):
+        return namespace
+    return base.rstrip("/") + "/" + namespace if namespace else base
+
+
+def make_absolute(namespace: str | None) -> str | None:
+    if namespace is None or namespace.startswith("/"):
+        return namespace
+    return "/" + namespace
+
+
+def _join_argv(values: list[Value]) -> str:
+    """The argv items as one line: resolved items quoted as a shell would need."""
+    return " ".join(
+        shlex.quote(text_of(value)) if is_resolved(value) else text_of(value) for value in values
+    )
+
+
+def _is_static_tf(package: str | None, executable: str | None, wanted: str) -> bool:
+    """A static transform publisher, or possibly one when a value is unresolved."""
+    if executable is not None and executable != wanted:
+        return False
+    if package is not None and package != STATIC_TF_PACKAGE:
+        return False
+    return executable is not None or package is not None
+
+
+def _yaml_is_string(text: str) -> bool:
+    """Whether launch's YAML typing keeps a parameter text as a string."""
+    word = text.strip().lower()
+    if word in ("true", "false", "yes", "no", "on", "off", ".inf", "-.inf", "+.inf", ".nan"):
+        return False
+    try:
+        float(word.replace("_", ""))
+    except ValueError:
+        return True
+    return False
+
+
+def _required_arguments(actions: tuple[Action, ...]) -> list[str]:
+    """Arguments an included file declares unconditionally and without a default."""
+    found: list[str] = []
+    pending: list[Action] = list(actions)
+    while pending:
+        action = pending.pop(0)
+        if isinstance(action, Group) and action.condition is None:
+            pending[:0] = action.actions
+        elif isinstance(action, DeclareArg) and action.condition is None and (
+            action.default is None
+        ) and all(isinstance(sub, Text) for sub in action.name):
+            found.append(written(action.name))
+    return found
+
+
+def _locate(path: str, including_file: str) -> str | None:
+    candidates = [path] if os.path.isabs(path) else [
+        os.path.join(os.path.dirname(including_file), path), os.path.abspath(path),
+    ]
+    for candidate in candidates:
+        if os.path.isfile(candidate):
+            return os.path.abspath(candidate)
+    # A folder, device or FIFO of that name is found, so that reading it says what it is.
+    for candidate in candidates:
+        if os.path.exists(candidate):
+            return os.path.abspath(candidate)
+    return None
+
+
+class Ros2Runner:
+    """Runs the actions of one root file (and its includes) in order."""
+
+    def __init__(self, options: LoadOptions) -> None:
+        self.options = options
+        self.transforms: list[StaticTransform] = []
+        self.problems: list[Problem] = []
+        self.files: list[str] = []
+        self.comments: list[Comment] = []
+        self.element_lines: list[tuple[str, int]] = []
+        self.descriptions: list[DescriptionSource] = []
+        self.nodes: list[NodeRecord] = []
+        self.budget = _Budget()
+        self.work = Budget()
+        self._where: Where | None = None
+        """The action being run (where the work budget ran out, if it does)."""
+        self.root_display = ""
+
+    # -- diagnostics -------------------------------------------------------------------
+    def _display(self, path: str) -> str:
+        return self.options.display_path(path)
+
+    def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
+        self.problems.append(Problem(
+            rule, self._display(where.path), where.line, where.column, message, node
+        ))
+
+    # -- files -------------------------------------------------------------------------
+    def load(self, path: str, data: bytes | None = None) -> LaunchTree:
+        absolute = os.path.abspath(path)
+        self.root_display = self._display(absolute)
+        if data is None:
+            try:
+                data = read_launch_bytes(absolute)
+            except OSError as exc:
+                if self.root_display not in self.files:
+                    self.files.append(self.root_display)
+                self._report("parse_error", Where(absolute, 1, 1),
+                             f"cannot read file: {exc.strerror or exc}")
+                return self._tree(FileStatus.UNREADABLE)
+        try:
+            read = self._read_file(absolute, data)
+            if read.actions is None:
+                return self._tree(FileStatus.PARSE_ERROR)
+            configs: dict[str, Value] = {
+                name: (value,) if value else () for name, value in self.options.args.items()
+            }
+            scope = _Scope(configs, dict(self.options.env), Condition())
+            frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition())
+            self._run(read.actions, scope, frame)
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._where or Where(absolute, 1, 1),
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
+        return self._tree(FileStatus.OK)
+
+    def _tree(self, status: FileStatus) -> LaunchTree:
+        return LaunchTree(
+            root=self.root_display,
+            status=status,
+            transforms=tuple(self.transforms),
+            problems=tuple(self.problems),
+            files=tuple(self.files),
+            comments=tuple(self.comments),
+            element_lines=tuple(self.element_lines),
+            descriptions=tuple(self.descriptions),
+            nodes=tuple(self.nodes),
+        )
+
+    def _read_file(self, absolute: str, data: bytes) -> FileRead:
+        display = self._display(absolute)
+        if display not in self.files:
+            self.files.append(display)
+        if absolute.endswith(".py"):
+            read = read_python(absolute, data, self.work)
+        elif absolute.endswith((".yaml", ".yml")):
+            read = read_yaml(absolute, data)
+        else:
+            read = read_xml(absolute, data)
+        if holds_directive(read.comments):
+            self.comments.extend(Comment(display, line, text) for line, text in read.comments)
+            self.element_lines.extend((display, line) for line in read.element_lines)
+        for problem in read.problems:
+            self._report(problem.rule, Where(absolute, problem.line, problem.column),
+                         problem.message)
+        return read
+
+    # -- resolution --------------------------------------------------------------------
+    def _substitution_scope(self, scope: _Scope, frame: _Frame) -> Ros2Scope:
+        anon = self.budget.anon
+
+        def anonymous(name: str) -> str:
+            if name not in anon:
+                anon[name] = f"{name}_anon{len(anon) + 1}"
+            return anon[name]
+
+        return Ros2Scope(scope.configs, scope.env, self.options.packages.find, anonymous,
+                         frame.filename, self.work)
+
+    def _resolve(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> Value:
+        try:
+            return resolve(subs, self._substitution_scope(scope, frame))
+        except SubstitutionError as exc:
+            self._report("roslaunch_error", where, str(exc))
+            return (Hole(written(subs), str(exc)),)
+
+    def _condition(self, predicate: Predicate | None, scope: _Scope, frame: _Frame,
+                   where: Where) -> Condition | None:
+        """The action's own presence condition; None when it is skipped."""
+        if predicate is None:
+            return Condition()
+        value = self._resolve(predicate.expression, scope, frame, where)
+        try:
+            truth = to_bool(value)
+        except ValueError as exc:
+            self._report("roslaunch_error", where, f"{'if' if predicate.positive else 'unless'}:"
+                         f" {exc}")
+            truth = None
+        if truth is None:
+            return Condition((ConditionLiteral(text_of(value), predicate.positive),))
+        return Condition() if truth == predicate.positive else None
+
+    @staticmethod
+    def _certain(scope: _Scope, condition: Condition) -> bool:
+        """Whether an effect under ``condition`` holds wherever ``scope`` is seen."""
+        return all(literal in scope.condition.literals for literal in condition.literals)
+
+    def _set(self, scope: _Scope, name: str, value: Value, condition: Condition,
+             written: str) -> None:
+        if not self._certain(scope, condition):
+            value = (Hole(written, f"'{name}' is set under an unresolved condition"),)
+        scope.configs[name] = value
+
+    # -- actions -----------------------------------------------------------------------
+    def _run(self, actions: tuple[Action, ...] | list[Action], scope: _Scope, frame: _Frame
+             ) -> None:
+        step = self.work.step
+        for action in actions:
+            step()
+            self._where = action.where
+            self.budget.actions += 1
+            if self.budget.actions > MAX_ACTIONS_PER_TREE:
+                self._report("roslaunch_error", action.where,
+                             f"more than {MAX_ACTIONS_PER_TREE} launch actions; not followed")
+                return
+            self._run_one(action, scope, frame)
+
+    def _run_one(self, action: Action, scope: _Scope, frame: _Frame) -> None:
+        if isinstance(action, Unfollowed):
+            self._report("unresolved", action.where, action.reason)
+            return
+        own = self._condition(action.condition, scope, frame, action.where)
+        if own is None:
+            return
+        condition = frame.condition & own
+        here = _Frame(frame.filename, frame.launch_format, frame.chain, frame.included_from,
+                      condition)
+        if isinstance(action, DeclareArg):
+            self._declare(action, scope, here)
+        elif isinstance(action, SetVar):
+            self._let(action, scope, here)
+        elif isinstance(action, SetEnv):
+            self._set_env(action, scope, here)
+        elif isinstance(action, PushNamespace):
+            self._push_namespace(action, scope, here)
+        elif isinstance(action, Group):
+            self._group(action, scope, here)
+        elif isinstance(action, Include):
+            self._include(action, scope, here)
+        elif isinstance(action, RunNode):
+            self._node(action, scope, here)
+        elif isinstance(action, LoadComponents):
+            for component in action.components:
+                self._component(component, scope, here)
+        elif isinstance(action, Deferred):
+            expanded = action.expand(
+                lambda subs: self._resolve(subs, scope, here, action.where)
+            )
+            self._run(list(expanded), scope, here)
+
+    def _name(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where, what: str
+              ) -> str | None:
+        value = self._resolve(subs, scope, frame, where)
+        name = resolved_text(value)
+        if name is None:
+            reasons = "; ".join(f"{h.text}: {h.reason}" for h in holes(value))
+            self._report("unresolved", where, f"{what} {text_of(value)!r} is unresolved: {reasons}")
+        return name
+
+    def _declare(self, action: DeclareArg, scope: _Scope, frame: _Frame) -> None:
+        name = self._name(action.name, scope, frame, action.where, "argument name")
+        if name is None or name in scope.configs or action.default is None:
+            return
+        default = self._resolve(action.default, scope, frame, action.where)
+        self._set(scope, name, default, frame.condition, f"$(var {name})")
+
+    def _let(self, action: SetVar, scope: _Scope, frame: _Frame) -> None:
+        name = self._name(action.name, scope, frame, action.where, "configuration name")
+        if name is None:
+            return
+        if action.value is None:
+            scope.configs.pop(name, None)
+            return
+        value = self._resolve(action.value, scope, frame, action.where)
+        self._set(scope, name, value, frame.condition, f"$(var {name})")
+
+    def _set_env(self, action: SetEnv, scope: _Scope, frame: _Frame) -> None:
+        name = self._name(action.name, scope, frame, action.where, "environment variable")
+        if name is None:
+            return
+        if action.value is None:
+            scope.env.pop(name, None)
+            return
+        value = self._resolve(action.value, scope, frame, action.where)
+        text = resolved_text(value)
+        # The environment holds text only: an unknown value makes the variable unknown.
+        if text is None or not self._certain(scope, frame.condition):
+            scope.env.pop(name, None)
+        else:
+            scope.env[name] = text
+
+    def _push_namespace(self, action: PushNamespace, scope: _Scope, frame: _Frame) -> None:
+        pushed = self._resolve(action.namespace, scope, frame, action.where)
+        previous = scope.configs.get(NAMESPACE_KEY)
+        if not is_resolved(pushed) or (previous is not None and not is_resolved(previous)):
+            reasons = "; ".join(
+                f"{h.text}: {h.reason}" for h in (*holes(pushed), *holes(previous or ()))
+            )
+            self._set(scope, NAMESPACE_KEY, (Hole(text_of(pushed), reasons),), frame.condition,
+                      "push_ros_namespace")
+            return
+        namespace = make_absolute(prefix_namespace(
+            None if previous is None else text_of(previous), text_of(pushed)
+        ))
+        self._set(scope, NAMESPACE_KEY, (namespace or "/",), frame.condition,
+                  "push_ros_namespace")
+
+    def _flag(self, value: Subs | bool, scope: _Scope, frame: _Frame, where: Where,
+              attribute: str) -> bool:
+        if isinstance(value, bool):
+            return value
+        resolved = self._resolve(value, scope, frame, where)
+        text = (resolved_text(resolved) or "").strip().lower()
+        if text not in ("true", "false"):
+            self._report("roslaunch_error", where,
+                         f"{attribute}: {text_of(resolved)!r} is not 'true' or 'false'")
+            return True
+        return text == "true"
+
+    def _group(self, action: Group, scope: _Scope, frame: _Frame) -> None:
+        scoped = self._flag(action.scoped, scope, frame, action.where, "scoped")
+        forwarding = self._flag(action.forwarding, scope, frame, action.where, "forwarding")
+        if not scoped:
+            self._run(action.actions, scope, frame)
+            return
+        inner = scope.copy(frame.condition)
+        if not forwarding:
+            inner.configs = {}
+        self._run(action.actions, inner, frame)
+
+    def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
+        path_value = self._resolve(action.path, scope, frame, action.where)
+        passed: list[str] = []
+        for name_subs, value_subs in action.args:
+            name = self._name(name_subs, scope, frame, action.where, "include argument")
+            if name is None:
+                continue
+            passed.append(name)
+            value = self._resolve(value_subs, scope, frame, action.where)
+            self._set(scope, name, value, frame.condition, f"$(var {name})")
+        path = resolved_text(path_value)
+        if path is None:
+            reasons = "; ".join(f"{h.text}: {h.reason}" for h in holes(path_value))
+            self._report("unresolved", action.where,
+                         f"include file {text_of(path_value)!r} not followed: {reasons}")
+            return
+        absolute = _locate(path, frame.filename)
+        if absolute is None:
+            if path.startswith("~") and not self.options.study_errors:
+                # os.path.expanduser('~') is the launching user's home: not knowable here.
+                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                             f"it is under the user's home directory, which depends on the machine")
+                return
+            variables = [v for v in _environment_names(action.path) if v not in scope.env]
+            if variables and not self.options.study_errors:
+                # os.getenv('TEST_LAUNCH_DIR', '') is set by whoever runs the file.
+                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                             f"it depends on the environment ({', '.join(variables)}; give "
+                             f"them with --env)")
+                return
+            self._report("roslaunch_error", action.where, f"included file not found: {path}")
+            return
+        if absolute in frame.chain:
+            cycle = " -> ".join(self._display(p) for p in (*frame.chain, absolute))
+            self._report("roslaunch_error", action.where, f"include cycle: {cycle}")
+            return
+        if len(frame.chain) > MAX_INCLUDE_DEPTH or len(self.files) >= MAX_FILES_PER_TREE:
+            self._report("roslaunch_error", action.where,
+                         f"includes nested deeper than {MAX_INCLUDE_DEPTH} levels; not followed")
+            return
+        try:
+            data = read_launch_bytes(absolute)
+        except OSError as exc:
+            self._report("roslaunch_error", action.where,
+                         f"cannot read included file {path}: {exc.strerror or exc}")
+            return
+        self.work.produce(len(data))
+        read = self._read_file(absolute, data)
+        if read.actions is None:
+            return
+        for name in _required_arguments(read.actions):
+            if name not in passed:
+                self._report(
+                    "roslaunch_error", action.where,
+                    f"the included file declares argument '{name}' without a default and the "
+                    f"include does not pass it: launch stops with 'Included launch description "
+                    f"missing required argument'",
+                )
+        inner = _Frame(absolute, read.launch_format, (*frame.chain, absolute),
+                       (self._display(frame.filename), action.where.line), frame.condition)
+        self._run(read.actions, scope, inner)
+
+    # -- defined by a subclass, further on ---------------------------------------------------
+    def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
+        """Defined by :class:`.ros2_launch.Ros2Loader`."""
+        raise NotImplementedError
+
+    def _node(self, action: RunNode, scope: _Scope, frame: _Frame) -> None:
+        """Defined by :class:`.ros2_launch.Ros2Loader`."""
+        raise NotImplementedError
