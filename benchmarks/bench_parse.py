@@ -3,9 +3,10 @@
 
     python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--profile N]
 
-Over the latest version of every corpus file (``manifest.jsonl``, ``latest: true``;
-``../shared/corpus`` relative to the repository root by default), with every file's bytes
-already in memory, it reports files per second (median of ``--runs`` passes) for:
+Over the latest version of every ROS 1 corpus file (``manifest.jsonl``, ``latest: true``;
+``../shared/corpus`` relative to the repository root by default; the dispatcher decides
+which are ROS 1, so the XML floor fits them all), with every file's bytes already in
+memory, it reports files per second (median of ``--runs`` passes) for:
 
 (a) the floor: bare XML parsing with the standard library,
     ``xml.etree.ElementTree.fromstring`` over the bytes;
@@ -38,7 +39,7 @@ import time
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
 
-from launch_linter.frontends.dispatch import load_tree
+from launch_linter.frontends.dispatch import front_end, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.resolve.packages import PackageIndex
 
@@ -113,14 +114,17 @@ def main() -> int:
     if not os.path.exists(os.path.join(ns.corpus, "manifest.jsonl")):
         print(f"no corpus at {ns.corpus}", file=sys.stderr)
         return 2
-    paths = latest_files(ns.corpus)
     items = []
-    for path in paths:
+    for path in latest_files(ns.corpus):
         with open(path, "rb") as handle:
-            items.append((path, handle.read()))
+            data = handle.read()
+        if front_end(path, data) == "ros1":
+            items.append((path, data))
+    paths = [path for path, _ in items]
     count = len(items)
     size = sum(len(d) for _, d in items)
-    print(f"{count} files (latest versions), {size / 1e6:.2f} MB; median of {ns.runs} passes")
+    print(f"{count} ROS 1 files (latest versions), {size / 1e6:.2f} MB; "
+          f"median of {ns.runs} passes")
     # Input files are shown as given, as the engine shows them.
     ours_pass = make_ours_pass(LoadOptions(packages=PackageIndex([]), display_path=str))
     ours_pass(items)  # warm-up: imports, regular expressions

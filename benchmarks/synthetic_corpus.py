@@ -8,9 +8,12 @@ The study mined about 55,000 files; ours is far smaller. This makes a corpus of 
 order from CORPUS (default ``../shared/corpus``): copy k of every repository is named
 ``<repo>~k``, and in copy k ≥ 1 every frame id in a ``static_transform_publisher``'s
 ``args`` gets the suffix ``_k``, so each copy brings its own signatures and the pairs the
-implication miner counts multiply with the copies. A comment naming the copy makes every
-file distinct, so that deduplication does not collapse the copies and every file is
-parsed. Manifest rows are copied in order until ``--files`` rows exist.
+implication miner counts multiply with the copies. A comment naming the copy, in the
+file's own syntax (``<!-- -->`` in XML, ``#`` in Python and YAML), makes every file
+distinct, so that deduplication does not collapse the copies and every file is parsed.
+Each copy keeps its file's full suffix (``.launch``, ``.launch.xml``, ``.launch.py``), so
+``check`` discovers every copy. Manifest rows are copied in order until ``--files`` rows
+exist.
 
 Then ``mine`` runs on it into a fresh database (both phases timed) with ``--jobs``
 workers (default: every CPU), and the script prints the wall-clock time and the peak
@@ -58,6 +61,20 @@ def rename_frames(data: bytes, suffix: bytes) -> bytes:
     return NODE.sub(lambda node: ARGS.sub(in_args, node.group(0)), data)
 
 
+def full_suffix(name: str) -> str:
+    """``.launch.py`` for ``abc.launch.py`` (``os.path.splitext`` would give ``.py``)."""
+    base = os.path.basename(name)
+    dot = base.find(".")
+    return base[dot:] if dot > 0 else ""
+
+
+def copy_comment(suffix: str, copy: int) -> bytes:
+    """A line that names the copy, as a comment in the file's own syntax."""
+    if suffix.endswith((".py", ".yaml", ".yml")):
+        return f"\n# synthetic copy {copy}\n".encode()
+    return f"\n<!-- synthetic copy {copy} -->\n".encode()
+
+
 def manifest(corpus: str) -> list[dict[str, object]]:
     with open(os.path.join(corpus, "manifest.jsonl"), encoding="utf-8") as handle:
         return [json.loads(line) for line in handle if line.strip()]
@@ -93,9 +110,10 @@ def build(corpus: str, out: str, files: int) -> tuple[int, int]:
             data = cache[stored]
             if copy:
                 data = rename_frames(data, f"_{copy}".encode())
-            data += f"\n<!-- synthetic copy {copy} -->\n".encode()
+            suffix = full_suffix(stored)
+            data += copy_comment(suffix, copy)
             sha = hashlib.sha256(data).hexdigest()
-            name = f"files/{sha[:16]}{os.path.splitext(stored)[1]}"
+            name = f"files/{sha[:16]}{suffix}"
             with open(os.path.join(out, name), "wb") as handle:
                 handle.write(data)
             target.write(json.dumps({**row, "repo": f"{row['repo']}~{copy}", "sha256": sha,

@@ -206,3 +206,16 @@ def test_explain(capsys: pytest.CaptureFixture[str], rule: Rule) -> None:
     assert out.startswith(rule.id)
     assert rule.doc in out
     assert "## Why is this bad?" in out
+
+
+def test_a_core_command_line_builds_only_the_core_parsers() -> None:
+    from launch_linter.cli import _core_only, build_parser
+
+    assert _core_only(["check", "--format", "json", "a.launch"])
+    assert _core_only(["--version"])
+    assert not _core_only(["mine", "corpus", "--db", "x.db"])
+    assert not _core_only(["--help"])
+    assert not _core_only([])
+    commands = build_parser(["check", "a.launch"])._subparsers._group_actions[0].choices  # type: ignore[union-attr]
+    assert set(commands) == {"check", "transforms", "rules", "explain"}
+    assert "mine" in build_parser()._subparsers._group_actions[0].choices  # type: ignore[union-attr]

@@ -341,3 +341,14 @@ def test_cli_formats(
     assert main(["check", "--beliefs", "none", "--format", "github", "robot.launch"]) == 1
     out = capsys.readouterr().out
     assert out.startswith("::error file=robot.launch,line=3,col=3,title=launch-linter dup_sig::")
+
+
+def test_json_is_written_in_pieces_exactly_as_dumped() -> None:
+    import io
+
+    from launch_linter.report import json_report
+
+    document = {"files": [{"path": f"é{i}.launch", "n": i} for i in range(5000)], "x": None}
+    out = io.StringIO()
+    json_report.write(document, out)
+    assert out.getvalue() == json_report.dumps(document) + "\n"

@@ -65,3 +65,23 @@ def test_jobs_must_be_positive(tmp_path: Path, capsys: pytest.CaptureFixture[str
     for jobs in ("0", "-1"):
         assert main(["check", str(tmp_path), "--beliefs", "none", "--jobs", jobs]) == 2
         assert "--jobs" in capsys.readouterr().err
+
+
+def test_the_default_job_count_is_one_for_few_files_and_bounded_by_the_cpus() -> None:
+    import os
+
+    from launch_linter.engine import FILES_PER_JOB, auto_jobs
+
+    assert auto_jobs(0) == auto_jobs(1) == auto_jobs(FILES_PER_JOB - 1) == 1
+    assert 1 <= auto_jobs(10**6) <= (os.cpu_count() or 1)
+
+
+def test_automatic_jobs_give_the_serial_result(tmp_path: Path) -> None:
+    from launch_linter.engine import AUTO_JOBS
+
+    (tmp_path / "a.launch").write_text(
+        '<launch><node pkg="tf" type="static_transform_publisher" name="t" '
+        'args="0 0 0 0 0 0 a a 100"/></launch>'
+    )
+    serial = lint_paths([str(tmp_path)], LintOptions(jobs=1))
+    assert lint_paths([str(tmp_path)], LintOptions(jobs=AUTO_JOBS)) == serial

@@ -83,3 +83,21 @@ def test_default_roots_without_a_workspace_are_the_package_parent(tmp_path: Path
 
 def test_no_default_roots_outside_a_package(tmp_path: Path) -> None:
     assert default_package_roots(str(tmp_path / "a.launch")) == []
+
+
+def test_the_engine_finds_the_roots_once_per_real_folder(tmp_path: Path) -> None:
+    from launch_linter.engine import InputFile, LintOptions, load_options_for
+
+    robot = package(tmp_path / "ws" / "src" / "robot", "robot")
+    other = package(tmp_path / "loose" / "other", "other")
+    (other / "o.launch").write_text("<launch/>")
+    (robot / "link.launch").symlink_to(other / "o.launch")
+    cache: dict[tuple[str, ...], PackageIndex] = {}
+
+    def roots(name: str) -> list[str]:
+        path = str(robot / name)
+        return load_options_for(InputFile(path, path), LintOptions(), cache).packages.roots
+
+    assert roots("a.launch") == roots("b.launch") == [str(tmp_path / "ws" / "src")]
+    assert roots("link.launch") == [str(tmp_path / "loose")]
+    assert roots("a.launch") == [str(tmp_path / "ws" / "src")]

@@ -1,7 +1,12 @@
 """Launch-Linter: find mistakes in the static transforms that ROS launch files declare."""
 
-from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
-from launch_linter.model import Diagnostic, StaticTransform
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
+    from launch_linter.model import Diagnostic, StaticTransform
 
 __version__ = "0.1.0"
 
@@ -14,3 +19,23 @@ __all__ = [
     "lint_paths",
     "lint_text",
 ]
+
+_ENGINE = ("LintOptions", "LintResult", "lint_paths", "lint_text")
+_MODEL = ("Diagnostic", "StaticTransform")
+
+
+def __getattr__(name: str) -> Any:
+    # The API is imported on first use, so that ``launch-linter --version`` (which reads
+    # only ``__version__``) does not load the engine, the front-ends and the rules.
+    if name in _ENGINE:
+        from launch_linter import engine
+
+        value = getattr(engine, name)
+    elif name in _MODEL:
+        from launch_linter import model
+
+        value = getattr(model, name)
+    else:
+        raise AttributeError(f"module 'launch_linter' has no attribute {name!r}")
+    globals()[name] = value
+    return value

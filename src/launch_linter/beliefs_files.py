@@ -3,16 +3,41 @@
 from __future__ import annotations
 
 import json
+import re
 from importlib import resources
 
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
+from launch_linter.resolve.xml_safe import read_regular_file
 
 BUNDLED = "beliefs-bundled.json"
 STUDY = "beliefs-study.json"
 
 
+MAX_BELIEFS_BYTES = 64 * 1024 * 1024
+MAX_JSON_DEPTH = 64
+"""Deepest nesting accepted in a JSON input (a beliefs file needs 4 levels)."""
+
+_JSON_STRING = re.compile(r'"(?:[^"\\]|\\.)*"')
+_JSON_BRACKETS = re.compile(r"[\[\]{}]")
+
+
 class BeliefsNotFound(ValueError):
     """The named beliefs cannot be read."""
+
+
+def _reject_constant(name: str) -> object:
+    raise ValueError(f"{name} is not a JSON number")
+
+
+def load_json(text: str, max_depth: int = MAX_JSON_DEPTH) -> object:
+    """``json.loads`` for untrusted text: nesting checked first (in linear time), and NaN,
+    Infinity and -Infinity refused (they are not JSON)."""
+    depth = 0
+    for bracket in _JSON_BRACKETS.finditer(_JSON_STRING.sub("", text)):
+        depth += 1 if bracket.group() in "[{" else -1
+        if depth > max_depth:
+            raise ValueError(f"nested more than {max_depth} levels deep")
+    return json.loads(text, parse_constant=_reject_constant)
 
 
 def load_beliefs(spec: str, min_z: float) -> BeliefSet:
@@ -27,9 +52,14 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
             raise BeliefsNotFound(f"the {spec} beliefs file is not installed: {exc}") from None
         return BeliefSet.from_json(json.loads(text), spec, min_z)
     try:
-        with open(spec, encoding="utf-8") as handle:
-            data = json.load(handle)
-    except (OSError, json.JSONDecodeError) as exc:
+        raw = read_regular_file(spec, MAX_BELIEFS_BYTES + 1)
+    except OSError as exc:
+        raise BeliefsNotFound(f"cannot read beliefs file {spec}: {exc.strerror or exc}") from None
+    if len(raw) > MAX_BELIEFS_BYTES:
+        raise BeliefsNotFound(f"beliefs file {spec} is larger than {MAX_BELIEFS_BYTES} bytes")
+    try:
+        data = load_json(raw.decode("utf-8-sig"))
+    except (UnicodeDecodeError, ValueError) as exc:
         raise BeliefsNotFound(f"cannot read beliefs file {spec}: {exc}") from None
     try:
         return BeliefSet.from_json(data, spec, min_z)

@@ -14,7 +14,7 @@ from types import ModuleType
 
 from launch_linter import __version__
 from launch_linter.commands import check, explain, rules, transforms
-from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError
+from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError, check_numbers
 
 CORE_COMMANDS = (check, transforms, rules, explain)
 
@@ -41,26 +41,40 @@ def _edge_commands() -> list[ModuleType]:
     return [mine, generate, evaluate, graph]
 
 
-def build_parser() -> argparse.ArgumentParser:
+def _core_only(argv: Sequence[str] | None) -> bool:
+    """Whether the command line names a core command (or asks only for the version): then
+    the edge commands' parsers, and the libraries their modules import, are not needed,
+    which is most of the start-up time of a ``check``."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    words = [a for a in args if not a.startswith("-")]
+    if not words:
+        return args == ["--version"]
+    return words[0] in {m.__name__.rsplit(".", 1)[1] for m in CORE_COMMANDS}
+
+
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The parser for ``argv`` (all commands unless it names a core command)."""
     parser = argparse.ArgumentParser(
         prog="launch-linter",
         description="Find mistakes in the static transforms of ROS launch files.",
     )
     parser.add_argument("--version", action="version", version=f"launch-linter {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for module in (*CORE_COMMANDS, *_edge_commands()):
+    edges = [] if argv is not None and _core_only(argv) else _edge_commands()
+    for module in (*CORE_COMMANDS, *edges):
         module.add_parser(subparsers)
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    parser = build_parser()
+    parser = build_parser(sys.argv[1:] if argv is None else argv)
     ns = parser.parse_args(argv)
     if ns.command is None:
         parser.print_help()
         return EXIT_USAGE
     handler: Callable[[argparse.Namespace], int] = ns.handler
     try:
+        check_numbers(vars(ns))
         return handler(ns)
     except UsageError as exc:
         sys.stderr.write(f"launch-linter: error: {exc}\n")

@@ -11,13 +11,14 @@ Command-line flags override the file key by key; for the tables ``args``, ``env`
 from __future__ import annotations
 
 import difflib
+import math
 import os
-import tomllib
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.model.diagnostic import Severity
+from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules import RULES, RULES_BY_ID
 from launch_linter.suppressions import PathIgnore
 
@@ -142,8 +143,9 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         values["severity"] = _severities(_table(data["severity"], f"{path}: 'severity'"), path)
     if "min-z" in data:
         z = data["min-z"]
-        if isinstance(z, bool) or not isinstance(z, int | float):
-            raise ConfigError(f"{path}: 'min-z' must be a number")
+        if isinstance(z, bool) or not isinstance(z, int | float) or not math.isfinite(z) \
+                or abs(z) > 1e6:
+            raise ConfigError(f"{path}: 'min-z' must be a number, finite, not {z!r}")
         values["min_z"] = float(z)
     if "beliefs" in data:
         beliefs = data["beliefs"]
@@ -222,16 +224,19 @@ def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
 
 def _read_toml(path: str) -> dict[str, Any]:
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_CONFIG_BYTES + 1)
+        data = read_regular_file(path, MAX_CONFIG_BYTES + 1)
     except OSError as exc:
         raise ConfigError(f"cannot read configuration file {path}: {exc.strerror or exc}") from None
     if len(data) > MAX_CONFIG_BYTES:
         raise ConfigError(f"{path}: larger than {MAX_CONFIG_BYTES} bytes")
+    import tomllib  # only when a configuration file is read: most runs have none
+
     try:
         return tomllib.loads(data.decode("utf-8"))
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+    except RecursionError:
+        raise ConfigError(f"{path}: nested too deeply") from None
 
 
 def _pyproject_table(document: Mapping[str, Any]) -> Any:

@@ -22,6 +22,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Callable  # noqa: UP035 (subscripted at run time: Python 3.8)
 
+from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+
 LAUNCH_SUFFIXES = (
     ".launch",
     ".launch.xml",
@@ -45,14 +47,17 @@ WORKSPACE_FOLDERS = ("build", "install", "log", "devel", "devel_isolated", "buil
                      "install_isolated")
 WORKSPACE_MARKERS = ("COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE")
 MAX_DISCOVERED_FILES = 200_000
-LAUNCH_HEAD_BYTES = 4096
 
 Ignored = Callable[[str, bool], bool]
 """``ignored(absolute_path, is_folder)``: True to leave the path out."""
 
 # The first element of an XML document: after the declaration, comments, doctype and
 # processing instructions.
-_PROLOGUE = re.compile(rb"\s*(?:<\?.*?\?>|<!--.*?-->|<!DOCTYPE[^>]*>|\s)*", re.DOTALL)
+_SPACE = re.compile(rb"\s*")
+_PROLOGUE_PARTS = ((b"<?", b"?>"), (b"<!--", b"-->"), (b"<!DOCTYPE", b">"))
+MAX_SNIFF_BYTES = 1024 * 1024
+"""How far into a ``.xml`` file discovery looks for its root element (licence headers and
+long comments come first in some files)."""
 _LAUNCH_ROOT = re.compile(rb"<launch[\s>/]")
 _PY_LAUNCH = re.compile(rb"^def generate_launch_description\s*\(", re.MULTILINE)
 _YAML_LAUNCH = re.compile(rb"(?:\xef\xbb\xbf)?(?:\s*#[^\n]*\n|\s*\n|---[^\n]*\n)*launch\s*:")
@@ -73,21 +78,37 @@ def is_launch_name(name: str) -> bool:
     return name.endswith(LAUNCH_SUFFIXES)
 
 
+def _root_offset(head: bytes) -> int | None:
+    """Where the first element starts, after the XML declaration, comments, doctype and
+    processing instructions; None when that prologue runs past ``head``. Each step moves
+    forward with ``find``, so a hostile prologue (thousands of unclosed comments) costs
+    linear time, where a lazy regular expression would rescan the rest for each one."""
+    position = 0
+    while True:
+        position = _SPACE.match(head, position).end()  # type: ignore[union-attr]
+        for opener, closer in _PROLOGUE_PARTS:
+            if head.startswith(opener, position):
+                end = head.find(closer, position + len(opener))
+                if end < 0:
+                    return None
+                position = end + len(closer)
+                break
+        else:
+            return position if position < len(head) else None
+
+
 def has_launch_root(path: str) -> bool:
-    """Whether the XML file at ``path`` has ``<launch>`` as its root element."""
+    """Whether the XML file at ``path`` has ``<launch>`` as its root element. Up to
+    :data:`MAX_SNIFF_BYTES` are read, so a long licence header does not hide the root;
+    only regular files are opened (a FIFO would block discovery)."""
     try:
-        with open(path, "rb") as handle:
-            head = handle.read(LAUNCH_HEAD_BYTES)
-    except OSError:
+        head = read_regular_file(path, MAX_SNIFF_BYTES)
+    except (OSError, NotRegularFile):
         return False
     if head.startswith(b"\xef\xbb\xbf"):
         head = head[3:]
-    prologue = _PROLOGUE.match(head)
-    start = prologue.end() if prologue else 0
-    if start >= len(head) - 8:
-        # A prologue longer than the head read (a long licence comment): the old test.
-        return b"<launch" in head
-    return _LAUNCH_ROOT.match(head, start) is not None
+    start = _root_offset(head)
+    return start is not None and _LAUNCH_ROOT.match(head, start) is not None
 
 
 def has_launch_content(path: str, name: str) -> bool:
@@ -97,9 +118,8 @@ def has_launch_content(path: str, name: str) -> bool:
     if name.endswith(".xml"):
         return has_launch_root(path)
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_CONTENT_BYTES)
-    except OSError:
+        data = read_regular_file(path, MAX_CONTENT_BYTES)
+    except (OSError, NotRegularFile):
         return False
     if name.endswith(".py"):
         return _PY_LAUNCH.search(data) is not None

@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 from collections.abc import Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from typing import List, Optional, Tuple  # noqa: UP035 - aliases evaluated at run time (Python 3.8)
 
 from launch_linter.discovery import (
     MAX_DISCOVERED_FILES,
@@ -19,8 +20,8 @@ from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
-from launch_linter.model.diagnostic import Diagnostic, Severity
-from launch_linter.model.launch import FileRecord, LaunchTree
+from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
+from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve.packages import (
@@ -40,16 +41,23 @@ from launch_linter.suppressions import (
 )
 
 __all__ = [
+    "AUTO_JOBS",
     "MAX_DISCOVERED_FILES",
     "Exclusions",
     "InputFile",
     "LintOptions",
     "LintResult",
+    "auto_jobs",
     "discover",
     "lint_files",
     "lint_paths",
     "lint_text",
 ]
+
+AUTO_JOBS = 0
+FILES_PER_JOB = 300
+"""A worker must have this many files to pay for itself: a file costs about half a
+millisecond, a worker's start and the results it sends back tens of milliseconds."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,6 +73,7 @@ class LintOptions:
     severity: dict[str, Severity] = field(default_factory=dict)
     beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
     jobs: int = 1
+    """Worker processes; ``AUTO_JOBS`` (0) lets ``auto_jobs`` choose from the file count."""
     per_path_ignores: tuple[PathIgnore, ...] = ()
     profile: str = "default"
     """``default`` or ``study`` (the study's checks and severities, for ``evaluate``)."""
@@ -80,6 +89,7 @@ class LintOptions:
 class LintResult:
     files: tuple[FileRecord, ...]
     trees: tuple[LaunchTree, ...]
+    """Empty when the run was asked not to keep them (``keep_trees=False``)."""
     diagnostics: tuple[Diagnostic, ...]
 
     @property
@@ -142,22 +152,36 @@ def load_options_for(
     item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
     robots: RobotCache | None = None,
 ) -> LoadOptions:
-    roots = (
-        tuple(options.package_paths)
-        if options.package_paths is not None
-        else tuple(default_package_roots(item.path))
-    )
-    if roots not in cache:
-        cache[roots] = PackageIndex(list(roots))
+    if options.package_paths is not None:
+        index = _package_index(tuple(options.package_paths), cache)
+    else:
+        # default_package_roots walks up the folders of a file (to / outside a package):
+        # done once per folder (the real one, for a symbolic link), whose index the cache
+        # keeps under ("", folder), a key that no tuple of roots (absolute paths) can equal.
+        path = os.path.realpath(item.path) if os.path.islink(item.path) else item.path
+        folder = ("", os.path.dirname(path))
+        found = cache.get(folder)
+        if found is None:
+            found = _package_index(tuple(default_package_roots(path)), cache)
+            cache[folder] = found
+        index = found
     return LoadOptions(
         args=options.args,
         env=options.env,
-        packages=cache[roots],
+        packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",
         ros_version=ros_version_for(item.path, options, {}),
         robots=robots,
     )
+
+
+def _package_index(
+    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex]
+) -> PackageIndex:
+    if roots not in cache:
+        cache[roots] = PackageIndex(list(roots))
+    return cache[roots]
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
@@ -211,19 +235,78 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Linted = tuple[LaunchTree, FileRecord, list[Diagnostic]]
+Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]  # noqa: UP006, UP045
+"""A file's tree (None when not kept and there is no directive), record and diagnostics."""
+
+
+def _directives_only(tree: LaunchTree) -> LaunchTree | None:
+    """What suppressions need of a tree (its comments and element lines), if anything."""
+    if not tree.comments:
+        return None
+    return LaunchTree(tree.root, tree.status, (), (), tree.files,
+                      comments=tree.comments, element_lines=tree.element_lines)
+
+
+REPORT_HINT = "please report it, with the file, at the project's issue tracker"
+
+
+def internal_error_tree(item: InputFile, what: str, line: int = 1) -> LaunchTree:
+    """The tree of a file the linter failed on: its status and one problem saying so."""
+    message = f"internal error while linting this file ({what}); {REPORT_HINT}"
+    problem = Problem("parse_error", item.display, line, 1, message[:MAX_INTERNAL_MESSAGE])
+    return LaunchTree(item.display, FileStatus.INTERNAL_ERROR, (), (problem,), (item.display,))
+
+
+def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
+    """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
+    tree = internal_error_tree(item, what, line)
+    rule = RULES_BY_ID["parse_error"]
+    found = [Diagnostic(p.rule, rule.category, rule.severity, p.path, p.line, p.column,
+                        p.message) for p in tree.problems]
+    return tree, _file_record(item, tree), found
+
+
+MAX_INTERNAL_MESSAGE = 500
+
+
+def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
+              cache: dict[tuple[str, ...], PackageIndex],
+              robots: RobotCache | None = None) -> Linted:
+    """One file, isolated: an unexpected exception costs this file only."""
+    try:
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
+        return tree, _file_record(item, tree), check_tree(tree, rules, options)
+    except (KeyboardInterrupt, SystemExit):
+        raise
+    except BaseException as exc:  # one bad file never loses a run
+        return _internal_error(item, f"{type(exc).__name__}: {exc}", _line_of(exc, item.path))
+
+
+def _line_of(exc: BaseException, path: str) -> int:
+    """The line of ``path`` being worked on when ``exc`` was raised, if the trace says."""
+    trace = exc.__traceback__
+    line = 1
+    while trace is not None:
+        if trace.tb_frame.f_code.co_filename == path:
+            line = trace.tb_lineno
+        trace = trace.tb_next
+    return line
 
 
 def _lint_chunk(
-    items: Sequence[InputFile], options: LintOptions, cache: dict[tuple[str, ...], PackageIndex]
+    items: Sequence[InputFile],
+    options: LintOptions,
+    cache: dict[tuple[str, ...], PackageIndex],
+    keep_trees: bool = True,
 ) -> list[Linted]:
     rules = selected_rules(options)
-    out: list[Linted] = []
     # One cache per chunk: a description included by many launch files is expanded once.
     robots = RobotCache()
+    out: list[Linted] = []
     for item in items:
-        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
-        out.append((tree, _file_record(item, tree), check_tree(tree, rules, options)))
+        tree, record, found = _lint_one(item, options, rules, cache, robots)
+        # Without the trees a run's memory stays flat: each is dropped once its rules ran.
+        out.append((tree if keep_trees or tree is None else _directives_only(tree), record, found))
     return out
 
 
@@ -231,26 +314,96 @@ _worker_packages: dict[tuple[str, ...], PackageIndex] = {}
 """Package indexes of one worker process, so that its chunks share each ``$(find)`` crawl."""
 
 
-def _lint_chunk_in_worker(items: Sequence[InputFile], options: LintOptions) -> list[Linted]:
-    return _lint_chunk(items, options, _worker_packages)
+def _lint_chunk_in_worker(
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool
+) -> list[Linted]:
+    return _lint_chunk(items, options, _worker_packages, keep_trees)
 
 
-def _lint_parallel(inputs: Sequence[InputFile], options: LintOptions) -> list[Linted]:
-    # Several chunks per worker balance uneven files; map() keeps the input order, so the
-    # result is the serial one.
-    size = max(1, -(-len(inputs) // (options.jobs * 4)))
+def auto_jobs(files: int) -> int:
+    """Workers for ``files`` files: one per ``FILES_PER_JOB`` files, at most one per CPU
+    this process may use that other work (the load average) leaves free; at least one."""
+    try:
+        cpus = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not on every platform
+        cpus = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except (AttributeError, OSError):
+        busy = 0.0
+    free = int(cpus - busy + 0.5)
+    return max(1, min(cpus, free, files // FILES_PER_JOB))
+
+
+def _lint_parallel(
+    inputs: Sequence[InputFile], options: LintOptions, jobs: int, keep_trees: bool
+) -> list[Linted]:
+    # Imported here: the process pool (with multiprocessing and logging) costs start-up
+    # time that a serial run does not need.
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
+
+    # Several chunks per worker balance uneven files; results are put back in input order,
+    # so the result is the serial one.
+    size = max(1, -(-len(inputs) // (jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
-    with ProcessPoolExecutor(max_workers=min(options.jobs, len(chunks))) as pool:
-        done = pool.map(_lint_chunk_in_worker, chunks, [options] * len(chunks))
-        return [linted for chunk in done for linted in chunk]
+    results: list[list[Linted] | None] = [None] * len(chunks)
+    with ProcessPoolExecutor(max_workers=min(jobs, len(chunks))) as pool:
+        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees)
+                   for chunk in chunks]
+        for index, future in enumerate(futures):
+            with contextlib.suppress(BrokenProcessPool):
+                results[index] = future.result()
+    # A worker that died (killed, out of memory, a crash in C code) breaks the pool and
+    # takes the unfinished chunks with it: their files are tried again one by one.
+    lost = [item for index, chunk in enumerate(chunks) if results[index] is None
+            for item in chunk]
+    retried = _lint_alone(lost, options, keep_trees) if lost else {}
+    out: list[Linted] = []
+    for index, chunk in enumerate(chunks):
+        result = results[index]
+        out.extend(result if result is not None else [retried[item.path] for item in chunk])
+    return out
 
 
-def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
-    if options.jobs > 1 and len(inputs) > 1:
-        linted = _lint_parallel(inputs, options)
+def _lint_alone(
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool
+) -> dict[str, Linted]:
+    """Each file in a one-worker pool, in order, so that the file being linted when the
+    worker dies is the one that killed it: it is reported, the files after it go on."""
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
+
+    out: dict[str, Linted] = {}
+    remaining = list(items)
+    while remaining:
+        again: list[InputFile] = []
+        with ProcessPoolExecutor(max_workers=1) as pool:
+            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees)
+                       for item in remaining]
+            for position, item in enumerate(remaining):
+                future = futures[position]
+                try:
+                    out[item.path] = future.result()[0]
+                except BrokenProcessPool:
+                    out[item.path] = _internal_error(item, "the worker process linting it died")
+                    again = remaining[position + 1:]
+                    break
+        remaining = again
+    return out
+
+
+def lint_files(
+    inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool = True
+) -> LintResult:
+    """Lint ``inputs``; with ``keep_trees=False`` the result has no trees (``check`` needs
+    only the records and diagnostics, and memory then stays flat with the file count)."""
+    jobs = options.jobs if options.jobs != AUTO_JOBS else auto_jobs(len(inputs))
+    if jobs > 1 and len(inputs) > 1:
+        linted = _lint_parallel(inputs, options, jobs, keep_trees)
     else:
-        linted = _lint_chunk(inputs, options, {})
-    trees = tuple(tree for tree, _, _ in linted)
+        linted = _lint_chunk(inputs, options, {}, keep_trees)
+    trees = tuple(tree for tree, _, _ in linted if tree is not None)
     # A file linted on its own and also included by another input is reported once: the
     # same place, rule and message found from two roots (or under two spellings of its
     # path) is one finding.
@@ -265,7 +418,9 @@ def lint_files(inputs: Sequence[InputFile], options: LintOptions) -> LintResult:
             diagnostics.setdefault(key, diagnostic)
     records = tuple(record for _, record, _ in linted)
     finished = finish_diagnostics(trees, diagnostics.values(), options)
-    return LintResult(records, trees, with_located_fixes(finished, options.ros_distro))
+    return LintResult(
+        records, trees if keep_trees else (), with_located_fixes(finished, options.ros_distro)
+    )
 
 
 def lint_paths(
@@ -273,12 +428,16 @@ def lint_paths(
     options: LintOptions | None = None,
     exclusions: Exclusions | None = None,
     ignored: Ignored | None = None,
+    keep_trees: bool = True,
 ) -> LintResult:
     """Lint files and folders; every input file appears once in ``files``.
 
     ``exclusions`` are the folder-walk exclusions (default: VCS and hidden folders) and
-    ``ignored`` an extra predicate on paths found in folders (the CLI's ``.gitignore``)."""
-    return lint_files(discover(paths, exclusions, ignored), options or LintOptions())
+    ``ignored`` an extra predicate on paths found in folders (the CLI's ``.gitignore``);
+    ``keep_trees=False`` drops each file's tree once its rules ran (see ``lint_files``)."""
+    return lint_files(
+        discover(paths, exclusions, ignored), options or LintOptions(), keep_trees
+    )
 
 
 def lint_text(

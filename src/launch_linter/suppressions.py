@@ -25,10 +25,10 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from launch_linter.model.diagnostic import Diagnostic, Problem
-from launch_linter.model.launch import LaunchTree
+from launch_linter.model.launch import DIRECTIVE_MARKER, LaunchTree
 
 UNUSED_ID = "unused_suppression"
-PREFIX = "launch-linter:"
+PREFIX = DIRECTIVE_MARKER
 _DIRECTIVE = re.compile(
     r"launch-linter:\s*(?P<kind>disable-file|disable)\s*=\s*"
     r"(?P<ids>[A-Za-z0-9_.-]+(?:\s*,\s*[A-Za-z0-9_.-]+)*)(?P<rest>.*)",
@@ -77,31 +77,86 @@ class PathIgnore:
         if relative.startswith("../"):
             return False
         if "/" not in self.pattern:
-            return _glob_regex(self.pattern).fullmatch(os.path.basename(absolute)) is not None
-        return _glob_regex(self.pattern.removeprefix("./")).fullmatch(relative) is not None
+            return glob_match(self.pattern, os.path.basename(absolute))
+        return glob_match(self.pattern.removeprefix("./"), relative)
 
 
 @lru_cache(maxsize=256)
-def _glob_regex(pattern: str) -> re.Pattern[str]:
-    parts: list[str] = []
+def _glob_tokens(pattern: str) -> tuple[tuple[str, str], ...]:
+    """The pattern as tokens: ``lit`` (one character), ``one`` (``?``), ``star`` (``*``),
+    ``any`` (``**``) and ``dirs`` (``**/``: nothing, or anything that ends with ``/``)."""
+    tokens: list[tuple[str, str]] = []
     i = 0
     while i < len(pattern):
         if pattern.startswith("**/", i):
-            parts.append("(?:.*/)?")
+            tokens.append(("dirs", ""))
             i += 3
         elif pattern.startswith("**", i):
-            parts.append(".*")
+            tokens.append(("any", ""))
             i += 2
         elif pattern[i] == "*":
-            parts.append("[^/]*")
+            tokens.append(("star", ""))
             i += 1
         elif pattern[i] == "?":
-            parts.append("[^/]")
+            tokens.append(("one", ""))
             i += 1
         else:
-            parts.append(re.escape(pattern[i]))
+            tokens.append(("lit", pattern[i]))
             i += 1
-    return re.compile("".join(parts), re.DOTALL)
+    return tuple(tokens)
+
+
+_SKIPPABLE = ("star", "any", "dirs")
+
+
+def _closure(tokens: tuple[tuple[str, str], ...], states: set[int]) -> set[int]:
+    out: set[int] = set()
+    stack = list(states)
+    while stack:
+        state = stack.pop()
+        if state in out:
+            continue
+        out.add(state)
+        if state < len(tokens) and tokens[state][0] in _SKIPPABLE:
+            stack.append(state + 1)
+    return out
+
+
+def glob_match(pattern: str, text: str) -> bool:
+    """Whether ``text`` matches the glob ``pattern`` (see :class:`PathIgnore`).
+
+    The pattern comes from a repository's configuration, so it is matched by simulating
+    all its positions at once (time proportional to pattern length times text length), not
+    by a backtracking regular expression, which ``*a*a*a*a*b`` would make exponential.
+    """
+    tokens = _glob_tokens(pattern)
+    end = len(tokens)
+    states = _closure(tokens, {0})
+    for char in text:
+        following: set[int] = set()
+        for state in states:
+            if state == end:
+                continue
+            kind, literal = tokens[state]
+            if kind == "lit":
+                if char == literal:
+                    following.add(state + 1)
+            elif kind == "one":
+                if char != "/":
+                    following.add(state + 1)
+            elif kind == "star":
+                if char != "/":
+                    following.add(state)
+            elif kind == "any":
+                following.add(state)
+            else:
+                following.add(state)
+                if char == "/":
+                    following.add(state + 1)
+        if not following:
+            return False
+        states = _closure(tokens, following)
+    return end in states
 
 
 def _directive_text(comment: str) -> str:

@@ -340,7 +340,7 @@ def test_location_is_the_line_and_column_of_the_node_element(tmp_path: Path) -> 
     path = tmp_path / "loc.launch"
     path.write_text(
         "<launch>\n"
-        "  <!-- comment -->\n"
+        "  <!-- launch-linter: comment -->\n"
         f"\t\t<node {TF2} name=\"a\"\n"
         '     args="0 0 0\n 0 0 0 p c"/>\n'
         f"  <group><node {TF2} name=\"b\" args=\"0 0 0 0 0 0 p d\"/></group>\n"
@@ -348,7 +348,7 @@ def test_location_is_the_line_and_column_of_the_node_element(tmp_path: Path) -> 
     )
     tree = load_tree(str(path), LoadOptions())
     assert [(t.name, t.line, t.column) for t in tree.transforms] == [("a", 3, 3), ("b", 6, 10)]
-    assert tree.comments[0].text == " comment "
+    assert tree.comments[0].text == " launch-linter: comment "
 
 
 def test_files_not_launch_files(tmp_path: Path) -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from collections.abc import Iterator
 
 from launch_linter import __version__
 from launch_linter.commands.common import EXIT_FINDINGS, EXIT_OK, UsageError
@@ -92,14 +93,17 @@ def _use_colour(choice: str) -> bool:
     return sys.stdout.isatty()
 
 
-def _report(ns: argparse.Namespace, result: LintResult, options: LintOptions) -> str:
-    """The report in the chosen format (statistics instead of findings if asked)."""
+def _report(
+    ns: argparse.Namespace, result: LintResult, options: LintOptions
+) -> str | Iterator[str]:
+    """The report in the chosen format (statistics instead of findings if asked); JSON in
+    pieces, so that a large run never holds its whole text."""
     fmt = ns.format or "text"
     if ns.statistics and fmt == "text":
         return text.statistics(result.diagnostics)
     if fmt == "json":
         document = json_report.check_document(result, options.beliefs, __version__)
-        return json_report.dumps(document) + "\n"
+        return json_report.pieces(document)
     if fmt in ("sarif", "github"):
         from launch_linter.report import formats
 
@@ -108,13 +112,16 @@ def _report(ns: argparse.Namespace, result: LintResult, options: LintOptions) ->
     return text.format_diagnostics(result.diagnostics, colour)
 
 
-def _write_output(ns: argparse.Namespace, report: str) -> None:
+def _write_output(ns: argparse.Namespace, report: str | Iterator[str]) -> None:
+    pieces = [report] if isinstance(report, str) else report
     if not ns.output_file:
-        sys.stdout.write(report)
+        for piece in pieces:
+            sys.stdout.write(piece)
         return
     try:
         with open(ns.output_file, "w", encoding="utf-8") as handle:
-            handle.write(report)
+            for piece in pieces:
+                handle.write(piece)
     except OSError as exc:
         raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
 
@@ -195,7 +202,11 @@ def run(ns: argparse.Namespace) -> int:
     if ns.diff:
         return _print_diff(ns, lint_command_paths(ns, options, config))
     fixing = ns.fix
-    result = _run_fixes(ns, options, config) if fixing else lint_command_paths(ns, options, config)
+    result = (
+        _run_fixes(ns, options, config)
+        if fixing
+        else lint_command_paths(ns, options, config, keep_trees=False)
+    )
     _write_output(ns, _report(ns, result, options))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")

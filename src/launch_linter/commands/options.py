@@ -12,7 +12,7 @@ from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
 from launch_linter.config import Config, ConfigError, check_rule_ids, config_for
 from launch_linter.discovery import Exclusions, Ignored
-from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
+from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_paths, lint_text
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.rules._profiles import PROFILES
 
@@ -77,7 +77,11 @@ def add_resolution_options(parser: argparse.ArgumentParser) -> None:
         "the ros-distro key, else $ROS_DISTRO, else what the files show)",
     )
     parser.add_argument(
-        "--jobs", type=int, default=None, metavar="N", help="lint files in N processes"
+        "--jobs",
+        type=int,
+        default=None,
+        metavar="N",
+        help="lint files in N processes (default: chosen from the file count and free CPUs)",
     )
     add_discovery_options(parser)
 
@@ -162,8 +166,10 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
     if not ignore:
         ignore = list(config.ignore or ())
     jobs = getattr(ns, "jobs", None)
-    jobs = 1 if jobs is None else jobs
-    if jobs < 1:
+    if jobs is None:
+        # check and transforms choose from the files and free CPUs (engine.auto_jobs).
+        jobs = AUTO_JOBS if ns.command in ("check", "transforms") else 1
+    elif jobs < 1:
         raise UsageError("--jobs must be at least 1")
     beliefs = BeliefSet.empty()
     if ns.command in ("check", "graph"):
@@ -224,9 +230,10 @@ def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, I
 
 
 def lint_command_paths(
-    ns: argparse.Namespace, options: LintOptions, config: Config
+    ns: argparse.Namespace, options: LintOptions, config: Config, keep_trees: bool = True
 ) -> LintResult:
-    """Lint the command's paths (none: the current folder; ``-``: the text on stdin)."""
+    """Lint the command's paths (none: the current folder; ``-``: the text on stdin);
+    ``keep_trees=False`` for a command that needs only the records and diagnostics."""
     given = given_paths(ns)
     if "-" in given:
         if len(given) > 1:
@@ -234,4 +241,4 @@ def lint_command_paths(
         name = getattr(ns, "stdin_filename", None) or STDIN_NAME
         return lint_text(sys.stdin.read(), name, options)
     exclusions, ignored = discovery_for(ns, config)
-    return lint_paths(given or [os.curdir], options, exclusions, ignored)
+    return lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees)

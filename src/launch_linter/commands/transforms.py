@@ -28,7 +28,7 @@ def run(ns: argparse.Namespace) -> int:
     config = load_config(ns)
     result = lint_command_paths(ns, lint_options(ns, config), config)
     if ns.format == "json":
-        sys.stdout.write(json_report.dumps(json_report.transforms_document(result)) + "\n")
+        json_report.write(json_report.transforms_document(result), sys.stdout)
     else:
         for transform in result.transforms:
             sys.stdout.write(text.format_transform(transform) + "\n")

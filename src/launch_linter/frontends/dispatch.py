@@ -14,11 +14,9 @@ import re
 
 from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
-from launch_linter.frontends.ros2_launch import load_ros2
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.xml_safe import read_launch_bytes
 
-_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 # What only ROS 2 launch XML has. Every file is tested, so the tests are ordered by cost:
 # one pattern for the tags only ROS 2 has and one for its substitutions (a regular
 # expression that starts with a fixed character skips to it quickly), then, each behind a
@@ -29,9 +27,13 @@ _ROS2_TAG = re.compile(
     rb"[\s/>]"
 )
 _ROS2_SUBSTITUTION = re.compile(rb"\$\((?:var|find-pkg-share|find-pkg-prefix)[\s)]")
+# ``[^<>]*`` rather than ``[^>]*``: a tag's scan stops at the next ``<``, where the next
+# candidate starts, so the scans never overlap and the search is linear in the file size
+# (a file of many unclosed ``<node `` would otherwise be quadratic).
 _ROS2_WORD_SIGNS = (
-    (b"exec", re.compile(rb"<node\s[^>]*\bexec\s*=")),
-    (b"<include", re.compile(rb"""<include\s[^>]*\bfile\s*=\s*["'][^"']*\.(?:py|ya?ml)["']""")),
+    (b"exec", re.compile(rb"<node\s[^<>]*\bexec\s*=")),
+    (b"<include",
+     re.compile(rb"""<include\s[^<>]*\bfile\s*=\s*["'][^"'<>]*\.(?:py|ya?ml)["']""")),
 )
 
 
@@ -48,7 +50,26 @@ def is_ros2_xml(data: bytes) -> bool:
     if not _has_ros2_sign(data):
         return False
     # A sign may sit inside a comment; only then is the costlier check needed.
-    return _has_ros2_sign(_COMMENT.sub(b"", data))
+    return _has_ros2_sign(without_comments(data))
+
+
+def without_comments(data: bytes) -> bytes:
+    """``data`` without its ``<!-- ... -->`` comments (an unclosed one runs to the end), in
+    linear time: a lazy regular expression rescans the rest of the file for each unclosed
+    ``<!--``."""
+    pieces: list[bytes] = []
+    position = 0
+    while True:
+        start = data.find(b"<!--", position)
+        if start < 0:
+            pieces.append(data[position:])
+            break
+        pieces.append(data[position:start])
+        end = data.find(b"-->", start + 4)
+        if end < 0:
+            break
+        position = end + 3
+    return b"".join(pieces)
 
 
 def front_end(path: str, data: bytes | None, ros_version: int | None = None) -> str:
@@ -72,6 +93,10 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
             # The ROS 1 loader reports the file as unreadable.
             return load_ros1(path, options, None)
     if front_end(path, data, options.ros_version) == "ros2":
+        # Imported when first needed: the ROS 2 front-ends are most of the start-up time
+        # of a run over ROS 1 files only.
+        from launch_linter.frontends.ros2_launch import load_ros2
+
         tree = load_ros2(path, options, data)
     else:
         tree = load_ros1(path, options, data)

@@ -29,8 +29,9 @@ from launch_linter.frontends.robot.sources import (
     with_node_params,
 )
 from launch_linter.frontends.tokens import split_args
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     ALWAYS,
@@ -229,6 +230,9 @@ class Ros1Loader:
         self._env_args: dict[str, str] = {}
         """Args whose value comes from the environment -> the substitution it comes from."""
         """The element whose attribute is being resolved (for errors found meanwhile)."""
+        self.budget = Budget()
+        self._path = ""
+        """The file being walked (where the budget ran out, if it does)."""
 
     # -- diagnostics -------------------------------------------------------------------
     def _report(
@@ -296,13 +300,18 @@ class Ros1Loader:
         if root is None:
             return self._tree(FileStatus.PARSE_ERROR)
         context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
-        self._launch_conditions(root, context)
+        self._path = absolute
         try:
+            self._launch_conditions(root, context)
             self._walk(root.children, context)
         except RecursionError:
             # MAX_NESTING keeps real files far from this; it is the last line of defence.
             self._report("unresolved", absolute, root,
                          "launch tree nested too deeply to follow; the rest is not read")
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._path, self._element or root,
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
@@ -350,9 +359,9 @@ class Ros1Loader:
                 f"not well-formed XML: {exc.message}",
             ))
             return None
-        if document.comments:
+        if document.comments and holds_directive(document.comments):
             self.comments += [Comment(display, line, text) for line, text in document.comments]
-        self.element_lines += [(display, line) for line in document.element_lines]
+            self.element_lines += [(display, line) for line in document.element_lines]
         # roslaunch takes the one <launch> element of the document, wherever it is.
         launches = document.collected
         if len(launches) != 1:
@@ -418,6 +427,7 @@ class Ros1Loader:
             anon=lambda anon_id: self.anon.make(anon, anon_id),
             filename=filename,
             missing_arg=missing,
+            budget=self.budget,
         )
 
     def _resolve_text(self, text: str, element: Element, label: str, context: _Context,
@@ -511,7 +521,10 @@ class Ros1Loader:
 
     # -- tags --------------------------------------------------------------------------
     def _walk(self, elements: list[Element], context: _Context) -> None:
+        step = self.budget.step
         for element in elements:
+            step()
+            self._element = element
             tag = element.tag
             if tag == "node":
                 self._node(element, context)
@@ -995,15 +1008,18 @@ class Ros1Loader:
             self._error(context, element,
                         f"cannot read included file {path}: {exc.strerror or exc}")
             return
+        self.budget.produce(len(data))
         root = self._parse(absolute, data)
         if root is None:
             return
+        self._path = absolute
         child.filename = absolute
         child.scope = child.side_scope = None
         child.chain = (*context.chain, absolute)
         child.included_from = (self._display(context.filename), element.line)
         self._launch_conditions(root, child)
         self._walk(root.children, child)
+        self._path = context.filename
         if not pass_all:
             unused = [name for name in args_passed if name not in child.arg_names]
             if unused:
@@ -1019,6 +1035,10 @@ class Ros1Loader:
         ]
         for candidate in candidates:
             if os.path.isfile(candidate):
+                return os.path.abspath(candidate)
+        # A folder, device or FIFO of that name is found, so that reading it says what it is.
+        for candidate in candidates:
+            if os.path.exists(candidate):
                 return os.path.abspath(candidate)
         return None
 

@@ -51,8 +51,9 @@ from launch_linter.frontends.ros2_actions import (
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Problem
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree
+from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     DECODED_FIELDS,
@@ -168,6 +169,9 @@ class Ros2Loader:
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
         self.budget = _Budget()
+        self.work = Budget()
+        self._where: Where | None = None
+        """The action being run (where the work budget ran out, if it does)."""
         self.root_display = ""
 
     # -- diagnostics -------------------------------------------------------------------
@@ -192,15 +196,20 @@ class Ros2Loader:
                 self._report("parse_error", Where(absolute, 1, 1),
                              f"cannot read file: {exc.strerror or exc}")
                 return self._tree(FileStatus.UNREADABLE)
-        read = self._read_file(absolute, data)
-        if read.actions is None:
-            return self._tree(FileStatus.PARSE_ERROR)
-        configs: dict[str, Value] = {
-            name: (value,) if value else () for name, value in self.options.args.items()
-        }
-        scope = _Scope(configs, dict(self.options.env), Condition())
-        frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition())
-        self._run(read.actions, scope, frame)
+        try:
+            read = self._read_file(absolute, data)
+            if read.actions is None:
+                return self._tree(FileStatus.PARSE_ERROR)
+            configs: dict[str, Value] = {
+                name: (value,) if value else () for name, value in self.options.args.items()
+            }
+            scope = _Scope(configs, dict(self.options.env), Condition())
+            frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition())
+            self._run(read.actions, scope, frame)
+        except BudgetExceeded as exc:
+            self._report("unresolved", self._where or Where(absolute, 1, 1),
+                         f"work budget of this launch tree exhausted ({exc.reason}); "
+                         "the rest is not read")
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
@@ -221,13 +230,14 @@ class Ros2Loader:
         if display not in self.files:
             self.files.append(display)
         if absolute.endswith(".py"):
-            read = read_python(absolute, data)
+            read = read_python(absolute, data, self.work)
         elif absolute.endswith((".yaml", ".yml")):
             read = read_yaml(absolute, data)
         else:
             read = read_xml(absolute, data)
-        self.comments.extend(Comment(display, line, text) for line, text in read.comments)
-        self.element_lines.extend((display, line) for line in read.element_lines)
+        if holds_directive(read.comments):
+            self.comments.extend(Comment(display, line, text) for line, text in read.comments)
+            self.element_lines.extend((display, line) for line in read.element_lines)
         for problem in read.problems:
             self._report(problem.rule, Where(absolute, problem.line, problem.column),
                          problem.message)
@@ -243,7 +253,7 @@ class Ros2Loader:
             return anon[name]
 
         return Ros2Scope(scope.configs, scope.env, self.options.packages.find, anonymous,
-                         frame.filename)
+                         frame.filename, self.work)
 
     def _resolve(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> Value:
         try:
@@ -282,7 +292,10 @@ class Ros2Loader:
     # -- actions -----------------------------------------------------------------------
     def _run(self, actions: tuple[Action, ...] | list[Action], scope: _Scope, frame: _Frame
              ) -> None:
+        step = self.work.step
         for action in actions:
+            step()
+            self._where = action.where
             self.budget.actions += 1
             if self.budget.actions > MAX_ACTIONS_PER_TREE:
                 self._report("roslaunch_error", action.where,
@@ -449,6 +462,7 @@ class Ros2Loader:
             self._report("roslaunch_error", action.where,
                          f"cannot read included file {path}: {exc.strerror or exc}")
             return
+        self.work.produce(len(data))
         read = self._read_file(absolute, data)
         if read.actions is None:
             return
@@ -683,6 +697,10 @@ def _locate(path: str, including_file: str) -> str | None:
     ]
     for candidate in candidates:
         if os.path.isfile(candidate):
+            return os.path.abspath(candidate)
+    # A folder, device or FIFO of that name is found, so that reading it says what it is.
+    for candidate in candidates:
+        if os.path.exists(candidate):
             return os.path.abspath(candidate)
     return None
 

@@ -53,6 +53,8 @@ from launch_linter.frontends.ros2_actions import (
     Where,
     ros2_run,
 )
+from launch_linter.model.budget import Budget
+from launch_linter.model.launch import DIRECTIVE_MARKER
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
 from launch_linter.resolve.value import Value, holes, resolved_text
@@ -279,10 +281,29 @@ class Interpreter:
     call_sites: list[ast.AST] = field(default_factory=list)
     """Calls of the file's own functions being run, outermost first."""
     lines: list[str] = field(default_factory=list)
+    scopes: list[Env] = field(default_factory=list)
+    """Every scope made, emptied at the end: a function and the scope it was defined in
+    refer to each other, a cycle that would keep the file's syntax tree alive until the
+    garbage collector finds it."""
+    deferring: bool = False
+    """Whether an ``OpaqueFunction`` will be run later, in its scopes (then they stay)."""
     served: list[object] = field(default_factory=list)
     """What a script gives ``LaunchService.include_launch_description``."""
 
     # -- helpers -------------------------------------------------------------------------
+    def scope(self, parent: Env | None) -> Env:
+        env = Env(parent)
+        self.scopes.append(env)
+        return env
+
+    def forget_scopes(self) -> None:
+        if self.deferring:
+            return
+        for env in self.scopes:
+            env.vars.clear()
+            env.parent = None
+        self.scopes.clear()
+
     def step(self) -> None:
         self.steps += 1
         if self.steps > MAX_STEPS:
@@ -775,7 +796,7 @@ class Interpreter:
         items = self.iterate(self.eval(generator.iter, env), generator.iter)
         if isinstance(items, Unknown):
             return items
-        inner = Env(env)
+        inner = self.scope(env)
         out: list[object] = []
         for item in items:
             self.assign(generator.target, item, inner)
@@ -828,7 +849,7 @@ class Interpreter:
         if self.depth >= MAX_CALL_DEPTH:
             return self.unknown(node, f"calls nested deeper than {MAX_CALL_DEPTH}")
         spec = function.node.args
-        local = Env(function.closure)
+        local = self.scope(function.closure)
         names = [a.arg for a in (*spec.posonlyargs, *spec.args)]
         for name, value in zip(names, args, strict=False):
             local.vars[name] = value
@@ -1354,6 +1375,7 @@ class Interpreter:
             return self.deferred(function, list(extra_args), dict(extra_kwargs), resolver,
                                  node, where)
 
+        self.deferring = True
         return Deferred(where, self.condition(kwargs, node), expand)
 
     def deferred(self, function: FuncVal, args: list[object], kwargs: dict[str, object],
@@ -1549,7 +1571,10 @@ _PLAIN_BUILTINS: dict[str, Callable[..., object]] = {
 }
 
 
-def _comments(data: bytes) -> tuple[tuple[int, str], ...]:
+def _directive_comments(data: bytes) -> tuple[tuple[int, str], ...]:
+    """The comments of a file that may hold a suppression directive, else none."""
+    if DIRECTIVE_MARKER.encode() not in data:
+        return ()
     found: list[tuple[int, str]] = []
     try:
         for token in tokenize.tokenize(BytesIO(data).readline):
@@ -1560,13 +1585,14 @@ def _comments(data: bytes) -> tuple[tuple[int, str], ...]:
     return tuple(found)
 
 
-def read_python(path: str, data: bytes) -> FileRead:
+def read_python(path: str, data: bytes, budget: Budget | None = None) -> FileRead:
     """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes)."""
     if len(data) > MAX_BYTES:
         message = f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
     try:
-        source = data.decode("utf-8")
+        # A byte order mark is allowed, as Python itself allows it.
+        source = data.decode("utf-8-sig")
         tree = ast.parse(source, filename=path)
     except UnicodeDecodeError as exc:
         message = f"not UTF-8 text: {exc.reason}"
@@ -1574,14 +1600,24 @@ def read_python(path: str, data: bytes) -> FileRead:
     except SyntaxError as exc:
         problem = Problem("parse_error", exc.lineno or 1, (exc.offset or 0) or 1,
                           f"not valid Python: {exc.msg}")
-        return FileRead(FORMAT, None, _comments(data), (), (problem,))
+        return FileRead(FORMAT, None, _directive_comments(data), (), (problem,))
     except (RecursionError, MemoryError, ValueError) as exc:
         message = f"not readable Python: {type(exc).__name__}"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
-    lines = sorted({n.lineno for n in ast.walk(tree) if isinstance(n, ast.stmt | ast.Call)})
+    comments = _directive_comments(data)
+    # Statement lines only place directives: skipped (with the tokenizer) in the many files
+    # that hold none.
+    lines = (
+        sorted({n.lineno for n in ast.walk(tree) if isinstance(n, ast.stmt | ast.Call)})
+        if comments else ()
+    )
     interpreter = Interpreter(path, source)
     actions = _launch_description(interpreter, tree)
-    return FileRead(FORMAT, actions, _comments(data), tuple(lines), tuple(interpreter.problems))
+    if budget is not None:
+        # The interpreter's own step limit bounds one file; the root file's budget bounds
+        # a file included many times.
+        budget.step(interpreter.steps)
+    return FileRead(FORMAT, actions, comments, tuple(lines), tuple(interpreter.problems))
 
 
 ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
@@ -1671,7 +1707,14 @@ def _fixture_arguments(interpreter: Interpreter, function: FuncVal, module: Env
 
 
 def _launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
-    module = Env()
+    try:
+        return _run_launch_description(interpreter, tree)
+    finally:
+        interpreter.forget_scopes()
+
+
+def _run_launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple[Action, ...]:
+    module = interpreter.scope(None)
     top = Where(interpreter.path, 1, 1)
     try:
         interpreter.run_block(tree.body, module)

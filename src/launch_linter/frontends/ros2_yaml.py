@@ -19,7 +19,9 @@ from typing import Any
 from launch_linter.frontends.ros2_actions import FileRead, Problem
 from launch_linter.frontends.ros2_xml import Entity, actions_of
 from launch_linter.model.transform import LaunchFormat
-from launch_linter.resolve.xml_safe import MAX_BYTES, MAX_ELEMENTS
+from launch_linter.resolve.xml_safe import MAX_ELEMENTS
+
+MAX_YAML_BYTES = 256 * 1024
 
 FORMAT = LaunchFormat.ROS2_YAML
 
@@ -123,15 +125,18 @@ def read_yaml(path: str, data: bytes) -> FileRead:
         import yaml  # type: ignore[import-untyped]
     except ImportError:
         return _error(1, 1, "reading ROS 2 YAML launch files needs PyYAML (pip install PyYAML)")
-    if len(data) > MAX_BYTES:
-        return _error(1, 1, f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit")
+    if len(data) > MAX_YAML_BYTES:
+        # PyYAML builds its node tree in Python: about 4 s per megabyte with libyaml and
+        # 20 s without. Real YAML launch files are a few kilobytes.
+        return _error(1, 1, f"YAML launch file is {len(data)} bytes, larger than the "
+                            f"{MAX_YAML_BYTES}-byte limit")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         return _error(1, 1, f"not UTF-8 text: {exc.reason}")
     comments = _comments(text)
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = yaml.compose(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark
         line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)

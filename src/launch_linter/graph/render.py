@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 
 from launch_linter.graph.model import TfGraph
+from launch_linter.report.escape import printable
 
 RED = "#c62828"
 BLUE = "#1565c0"
@@ -19,9 +20,12 @@ NEWLINE = "\n"
 
 def _dot_string(text: str, line_break: str = "\\n") -> str:
     """A quoted DOT string; ``line_break`` is ``\\n`` (centred) or ``\\l`` (left)."""
-    # Backslashes first: DOT gives \N, \G, \l ... a meaning inside labels.
-    escaped = text.replace("\\", "\\\\").replace('"', '\\"')
-    return '"' + escaped.replace("\r", "").replace("\n", line_break) + '"'
+    # Control characters, NUL and lone surrogates become visible escapes first (Graphviz
+    # stops at a NUL and cannot encode a surrogate); then backslashes, which DOT gives a
+    # meaning (\N, \G, \l ...) inside labels.
+    lines = (printable(line).replace("\\", "\\\\").replace('"', '\\"')
+             for line in text.replace("\r", "").split("\n"))
+    return '"' + line_break.join(lines) + '"'
 
 
 def _ids(graph: TfGraph) -> dict[str, str]:
@@ -88,8 +92,7 @@ _MERMAID_ESCAPES = {
 
 
 def _mermaid_text(lines: tuple[str, ...] | list[str]) -> str:
-    escaped = ["".join(_MERMAID_ESCAPES.get(c, c) for c in line if c not in "\r\n")
-               for line in lines]
+    escaped = ["".join(_MERMAID_ESCAPES.get(c, c) for c in printable(line)) for line in lines]
     return '"' + "<br/>".join(escaped) + '"'
 
 
@@ -97,7 +100,7 @@ def to_mermaid(graph: TfGraph) -> str:
     """The graph as a Mermaid flowchart (renders in GitHub Markdown)."""
     ids = _ids(graph)
     # The front matter is YAML, where a JSON string is a valid double-quoted scalar.
-    lines = ["---", f"title: {json.dumps(graph.title)}", "---", "flowchart TD"]
+    lines = ["---", f"title: {json.dumps(printable(graph.title))}", "---", "flowchart TD"]
     clustered = len(graph.clusters) > 1
     for cluster in range(max(len(graph.clusters), 1)):
         if clustered:

@@ -14,15 +14,16 @@ from __future__ import annotations
 
 import hashlib
 import json
-import multiprocessing
 import os
-import subprocess
 from collections.abc import Callable, Iterable, Iterator, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
 from launch_linter.engine import discover
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
+from launch_linter.mining.gitread import commit_count
 from launch_linter.mining.progress import Progress
 from launch_linter.mining.store import FileRef, ParsedContent, RepoInfo, Store, transform_row
 from launch_linter.model.launch import FileStatus
@@ -31,7 +32,6 @@ from launch_linter.resolve.xml_safe import read_launch_bytes
 
 MANIFEST = "manifest.jsonl"
 BATCH_SIZE = 256
-GIT_TIMEOUT_S = 120
 
 
 class CorpusError(Exception):
@@ -152,26 +152,10 @@ def _read_manifest(root: str, mature: Sequence[str]) -> Corpus:
     return Corpus(root, "manifest", repos, tuple(entries), tuple(sorted(named - set(commits))))
 
 
-def _git(folder: str, *args: str) -> str | None:
-    try:
-        done = subprocess.run(
-            ["git", "-C", folder, *args], capture_output=True, text=True,
-            timeout=GIT_TIMEOUT_S, check=False,
-        )
-    except (OSError, subprocess.TimeoutExpired):
-        return None
-    return done.stdout.strip() if done.returncode == 0 else None
-
-
 def git_commits(folder: str) -> tuple[int | None, str]:
-    """(``git rev-list --count HEAD``, HEAD's SHA) of a git repository, (None, "") otherwise."""
-    if not os.path.exists(os.path.join(folder, ".git")):
-        return None, ""
-    count = _git(folder, "rev-list", "--count", "HEAD")
-    head = _git(folder, "rev-parse", "HEAD")
-    if count is None or not count.isdigit():
-        return None, ""
-    return int(count), head or ""
+    """(commits reachable from HEAD, HEAD's SHA) of a git repository, (None, "") otherwise;
+    nothing from the repository is run (see :mod:`launch_linter.mining.gitread`)."""
+    return commit_count(folder)
 
 
 def _read_folders(root: str, mature: Sequence[str]) -> Corpus:
@@ -241,8 +225,50 @@ def _parsed(jobs: Sequence[ParseJob], workers: int) -> Iterator[ParsedContent]:
     if workers <= 1 or len(jobs) < 2 * workers:
         yield from map(parse_job, jobs)
         return
-    with multiprocessing.Pool(workers) as pool:
-        yield from pool.imap(parse_job, jobs, chunksize=8)
+    position = 0
+    while position < len(jobs):
+        broken_at: int | None = None
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            futures = [pool.submit(parse_job, job) for job in jobs[position:]]
+            for offset, future in enumerate(futures):
+                try:
+                    result = future.result()
+                except BrokenProcessPool:
+                    broken_at = position + offset
+                    break
+                yield result
+        if broken_at is None:
+            return
+        # A worker died (killed, out of memory, a crash in C code) and broke the pool: the
+        # first unfinished job is tried again alone, and reported if it kills that worker
+        # too; the run goes on after it in a new pool.
+        yield _parse_alone(jobs[broken_at])
+        position = broken_at + 1
+
+
+def _parse_alone(job: ParseJob) -> ParsedContent:
+    try:
+        with ProcessPoolExecutor(max_workers=1) as pool:
+            return pool.submit(parse_job, job).result()
+    except BrokenProcessPool:
+        return ParsedContent(job.sha256, 0, FileStatus.PARSE_ERROR.value,
+                             "the worker process parsing it died", ())
+
+
+def _storable(text: str) -> bool:
+    """Whether SQLite can store ``text`` (a file name may hold undecodable bytes)."""
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
+
+
+def _escaped(ref: FileRef) -> FileRef:
+    def escape(text: str) -> str:
+        return text.encode("utf-8", "backslashreplace").decode("utf-8")
+
+    return FileRef(escape(ref.repo), escape(ref.path), escape(ref.version), ref.latest)
 
 
 # -- ingest --------------------------------------------------------------------------------
@@ -280,6 +306,10 @@ def ingest(
     unreadable: list[tuple[FileRef, str]] = []
     real_root = os.path.realpath(corpus.root)
     for entry in corpus.entries:
+        if not (_storable(entry.ref.repo) and _storable(entry.ref.path)
+                and _storable(entry.ref.version)):
+            unreadable.append((_escaped(entry.ref), "its name is not valid UTF-8; not stored"))
+            continue
         if not _inside(real_root, entry.source):
             unreadable.append((entry.ref, "outside the corpus folder"))
             continue

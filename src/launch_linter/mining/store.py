@@ -13,9 +13,11 @@ after the last batch it committed.
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import sqlite3
+import time
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from types import TracebackType
@@ -131,6 +133,44 @@ class StoreError(Exception):
     """The database cannot be used (wrong schema version, not a database, …)."""
 
 
+MAX_STATEMENT_SECONDS = 600.0
+"""Longest one SQL statement may run before it is interrupted."""
+_PROGRESS_EVERY = 100_000
+"""SQLite virtual-machine instructions between two looks at the clock."""
+
+
+def _harden(conn: sqlite3.Connection) -> None:
+    """Defensive settings for a database file that may come from anyone: no schema-borne
+    functions, no writes to the schema, and every statement interrupted past a time limit."""
+    conn.execute("PRAGMA trusted_schema = OFF")
+    defensive = getattr(sqlite3, "SQLITE_DBCONFIG_DEFENSIVE", None)
+    if defensive is not None and hasattr(conn, "setconfig"):
+        conn.setconfig(defensive, True)
+    started: list[float] = [time.monotonic()]
+
+    def progress() -> int:
+        # Non-zero interrupts the statement (sqlite3.OperationalError: interrupted).
+        return 1 if time.monotonic() - started[0] > MAX_STATEMENT_SECONDS else 0
+
+    conn.set_progress_handler(progress, _PROGRESS_EVERY)
+    conn.set_trace_callback(lambda _statement: started.__setitem__(0, time.monotonic()))
+
+
+def _schema(conn: sqlite3.Connection) -> set[tuple[str, str, str]]:
+    rows = conn.execute("SELECT type, name, sql FROM sqlite_master WHERE sql IS NOT NULL")
+    return {(kind, name, " ".join(sql.split())) for kind, name, sql in rows}
+
+
+@functools.lru_cache(maxsize=None)  # noqa: UP033 - Python 3.8 has no functools.cache
+def _expected_schema() -> frozenset[tuple[str, str, str]]:
+    conn = sqlite3.connect(":memory:")
+    try:
+        conn.executescript(_SCHEMA)
+        return frozenset(_schema(conn))
+    finally:
+        conn.close()
+
+
 @dataclass(frozen=True, slots=True)
 class RepoInfo:
     name: str
@@ -210,8 +250,11 @@ class Store:
     def __init__(self, path: str, create: bool = True) -> None:
         if not create and not os.path.isfile(path):
             raise StoreError(f"{path}: no such database (make one with 'launch-linter mine')")
+        if os.path.exists(path) and not os.path.isfile(path):
+            raise StoreError(f"{path}: not a regular file")
         try:
             self.conn = sqlite3.connect(path, timeout=60.0)
+            _harden(self.conn)
             self.conn.execute("PRAGMA foreign_keys = ON")
             self.conn.execute("PRAGMA synchronous = NORMAL")
             version = self.conn.execute("PRAGMA user_version").fetchone()[0]
@@ -226,6 +269,11 @@ class Store:
                 f"{path}: database schema version {version}, this launch-linter uses "
                 f"{SCHEMA_VERSION}; mine into a new database"
             )
+        elif _schema(self.conn) != _expected_schema():
+            # A database from elsewhere may carry views or triggers of its own (a recursive
+            # view runs forever): only our own schema is used.
+            self.conn.close()
+            raise StoreError(f"{path}: not a launch-linter database (its schema differs)")
 
     def _create(self) -> None:
         # WAL keeps readers working during a long ingest and makes commits cheap.

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -58,6 +59,8 @@ class BeliefSet:
                 if cls not in BELIEF_CLASSES:
                     raise BeliefFormatError(f"unknown belief class {cls!r}")
                 z = float(entry["z"])
+                if not math.isfinite(z):
+                    raise BeliefFormatError(f"belief z-score {entry['z']!r} is not finite")
                 if z < min_z:
                     continue
                 then = entry.get("then")
@@ -71,11 +74,14 @@ class BeliefSet:
                         z,
                     )
                 )
-            except (KeyError, TypeError, ValueError) as exc:
+            except (KeyError, TypeError, ValueError, OverflowError) as exc:
                 if isinstance(exc, BeliefFormatError):
                     raise
                 raise BeliefFormatError(f"malformed belief {entry!r}: {exc}") from None
-        return BeliefSet(source, min_z, tuple(beliefs), float(data.get("p0", 0.9)))
+        p0 = data.get("p0", 0.9)
+        if isinstance(p0, bool) or not isinstance(p0, (int, float)) or not 0.0 < p0 < 1.0:
+            raise BeliefFormatError(f"'p0' must be a number between 0 and 1, not {p0!r}")
+        return BeliefSet(source, min_z, tuple(beliefs), float(p0))
 
     def of_class(self, cls: str) -> tuple[Belief, ...]:
         return tuple(b for b in self.beliefs if b.cls == cls)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import Enum
 
@@ -14,6 +15,8 @@ class FileStatus(str, Enum):
     OK = "ok"
     PARSE_ERROR = "parse_error"
     UNREADABLE = "unreadable"
+    INTERNAL_ERROR = "internal_error"
+    """The linter itself failed on this file (a bug to report); the other files are fine."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -32,6 +35,16 @@ class Comment:
     path: str
     line: int
     text: str
+
+
+DIRECTIVE_MARKER = "launch-linter:"
+"""What every suppression directive's comment holds. A file's comments and element lines
+only feed directives, so front-ends keep them only for files with a comment that holds it."""
+
+
+def holds_directive(comments: Iterable[tuple[int, str]]) -> bool:
+    """Whether any of ``comments`` (line, text) may be a suppression directive."""
+    return any(DIRECTIVE_MARKER in text for _, text in comments)
 
 
 @dataclass(frozen=True, slots=True)

@@ -248,11 +248,12 @@ class StaticTransform:
     @property
     def signature(self) -> tuple[str, str] | None:
         """(parent, child) without leading slashes; None unless both are resolved."""
-        if self.parent is None or self.child is None:
+        parent, child = self.parent, self.child
+        if parent is None or child is None:
             return None
         if self.is_unresolved(Field.PARENT, Field.CHILD):
             return None
-        return (self.parent, self.child)
+        return (parent, child)
 
     @property
     def qualified_name(self) -> str | None:

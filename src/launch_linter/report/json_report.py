@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any
+from collections.abc import Iterator
+from typing import Any, TextIO
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.report.escape import json_safe
 
 JSON_VERSION = 1
 
@@ -107,5 +109,28 @@ def transforms_document(result: LintResult) -> dict[str, Any]:
     }
 
 
+def _encoder() -> json.JSONEncoder:
+    return json.JSONEncoder(indent=2, ensure_ascii=False, allow_nan=False, default=str)
+
+
 def dumps(document: dict[str, Any]) -> str:
-    return json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False, default=str)
+    return _encoder().encode(json_safe(document))
+
+
+def pieces(document: dict[str, Any]) -> Iterator[str]:
+    """``dumps(document)`` and a newline, piece by piece: the whole text of a large run
+    (and the list of its pieces) is never held at once."""
+    batch: list[str] = []
+    for chunk in _encoder().iterencode(json_safe(document)):
+        batch.append(chunk)
+        if len(batch) >= 4096:
+            yield "".join(batch)
+            batch.clear()
+    batch.append("\n")
+    yield "".join(batch)
+
+
+def write(document: dict[str, Any], out: TextIO) -> None:
+    """Write ``dumps(document)`` and a newline to ``out`` (see ``pieces``)."""
+    for piece in pieces(document):
+        out.write(piece)

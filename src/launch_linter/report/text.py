@@ -7,6 +7,7 @@ from collections.abc import Iterable
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.report.escape import printable
 
 _COLOURS = {Severity.ERROR: "\033[31m", Severity.WARNING: "\033[33m", Severity.INFO: "\033[36m"}
 _BOLD, _RESET = "\033[1m", "\033[0m"
@@ -14,11 +15,11 @@ _BOLD, _RESET = "\033[1m", "\033[0m"
 
 def format_diagnostic(d: Diagnostic, colour: bool = False) -> str:
     level = d.severity.value
-    location = f"{d.path}:{d.line}:{d.column}:"
+    location = f"{printable(d.path)}:{d.line}:{d.column}:"
     if colour:
         level = f"{_COLOURS[d.severity]}{level}{_RESET}"
         location = f"{_BOLD}{location}{_RESET}"
-    return f"{location} {level}: {d.message} [{d.rule}]"
+    return f"{location} {level}: {printable(d.message)} [{d.rule}]"
 
 
 def format_diagnostics(diagnostics: Iterable[Diagnostic], colour: bool = False) -> str:
@@ -83,7 +84,7 @@ def format_transform(t: StaticTransform) -> str:
     if t.unresolved:
         extra.append(f"unresolved: {', '.join(t.unresolved_names)}")
     tail = f"  [{'; '.join(extra)}]" if extra else ""
-    return (
+    return printable(
         f"{t.path}:{t.line}:{t.column}: {t.namespace}{t.name or '?'} ({t.package}) "
         f"{t.parent or '?'} -> {t.child or '?'} t={translation} r={rotation}{tail}"
     )

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from launch_linter.resolve.xml_safe import XmlError, parse_xml
+from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
 
 MAX_DIRECTORIES = 50_000
 MAX_WALK_UP = 32
@@ -35,6 +35,7 @@ class PackageIndex:
     def _crawl(self) -> dict[str, str]:
         found: dict[str, str] = {}
         budget = MAX_DIRECTORIES
+        seen: set[tuple[int, int]] = set()
         for root in self.roots:
             if not os.path.isdir(root):
                 continue
@@ -42,6 +43,16 @@ class PackageIndex:
                 budget -= 1
                 if budget <= 0:
                     return found
+                try:
+                    info = os.stat(directory)
+                except OSError:
+                    subdirs[:] = []
+                    continue
+                if (info.st_dev, info.st_ino) in seen:
+                    # A symbolic link back to a folder already crawled (a loop): skip it.
+                    subdirs[:] = []
+                    continue
+                seen.add((info.st_dev, info.st_ino))
                 subdirs.sort()
                 if "CATKIN_IGNORE" in files:
                     subdirs[:] = []
@@ -62,8 +73,8 @@ class PackageIndex:
 def _package_name(directory: str, files: list[str]) -> str | None:
     if "package.xml" in files:
         try:
-            with open(os.path.join(directory, "package.xml"), "rb") as handle:
-                document = parse_xml(handle.read(MAX_MANIFEST_BYTES), text_tags=("name",))
+            data = read_regular_file(os.path.join(directory, "package.xml"), MAX_MANIFEST_BYTES)
+            document = parse_xml(data, text_tags=("name",))
         except (OSError, XmlError):
             return None
         name: str | None = None

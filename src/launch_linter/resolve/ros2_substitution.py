@@ -20,6 +20,7 @@ import shlex
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+from launch_linter.model.budget import Budget
 from launch_linter.resolve import safe_eval
 from launch_linter.resolve.value import (
     Hole,
@@ -34,6 +35,8 @@ from launch_linter.resolve.value import (
 
 MAX_NESTING = 32
 MAX_TEXT = 100_000
+MAX_VALUE_CHARS = 4 * 1024 * 1024
+"""Longest value one substitution may build."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -85,6 +88,8 @@ class Ros2Scope:
     find: Callable[[str], str | None]
     anon: Callable[[str], str]
     filename: str
+    budget: Budget | None = None
+    """The root file's work budget, charged before a value is built."""
 
 
 def literal(text: str) -> Subs:
@@ -284,6 +289,14 @@ class _Resolver:
                 parts.append(Hole(sub.text, sub.reason))
             else:
                 parts.extend(self.call(sub))
+        if len(parts) > 1:
+            # Values that refer to each other double at each level: size before joining.
+            size = sum(len(p) if isinstance(p, str) else len(p.text) for p in parts)
+            if size > MAX_VALUE_CHARS:
+                raise SubstitutionError(
+                    f"value would be longer than {MAX_VALUE_CHARS:,} characters; not built")
+            if self.scope.budget is not None:
+                self.scope.budget.produce(size)
         return join(parts)
 
     def text(self, subs: Subs) -> str | Value:
@@ -359,6 +372,7 @@ class _Resolver:
             find=self.scope.find,
             anon=self.scope.anon,
             dirname=os.path.dirname(os.path.abspath(self.scope.filename)),
+            budget=self.scope.budget,
         )
         try:
             return (safe_eval.evaluate(expression, scope),)

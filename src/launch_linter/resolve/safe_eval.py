@@ -64,6 +64,8 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Final, NamedTuple, TypeAlias
 
+from launch_linter.model.budget import Budget
+
 __all__ = [
     "MAX_DEPTH",
     "MAX_INT_BITS",
@@ -136,6 +138,8 @@ class EvalScope:
     """Anonymous id to the resolved anonymous name."""
     dirname: str | None
     """Directory of the current launch file, ``None`` if unknown."""
+    budget: Budget | None = None
+    """The root file's work budget: charged with this evaluation's work and result."""
 
 
 def evaluate(source: str, scope: EvalScope) -> str:
@@ -147,7 +151,10 @@ def evaluate(source: str, scope: EvalScope) -> str:
     tree = _parse(source)
     interpreter = _Interpreter(scope)
     try:
-        return interpreter.text(interpreter.eval(tree.body))
+        result = interpreter.text(interpreter.eval(tree.body))
+        if scope.budget is not None:
+            scope.budget.produce(len(result))
+        return result
     except EvalError:
         raise
     except RecursionError:
@@ -158,6 +165,10 @@ def evaluate(source: str, scope: EvalScope) -> str:
         # Safety net: every operation converts its own errors, but a missed case must still
         # surface as a refusal rather than crash the linter.
         raise EvalError(_clip(f"{type(exc).__name__}: {exc}")) from None
+    finally:
+        # Each evaluation is bounded on its own; the root file's budget bounds their sum.
+        if scope.budget is not None:
+            scope.budget.step(1 + interpreter.spent)
 
 
 # --- parsing -------------------------------------------------------------------------
@@ -342,6 +353,11 @@ class _Interpreter:
         self._metas: dict[int, tuple[object, _Meta]] = {}
 
     # -- budget and sizes --
+
+    @property
+    def spent(self) -> int:
+        """Work units spent so far."""
+        return self._work
 
     def charge(self, units: int) -> None:
         """Spend work units: one per syntax node or function call, one per element walked

@@ -14,12 +14,15 @@ import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+from launch_linter.model.budget import Budget
 from launch_linter.resolve import safe_eval
 from launch_linter.resolve.value import Hole, Part, Value, is_resolved, join, resolved_text
 
 VALID_COMMANDS = ("find", "env", "optenv", "dirname", "anon", "arg")
 FIRST_PASS = ("env", "optenv", "dirname", "anon", "arg")
 _HOLE_MARK = "\x00"
+MAX_VALUE_CHARS = 4 * 1024 * 1024
+"""Longest value one substitution may build (arguments that double each other grow fast)."""
 
 
 class SubstitutionError(Exception):
@@ -40,6 +43,8 @@ class SubstitutionScope:
     anon: Callable[[str], str]
     filename: str
     missing_arg: Callable[[str], str] | None = None
+    budget: Budget | None = None
+    """The root file's work budget, charged before a value is built."""
 
 
 _SPECIAL = re.compile(r"[$()]")
@@ -88,7 +93,28 @@ def collect_commands(text: str) -> list[str]:
     return commands
 
 
-def _replace_all(parts: list[Part], needle: str, replacement: Value) -> list[Part]:
+def _grown_size(text: str, needle: str, replacement_size: int) -> int:
+    """Length of ``text`` once every ``needle`` is replaced by that many characters."""
+    if replacement_size <= len(needle):
+        return len(text)
+    return len(text) + text.count(needle) * (replacement_size - len(needle))
+
+
+def _charge(scope: SubstitutionScope, size: int) -> None:
+    """Refuse a value longer than MAX_VALUE_CHARS; charge the root file's budget."""
+    if size > MAX_VALUE_CHARS:
+        raise SubstitutionError(
+            f"value would be longer than {MAX_VALUE_CHARS:,} characters; not built")
+    if scope.budget is not None:
+        scope.budget.produce(size)
+
+
+def _replace_all(parts: list[Part], needle: str, replacement: Value,
+                 scope: SubstitutionScope) -> list[Part]:
+    # A hole counts as its written text, so that values full of holes are bounded too.
+    size = sum(len(p) if isinstance(p, str) else len(p.text) for p in replacement)
+    _charge(scope, sum(_grown_size(p, needle, size) if isinstance(p, str) else len(p.text)
+                       for p in parts))
     out: list[Part] = []
     for part in parts:
         if isinstance(part, Hole) or needle not in part:
@@ -255,6 +281,7 @@ def _evaluate(expression: str, whole: str, scope: SubstitutionScope) -> Value:
         find=scope.find,
         anon=scope.anon,
         dirname=os.path.dirname(os.path.abspath(scope.filename)),
+        budget=scope.budget,
     )
     try:
         return (safe_eval.evaluate(expression, eval_scope),)
@@ -299,10 +326,12 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
                 current = current.replace(needle, "")
                 continue
             if len(replacement) == 1 and type(replacement[0]) is str:
+                if len(replacement[0]) > len(needle):
+                    _charge(scope, _grown_size(current, needle, len(replacement[0])))
                 current = current.replace(needle, replacement[0])
                 continue
             parts = [current]
-        parts = _replace_all(parts, needle, replacement)
+        parts = _replace_all(parts, needle, replacement, scope)
     # Every list of parts here is already joined (one non-empty text, or the output of
     # ``join``), so the result is that list as a tuple.
     if parts is None:

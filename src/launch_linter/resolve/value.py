@@ -4,6 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+MAX_REASON = 300
+"""Longest reason kept in a hole."""
+
 
 @dataclass(frozen=True, slots=True)
 class Hole:
@@ -11,6 +14,12 @@ class Hole:
 
     text: str
     reason: str
+
+    def __post_init__(self) -> None:
+        # A reason quotes the reasons of the values it was made from: values that refer to
+        # each other would double it at each level.
+        if len(self.reason) > MAX_REASON:
+            object.__setattr__(self, "reason", self.reason[: MAX_REASON - 3] + "...")
 
 
 Part = str | Hole

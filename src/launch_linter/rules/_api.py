@@ -193,3 +193,16 @@ def place(transform: StaticTransform, seen_from: StaticTransform) -> str:
     if transform.path == seen_from.path:
         return f"line {transform.line}"
     return f"{transform.path}:{transform.line}"
+
+
+MAX_LISTED = 5
+"""Most items a message lists before "and N more"."""
+MAX_RELATED = 10
+"""Most related locations one diagnostic carries (output per finding stays bounded)."""
+
+
+def summarised(items: list[str], limit: int = MAX_LISTED) -> list[str]:
+    """``items``, the ones past ``limit`` folded into a final "and N more"."""
+    if len(items) <= limit:
+        return items
+    return [*items[:limit], f"and {len(items) - limit} more"]

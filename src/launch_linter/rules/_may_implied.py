@@ -110,12 +110,15 @@ def _non_null(
     if not index:
         return
     for transform in context.tree.transforms:
-        key, values = key_of(transform), values_of(transform)
-        if key is None or values is None:
+        # The values are formatted only for a key that has beliefs (few have).
+        key = key_of(transform)
+        beliefs = index.get(key, ()) if key is not None else ()
+        values = values_of(transform) if beliefs else None
+        if values is None:
             continue
         if not context.study and quantity == "rotation" and _rotation_owned(transform):
             continue
-        for belief in index.get(key, ()):
+        for belief in beliefs:
             yield finding_at(
                 transform,
                 f"{what} {describe(key)} usually has zero {quantity}, this one has "

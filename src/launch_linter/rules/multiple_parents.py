@@ -46,7 +46,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._api import MAX_LISTED, MAX_RELATED, Finding, RuleContext, summarised
 from launch_linter.rules._tree import Edge, coexist, finding_on, place, tree_edges
 
 ID = "multiple_parents"
@@ -68,7 +68,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         earlier.append((parent, edge))
         if not rivals:
             continue
-        others = " and ".join(f"'{p}' ({_where(t, edge)})" for p, t in rivals.items())
+        others = " and ".join(summarised(
+            [f"'{p}' ({_where(t, edge)})" for p, t in rivals.items()], MAX_LISTED))
         conditional = any(not t.condition.always for t in (edge, *rivals.values()))
         gets = "may get" if conditional else "gets"
         here = "here" if edge.joint is None else f"here (URDF joint '{edge.joint.name}')"
@@ -77,7 +78,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' {here} and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",
-            tuple(rivals.values()),
+            tuple(list(rivals.values())[:MAX_RELATED]),
         )
 
 

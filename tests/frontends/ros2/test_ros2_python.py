@@ -408,6 +408,41 @@ def test_text_bombs_are_refused(load: Load) -> None:
     assert "too long" in transform.unresolved_reasons[0]
 
 
+def test_comments_and_statement_lines_only_in_files_that_hold_a_directive() -> None:
+    from launch_linter.frontends.ros2_python import read_python
+
+    source = b"# a plain comment\nx = 1\n"
+    plain = read_python("/a.launch.py", source)
+    assert (plain.comments, plain.element_lines) == ((), ())
+    marked = read_python("/a.launch.py", b"# launch-linter: disable=dup_name\n" + source)
+    assert marked.comments == ((1, " launch-linter: disable=dup_name"), (2, " a plain comment"))
+    assert marked.element_lines == (3,)
+
+
+def test_reading_a_python_launch_file_leaves_no_reference_cycles(tmp_path: Path) -> None:
+    import gc
+
+    launch = tmp_path / "a.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def helper(name):\n"
+        "    return Node(package='tf2_ros', executable='static_transform_publisher',\n"
+        "                arguments=['0', '0', '0', '0', '0', '0', 'base', name])\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([helper(n) for n in ['a', 'b']])\n"
+    )
+    lint_paths([str(launch)], LintOptions())  # imports, caches
+    gc.collect()
+    gc.disable()
+    try:
+        result = lint_paths([str(launch)], LintOptions())
+        assert len(result.transforms) == 2
+        assert gc.collect() == 0
+    finally:
+        gc.enable()
+
+
 def test_parameter_and_log_dir_substitutions_are_unresolved(load: Load) -> None:
     tree = load({"a.launch.py": HEADER
         + "from launch_ros.substitutions import Parameter\n"

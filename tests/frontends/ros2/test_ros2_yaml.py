@@ -50,8 +50,14 @@ def test_nodes_arguments_groups_and_lines(load: Load) -> None:
     assert imu.condition.describe() == "if='$(var use_imu)'"
     assert [i.kind for i in imu.arg_issues] == ["positional"]
     assert {t.launch_format for t in tree.transforms} == {"ros2-yaml"}
-    assert [(c.line, c.text.strip()) for c in tree.comments] == [(2, "sensors of the base")]
-    assert ("s.launch.yaml", 9) in tree.element_lines
+    # Comments feed only suppression directives: a file without one keeps none.
+    assert tree.comments == ()
+    marked = load({"s.launch.yaml": SENSORS.replace("sensors of", "launch-linter: sensors of")},
+                  "s.launch.yaml")
+    assert [(c.line, c.text.strip()) for c in marked.comments] == [
+        (2, "launch-linter: sensors of the base")
+    ]
+    assert ("s.launch.yaml", 9) in marked.element_lines
 
 
 def test_a_group_given_as_a_list_and_include_arguments(load: Load) -> None:

@@ -1,0 +1,49 @@
+"""Output that a launch file cannot forge.
+
+Paths, frame ids, node names and quoted values come from untrusted files. In text output a
+newline would start a line that looks like a real diagnostic and an ESC byte would drive the
+terminal; in JSON, SARIF and graphs a lone surrogate cannot be encoded and NaN is not JSON.
+Every string from a file goes through :func:`printable` (text, graphs) or
+:func:`json_safe` (JSON documents) on its way out.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Any
+
+# C0 and C1 controls, DEL, the line and paragraph separators, the bidirectional overrides
+# and isolates (which reorder what a terminal shows), and lone surrogates.
+_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
+
+
+def _escape(match: re.Match[str]) -> str:
+    code = ord(match.group())
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+
+
+def printable(text: str) -> str:
+    """``text`` with every control, separator, bidi override and lone surrogate shown as a
+    ``\\xNN``/``\\uNNNN`` escape: one line, safe for a terminal, encodable as UTF-8."""
+    if _UNSAFE.search(text) is None:
+        return text
+    return _UNSAFE.sub(_escape, text)
+
+
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
+def json_safe(value: Any) -> Any:
+    """``value`` with non-finite floats as null and lone surrogates escaped (as text), so
+    that the document is valid JSON and encodable as UTF-8. Documents are shallow: the
+    recursion follows our own structure, not the input's."""
+    if isinstance(value, str):
+        return value if _SURROGATE.search(value) is None else _SURROGATE.sub(_escape, value)
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {json_safe(k): json_safe(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [json_safe(v) for v in value]
+    return value
