@@ -32,6 +32,11 @@ from collections import Counter, defaultdict
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EVAL = os.path.join(ROOT, "docs", "evaluation")
+# Rules judged in full (when they fire at most --all-cap times): issue 17's whole-robot checks.
+WHOLE_ROBOT_RULES = (
+    "rep105_order", "optical_frame_rotation", "frame_authority", "conflicting_transform",
+    "multiple_parents", "ros2_schema", "ros2_removed_keyword",
+)
 
 
 def stable_key(repo: str, path: str, rule: str, line: int, node: str | None) -> str:
@@ -91,6 +96,12 @@ def main() -> int:
         help="every warning/error finding (key, rule, place): precision.py's membership test",
     )
     parser.add_argument("--profile", default=None, help="lint with this profile (e.g. study)")
+    parser.add_argument(
+        "--all-of", action="append", default=None, metavar="RULE",
+        help="draw every finding of RULE (up to --all-cap) after the seeded draw; default: "
+        "issue 17's whole-robot rules, which were added after the first judged sample",
+    )
+    parser.add_argument("--all-cap", type=int, default=40)
     ns = parser.parse_args()
 
     rows, files = findings(ns.corpus, ns.profile)
@@ -112,6 +123,11 @@ def main() -> int:
         fresh = [r for r in pool if r["key"] not in chosen]
         for row in rng.sample(fresh, min(ns.per_rule, len(fresh))):
             chosen[str(row["key"])] = row
+    # After the seeded loop, so the random draw of every other rule stays what it was.
+    for rule in sorted(set(ns.all_of if ns.all_of is not None else WHOLE_ROBOT_RULES)):
+        pool = sorted(by_rule.get(rule, []), key=lambda r: str(r["key"]))
+        for row in pool[: ns.all_cap]:
+            chosen.setdefault(str(row["key"]), row)
     rest = sorted((r for r in rows if r["key"] not in chosen), key=lambda r: str(r["key"]))
     room = max(0, ns.size - len(chosen))
     for row in rng.sample(rest, min(room, len(rest))):

@@ -15,7 +15,8 @@ the full list of warning/error findings on the corpus (``findings*.jsonl``, writ
   error on the corpus (artifact share removed), i.e. the precision of what a user sees.
 
 Writes docs/evaluation/precision.md and src/launch_linter/data/precision.json (the per-rule
-figures that ``launch-linter rules`` and docs/rules.md show).
+figures that ``launch-linter rules`` and docs/rules.md show; a rule judged at warning and
+since lowered to info, which neither state reports, keeps its figure under ``judged``).
 
     python scripts/precision.py
 """
@@ -165,6 +166,28 @@ def main() -> int:
         "",
     ]
     lines += [f"- `{r['rule']}` {r['repo']} {r['path']}:{r['line']}: {r['reason']}" for r in lost]
+    lowered = [
+        rule for rule in rules
+        if not any(states[n].verdicts(rule) for n in states)
+        and any(row["rule"] == rule for row in judged)
+    ]
+    if lowered:
+        lines += [
+            "",
+            "## Rules judged at warning or error, since lowered to info",
+            "",
+            "Their judged findings are in neither state above (issue 17's rules, judged after",
+            "the merge); precision over all their judged findings:",
+            "",
+            "| rule | judged | TRUE | HARMLESS | FALSE | ARTIFACT | precision |",
+            "|---|---:|---:|---:|---:|---:|---:|",
+        ]
+        for rule in lowered:
+            v = Counter(row["verdict"] for row in judged if row["rule"] == rule)
+            total = sum(v[k] for k in JUDGED_VERDICTS)
+            share = f"{100 * v['TRUE'] / total:.0f}% ({v['TRUE']}/{total})" if total else "—"
+            lines.append(f"| {rule} | {sum(v.values())} | {v['TRUE']} | {v['HARMLESS']} | "
+                         f"{v['FALSE']} | {v['ARTIFACT']} | {share} |")
     with open(os.path.join(EVAL, "precision.md"), "w", encoding="utf-8") as handle:
         handle.write("\n".join(lines).rstrip() + "\n")
 
@@ -174,6 +197,15 @@ def main() -> int:
             p = states[name].precision(rule)
             if p is not None:
                 data[rule][name] = {"precision": round(p[0], 3), "true": p[1], "judged": p[2]}
+        if rule not in data:
+            # Judged at warning/error, then lowered to info (issue 17's rules): neither
+            # state reports it at warning or error, but the measurement is still shown.
+            v = Counter(row["verdict"] for row in judged if row["rule"] == rule)
+            total = sum(v[k] for k in JUDGED_VERDICTS)
+            if total:
+                data[rule]["judged"] = {
+                    "precision": round(v["TRUE"] / total, 3), "true": v["TRUE"], "judged": total,
+                }
     with open(DATA, "w", encoding="utf-8") as handle:
         json.dump({"source": "docs/evaluation/precision.md", "rules": dict(sorted(data.items()))},
                   handle, indent=1, sort_keys=True)

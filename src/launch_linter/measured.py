@@ -28,7 +28,8 @@ def _table() -> dict[str, dict[str, dict[str, float]]]:
 
 def precision_text(rule_id: str) -> str:
     """``100% (6/6)`` at the current levels, or ``0% (0/52) before, now info`` for a rule
-    whose warnings and errors went away, or ``not measured``."""
+    whose warnings and errors went away, ``39% (7/18) at warning, now info`` for one judged
+    at warning after the study and lowered since, or ``not measured``."""
     entry = _table().get(rule_id)
     if not entry:
         return "not measured"
@@ -38,4 +39,8 @@ def precision_text(rule_id: str) -> str:
     if before:
         return (f"{before['precision']:.0%} ({before['true']:g}/{before['judged']:g}) "
                 f"at the study's level")
+    judged = entry.get("judged")
+    if judged:
+        return (f"{judged['precision']:.0%} ({judged['true']:g}/{judged['judged']:g}) "
+                f"at warning, now info")
     return "not measured"

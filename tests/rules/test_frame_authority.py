@@ -74,3 +74,21 @@ def test_switch_set_beside_the_node_by_its_private_name(lint: Lint) -> None:
            f'{MAP_ODOM}</launch>')
     assert lint(xml, RULE) == []
     assert lint(xml, RULE, {"off": "false"}) == [(RULE, 2)]
+
+
+def test_filter_without_world_frame_in_the_launch_file_is_left_out(lint: Lint) -> None:
+    # ndt_gnss_localizer's "global_odom" EKF: world_frame comes from a YAML (map in a
+    # dual-EKF setup), so the static odom -> base_link placeholder is what it needs.
+    xml = ('<launch><rosparam command="load" file="/nonexistent/ekf.yaml"/>'
+           '<node pkg="robot_localization" type="ekf_localization_node" name="ekf"/>\n'
+           '<node pkg="tf2_ros" type="static_transform_publisher" name="t" '
+           'args="0 0 0 0 0 0 odom base_link"/></launch>')
+    assert lint(xml, RULE) == []
+
+
+def test_filter_with_world_frame_odom_owns_odom_base(lint: Lint) -> None:
+    xml = ('<launch><node pkg="robot_localization" type="ekf_localization_node" name="ekf">'
+           '<param name="world_frame" value="odom"/></node>\n'
+           '<node pkg="tf2_ros" type="static_transform_publisher" name="t" '
+           'args="0 0 0 0 0 0 odom base_link"/></launch>')
+    assert lint(xml, RULE) == [(RULE, 2)]

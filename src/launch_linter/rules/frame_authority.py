@@ -12,7 +12,11 @@ nodes (package, executable):
   `robot_localization`'s `ekf_localization_node`, `ukf_localization_node`, `ekf_node`,
   `ukf_node` with `world_frame` `map`;
 - odometry (publishes `odom → base`): `robot_localization`'s filters with `world_frame`
-  `odom` or unset (its default), `rf2o_laser_odometry`/any.
+  `odom`, `rf2o_laser_odometry`/any.
+
+A `robot_localization` filter whose `world_frame` the launch file does not give is left out:
+the edge it publishes is decided by its YAML parameter file (which the linter does not read),
+and the standard dual-filter setup runs one filter in `odom` and one in `map`.
 
 The edge is the one the node's frame parameters name (`map_frame`/`global_frame_id`,
 `odom_frame`/`odom_frame_id`, `base_link_frame`/`base_frame_id`/`base_frame`, with
@@ -104,10 +108,14 @@ def publishes(node: NodeRecord) -> tuple[str, Published] | None:
             return None
     what: str | None = None
     if node.package == "robot_localization" and node.executable in FILTERS:
+        # Unset here usually means set in the filter's YAML: odom (odometry) or map
+        # (localization) cannot be told apart, so the node is left out.
+        if node.param("world_frame") is None:
+            return None
         world = _frame(node, ("world_frame",), "") or None
         map_frame = _frame(node, ("map_frame",), "map")
         odom = _frame(node, ("odom_frame",), "odom")
-        if world is None and node.param("world_frame") is not None:
+        if world is None:
             return None
         what = "localization" if world is not None and world == map_frame else "odometry"
     else:

@@ -27,6 +27,11 @@ fail.
         args="0 0 0 0 0 0 map odom"/>
 </launch>
 ```
+
+## Known problems
+Reported at info: on the judged corpus sample 7 of 18 were defects (the inverted edge beside
+amcl, gmapping or an odometry publisher); most others are identity placeholders (`odom → map`
+standing in for localization) that nothing else publishes, where the inversion does no harm.
 """
 
 from __future__ import annotations
@@ -39,7 +44,7 @@ from launch_linter.rules._tree import finding_on, tree_edges
 
 ID = "rep105_order"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 CHAIN = {"earth": 0, "map": 1, "odom": 2, "base_link": 3, "base_footprint": 3}
 
