@@ -143,6 +143,9 @@ class Ros1Base:
         self.options = options
         self.transforms: list[StaticTransform] = []
         self.problems: list[Problem] = []
+        # A file included many times reports each of its problems once: the same element
+        # gives the same problem every time, and a hostile tree can repeat one 100,000 times.
+        self._reported: set[Problem] = set()
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -170,9 +173,10 @@ class Ros1Base:
         node: str | None = None, related: tuple[Location, ...] = (),
     ) -> None:
         line, column = (element.line, element.column) if element else (1, 1)
-        self.problems.append(
-            Problem(rule, self._display(path), line, column, message, node, related)
-        )
+        problem = Problem(rule, self._display(path), line, column, message, node, related)
+        if problem not in self._reported:
+            self._reported.add(problem)
+            self.problems.append(problem)
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         source = (
