@@ -94,7 +94,9 @@ def default_package_roots(launch_file: str) -> list[str]:
     nearest folder up with a ``package.xml``), walk up to a folder whose ``src/`` holds
     that package (a catkin/colcon workspace: the root is its ``src``); without one, the
     package's parent folder is the root. A file outside any package has no roots."""
-    directory = Path(launch_file).resolve().parent
+    # os.path.realpath, not Path.resolve: on Python 3.8 resolve() leaves a reference cycle
+    # (a recursive closure) behind for every call.
+    directory = Path(os.path.realpath(launch_file)).parent
     package: Path | None = None
     for _ in range(MAX_WALK_UP):
         if (directory / "package.xml").is_file():
