@@ -150,8 +150,10 @@ def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None
 
 def load_options_for(
     item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
-    robots: RobotCache | None = None,
+    robots: RobotCache | None = None, versions: dict[str, int | None] | None = None,
 ) -> LoadOptions:
+    """How to load ``item``. ``cache``, ``robots`` and ``versions`` (each package.xml's ROS
+    version) are shared by the files of one run, so each is worked out once."""
     if options.package_paths is not None:
         index = _package_index(tuple(options.package_paths), cache)
     else:
@@ -171,7 +173,7 @@ def load_options_for(
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",
-        ros_version=ros_version_for(item.path, options, {}),
+        ros_version=ros_version_for(item.path, options, {} if versions is None else versions),
         robots=robots,
     )
 
@@ -261,8 +263,7 @@ def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
     """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
     tree = internal_error_tree(item, what, line)
     rule = RULES_BY_ID["parse_error"]
-    found = [Diagnostic(p.rule, rule.category, rule.severity, p.path, p.line, p.column,
-                        p.message) for p in tree.problems]
+    found = [rule.diagnostic(finding_of(p)) for p in tree.problems]
     return tree, _file_record(item, tree), found
 
 
@@ -271,10 +272,11 @@ MAX_INTERNAL_MESSAGE = 500
 
 def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
               cache: dict[tuple[str, ...], PackageIndex],
-              robots: RobotCache | None = None) -> Linted:
+              robots: RobotCache | None = None,
+              versions: dict[str, int | None] | None = None) -> Linted:
     """One file, isolated: an unexpected exception costs this file only."""
     try:
-        tree = load_tree(item.path, load_options_for(item, options, cache, robots))
+        tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
         return tree, _file_record(item, tree), check_tree(tree, rules, options)
     except (KeyboardInterrupt, SystemExit):
         raise
@@ -302,9 +304,10 @@ def _lint_chunk(
     rules = selected_rules(options)
     # One cache per chunk: a description included by many launch files is expanded once.
     robots = RobotCache()
+    versions: dict[str, int | None] = {}
     out: list[Linted] = []
     for item in items:
-        tree, record, found = _lint_one(item, options, rules, cache, robots)
+        tree, record, found = _lint_one(item, options, rules, cache, robots, versions)
         # Without the trees a run's memory stays flat: each is dropped once its rules ran.
         out.append((tree if keep_trees or tree is None else _directives_only(tree), record, found))
     return out

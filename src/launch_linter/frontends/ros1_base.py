@@ -244,8 +244,7 @@ class Ros1Base:
                          "launch tree nested too deeply to follow; the rest is not read")
         except BudgetExceeded as exc:
             self._report("unresolved", self._path, self._element or root,
-                         f"work budget of this launch tree exhausted ({exc.reason}); "
-                         "the rest is not read")
+                         exc.message)
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:

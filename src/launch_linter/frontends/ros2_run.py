@@ -228,8 +228,7 @@ class Ros2Runner:
             self._run(read.actions, scope, frame)
         except BudgetExceeded as exc:
             self._report("unresolved", self._where or Where(absolute, 1, 1),
-                         f"work budget of this launch tree exhausted ({exc.reason}); "
-                         "the rest is not read")
+                         exc.message)
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:

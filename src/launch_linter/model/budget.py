@@ -35,6 +35,11 @@ class BudgetExceeded(Exception):
         super().__init__(reason)
         self.reason = reason
 
+    @property
+    def message(self) -> str:
+        """What a front-end reports where the budget ran out."""
+        return f"work budget of this launch tree exhausted ({self.reason}); the rest is not read"
+
 
 class Budget:
     """Counters for one root file; not shared between files or threads."""

@@ -138,10 +138,10 @@ def package_ros_version(manifest: str) -> int | None:
     """Which ROS a ``package.xml`` builds for: 2 for an ``ament_*`` build type (or
     buildtool), 1 for catkin; None when it does not say (or cannot be read)."""
     try:
-        with open(manifest, "rb") as handle:
-            document = parse_xml(
-                handle.read(MAX_MANIFEST_BYTES), text_tags=("build_type", "buildtool_depend")
-            )
+        document = parse_xml(
+            read_regular_file(manifest, MAX_MANIFEST_BYTES),
+            text_tags=("build_type", "buildtool_depend"),
+        )
     except (OSError, XmlError):
         return None
     build_type: str | None = None
