@@ -106,8 +106,9 @@ class Calls(Expressions):
             local.vars[spec.kwarg.arg] = extra
         for name in [*names, *(a.arg for a in spec.kwonlyargs)]:
             if name not in local.vars:
-                local.vars[name] = function.defaults.get(
-                    name, self.unknown(node, f"argument '{name}' is not given"))
+                # The Unknown (with its excerpt of the source) only for a missing argument.
+                local.vars[name] = (function.defaults[name] if name in function.defaults
+                                    else self.unknown(node, f"argument '{name}' is not given"))
         self.depth += 1
         try:
             if isinstance(function.node, ast.Lambda):

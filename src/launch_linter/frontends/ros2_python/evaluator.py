@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 from launch_linter.frontends.ros2_actions import (
     ACTION_TYPES,
@@ -135,59 +136,74 @@ class Evaluator:
             self.run(statement, env)
 
     def run(self, node: ast.stmt, env: Env) -> None:
-        self.step()
-        if isinstance(node, ast.Expr):
-            self.eval(node.value, env)
-        elif isinstance(node, ast.Assign):
-            value = self.eval(node.value, env)
-            for target in node.targets:
-                self.assign(target, value, env)
-        elif isinstance(node, ast.AnnAssign):
-            if node.value is not None:
-                self.assign(node.target, self.eval(node.value, env), env)
-        elif isinstance(node, ast.AugAssign):
-            self.aug_assign(node, env)
-        elif isinstance(node, ast.Return):
-            raise _Return(None if node.value is None else self.eval(node.value, env))
-        elif isinstance(node, ast.If):
-            self.run_if(node, env)
-        elif isinstance(node, ast.For):
-            self.run_for(node, env)
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            defaults = self.defaults(node.args, env)
-            env.vars[node.name] = FuncVal(node, env, defaults)
-        elif isinstance(node, ast.Import):
-            for alias in node.names:
-                if alias.asname:
-                    env.vars[alias.asname] = ModuleVal(alias.name)
-                else:
-                    top = alias.name.split(".")[0]
-                    env.vars[top] = ModuleVal(top)
-        elif isinstance(node, ast.ImportFrom):
-            module = node.module or ""
-            for alias in node.names:
-                if alias.name != "*":
-                    env.vars[alias.asname or alias.name] = ModuleVal(f"{module}.{alias.name}")
-        elif isinstance(node, ast.Try):
-            self.run_block(node.body, env)
-            self.run_block(node.orelse, env)
-            self.run_block(node.finalbody, env)
-        elif isinstance(node, ast.With):
-            for item in node.items:
-                # ``with open(path) as f``: f.read() is the file's text, read by nobody.
-                if isinstance(item.optional_vars, ast.Name):
-                    value = self.eval(item.context_expr, env)
-                    if isinstance(value, OpenFile):
-                        env.vars[item.optional_vars.id] = value
-            self.run_block(node.body, env)
-        elif isinstance(node, ast.Break):
-            raise _Break
-        elif isinstance(node, ast.Continue):
-            raise _Continue
-        elif isinstance(node, ast.ClassDef):
-            env.vars[node.name] = self.unknown(node, "classes are not interpreted")
-        elif isinstance(node, ast.While):
-            self.not_followed(node, "a while loop is not followed")
+        self.steps += 1
+        if self.steps > MAX_STEPS:
+            raise _OutOfSteps
+        # One look-up by the statement's class instead of a chain of isinstance tests;
+        # statements the evaluator does not model (pass, raise, global ...) do nothing.
+        handler = _STATEMENTS.get(type(node))
+        if handler is not None:
+            handler(self, node, env)
+
+    def _expression_statement(self, node: ast.Expr, env: Env) -> None:
+        self.eval(node.value, env)
+
+    def _assign_statement(self, node: ast.Assign, env: Env) -> None:
+        value = self.eval(node.value, env)
+        for target in node.targets:
+            self.assign(target, value, env)
+
+    def _annotated_assign(self, node: ast.AnnAssign, env: Env) -> None:
+        if node.value is not None:
+            self.assign(node.target, self.eval(node.value, env), env)
+
+    def _return(self, node: ast.Return, env: Env) -> None:
+        raise _Return(None if node.value is None else self.eval(node.value, env))
+
+    def _function_definition(self, node: ast.FunctionDef | ast.AsyncFunctionDef, env: Env
+                             ) -> None:
+        defaults = self.defaults(node.args, env)
+        env.vars[node.name] = FuncVal(node, env, defaults)
+
+    def _import(self, node: ast.Import, env: Env) -> None:
+        for alias in node.names:
+            if alias.asname:
+                env.vars[alias.asname] = ModuleVal(alias.name)
+            else:
+                top = alias.name.split(".")[0]
+                env.vars[top] = ModuleVal(top)
+
+    def _import_from(self, node: ast.ImportFrom, env: Env) -> None:
+        module = node.module or ""
+        for alias in node.names:
+            if alias.name != "*":
+                env.vars[alias.asname or alias.name] = ModuleVal(f"{module}.{alias.name}")
+
+    def _try(self, node: ast.Try, env: Env) -> None:
+        self.run_block(node.body, env)
+        self.run_block(node.orelse, env)
+        self.run_block(node.finalbody, env)
+
+    def _with(self, node: ast.With, env: Env) -> None:
+        for item in node.items:
+            # ``with open(path) as f``: f.read() is the file's text, read by nobody.
+            if isinstance(item.optional_vars, ast.Name):
+                value = self.eval(item.context_expr, env)
+                if isinstance(value, OpenFile):
+                    env.vars[item.optional_vars.id] = value
+        self.run_block(node.body, env)
+
+    def _break(self, node: ast.Break, env: Env) -> None:
+        raise _Break
+
+    def _continue(self, node: ast.Continue, env: Env) -> None:
+        raise _Continue
+
+    def _class_definition(self, node: ast.ClassDef, env: Env) -> None:
+        env.vars[node.name] = self.unknown(node, "classes are not interpreted")
+
+    def _while(self, node: ast.While, env: Env) -> None:
+        self.not_followed(node, "a while loop is not followed")
 
     def not_followed(self, node: ast.stmt, reason: str) -> None:
         """Report a statement skipped while it may start launch actions."""
@@ -329,6 +345,28 @@ class Evaluator:
     def truth(self, value: object) -> bool | None:
         """Defined by :class:`.expressions.Expressions`."""
         raise NotImplementedError
+
+
+_STATEMENTS: dict[type, Callable[[Evaluator, Any, Env], None]] = {
+    ast.Expr: Evaluator._expression_statement,
+    ast.Assign: Evaluator._assign_statement,
+    ast.AnnAssign: Evaluator._annotated_assign,
+    ast.AugAssign: Evaluator.aug_assign,
+    ast.Return: Evaluator._return,
+    ast.If: Evaluator.run_if,
+    ast.For: Evaluator.run_for,
+    ast.FunctionDef: Evaluator._function_definition,
+    ast.AsyncFunctionDef: Evaluator._function_definition,
+    ast.Import: Evaluator._import,
+    ast.ImportFrom: Evaluator._import_from,
+    ast.Try: Evaluator._try,
+    ast.With: Evaluator._with,
+    ast.Break: Evaluator._break,
+    ast.Continue: Evaluator._continue,
+    ast.ClassDef: Evaluator._class_definition,
+    ast.While: Evaluator._while,
+}
+"""What each statement the evaluator models does, by its class."""
 
 
 def _performed(resolver: Callable[[Subs], Value], subs: Subs, node: ast.AST,

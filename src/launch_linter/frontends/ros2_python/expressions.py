@@ -25,10 +25,12 @@ from launch_linter.frontends.ros2_python.values import (
     SubsVal,
     Unknown,
     _as_subs,
+    _OutOfSteps,
     _plain,
 )
 from launch_linter.resolve.bounded import PYTHON_MAX_FORMAT_FIELD, percent_refusal
 from launch_linter.resolve.bounded import PYTHON_MAX_ITEMS as MAX_ITEMS
+from launch_linter.resolve.bounded import PYTHON_MAX_STEPS as MAX_STEPS
 from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
 from launch_linter.resolve.ros2_substitution import Call, Sub, Text, literal
 from launch_linter.resolve.safe_eval import subscript_index
@@ -39,57 +41,61 @@ class Expressions(Evaluator):
 
     # -- expressions ---------------------------------------------------------------------
     def eval(self, node: ast.expr, env: Env) -> object:
-        self.step()
-        if isinstance(node, ast.Constant):
-            if isinstance(node.value, (str, int, float, bool)) or node.value is None:
-                return node.value
+        self.steps += 1
+        if self.steps > MAX_STEPS:
+            raise _OutOfSteps
+        # Constants and names are most expressions: tested first, the rest looked up by
+        # the expression's class.
+        kind = type(node)
+        if kind is ast.Constant:
+            value = node.value  # type: ignore[attr-defined]
+            if isinstance(value, (str, int, float, bool)) or value is None:
+                return value
             return self.unknown(node, "unsupported constant")
-        if isinstance(node, ast.Name):
-            found, value = env.lookup(node.id)
+        if kind is ast.Name:
+            name: str = node.id  # type: ignore[attr-defined]
+            found, value = env.lookup(name)
             if found:
                 return value
-            if node.id == "__file__":
+            if name == "__file__":
                 return self.path
-            if node.id == "__name__":
+            if name == "__name__":
                 return "__launch__"
-            if node.id in BUILTINS:
-                return Builtin(node.id)
-            return self.unknown(node, f"name '{node.id}' is not known here")
-        if isinstance(node, (ast.List, ast.Tuple)):
-            items = self.sequence(node.elts, env, node)
-            if isinstance(items, Unknown):
-                return items
-            return items if isinstance(node, ast.List) else tuple(items)
-        if isinstance(node, ast.Dict):
-            return self.mapping(node, env)
-        if isinstance(node, ast.Attribute):
-            return self.attribute(self.eval(node.value, env), node.attr, node)
-        if isinstance(node, ast.Call):
-            return self.call(node, env)
-        if isinstance(node, ast.BinOp):
-            return self.binary(node.op, self.eval(node.left, env), self.eval(node.right, env),
-                               node)
-        if isinstance(node, ast.JoinedStr):
-            return self.fstring(node, env)
-        if isinstance(node, ast.Compare):
-            return self.compare(node, env)
-        if isinstance(node, ast.BoolOp):
-            return self.boolean(node, env)
-        if isinstance(node, ast.UnaryOp):
-            return self.unary(node, env)
-        if isinstance(node, ast.IfExp):
-            test = self.truth(self.eval(node.test, env))
-            if test is None:
-                return self.unknown(node, "depends on a condition the linter cannot decide")
-            return self.eval(node.body if test else node.orelse, env)
-        if isinstance(node, ast.Subscript):
-            container = self.eval(node.value, env)
-            return self.subscript(container, self.eval(subscript_index(node), env), node)
-        if isinstance(node, (ast.ListComp, ast.GeneratorExp)):
-            return self.comprehension(node, env)
-        if isinstance(node, ast.Lambda):
-            return FuncVal(node, env, self.defaults(node.args, env))
-        return self.unknown(node, f"{type(node).__name__} expressions are not interpreted")
+            if name in BUILTINS:
+                return Builtin(name)
+            return self.unknown(node, f"name '{name}' is not known here")
+        handler = _EXPRESSIONS.get(kind)
+        if handler is None:
+            return self.unknown(node, f"{kind.__name__} expressions are not interpreted")
+        return handler(self, node, env)
+
+    def _sequence_display(self, node: ast.List | ast.Tuple, env: Env) -> object:
+        items = self.sequence(node.elts, env, node)
+        if isinstance(items, Unknown):
+            return items
+        return items if isinstance(node, ast.List) else tuple(items)
+
+    def _attribute(self, node: ast.Attribute, env: Env) -> object:
+        return self.attribute(self.eval(node.value, env), node.attr, node)
+
+    def _call(self, node: ast.Call, env: Env) -> object:
+        return self.call(node, env)
+
+    def _binary(self, node: ast.BinOp, env: Env) -> object:
+        return self.binary(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
+
+    def _conditional(self, node: ast.IfExp, env: Env) -> object:
+        test = self.truth(self.eval(node.test, env))
+        if test is None:
+            return self.unknown(node, "depends on a condition the linter cannot decide")
+        return self.eval(node.body if test else node.orelse, env)
+
+    def _subscript(self, node: ast.Subscript, env: Env) -> object:
+        container = self.eval(node.value, env)
+        return self.subscript(container, self.eval(subscript_index(node), env), node)
+
+    def _lambda(self, node: ast.Lambda, env: Env) -> object:
+        return FuncVal(node, env, self.defaults(node.args, env))
 
     def sequence(self, elements: list[ast.expr], env: Env, node: ast.AST
                  ) -> list[object] | Unknown:
@@ -306,3 +312,24 @@ class Expressions(Evaluator):
     def call(self, node: ast.Call, env: Env) -> object:
         """Defined by :class:`.calls.Calls`."""
         raise NotImplementedError
+
+
+_EXPRESSIONS: dict[type, Callable[[Expressions, Any, Env], object]] = {
+    ast.List: Expressions._sequence_display,
+    ast.Tuple: Expressions._sequence_display,
+    ast.Dict: Expressions.mapping,
+    ast.Attribute: Expressions._attribute,
+    ast.Call: Expressions._call,
+    ast.BinOp: Expressions._binary,
+    ast.JoinedStr: Expressions.fstring,
+    ast.Compare: Expressions.compare,
+    ast.BoolOp: Expressions.boolean,
+    ast.UnaryOp: Expressions.unary,
+    ast.IfExp: Expressions._conditional,
+    ast.Subscript: Expressions._subscript,
+    ast.ListComp: Expressions.comprehension,
+    ast.GeneratorExp: Expressions.comprehension,
+    ast.Lambda: Expressions._lambda,
+}
+"""How each expression the evaluator models (other than constants and names) is worked
+out, by its class."""
