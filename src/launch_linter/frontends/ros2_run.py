@@ -6,7 +6,9 @@ from __future__ import annotations
 
 import os
 import shlex
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
@@ -33,7 +35,13 @@ from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
 from launch_linter.model.robot import DescriptionSource, NodeRecord
-from launch_linter.model.transform import Condition, ConditionLiteral, LaunchFormat, StaticTransform
+from launch_linter.model.transform import (
+    ALWAYS,
+    Condition,
+    ConditionLiteral,
+    LaunchFormat,
+    StaticTransform,
+)
 from launch_linter.resolve.ros2_substitution import (
     Call,
     Ros2Scope,
@@ -80,6 +88,8 @@ class _Scope:
     env: dict[str, str]
     condition: Condition
     """The presence condition under which this scope was opened."""
+    resolvers: dict[str, Ros2Scope] = field(default_factory=dict)
+    """What substitutions see here, by the file being run: made once, not per value."""
 
     def copy(self, condition: Condition) -> _Scope:
         return _Scope(dict(self.configs), dict(self.env), condition)
@@ -263,18 +273,29 @@ class Ros2Runner:
         return read
 
     # -- resolution --------------------------------------------------------------------
-    def _substitution_scope(self, scope: _Scope, frame: _Frame) -> Ros2Scope:
+    def _anonymous(self, name: str) -> str:
         anon = self.budget.anon
+        if name not in anon:
+            anon[name] = f"{name}_anon{len(anon) + 1}"
+        return anon[name]
 
-        def anonymous(name: str) -> str:
-            if name not in anon:
-                anon[name] = f"{name}_anon{len(anon) + 1}"
-            return anon[name]
-
-        return Ros2Scope(scope.configs, scope.env, self.options.packages.find, anonymous,
-                         frame.filename, self.work)
+    def _substitution_scope(self, scope: _Scope, frame: _Frame) -> Ros2Scope:
+        made = scope.resolvers.get(frame.filename)
+        # The scope's own mappings, read when a value is resolved: one Ros2Scope serves
+        # every value resolved in this scope and file (unless a mapping was replaced).
+        if made is None or made.configs is not scope.configs or made.env is not scope.env:
+            made = Ros2Scope(scope.configs, scope.env, self.options.packages.find,
+                             self._anonymous, frame.filename, self.work)
+            scope.resolvers[frame.filename] = made
+        return made
 
     def _resolve(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> Value:
+        if len(subs) == 1 and type(subs[0]) is Text:
+            # Literal text, most values: what the resolver would give, without it.
+            text = subs[0].text
+            return (text,) if text else ()
+        if not subs:
+            return ()
         try:
             return resolve(subs, self._substitution_scope(scope, frame))
         except SubstitutionError as exc:
@@ -285,7 +306,7 @@ class Ros2Runner:
                    where: Where) -> Condition | None:
         """The action's own presence condition; None when it is skipped."""
         if predicate is None:
-            return Condition()
+            return ALWAYS
         value = self._resolve(predicate.expression, scope, frame, where)
         try:
             truth = to_bool(value)
@@ -329,31 +350,22 @@ class Ros2Runner:
         own = self._condition(action.condition, scope, frame, action.where)
         if own is None:
             return
-        condition = frame.condition & own
-        here = _Frame(frame.filename, frame.launch_format, frame.chain, frame.included_from,
-                      condition)
-        if isinstance(action, DeclareArg):
-            self._declare(action, scope, here)
-        elif isinstance(action, SetVar):
-            self._let(action, scope, here)
-        elif isinstance(action, SetEnv):
-            self._set_env(action, scope, here)
-        elif isinstance(action, PushNamespace):
-            self._push_namespace(action, scope, here)
-        elif isinstance(action, Group):
-            self._group(action, scope, here)
-        elif isinstance(action, Include):
-            self._include(action, scope, here)
-        elif isinstance(action, RunNode):
-            self._node(action, scope, here)
-        elif isinstance(action, LoadComponents):
-            for component in action.components:
-                self._component(component, scope, here)
-        elif isinstance(action, Deferred):
-            expanded = action.expand(
-                lambda subs: self._resolve(subs, scope, here, action.where)
-            )
-            self._run(list(expanded), scope, here)
+        # Most actions have no condition of their own: they run in the frame as it is.
+        here = frame if not own.literals else _Frame(
+            frame.filename, frame.launch_format, frame.chain, frame.included_from,
+            frame.condition & own,
+        )
+        handler = _ACTIONS.get(type(action))
+        if handler is not None:
+            handler(self, action, scope, here)
+
+    def _components(self, action: LoadComponents, scope: _Scope, frame: _Frame) -> None:
+        for component in action.components:
+            self._component(component, scope, frame)
+
+    def _deferred(self, action: Deferred, scope: _Scope, frame: _Frame) -> None:
+        expanded = action.expand(lambda subs: self._resolve(subs, scope, frame, action.where))
+        self._run(list(expanded), scope, frame)
 
     def _name(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where, what: str
               ) -> str | None:
@@ -505,3 +517,21 @@ class Ros2Runner:
     def _node(self, action: RunNode, scope: _Scope, frame: _Frame) -> None:
         """Defined by :class:`.ros2_launch.Ros2Loader`."""
         raise NotImplementedError
+
+
+def _run_node(runner: Ros2Runner, action: RunNode, scope: _Scope, frame: _Frame) -> None:
+    runner._node(action, scope, frame)  # the subclass's, looked up on the runner
+
+
+_ACTIONS: dict[type, Callable[[Ros2Runner, Any, _Scope, _Frame], None]] = {
+    DeclareArg: Ros2Runner._declare,
+    SetVar: Ros2Runner._let,
+    SetEnv: Ros2Runner._set_env,
+    PushNamespace: Ros2Runner._push_namespace,
+    Group: Ros2Runner._group,
+    Include: Ros2Runner._include,
+    RunNode: _run_node,
+    LoadComponents: Ros2Runner._components,
+    Deferred: Ros2Runner._deferred,
+}
+"""What running each kind of action does (an ``Unfollowed`` is reported before)."""
