@@ -16,6 +16,7 @@ one resolver serves every format. What cannot be known statically becomes a
 from __future__ import annotations
 
 import os
+import re
 import shlex
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -112,6 +113,9 @@ def written(subs: Subs) -> str:
 
 # -- parsing --------------------------------------------------------------------------
 
+_TEMPLATE_SPECIAL = re.compile(r"\$\(|\\")
+"""Where plain text stops in a template: a substitution or a backslash."""
+
 
 class _Parser:
     def __init__(self, source: str) -> None:
@@ -124,21 +128,29 @@ class _Parser:
     def template(self) -> Subs:
         parts: list[Sub] = []
         text: list[str] = []
-        while self.pos < len(self.source):
-            if self.source.startswith("$(", self.pos):
+        source, end = self.source, len(self.source)
+        while self.pos < end:
+            # Plain text up to the next substitution or backslash is taken whole.
+            found = _TEMPLATE_SPECIAL.search(source, self.pos)
+            stop = end if found is None else found.start()
+            if stop > self.pos:
+                text.append(source[self.pos : stop])
+                self.pos = stop
+                if found is None:
+                    break
+            if source.startswith("$(", self.pos):
                 if text:
                     parts.append(Text("".join(text)))
                     text.clear()
                 parts.append(self.call(0))
                 continue
-            char = self.source[self.pos]
-            if char == "\\" and self.pos + 1 < len(self.source) and (
-                self.source[self.pos + 1] != "\n"  # launch's r'\\(.)' stops at a newline
-            ):
-                text.append(self.source[self.pos + 1])
+            # A backslash: it escapes the next character, except a newline (launch's
+            # r'\\(.)' stops at one) and the end of the text, where it stays.
+            if self.pos + 1 < end and source[self.pos + 1] != "\n":
+                text.append(source[self.pos + 1])
                 self.pos += 2
                 continue
-            text.append(char)
+            text.append("\\")
             self.pos += 1
         if text:
             parts.append(Text("".join(text)))
@@ -219,6 +231,9 @@ def parse(text: str) -> Subs:
     """Parse an attribute value; raise :class:`SubstitutionSyntaxError` if launch would."""
     if len(text) > MAX_TEXT:
         raise SubstitutionSyntaxError(f"value longer than {MAX_TEXT} characters", 0)
+    if "$(" not in text and "\\" not in text:
+        # Literal text, most attribute values: one piece, as the parser would give.
+        return literal(text)
     return _Parser(text).template()
 
 
