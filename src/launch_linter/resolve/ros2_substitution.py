@@ -115,6 +115,12 @@ def written(subs: Subs) -> str:
 
 _TEMPLATE_SPECIAL = re.compile(r"\$\(|\\")
 """Where plain text stops in a template: a substitution or a backslash."""
+_ARGUMENT_SPECIAL = {
+    None: re.compile(r"""[ )'"(\\$]"""),
+    "'": re.compile(r"['\\]|\$\("),
+    '"': re.compile(r'["\\]|\$\('),
+}
+"""Where plain text stops in a bare, single-quoted or double-quoted argument."""
 
 
 class _Parser:
@@ -190,33 +196,41 @@ class _Parser:
         """One argument of a substitution: a quoted text, or a bare word that ends at a
         space or the closing parenthesis. Both may hold nested substitutions and ``\\``
         escapes."""
+        source, end = self.source, len(self.source)
         quote = None
-        if self.pos < len(self.source) and self.source[self.pos] in "'\"":
-            quote = self.source[self.pos]
+        if self.pos < end and source[self.pos] in "'\"":
+            quote = source[self.pos]
             self.pos += 1
+        special = _ARGUMENT_SPECIAL[quote]
         parts: list[Sub] = []
         text: list[str] = []
         while True:
-            if self.pos >= len(self.source):
+            # Plain text up to the next character that matters is taken whole.
+            found = special.search(source, self.pos)
+            stop = end if found is None else found.start()
+            if stop > self.pos:
+                text.append(source[self.pos : stop])
+                self.pos = stop
+            if self.pos >= end:
                 if quote is not None:
                     raise self.error(f"quoted argument is not closed by {quote}")
                 break
-            char = self.source[self.pos]
+            char = source[self.pos]
             if quote is None and char in " )":
                 break
             if char == quote:
                 self.pos += 1
                 break
-            if self.source.startswith("$(", self.pos):
+            if source.startswith("$(", self.pos):
                 if text:
                     parts.append(Text("".join(text)))
                     text.clear()
                 parts.append(self.call(depth + 1))
                 continue
-            if char == "\\" and self.pos + 1 < len(self.source) and (
-                self.source[self.pos + 1] != "\n"  # launch's r'\\(.)' stops at a newline
+            if char == "\\" and self.pos + 1 < end and (
+                source[self.pos + 1] != "\n"  # launch's r'\\(.)' stops at a newline
             ):
-                text.append(self.source[self.pos + 1])
+                text.append(source[self.pos + 1])
                 self.pos += 2
                 continue
             if quote is None and char in "'\"($":
@@ -226,6 +240,7 @@ class _Parser:
         if text:
             parts.append(Text("".join(text)))
         return tuple(parts)
+
 
 def parse(text: str) -> Subs:
     """Parse an attribute value; raise :class:`SubstitutionSyntaxError` if launch would."""
