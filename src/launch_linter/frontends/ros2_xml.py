@@ -70,6 +70,8 @@ class _Reader:
     def __init__(self, path: str) -> None:
         self.path = path
         self.problems: list[Problem] = []
+        self.parsed: dict[str, Subs] = {}
+        """Each attribute text parsed once: ``$(var use_sim_time)`` recurs in a file."""
 
     def where(self, entity: Entity) -> Where:
         return Where(self.path, entity.line, entity.column)
@@ -81,8 +83,12 @@ class _Reader:
         text = entity.attrs.get(attribute)
         if text is None:
             return None
+        known = self.parsed.get(text)
+        if known is not None:
+            return known
         try:
-            return parse(text)
+            subs = self.parsed[text] = parse(text)
+            return subs
         except SubstitutionSyntaxError as exc:
             self.report("roslaunch_error", entity, f"{attribute}: {exc}")
             return (Opaque(text, f"not a valid substitution: {exc}"),)

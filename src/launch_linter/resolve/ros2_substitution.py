@@ -115,6 +115,8 @@ def written(subs: Subs) -> str:
 
 _TEMPLATE_SPECIAL = re.compile(r"\$\(|\\")
 """Where plain text stops in a template: a substitution or a backslash."""
+_CALL_NAME = re.compile(r"[\w-]*")
+"""A substitution's name: letters, digits (str.isalnum, as \\w), '_' and '-'."""
 _ARGUMENT_SPECIAL = {
     None: re.compile(r"""[ )'"(\\$]"""),
     "'": re.compile(r"['\\]|\$\("),
@@ -168,10 +170,8 @@ class _Parser:
         start = self.pos
         self.pos += 2
         name_start = self.pos
-        while self.pos < len(self.source) and (
-            self.source[self.pos].isalnum() or self.source[self.pos] in "_-"
-        ):
-            self.pos += 1
+        found = _CALL_NAME.match(self.source, self.pos)  # always matches, maybe empty
+        self.pos = found.end() if found is not None else self.pos
         name = self.source[name_start : self.pos]
         if not name or not name[0].isalpha():
             raise self.error("expected a substitution name after '$('")
