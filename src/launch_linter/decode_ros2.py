@@ -69,6 +69,8 @@ _STRTOD = re.compile(
     re.VERBOSE | re.IGNORECASE,
 )
 
+_EXPONENT = re.compile(r"[eEpP]")
+
 
 def stod(text: str) -> tuple[float | None, str]:
     """``std::stod``: the value (None when it throws) and ``ok``, ``partial`` (trailing
@@ -90,7 +92,7 @@ def stod(text: str) -> tuple[float | None, str]:
         return None, "range"
     if match.group("dec") is not None or match.group("hex") is not None:
         # The hex group excludes its 0x prefix, so only digits and the point remain.
-        mantissa = re.split(r"[eEpP]", match.group("dec") or match.group("hex"))[0]
+        mantissa = _EXPONENT.split(match.group("dec") or match.group("hex"), 1)[0]
         nonzero = any(c not in "0." for c in mantissa)
         tiny = value != 0.0 and abs(value) < sys.float_info.min
         if math.isinf(value) or (nonzero and value == 0.0) or tiny:

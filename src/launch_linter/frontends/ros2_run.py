@@ -203,10 +203,15 @@ class Ros2Runner:
         self._where: Where | None = None
         """The action being run (where the work budget ran out, if it does)."""
         self.root_display = ""
+        self._displayed: dict[str, str] = {}
 
     # -- diagnostics -------------------------------------------------------------------
     def _display(self, path: str) -> str:
-        return self.options.display_path(path)
+        # Every record and problem of a file names it: worked out once per path.
+        shown = self._displayed.get(path)
+        if shown is None:
+            shown = self._displayed[path] = self.options.display_path(path)
+        return shown
 
     def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
         self.problems.append(Problem(

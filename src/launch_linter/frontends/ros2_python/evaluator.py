@@ -56,6 +56,8 @@ class Evaluator:
     call_sites: list[ast.AST] = field(default_factory=list)
     """Calls of the file's own functions being run, outermost first."""
     lines: list[str] = field(default_factory=list)
+    ascii: bool = False
+    """Whether the source is ASCII: then a column is a character offset."""
     scopes: list[Env] = field(default_factory=list)
     """Every scope made, emptied at the end: a function and the scope it was defined in
     refer to each other, a cycle that would keep the file's syntax tree alive until the
@@ -88,16 +90,26 @@ class Evaluator:
         """The first characters of the source text of ``node``, on one line."""
         if not self.lines:
             self.lines = self.source.splitlines(keepends=True)
+            self.ascii = self.source.isascii()
         first = getattr(node, "lineno", 0) - 1
         last = getattr(node, "end_lineno", None)
         if not 0 <= first < len(self.lines) or last is None:
             return type(node).__name__
-        # Columns are UTF-8 byte offsets; three lines are plenty for a short excerpt.
-        chunk = [line.encode("utf-8") for line in self.lines[first:min(last, first + 3)]]
-        if last - 1 < first + 3:
-            chunk[-1] = chunk[-1][:getattr(node, "end_col_offset", None)]
-        chunk[0] = chunk[0][getattr(node, "col_offset", 0):]
-        text = " ".join(b"".join(chunk).decode("utf-8", "replace").split())
+        # Columns are UTF-8 byte offsets (character offsets too in ASCII text, most
+        # files); three lines are plenty for a short excerpt.
+        text: str
+        if self.ascii:
+            lines = self.lines[first:min(last, first + 3)]
+            if last - 1 < first + 3:
+                lines[-1] = lines[-1][:getattr(node, "end_col_offset", None)]
+            lines[0] = lines[0][getattr(node, "col_offset", 0):]
+            text = " ".join("".join(lines).split())
+        else:
+            chunk = [line.encode("utf-8") for line in self.lines[first:min(last, first + 3)]]
+            if last - 1 < first + 3:
+                chunk[-1] = chunk[-1][:getattr(node, "end_col_offset", None)]
+            chunk[0] = chunk[0][getattr(node, "col_offset", 0):]
+            text = " ".join(b"".join(chunk).decode("utf-8", "replace").split())
         return text if len(text) <= 120 else text[:117] + "..."
 
     def text_value(self, subs: Subs, node: ast.AST) -> object:
