@@ -18,6 +18,7 @@ from typing import Any
 
 from launch_linter.frontends.ros2_actions import FileRead, Problem
 from launch_linter.frontends.ros2_xml import Entity, actions_of
+from launch_linter.model.launch import DIRECTIVE_MARKER
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.xml_safe import MAX_ELEMENTS
 
@@ -134,7 +135,9 @@ def read_yaml(path: str, data: bytes) -> FileRead:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         return _error(1, 1, f"not UTF-8 text: {exc.reason}")
-    comments = _comments(text)
+    # Comments only place suppression directives: not scanned for (a Python loop over
+    # every character) in the many files that hold none.
+    comments = _comments(text) if DIRECTIVE_MARKER in text else ()
     try:
         root = yaml.compose(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     except yaml.MarkedYAMLError as exc:
