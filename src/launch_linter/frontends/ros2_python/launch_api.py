@@ -54,6 +54,12 @@ from launch_linter.resolve.value import Value
 
 # -- the interpreter -----------------------------------------------------------------------
 
+_OS_CALLS = frozenset({
+    "os.path.join", "os.path.dirname", "os.path.abspath", "os.path.realpath",
+    "os.path.normpath", "os.getenv", "os.environ.get", "pathlib.Path", "os.path.expanduser",
+})
+"""The ``os``/``pathlib`` functions the interpreter models (:meth:`.Calls.os_call`)."""
+
 
 def _substitution(kind: str, arity: int) -> Callable[..., object]:
     """A launch substitution class, as a method of :class:`Interpreter`."""
@@ -74,14 +80,12 @@ class Interpreter(Calls):
     # -- the launch library ---------------------------------------------------------------
     def library(self, module: ModuleVal, args: list[object], kwargs: dict[str, object],
                 node: ast.Call) -> object:
-        dotted, name = module.dotted, module.last
-        if dotted in ("os.path.join", "os.path.dirname", "os.path.abspath", "os.path.realpath",
-                      "os.path.normpath", "os.getenv", "os.environ.get", "pathlib.Path",
-                      "os.path.expanduser"):
+        dotted, name, root = module.dotted, module.last, module.root
+        if dotted in _OS_CALLS:
             return self.os_call(dotted, args, node)
-        if module.root == "ament_index_python":
+        if root == "ament_index_python":
             return self.ament(name, args, node)
-        if module.root not in LAUNCH_ROOTS:
+        if root not in LAUNCH_ROOTS:
             return self.unknown(node, f"calls '{dotted}', which the linter does not model")
         if name == "Parameter" and ".substitutions" in dotted:
             # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
@@ -106,10 +110,11 @@ class Interpreter(Calls):
 
     def launch_Node(self, args: list[object], kwargs: dict[str, object], node: ast.Call
                     ) -> object:
-        def pick(*names: str) -> object:
-            return next((kwargs[n] for n in names if n in kwargs), None)
+        def pick(name: str, legacy: str) -> object:
+            """The keyword's value, else its Foxy-era name's (None when neither is given)."""
+            return kwargs[name] if name in kwargs else kwargs.get(legacy)
 
-        arguments = pick("arguments")
+        arguments = kwargs.get("arguments")
         items: tuple[Subs, ...] | None
         unknown = ""
         if arguments is None:
@@ -135,14 +140,14 @@ class Interpreter(Calls):
         return RunNode(
             where=self.where(node),
             condition=self.condition(kwargs, node),
-            package=self.optional_subs(pick("package"), node, "package"),
+            package=self.optional_subs(kwargs.get("package"), node, "package"),
             executable=self.optional_subs(executable, node, "executable"),
             name=self.optional_subs(pick("name", "node_name"), node, "name"),
             namespace=self.optional_subs(pick("namespace", "node_namespace"), node, "namespace"),
             arguments=items,
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
-            parameters=self.parameters(pick("parameters"), node),
+            parameters=self.parameters(kwargs.get("parameters"), node),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
