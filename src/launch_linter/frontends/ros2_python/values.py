@@ -12,7 +12,6 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import cached_property
 from typing import Any
 
 from launch_linter.frontends.ros2_actions import Component, Predicate
@@ -104,13 +103,11 @@ class ModuleVal:
 
     dotted: str
 
-    @cached_property
+    @property
     def root(self) -> str:
-        # Kept in the instance's __dict__ (a frozen dataclass still has one): an imported
-        # name is one value, called many times.
-        return self.dotted.split(".")[0]
+        return self.dotted.split(".", 1)[0]
 
-    @cached_property
+    @property
     def last(self) -> str:
         return self.dotted.rsplit(".", 1)[-1]
 
