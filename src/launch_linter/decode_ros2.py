@@ -70,11 +70,15 @@ _STRTOD = re.compile(
 )
 
 _EXPONENT = re.compile(r"[eEpP]")
+_SHORT_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)")
 
 
 def stod(text: str) -> tuple[float | None, str]:
     """``std::stod``: the value (None when it throws) and ``ok``, ``partial`` (trailing
     text ignored), ``invalid`` (no number: invalid_argument) or ``range`` (out_of_range)."""
+    if len(text) <= 20 and _SHORT_DECIMAL.fullmatch(text):
+        # Most arguments: a short plain decimal, never out of range, read as Python does.
+        return float(text), "ok"
     stripped = text.lstrip(" \t\n\v\f\r")
     match = _STRTOD.match(stripped)
     if match is None:
