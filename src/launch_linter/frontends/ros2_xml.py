@@ -274,10 +274,12 @@ def _schema_entity(entity: Entity, xml: bool) -> SchemaEntity:
         # YAML nests entities as list-valued keys, and actions under ``children``.
         nested = [item for items in entity.lists.values() for item in items]
         nested.extend(entity.children)
-    names = (*entity.attrs, *entity.other_keys)
+    # An entity's attribute names are distinct; only YAML's other keys may repeat them.
+    names = (tuple(dict.fromkeys((*entity.attrs, *entity.other_keys))) if entity.other_keys
+             else tuple(entity.attrs))
     return SchemaEntity(
-        entity.tag, entity.line, entity.column, tuple(dict.fromkeys(names)),
-        tuple(_schema_entity(child, xml) for child in nested),
+        entity.tag, entity.line, entity.column, names,
+        tuple([_schema_entity(child, xml) for child in nested]),
     )
 
 
