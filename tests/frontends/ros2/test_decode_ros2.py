@@ -49,6 +49,13 @@ def kinds(words: str | list[str]) -> list[str]:
     ("1e400", (None, "range")),
     ("1e-400", (None, "range")),
     ("0e-999", (0.0, "ok")),
+    # Short plain decimals (read directly) and what looks like one but is not.
+    ("1.", (1.0, "ok")),
+    ("+.25", (0.25, "ok")),
+    ("-0", (-0.0, "ok")),
+    ("0.000000000000000001", (1e-18, "ok")),
+    ("1..5", (1.0, "partial")),
+    ("1 ", (1.0, "partial")),
 ])
 def test_stod(word: str, expected: tuple[float | None, str]) -> None:
     assert stod(word) == expected

@@ -80,6 +80,32 @@ def test_backslash_escapes_a_dollar() -> None:
     assert parse(r"cost \$(not a call)") == (Text("cost $(not a call)"),)
 
 
+@pytest.mark.parametrize(("source", "expected"), [
+    # A backslash stays before a newline and at the end (launch's r'\\(.)').
+    ("a\\\nb", (Text("a\\\nb"),)),
+    ("a\\", (Text("a\\"),)),
+    ("x$(env \"A B\" c)y$", (Text("x"), Call("env", ((Text("A B"),), (Text("c"),)),
+                                            '$(env "A B" c)'), Text("y$"))),
+    ("$(var 'a\\'b')", (Call("var", ((Text("a'b"),),), "$(var 'a\\'b')"),)),
+    ("$(var a\\ b)", (Call("var", ((Text("a b"),),), "$(var a\\ b)"),)),
+    ("$(find-pkg-share \u00e9_1)", (Call("find-pkg-share", ((Text("\u00e9_1"),),),
+                                          "$(find-pkg-share \u00e9_1)"),)),
+])
+def test_text_runs_escapes_and_quotes(source: str, expected: tuple[object, ...]) -> None:
+    # Plain text is taken in runs up to the next '$(' or backslash (or, in an argument,
+    # the next character that matters): the result is the character-by-character one.
+    assert parse(source) == expected
+
+
+@pytest.mark.parametrize(("source", "position"), [
+    ("$(var a'b)", 7), ("$(var $x)", 6), ("$(var 'open", 11),
+])
+def test_syntax_errors_say_where(source: str, position: int) -> None:
+    with pytest.raises(SubstitutionSyntaxError) as raised:
+        parse(source)
+    assert raised.value.position == position
+
+
 @pytest.mark.parametrize("source", ["$(var x", "$(var 'x)", "$()", "$(var x(y)"])
 def test_malformed_substitutions_are_syntax_errors(source: str) -> None:
     with pytest.raises(SubstitutionSyntaxError):
