@@ -183,11 +183,14 @@ def parse_xml(
     data: bytes,
     text_tags: Collection[str] = (),
     collect: Collection[str] = (),
+    directives: bool = True,
 ) -> XmlDocument:
     """Parse ``data`` into an :class:`XmlDocument`, or raise :class:`XmlError`.
 
     ``text_tags``: elements whose character data is kept in ``Element.text``.
     ``collect``: tags whose elements are also listed in ``XmlDocument.collected``.
+    ``directives``: whether comments and element lines are kept (they only serve
+    suppression directives; a caller that knows there are none saves their cost).
     """
     if len(data) > MAX_BYTES:
         raise XmlError(f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit")
@@ -199,6 +202,7 @@ def parse_xml(
     comments: list[tuple[int, str]] = []
     element_lines: list[int] = []
     collected: list[Element] = []
+    count = 0
     line_of = element_lines.append
     push = stack.append
     pop = stack.pop
@@ -212,9 +216,12 @@ def parse_xml(
             top.text += text[: MAX_TEXT - len(top.text)]
 
     def start(tag: str, attrs: dict[str, str]) -> None:
+        nonlocal count
+        count += 1
         line = parser.CurrentLineNumber
         element = Element(tag, attrs, line, parser.CurrentColumnNumber + 1)
-        line_of(line)
+        if directives:
+            line_of(line)
         if stack:
             if len(stack) >= MAX_DEPTH:
                 raise XmlError(f"elements nested deeper than {MAX_DEPTH} levels",
@@ -222,7 +229,7 @@ def parse_xml(
             stack[-1].children.append(element)
         else:
             roots.append(element)
-        if len(element_lines) > MAX_ELEMENTS:
+        if count > MAX_ELEMENTS:
             raise XmlError(f"more than {MAX_ELEMENTS} elements", line, element.column)
         if tag in collect:
             collected.append(element)
@@ -261,7 +268,8 @@ def parse_xml(
 
     parser.StartElementHandler = start
     parser.EndElementHandler = end
-    parser.CommentHandler = comment
+    if directives:
+        parser.CommentHandler = comment
     parser.EntityDeclHandler = entity_decl
     parser.AttlistDeclHandler = attlist_decl
     parser.ExternalEntityRefHandler = external_ref
