@@ -308,9 +308,9 @@ class Ros1Tags(Ros1Base):
     def _remap(self, element: Element, context: _Context) -> None:
         if self._condition(element, context) is None:
             return
-        ends = [self._required(element, a, context) for a in ("from", "to")]
-        texts = [resolved_text(v) if v is not None else None for v in ends]
-        for text in texts:
+        ends = (self._required(element, "from", context), self._required(element, "to", context))
+        for value in ends:
+            text = None if value is None else resolved_text(value)
             if text is None:
                 continue
             name = _canonical_name(text)
