@@ -13,10 +13,11 @@ from collections.abc import Callable, Sequence
 from types import ModuleType
 
 from launch_linter import __version__
-from launch_linter.commands import check, explain, rules, transforms
 from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError, check_numbers
 
-CORE_COMMANDS = (check, transforms, rules, explain)
+CORE_COMMANDS = ("check", "transforms", "rules", "explain")
+"""The core commands, in help order; their modules (which import the engine) are
+imported only when a parser is built for them, so ``--version`` alone imports none."""
 
 _EDGE_PACKAGES = (
     "launch_linter.mining",
@@ -41,6 +42,12 @@ def _edge_commands() -> list[ModuleType]:
     return [mine, generate, evaluate, graph]
 
 
+def _core_commands() -> list[ModuleType]:
+    from launch_linter.commands import check, explain, rules, transforms
+
+    return [check, transforms, rules, explain]
+
+
 def _core_only(argv: Sequence[str] | None) -> bool:
     """Whether the command line names a core command (or asks only for the version): then
     the edge commands' parsers, and the libraries their modules import, are not needed,
@@ -49,7 +56,7 @@ def _core_only(argv: Sequence[str] | None) -> bool:
     words = [a for a in args if not a.startswith("-")]
     if not words:
         return args == ["--version"]
-    return words[0] in {m.__name__.rsplit(".", 1)[1] for m in CORE_COMMANDS}
+    return words[0] in CORE_COMMANDS
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
@@ -60,8 +67,10 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"launch-linter {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    if argv is not None and list(argv) == ["--version"]:
+        return parser  # argparse prints the version and exits before any command is read
     edges = [] if argv is not None and _core_only(argv) else _edge_commands()
-    for module in (*CORE_COMMANDS, *edges):
+    for module in (*_core_commands(), *edges):
         module.add_parser(subparsers)
     return parser
 

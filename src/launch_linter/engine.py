@@ -15,7 +15,6 @@ from launch_linter.discovery import (
     InputFile,
     discover,
 )
-from launch_linter.fix import with_located_fixes
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
@@ -396,6 +395,19 @@ def _lint_alone(
     return out
 
 
+def _with_located_fixes(
+    diagnostics: Sequence[Diagnostic], distro: str | None,
+    sources: dict[str, bytes] | None = None,
+) -> tuple[Diagnostic, ...]:
+    """``fix.with_located_fixes``, imported only when a finding carries a fix: locating
+    edits (with ``ast`` and ``difflib``) is start-up time a run without one never needs."""
+    if all(d.fix is None for d in diagnostics):
+        return tuple(diagnostics)
+    from launch_linter.fix import with_located_fixes
+
+    return with_located_fixes(diagnostics, distro, sources)
+
+
 def lint_files(
     inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool = True
 ) -> LintResult:
@@ -422,7 +434,7 @@ def lint_files(
     records = tuple(record for _, record, _ in linted)
     finished = finish_diagnostics(trees, diagnostics.values(), options)
     return LintResult(
-        records, trees if keep_trees else (), with_located_fixes(finished, options.ros_distro)
+        records, trees if keep_trees else (), _with_located_fixes(finished, options.ros_distro)
     )
 
 
@@ -453,7 +465,7 @@ def lint_text(
     load = load_options_for(item, options, cache)
     tree = load_tree(item.path, load, text.encode("utf-8"))
     found = check_tree(tree, selected_rules(options), options)
-    diagnostics = with_located_fixes(
+    diagnostics = _with_located_fixes(
         finish_diagnostics((tree,), found, options),
         options.ros_distro,
         {path: text.encode("utf-8")},
