@@ -59,8 +59,15 @@ def _core_only(argv: Sequence[str] | None) -> bool:
     return words[0] in CORE_COMMANDS
 
 
+def _named_command(argv: Sequence[str]) -> str | None:
+    """The core command that ``argv`` names, if any."""
+    words = [a for a in argv if not a.startswith("-")]
+    return words[0] if words and words[0] in CORE_COMMANDS else None
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
-    """The parser for ``argv`` (all commands unless it names a core command)."""
+    """The parser for ``argv``: that of the core command it names (the others' parsers
+    are start-up time for nothing), else every command's."""
     parser = argparse.ArgumentParser(
         prog="launch-linter",
         description="Find mistakes in the static transforms of ROS launch files.",
@@ -69,8 +76,13 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
     if argv is not None and list(argv) == ["--version"]:
         return parser  # argparse prints the version and exits before any command is read
-    edges = [] if argv is not None and _core_only(argv) else _edge_commands()
-    for module in (*_core_commands(), *edges):
+    named = _named_command(argv) if argv is not None else None
+    if named is not None:
+        commands = [m for m in _core_commands() if m.__name__.rsplit(".", 1)[1] == named]
+    else:
+        edges = [] if argv is not None and _core_only(argv) else _edge_commands()
+        commands = [*_core_commands(), *edges]
+    for module in commands:
         module.add_parser(subparsers)
     return parser
 
