@@ -419,23 +419,31 @@ def lint_files(
     else:
         linted = _lint_chunk(inputs, options, {}, keep_trees)
     trees = tuple(tree for tree, _, _ in linted if tree is not None)
-    # A file linted on its own and also included by another input is reported once: the
-    # same place, rule and message found from two roots (or under two spellings of its
-    # path) is one finding.
+    records = tuple(record for _, record, _ in linted)
+    unique = _deduplicated(found for _, _, found in linted)
+    # The per-file lists go before the findings are finished and their fixes located, so
+    # that the peak memory of a large run holds each finding in one list, not in several.
+    del linted
+    finished = finish_diagnostics(trees, unique, options)
+    return LintResult(
+        records, trees if keep_trees else (), _with_located_fixes(finished, options.ros_distro)
+    )
+
+
+def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
+    """The findings of every file, each once: a file linted on its own and also included
+    by another input is reported once (the same place, rule and message found from two
+    roots, or under two spellings of its path, is one finding)."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
-    for _, _, found in linted:
-        for diagnostic in found:
+    for diagnostics_of_file in found:
+        for diagnostic in diagnostics_of_file:
             where = real.get(diagnostic.path)
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
             key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
             diagnostics.setdefault(key, diagnostic)
-    records = tuple(record for _, record, _ in linted)
-    finished = finish_diagnostics(trees, diagnostics.values(), options)
-    return LintResult(
-        records, trees if keep_trees else (), _with_located_fixes(finished, options.ros_distro)
-    )
+    return list(diagnostics.values())
 
 
 def lint_paths(
