@@ -122,10 +122,10 @@ def tune_collector() -> None:
     What a run allocates lives as long as the run (modules, parsers, beliefs) or as long as
     one file, and reference counting frees a file's trees (ROS 1 XML leaves no reference
     cycles at all), so the collector's frequent young-generation passes find almost
-    nothing and its full passes re-scan everything imported. Freezing what exists after start-up and collecting
-    the young generation every 50,000 allocations instead of 700 saves about a tenth of
-    ``check``'s CPU on the corpus. Only the console command does this: :func:`main` is
-    also called by programs and tests that keep their own collector settings.
+    nothing and its full passes re-scan everything imported. Freezing what exists after
+    start-up and collecting the young generation every 50,000 allocations instead of 700
+    saves about a tenth of ``check``'s CPU on the corpus. Only the console command does
+    this: :func:`main` is also called by programs and tests that keep their own settings.
     """
     gc.freeze()
     gc.set_threshold(50_000, 20, 20)
