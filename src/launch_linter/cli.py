@@ -7,6 +7,7 @@ exit statuses and :class:`UsageError` live in the leaf module ``commands.common`
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import sys
 from collections.abc import Callable, Sequence
@@ -113,3 +114,24 @@ def main(argv: Sequence[str] | None = None) -> int:
             "(set LAUNCH_LINTER_DEBUG=1 for the traceback, and please report it)\n"
         )
         return EXIT_USAGE
+
+
+def tune_collector() -> None:
+    """Let the garbage collector run far less often during a run of the command.
+
+    What a run allocates lives as long as the run (modules, parsers, beliefs) or as long as
+    one file, and reference counting frees a file's trees (ROS 1 XML leaves no reference
+    cycles at all), so the collector's frequent young-generation passes find almost
+    nothing and its full passes re-scan everything imported. Freezing what exists after
+    start-up and collecting the young generation every 50,000 allocations instead of 700
+    saves about a tenth of ``check``'s CPU on the corpus. Only the console command does
+    this: :func:`main` is also called by programs and tests that keep their own settings.
+    """
+    gc.freeze()
+    gc.set_threshold(50_000, 20, 20)
+
+
+def entry() -> int:
+    """The ``launch-linter`` console command."""
+    tune_collector()
+    return main()
