@@ -114,9 +114,11 @@ def ast_pass(paths: Sequence[str]) -> None:
 def yaml_pass(paths: Sequence[str]) -> None:
     import yaml  # type: ignore[import-untyped]
 
+    # The loader the YAML front-end composes with: libyaml's where PyYAML was built with it.
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     for path in paths:
         try:  # noqa: SIM105
-            yaml.compose(read(path).decode("utf-8", "replace"), Loader=yaml.SafeLoader)
+            yaml.compose(read(path).decode("utf-8", "replace"), Loader=loader)
         except yaml.YAMLError:
             pass
 
