@@ -66,7 +66,8 @@ _STRTOD = re.compile(
       | (?P<dec>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)
       | (?P<inf>inf(inity)?) | (?P<nan>nan(\([0-9A-Za-z_]*\))?)
     )""",
-    re.VERBOSE | re.IGNORECASE,
+    # ASCII: ``\d`` would take other scripts' digits ('٣'), which the C library refuses.
+    re.VERBOSE | re.IGNORECASE | re.ASCII,
 )
 
 _EXPONENT = re.compile(r"[eEpP]")

@@ -56,6 +56,9 @@ def kinds(words: str | list[str]) -> list[str]:
     ("0.000000000000000001", (1e-18, "ok")),
     ("1..5", (1.0, "partial")),
     ("1 ", (1.0, "partial")),
+    # Digits of other scripts are not digits to the C library.
+    ("\u0663", (None, "invalid")),
+    ("1\u0663", (1.0, "partial")),
 ])
 def test_stod(word: str, expected: tuple[float | None, str]) -> None:
     assert stod(word) == expected
