@@ -33,6 +33,7 @@ from launch_linter.frontends.ros2_actions import (
     ros2_run,
 )
 from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
+from launch_linter.model.launch import may_hold_directive
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import (
     CommandLineError,
@@ -322,7 +323,8 @@ def _entity(element: Element) -> Entity:
 def read_xml(path: str, data: bytes) -> FileRead:
     """Read a ROS 2 launch XML file (``path`` absolute, ``data`` its bytes)."""
     try:
-        document = parse_xml(data)
+        # Comments and element lines serve only suppression directives.
+        document = parse_xml(data, directives=may_hold_directive(data))
     except XmlError as exc:
         message = f"not well-formed XML: {exc.message}"
         problem = Problem("parse_error", exc.line, exc.column, message)
