@@ -224,11 +224,12 @@ class StaticTransform:
 
     def is_unresolved(self, *fields: Field) -> bool:
         """True when any of ``fields`` could not be resolved."""
-        return any(f in self.unresolved for f in fields)
+        # Asked many times per transform by the rules; most transforms are fully resolved.
+        return bool(self.unresolved) and not self.unresolved.isdisjoint(fields)
 
     def knows(self, *fields: Field) -> bool:
         """True when every one of ``fields`` is resolved."""
-        return not self.is_unresolved(*fields)
+        return not self.unresolved or self.unresolved.isdisjoint(fields)
 
     @property
     def unresolved_names(self) -> tuple[str, ...]:

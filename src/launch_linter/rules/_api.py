@@ -6,7 +6,7 @@ import typing
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from types import ModuleType
-from typing import Callable
+from typing import Any, Callable, TypeVar
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
@@ -22,6 +22,8 @@ from launch_linter.model.diagnostic import (
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
 
+T = TypeVar("T")
+
 
 @dataclass(frozen=True)
 class RuleContext:
@@ -33,10 +35,23 @@ class RuleContext:
     """``default``, or ``study``: the study's checks and severities (see docs/severity.md)."""
     distro: str | None = None
     """The target ROS distribution (lower case), None when unknown (see docs/severity.md)."""
+    _shared: dict[Callable[[LaunchTree], Any], Any] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+    """What ``shared`` worked out for this tree, by the function that works it out."""
 
     @property
     def study(self) -> bool:
         return self.profile == "study"
+
+    def shared(self, index: Callable[[LaunchTree], T]) -> T:
+        """``index(tree)``, worked out once for all the rules run on this tree: the edges
+        of the tf tree, the transforms by file (several rules read each; none re-scans)."""
+        try:
+            return typing.cast(T, self._shared[index])
+        except KeyError:
+            value = self._shared[index] = index(self.tree)
+            return value
 
 
 @dataclass(frozen=True)
@@ -178,6 +193,12 @@ def by_file(transforms: Iterable[StaticTransform]) -> dict[str, list[StaticTrans
     for transform in transforms:
         groups.setdefault(transform.path, []).append(transform)
     return groups
+
+
+def transforms_by_file(tree: LaunchTree) -> dict[str, list[StaticTransform]]:
+    """The tree's transforms by file: an index for ``RuleContext.shared`` (read, never
+    changed, by the rules that share it)."""
+    return by_file(tree.transforms)
 
 
 def can_coexist(a: StaticTransform, b: StaticTransform) -> bool:

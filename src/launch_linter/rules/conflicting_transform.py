@@ -52,7 +52,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._tree import Edge, coexist, finding_on, tree_edges
+from launch_linter.rules._tree import Edge, coexist, edges_of, finding_on
 
 ID = "conflicting_transform"
 CATEGORY = Category.TF
@@ -77,7 +77,7 @@ def _conflict(a: Edge, b: Edge) -> str:
 
 def check(context: RuleContext) -> Iterator[Finding]:
     seen: dict[tuple[str, str], list[Edge]] = {}
-    for edge in tree_edges(context.tree):
+    for edge in edges_of(context):
         earlier = seen.setdefault((edge.parent, edge.child), [])
         for other in earlier:
             if not coexist(other, edge):

@@ -46,7 +46,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import MAX_LISTED, MAX_RELATED, Finding, RuleContext, summarised
-from launch_linter.rules._tree import Edge, coexist, finding_on, place, tree_edges
+from launch_linter.rules._tree import Edge, coexist, edges_of, finding_on, place
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
@@ -55,7 +55,7 @@ SEVERITY = Severity.ERROR
 
 def check(context: RuleContext) -> Iterator[Finding]:
     by_child: dict[str, list[tuple[str, Edge]]] = {}
-    for edge in tree_edges(context.tree):
+    for edge in edges_of(context):
         parent, child = edge.parent, edge.child
         if parent == child:
             continue
