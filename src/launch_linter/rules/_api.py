@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import typing
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -229,3 +230,11 @@ def summarised(items: list[str], limit: int = MAX_LISTED) -> list[str]:
     if len(items) <= limit:
         return items
     return [*items[:limit], f"and {len(items) - limit} more"]
+
+
+def summarised_lazily(items: Iterable[str], count: int, limit: int = MAX_LISTED) -> list[str]:
+    """``summarised`` of the ``count`` items of ``items``, only the ones shown worked out
+    (the output per finding stays bounded, and so does the work for it)."""
+    if count <= limit:
+        return list(items)
+    return [*itertools.islice(items, limit), f"and {count - limit} more"]
