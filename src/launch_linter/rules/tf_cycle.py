@@ -69,6 +69,24 @@ Edges = Dict[str, List[Tuple[str, StaticTransform]]]
 """Parent frame -> (child frame, transform), in tree order."""
 
 
+class _Component:
+    """The frames of a strongly connected component, in frame order, from ``next`` on
+    still to be started from; ``inside`` holds those frames."""
+
+    def __init__(self, frames: list[str], edges: Edges) -> None:
+        self.frames = frames
+        self.next = 0
+        self.inside = set(frames)
+        self.unconditional = all(
+            t.condition.always for frame in frames for _, t in edges.get(frame, ())
+        )
+
+    def __lt__(self, other: _Component) -> bool:
+        # Never two with one next frame in the queue (components are disjoint); defined
+        # so that the queue's tuples always compare.
+        return self.frames[self.next] < other.frames[other.next]
+
+
 class _Search:
     """Simple loops, each found once from its earliest frame (Johnson's algorithm).
 
@@ -99,29 +117,34 @@ class _Search:
         return len(self.loops) >= MAX_LOOPS or self.steps > MAX_STEPS
 
     def run(self) -> dict[tuple[str, ...], tuple[StaticTransform, ...]]:
-        # Components by their earliest frame, earliest first: the starts in frame order.
-        pending = [(self.order[c[0]], c) for c in self._components(list(self.order))]
-        heapq.heapify(pending)
+        # Components by their next frame to start from, earliest first: the starts in
+        # frame order.
+        pending: list[tuple[int, _Component]] = []
+        for part in self._components(list(self.order)):
+            heapq.heappush(pending, (self.order[part.frames[0]], part))
         while pending and not self._done():
-            _, frames = heapq.heappop(pending)
-            start, inside = frames[0], set(frames)
+            _, part = heapq.heappop(pending)
+            start = part.frames[part.next]
             found = len(self.loops)
-            if all(t.condition.always for f in frames for _, t in self.edges.get(f, ())):
-                self._blocking_search(start, inside)
+            if part.unconditional:
+                self._blocking_search(start, part.inside)
             else:
-                self._search(start, inside)
+                self._search(start, part.inside)
             # A loop through a later frame avoids the start, so it lies in a component of
             # what remains. After a search that found loops the next frame is likely to
             # close some too: it searches the rest as it is; after a fruitless one the
             # rest is split first (the frames of a closed chain are each left alone).
-            rest = frames[1:]
-            parts = [rest] if len(self.loops) > found and len(rest) > 1 else (
-                self._components(rest))
-            for part in parts:
-                heapq.heappush(pending, (self.order[part[0]], part))
+            part.inside.discard(start)
+            part.next += 1
+            if len(part.frames) - part.next < 2:
+                continue
+            rest = [part] if len(self.loops) > found else self._components(
+                part.frames[part.next:])
+            for piece in rest:
+                heapq.heappush(pending, (self.order[piece.frames[piece.next]], piece))
         return self.loops
 
-    def _components(self, frames: list[str]) -> list[list[str]]:
+    def _components(self, frames: list[str]) -> list[_Component]:
         """The strongly connected components of more than one frame among ``frames``
         (in frame order), each in frame order."""
         within = set(frames)
@@ -130,7 +153,7 @@ class _Search:
         groups: dict[int, list[str]] = {}
         for frame in frames:
             groups.setdefault(number[frame], []).append(frame)
-        return [group for group in groups.values() if len(group) > 1]
+        return [_Component(group, self.edges) for group in groups.values() if len(group) > 1]
 
     def _search(self, start: str, inside: set[str]) -> None:
         """Every simple path from ``start`` inside its component, each transform checked
