@@ -26,6 +26,7 @@ MAX_FIX_PASSES = 8
 
 _ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _WORD = re.compile(rb"[^ \t\r\n]+")
+_TAG_BODY = re.compile(rb"""(?:[^>"']+|"[^"]*"|'[^']*')*""")
 
 Span = Tuple[int, int]
 
@@ -80,18 +81,12 @@ class Source:
             position = data.find(b"<", begin)
             if position < 0 or (line < len(starts) and position >= starts[line]):
                 return None
-        end = position + 1
-        quote = 0
-        while end < len(data):  # the end of the start tag: a '>' outside quotes
-            byte = data[end]
-            if quote:
-                if byte == quote:
-                    quote = 0
-            elif byte in b"\"'":
-                quote = byte
-            elif byte == ord(">"):
-                break
-            end += 1
+        # The end of the start tag: a '>' outside quotes (an unclosed quote runs to the
+        # end of the file).
+        body = _TAG_BODY.match(data, position + 1)  # matches always (maybe nothing)
+        end = body.end() if body is not None else position + 1
+        if data[end : end + 1] not in (b">", b""):
+            end = len(data)
         found: Span | None = None
         for match in _ATTRIBUTE.finditer(data, position, end):
             if match.group(1) == b"args":

@@ -120,6 +120,8 @@ class _Search:
         # Components by their next frame to start from, earliest first: the starts in
         # frame order.
         pending: list[tuple[int, _Component]] = []
+        if len(self.edges) < 2:
+            return self.loops  # a loop has two parents at least (most files have one)
         for part in self._components(list(self.order)):
             heapq.heappush(pending, (self.order[part.frames[0]], part))
         while pending and not self._done():
