@@ -90,7 +90,9 @@ def _series(
     series: dict[str, dict[int, tuple[str, StaticTransform]]] = {}
     for transform in transforms:
         value = kind.value(transform)
-        if value is None or transform.is_unresolved(kind.field):
+        # Most values do not end in a digit: no pattern to try (isdigit() holds for every
+        # character \d matches).
+        if value is None or not value[-1:].isdigit() or transform.is_unresolved(kind.field):
             continue
         match = _SUFFIXED.match(value)
         if match is None or match["stem"].endswith(_SYNTHETIC_STEM):

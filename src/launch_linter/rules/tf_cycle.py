@@ -122,7 +122,11 @@ class _Search:
         pending: list[tuple[int, _Component]] = []
         if len(self.edges) < 2:
             return self.loops  # a loop has two parents at least (most files have one)
-        for part in self._components(list(self.order)):
+        # Only a frame that is a parent and a child can be on a loop (leaves, roots and
+        # the frames of independent pairs are never looked at again).
+        children = {child for edges in self.edges.values() for child, _ in edges}
+        inner = [f for f in self.order if f in children and f in self.edges]
+        for part in self._components(inner):
             heapq.heappush(pending, (self.order[part.frames[0]], part))
         while pending and not self._done():
             _, part = heapq.heappop(pending)
