@@ -48,6 +48,7 @@ copy is redundant, not wrong). Values that are not resolved are not compared.
 
 from __future__ import annotations
 
+import collections
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
@@ -116,9 +117,15 @@ class _Sources:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    edges = edges_of(context)
+    # Only an edge published more than once can conflict (most are published once).
+    counts = collections.Counter((edge.parent, edge.child) for edge in edges)
     seen: dict[tuple[str, str], _Sources] = {}
-    for position, edge in enumerate(edges_of(context)):
-        sources = seen.setdefault((edge.parent, edge.child), _Sources())
+    for position, edge in enumerate(edges):
+        key = (edge.parent, edge.child)
+        if counts[key] < 2:
+            continue
+        sources = seen.setdefault(key, _Sources())
         conflict = sources.first_conflict(edge)
         sources.add(position, edge)
         if conflict is not None:

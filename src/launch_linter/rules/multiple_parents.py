@@ -42,6 +42,7 @@ by a node that publishes tf at run time (odometry, localization) is not seen.
 """
 from __future__ import annotations
 
+import collections
 import itertools
 from collections.abc import Iterator
 
@@ -103,10 +104,13 @@ class _Parents:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    edges = edges_of(context)
+    # Only a frame that is the child of two edges may have two parents (most are of one).
+    counts = collections.Counter(edge.child for edge in edges)
     by_child: dict[str, _Parents] = {}
-    for position, edge in enumerate(edges_of(context)):
+    for position, edge in enumerate(edges):
         parent, child = edge.parent, edge.child
-        if parent == child:
+        if parent == child or counts[child] < 2:
             continue
         parents = by_child.setdefault(child, _Parents())
         rivals, count, conditional = parents.rivals(edge)
