@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -246,9 +247,11 @@ class StaticTransform:
     def child(self) -> str | None:
         return normalise_frame(self.child_written)
 
-    @property
+    @functools.cached_property
     def signature(self) -> tuple[str, str] | None:
-        """(parent, child) without leading slashes; None unless both are resolved."""
+        """(parent, child) without leading slashes; None unless both are resolved. Most
+        rules ask, several times per transform: worked out once (kept in the instance's
+        dictionary, which a frozen dataclass has)."""
         parent, child = self.parent, self.child
         if parent is None or child is None:
             return None
