@@ -21,7 +21,11 @@ files     ``check`` of synthetic corpora of 1K to 50K files (the corpus files, t
           with renamed frames): time and peak memory of the process.
 nodes     One ROS 1 file of 1K to 50K ``static_transform_publisher`` nodes in three shapes:
           independent pairs, a chain of frames, a fan from one frame; roslaunch on the pairs.
-jobs      ``check`` of the corpus with ``--jobs 1``, ``--jobs 2`` and the default.
+jobs      ``check`` of 10 and 100 synthetic files and of the corpus with ``--jobs 1``,
+          ``--jobs 2`` and the default (and what the default chose at that load).
+
+The run ends with a table of the issue's targets (per-format ratio to the floor, roslaunch
+speed-up, start-up, memory at 50,000 files, the jobs default) against what it measured.
 
 Every figure is the median of ``--runs`` runs with the spread (lowest to highest) in
 brackets. CPU time (``process_time`` in-process, user + system of a child) is steadier than
@@ -55,6 +59,8 @@ SECTIONS = ("per-file", "process", "startup", "files", "nodes", "jobs")
 
 # typing's spellings: the alias is evaluated at run time (Python 3.8).
 Pass = typing.Callable[[typing.Sequence[str]], None]
+Summary = typing.Dict[str, str]
+"""What each section measured against the issue's targets, for the closing table."""
 
 
 def spread(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
@@ -177,9 +183,12 @@ def roslaunch_per_file(paths: Sequence[str], runs: int) -> tuple[list[float], li
             [float(r) / count for r in result["cpu_runs"]])
 
 
-def per_file_section(files: list[str], runs: int) -> None:
+def per_file_section(files: list[str], runs: int, summary: Summary) -> None:
+    from launch_linter.cli import tune_collector
+
     groups = formats_of(files)
     ours_pass = make_ours_pass()
+    tune_collector()  # the collector as the ``launch-linter`` command sets it
     for group in groups.values():  # warm-up: imports, regular expressions, page cache
         ours_pass(group)
     times: dict[tuple[str, str], list[tuple[float, float]]] = {}
@@ -200,6 +209,8 @@ def per_file_section(files: list[str], runs: int) -> None:
             wall = [w for w, _ in measured]
             ratio = ("" if label == "launch-linter" else
                      spread([o / c for o, c in zip(ours, cpu)], digits=2))
+            if label == FLOORS[name][0][0]:
+                summary[f"{name}: ours / {label}"] = f"{ratio}x"
             print(f"{name:13s} {len(group):6d} {label:20s} {spread(cpu, 1e6):>22s} "
                   f"{spread(wall, 1e6):>22s} {ratio:>20s}")
     ros1 = groups.get("ROS 1 XML", [])
@@ -213,6 +224,7 @@ def per_file_section(files: list[str], runs: int) -> None:
           f"{spread(cpu, 1e6):>22s} {spread(wall, 1e6):>22s}")
     print(f"roslaunch / launch-linter on ROS 1 XML (CPU, runs paired by rank): "
           f"{spread(speed_up, digits=2)}x")
+    summary["roslaunch / ours, ROS 1 XML per file"] = f"{spread(speed_up, digits=2)}x"
 
 
 # ---------------------------------------------------------------- child processes
@@ -326,7 +338,7 @@ def process_section(ros1: list[str], runs: int) -> None:
           f"{statistics.median(theirs[1]) / statistics.median(ours[1]):.2f}x")
 
 
-def startup_section(runs: int) -> None:
+def startup_section(runs: int, summary: Summary) -> None:
     print("\n== Start-up (ms: median [spread]); the XML file is copied to a folder without "
           "a configuration file")
     scratch = tempfile.mkdtemp(prefix="bench-startup-")
@@ -337,14 +349,24 @@ def startup_section(runs: int) -> None:
         ("launch-linter --version", linter("--version")),
         ("launch-linter check one XML file", linter("check", "--format", "json", small)),
     ]
-    bare: list[float] = []
     run_child(cases[-1][1], env=linter_env())  # writes the bytecode, if it is not cached yet
-    for label, argv in cases:
-        walls, cpus, _, _ = repeated(argv, runs, env=linter_env())
-        bare = bare or cpus
-        extra = statistics.median(cpus) - statistics.median(bare)
-        print(f"{label:34s} wall {spread(walls, 1e3):>16s}  CPU {spread(cpus, 1e3):>16s}  "
-              f"CPU above bare Python {extra * 1e3:.0f}")
+    walls: dict[str, list[float]] = {label: [] for label, _ in cases}
+    cpus: dict[str, list[float]] = {label: [] for label, _ in cases}
+    for _ in range(runs):  # interleaved, so that load changes hit every case alike
+        for label, argv in cases:
+            wall, cpu, _, _ = run_child(argv, env=linter_env())
+            walls[label].append(wall)
+            cpus[label].append(cpu)
+    bare = cpus[cases[0][0]]
+    for label, _ in cases:
+        # Above bare Python, run by run (the runs are interleaved): median and spread.
+        extra = [c - b for c, b in zip(cpus[label], bare)]
+        print(f"{label:34s} wall {spread(walls[label], 1e3):>16s}  "
+              f"CPU {spread(cpus[label], 1e3):>16s}  CPU above bare Python "
+              f"{spread(extra, 1e3):>14s}")
+        if label != cases[0][0]:
+            summary[f"start-up: {label.replace('launch-linter ', '')}, above bare (ms)"] = (
+                spread(extra, 1e3))
     os.remove(small)
     os.rmdir(scratch)
 
@@ -375,10 +397,11 @@ def build_files(corpus: Path, out: str, count: int) -> None:
             handle.write(data + copy_comment(suffix, copy))
 
 
-def files_section(corpus: Path, sizes: Sequence[int], runs: int) -> None:
+def files_section(corpus: Path, sizes: Sequence[int], runs: int, summary: Summary) -> None:
     print("\n== check of N synthetic files (one process, --jobs 1)")
     print(f"{'files':>7s} {'CPU s':>20s} {'µs per file (CPU)':>18s} {'wall s':>20s} "
           f"{'peak MiB':>10s} {'KiB per file':>13s}")
+    per_file: dict[int, float] = {}
     for size in sizes:
         with tempfile.TemporaryDirectory(prefix="bench-files-") as scratch:
             build_files(corpus, scratch, size)
@@ -392,6 +415,12 @@ def files_section(corpus: Path, sizes: Sequence[int], runs: int) -> None:
         print(f"{count:7d} {spread(cpus, digits=2):>20s} "
               f"{statistics.median(cpus) / count * 1e6:18.0f} {spread(walls, digits=2):>20s} "
               f"{statistics.median(mems):10.0f} {statistics.median(mems) * 1024 / count:13.1f}")
+        per_file[count] = statistics.median(cpus) / count
+        summary[f"peak memory at {count:,} files (MiB)"] = spread(mems)
+    if len(per_file) > 1:
+        low, high = min(per_file), max(per_file)
+        summary[f"CPU per file, {high:,} / {low:,} files"] = (
+            f"{per_file[high] / per_file[low]:.2f}x")
 
 
 def nodes_file(count: int, shape: str) -> str:
@@ -442,20 +471,77 @@ def nodes_section(sizes: Sequence[int], roslaunch_sizes: Sequence[int], runs: in
                   f"({measured[1][0] / size * 1e6:.1f} µs per node)")
 
 
-def jobs_section(files_dir: Path, runs: int) -> None:
-    print(f"\n== check of the corpus ({files_dir}) by job count ({os.cpu_count()} CPUs; "
-          "wall s: median [spread])")
+def jobs_section(corpus: Path, runs: int, summary: Summary) -> None:
+    """``--jobs 1``, ``--jobs 2`` and the default on 10 and 100 files and the corpus."""
+    from launch_linter.engine import auto_jobs
+
+    files_dir = corpus / "files"
+    corpus_count = len(os.listdir(files_dir))
+    print(f"\n== check by job count ({os.cpu_count()} CPUs; {uptime()}; wall s: median "
+          "[spread]; ratio to --jobs 1 run by run)")
+    print(f"{'input':>14s} {'jobs':18s} {'wall s':>20s} {'CPU s':>20s} "
+          f"{'/ --jobs 1 (wall)':>20s}")
     cases = [("--jobs 1", ["--jobs", "1"]), ("--jobs 2", ["--jobs", "2"]), ("default", [])]
-    results: dict[str, list[float]] = {}
-    for _ in range(runs):  # interleaved, so that load changes hit every case alike
-        for label, extra in cases:
-            wall, _, _, _ = run_child(linter("check", "--format", "json", *extra,
-                                             str(files_dir)), env=linter_env())
-            results.setdefault(label, []).append(wall)
-    serial = statistics.median(results["--jobs 1"])
-    for label, walls in results.items():
-        print(f"{label:10s} wall {spread(walls, digits=2):>20s}  "
-              f"{statistics.median(walls) / serial:.2f}x of --jobs 1")
+    with tempfile.TemporaryDirectory(prefix="bench-jobs-") as scratch:
+        inputs = []
+        for size in (10, 100):
+            folder = os.path.join(scratch, str(size))
+            build_files(corpus, folder, size)
+            inputs.append((f"{size} files", folder, size))
+        inputs.append((f"corpus {corpus_count}", str(files_dir), corpus_count))
+        verdicts = []
+        for name, path, count in inputs:
+            walls: dict[str, list[float]] = {label: [] for label, _ in cases}
+            cpus: dict[str, list[float]] = {label: [] for label, _ in cases}
+            chosen = auto_jobs(count)  # what the default picks at this load, for the record
+            for _ in range(runs):  # interleaved, so that load changes hit every case alike
+                for label, extra in cases:
+                    wall, cpu, _, _ = run_child(linter("check", "--format", "json", *extra,
+                                                       path), env=linter_env())
+                    walls[label].append(wall)
+                    cpus[label].append(cpu)
+            serial = walls["--jobs 1"]
+            for label, _ in cases:
+                ratio = [w / s for w, s in zip(walls[label], serial)]
+                note = f" (chose {chosen})" if label == "default" else ""
+                print(f"{name:>14s} {label + note:18s} {spread(walls[label], digits=2):>20s} "
+                      f"{spread(cpus[label], digits=2):>20s} {spread(ratio, digits=2):>20s}")
+                if label == "default":
+                    # Wall time is what a user waits for; CPU shows whether a wall-time
+                    # difference is the work or the load (the same job count is the same
+                    # work).
+                    cpu_ratio = statistics.median(cpus[label]) / statistics.median(
+                        cpus["--jobs 1"])
+                    verdicts.append(f"{name} (chose {chosen}) wall {spread(ratio, digits=2)} "
+                                    f"CPU {cpu_ratio:.2f}")
+    summary["jobs default / --jobs 1 (wall)"] = "; ".join(verdicts)
+
+
+TARGETS = (
+    ("ROS 1 XML: ours / read + expat", "<= 3x"),
+    ("ROS 2 Python: ours / read + ast.parse", "<= 2x"),
+    ("roslaunch / ours, ROS 1 XML per file", ">= 10x"),
+    ("start-up: check one XML file, above bare (ms)", "<= 60"),
+    ("peak memory at 50,000 files (MiB)", "<= 300 MB"),
+    ("jobs default / --jobs 1 (wall)", "<= 1 + noise"),
+)
+
+
+def print_summary(summary: Summary) -> None:
+    """The issue's targets against what this run measured (median [spread]), then the
+    other figures, so that a closing note can quote one table."""
+    if not summary:
+        return
+    print("\n== Targets of issue 16 against this run")
+    width = max(len(key) for key in summary) + 2
+    print(f"{'measure':{width}s} {'target':>14s}  measured")
+    targets = dict(TARGETS)
+    for key, _ in TARGETS:
+        if key in summary:
+            print(f"{key:{width}s} {targets[key]:>14s}  {summary[key]}")
+    for key, value in summary.items():
+        if key not in targets:
+            print(f"{key:{width}s} {'-':>14s}  {value}")
 
 
 def main() -> int:
@@ -481,22 +567,24 @@ def main() -> int:
     print(f"{len(files)} corpus files; {runs} runs per figure; {os.cpu_count()} CPUs; "
           f"Python {sys.version.split()[0]}; {uptime()}")
     started = time.perf_counter()
+    summary: Summary = {}
     if "per-file" in only:
-        per_file_section(files, runs)
+        per_file_section(files, runs, summary)
     if "process" in only:
         process_section(formats_of(files).get("ROS 1 XML", []), runs)
     if "startup" in only:
-        startup_section(runs * 4)
+        startup_section(runs * 4, summary)
     chosen = tuple(int(s) for s in ns.sizes.split(",")) if ns.sizes else None
     if "files" in only:
         sizes = chosen or ((1_000, 5_000) if ns.quick else (1_000, 5_000, 10_000, 50_000))
-        files_section(ns.corpus, sizes, 1 if ns.quick else min(runs, 3))
+        files_section(ns.corpus, sizes, 1 if ns.quick else min(runs, 3), summary)
     if "nodes" in only:
         sizes = chosen or ((1_000, 5_000) if ns.quick else (1_000, 10_000, 50_000))
         nodes_section(sizes, (1_000,) if ns.quick else (1_000, 10_000), 1,
                       60.0 if ns.quick else 600.0)
     if "jobs" in only:
-        jobs_section(files_dir, runs)
+        jobs_section(ns.corpus, runs, summary)
+    print_summary(summary)
     print(f"\ndone in {time.perf_counter() - started:.0f} s; {uptime()}; "
           f"this process peak {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB")
     return 0

@@ -352,3 +352,25 @@ def test_json_is_written_in_pieces_exactly_as_dumped() -> None:
     out = io.StringIO()
     json_report.write(document, out)
     assert out.getvalue() == json_report.dumps(document) + "\n"
+
+
+@pytest.mark.parametrize("count", [0, 1, 3])
+def test_check_json_streamed_item_by_item_is_the_document_dumped(count: int) -> None:
+    # check_pieces makes each file's and finding's JSON only when it is written (flat
+    # memory); its text must be that of the whole document dumped at once.
+    from launch_linter.model.launch import FileRecord, FileStatus
+    from launch_linter.report import json_report
+
+    findings = tuple(
+        Diagnostic(
+            "dup_sig", Category.LAUNCH, Severity.ERROR, f"dir/é{i}.launch", 3 + i, 5,
+            "two \"publishers\"\nof a \ud800 frame", node="tf",
+            related=(Location(f"dir/o{i}.launch", 1, 1),),
+        )
+        for i in range(count)
+    )
+    files = tuple(FileRecord(f"dir/é{i}.launch", FileStatus.OK, i) for i in range(count))
+    result = LintResult(files, (), findings)
+    beliefs = BeliefSet.empty()
+    expected = "".join(json_report.pieces(json_report.check_document(result, beliefs, "1")))
+    assert "".join(json_report.check_pieces(result, beliefs, "1")) == expected

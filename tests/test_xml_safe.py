@@ -6,12 +6,14 @@ from pathlib import Path
 
 import pytest
 
+from launch_linter.model.launch import may_hold_directive
 from launch_linter.resolve.xml_safe import (
     MAX_BYTES,
     MAX_DEPTH,
     MAX_ELEMENTS,
     XmlError,
     parse_xml,
+    read_regular_file,
 )
 
 
@@ -45,6 +47,35 @@ def test_attributes_keep_document_order_and_normalised_whitespace() -> None:
 def test_comments_are_kept_with_the_line_they_end_on() -> None:
     document = parse_xml(b"<launch>\n<!-- one -->\n<!-- two\nlines -->\n</launch>")
     assert document.comments == [(2, " one "), (4, " two\nlines ")]
+
+
+def test_without_directives_no_comments_or_element_lines_are_kept() -> None:
+    data = b"<launch>\n<!-- one -->\n<node/>\n</launch>"
+    document = parse_xml(data, directives=False)
+    assert document.comments == []
+    assert document.element_lines == []
+    assert document.root.children[0].line == 3
+    many = b"<a>" + b"<b/>" * MAX_ELEMENTS + b"</a>"
+    with pytest.raises(XmlError, match="more than"):
+        parse_xml(many, directives=False)
+
+
+def test_a_directive_may_be_held_when_the_marker_is_spelt_or_the_text_is_utf16() -> None:
+    assert may_hold_directive(b"<!-- launch-linter: disable=x -->")
+    assert may_hold_directive("<!-- launch-linter: disable=x -->".encode("utf-16"))
+    assert not may_hold_directive(b"<launch><!-- launch linter --></launch>")
+
+
+def test_a_regular_file_is_read_whole_or_up_to_the_limit(tmp_path: Path) -> None:
+    path = tmp_path / "big.launch"
+    data = bytes(range(256)) * 2000  # 512,000 bytes: more than one piece
+    path.write_bytes(data)
+    assert read_regular_file(str(path), len(data) + 1) == data
+    assert read_regular_file(str(path), 1000) == data[:1000]
+    assert read_regular_file(str(path), 300_000) == data[:300_000]
+    empty = tmp_path / "empty.launch"
+    empty.write_bytes(b"")
+    assert read_regular_file(str(empty), 10) == b""
 
 
 def test_text_is_kept_only_for_the_tags_asked_for() -> None:

@@ -2,6 +2,6 @@ from __future__ import annotations
 
 import sys
 
-from launch_linter.cli import main
+from launch_linter.cli import entry
 
-sys.exit(main())
+sys.exit(entry())

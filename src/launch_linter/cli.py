@@ -7,16 +7,18 @@ exit statuses and :class:`UsageError` live in the leaf module ``commands.common`
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import sys
 from collections.abc import Callable, Sequence
 from types import ModuleType
 
 from launch_linter import __version__
-from launch_linter.commands import check, explain, rules, transforms
 from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError, check_numbers
 
-CORE_COMMANDS = (check, transforms, rules, explain)
+CORE_COMMANDS = ("check", "transforms", "rules", "explain")
+"""The core commands, in help order; their modules (which import the engine) are
+imported only when a parser is built for them, so ``--version`` alone imports none."""
 
 _EDGE_PACKAGES = (
     "launch_linter.mining",
@@ -41,6 +43,12 @@ def _edge_commands() -> list[ModuleType]:
     return [mine, generate, evaluate, graph]
 
 
+def _core_commands() -> list[ModuleType]:
+    from launch_linter.commands import check, explain, rules, transforms
+
+    return [check, transforms, rules, explain]
+
+
 def _core_only(argv: Sequence[str] | None) -> bool:
     """Whether the command line names a core command (or asks only for the version): then
     the edge commands' parsers, and the libraries their modules import, are not needed,
@@ -49,19 +57,33 @@ def _core_only(argv: Sequence[str] | None) -> bool:
     words = [a for a in args if not a.startswith("-")]
     if not words:
         return args == ["--version"]
-    return words[0] in {m.__name__.rsplit(".", 1)[1] for m in CORE_COMMANDS}
+    return words[0] in CORE_COMMANDS
+
+
+def _named_command(argv: Sequence[str]) -> str | None:
+    """The core command that ``argv`` names, if any."""
+    words = [a for a in argv if not a.startswith("-")]
+    return words[0] if words and words[0] in CORE_COMMANDS else None
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
-    """The parser for ``argv`` (all commands unless it names a core command)."""
+    """The parser for ``argv``: that of the core command it names (the others' parsers
+    are start-up time for nothing), else every command's."""
     parser = argparse.ArgumentParser(
         prog="launch-linter",
         description="Find mistakes in the static transforms of ROS launch files.",
     )
     parser.add_argument("--version", action="version", version=f"launch-linter {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    edges = [] if argv is not None and _core_only(argv) else _edge_commands()
-    for module in (*CORE_COMMANDS, *edges):
+    if argv is not None and list(argv) == ["--version"]:
+        return parser  # argparse prints the version and exits before any command is read
+    named = _named_command(argv) if argv is not None else None
+    if named is not None:
+        commands = [m for m in _core_commands() if m.__name__.rsplit(".", 1)[1] == named]
+    else:
+        edges = [] if argv is not None and _core_only(argv) else _edge_commands()
+        commands = [*_core_commands(), *edges]
+    for module in commands:
         module.add_parser(subparsers)
     return parser
 
@@ -92,3 +114,24 @@ def main(argv: Sequence[str] | None = None) -> int:
             "(set LAUNCH_LINTER_DEBUG=1 for the traceback, and please report it)\n"
         )
         return EXIT_USAGE
+
+
+def tune_collector() -> None:
+    """Let the garbage collector run far less often during a run of the command.
+
+    What a run allocates lives as long as the run (modules, parsers, beliefs) or as long as
+    one file, and reference counting frees a file's trees (ROS 1 XML leaves no reference
+    cycles at all), so the collector's frequent young-generation passes find almost
+    nothing and its full passes re-scan everything imported. Freezing what exists after
+    start-up and collecting the young generation every 50,000 allocations instead of 700
+    saves about a tenth of ``check``'s CPU on the corpus. Only the console command does
+    this: :func:`main` is also called by programs and tests that keep their own settings.
+    """
+    gc.freeze()
+    gc.set_threshold(50_000, 20, 20)
+
+
+def entry() -> int:
+    """The ``launch-linter`` console command."""
+    tune_collector()
+    return main()

@@ -10,7 +10,6 @@ Command-line flags override the file key by key; for the tables ``args``, ``env`
 
 from __future__ import annotations
 
-import difflib
 import importlib
 import math
 import os
@@ -86,6 +85,8 @@ def check_rule_ids(ids: Iterable[str], where: str) -> None:
     known = sorted({*RULES_BY_ID, *_categories()})
     unknown = [i for i in ids if i not in RULES_BY_ID and i not in _categories()]
     if unknown:
+        import difflib  # only for the message of a mistake: not at start-up
+
         hints = []
         for name in unknown:
             close = difflib.get_close_matches(name, known, n=1)
@@ -127,6 +128,8 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
     """Check and convert the launch-linter table ``data`` read from ``path``."""
     unknown = [k for k in data if k not in KEYS]
     if unknown:
+        import difflib  # only for the message of a mistake: not at start-up
+
         hints = []
         for key in unknown:
             close = difflib.get_close_matches(key, KEYS, n=1)

@@ -15,7 +15,6 @@ from launch_linter.discovery import (
     InputFile,
     discover,
 )
-from launch_linter.fix import with_located_fixes
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
@@ -396,6 +395,19 @@ def _lint_alone(
     return out
 
 
+def _with_located_fixes(
+    diagnostics: Sequence[Diagnostic], distro: str | None,
+    sources: dict[str, bytes] | None = None,
+) -> tuple[Diagnostic, ...]:
+    """``fix.with_located_fixes``, imported only when a finding carries a fix: locating
+    edits (with ``ast`` and ``difflib``) is start-up time a run without one never needs."""
+    if all(d.fix is None for d in diagnostics):
+        return tuple(diagnostics)
+    from launch_linter.fix import with_located_fixes
+
+    return with_located_fixes(diagnostics, distro, sources)
+
+
 def lint_files(
     inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool = True
 ) -> LintResult:
@@ -407,23 +419,31 @@ def lint_files(
     else:
         linted = _lint_chunk(inputs, options, {}, keep_trees)
     trees = tuple(tree for tree, _, _ in linted if tree is not None)
-    # A file linted on its own and also included by another input is reported once: the
-    # same place, rule and message found from two roots (or under two spellings of its
-    # path) is one finding.
+    records = tuple(record for _, record, _ in linted)
+    unique = _deduplicated(found for _, _, found in linted)
+    # The per-file lists go before the findings are finished and their fixes located, so
+    # that the peak memory of a large run holds each finding in one list, not in several.
+    del linted
+    finished = finish_diagnostics(trees, unique, options)
+    return LintResult(
+        records, trees if keep_trees else (), _with_located_fixes(finished, options.ros_distro)
+    )
+
+
+def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
+    """The findings of every file, each once: a file linted on its own and also included
+    by another input is reported once (the same place, rule and message found from two
+    roots, or under two spellings of its path, is one finding)."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
-    for _, _, found in linted:
-        for diagnostic in found:
+    for diagnostics_of_file in found:
+        for diagnostic in diagnostics_of_file:
             where = real.get(diagnostic.path)
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
             key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
             diagnostics.setdefault(key, diagnostic)
-    records = tuple(record for _, record, _ in linted)
-    finished = finish_diagnostics(trees, diagnostics.values(), options)
-    return LintResult(
-        records, trees if keep_trees else (), with_located_fixes(finished, options.ros_distro)
-    )
+    return list(diagnostics.values())
 
 
 def lint_paths(
@@ -453,7 +473,7 @@ def lint_text(
     load = load_options_for(item, options, cache)
     tree = load_tree(item.path, load, text.encode("utf-8"))
     found = check_tree(tree, selected_rules(options), options)
-    diagnostics = with_located_fixes(
+    diagnostics = _with_located_fixes(
         finish_diagnostics((tree,), found, options),
         options.ros_distro,
         {path: text.encode("utf-8")},

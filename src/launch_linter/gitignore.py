@@ -5,13 +5,19 @@
 repository's top (the nearest folder up holding ``.git``; without one, every folder up)
 down to the path's folder applies, a deeper file overriding a shallower one, as
 git does. A folder that is ignored is not entered.
+
+``pathspec`` is imported when the first ``.gitignore`` is read: a run over files, or over
+folders without one, does not pay for it at start-up. Without ``pathspec`` (the standalone
+linter carries none) no ``.gitignore`` is read and nothing is ignored.
 """
 
 from __future__ import annotations
 
 import os
+import typing
 
-import pathspec
+if typing.TYPE_CHECKING:
+    import pathspec
 
 MAX_GITIGNORE_BYTES = 1024 * 1024
 MAX_WALK_UP = 64
@@ -31,9 +37,12 @@ class GitIgnore:
                 with open(os.path.join(directory, ".gitignore"), "rb") as handle:
                     data = handle.read(MAX_GITIGNORE_BYTES)
                 lines = data.decode("utf-8", "replace").splitlines()
+                import pathspec
+
                 spec = pathspec.GitIgnoreSpec.from_lines(lines)
-            except (OSError, ValueError):
-                spec = None  # no .gitignore, or one pathspec cannot read: nothing ignored
+            except (OSError, ValueError, ImportError):
+                # no .gitignore, one pathspec cannot read, or no pathspec: nothing ignored
+                spec = None
             self._specs[directory] = spec
         return self._specs[directory]
 

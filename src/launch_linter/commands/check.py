@@ -102,8 +102,7 @@ def _report(
     if ns.statistics and fmt == "text":
         return text.statistics(result.diagnostics)
     if fmt == "json":
-        document = json_report.check_document(result, options.beliefs, __version__)
-        return json_report.pieces(document)
+        return json_report.check_pieces(result, options.beliefs, __version__)
     if fmt in ("sarif", "github"):
         from launch_linter.report import formats
 

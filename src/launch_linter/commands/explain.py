@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import difflib
 import sys
 
 from launch_linter.commands.common import EXIT_OK, UsageError
@@ -19,6 +18,8 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(ns: argparse.Namespace) -> int:
     rule = RULES_BY_ID.get(ns.rule)
     if rule is None:
+        import difflib  # only for the message of a mistake: not at start-up
+
         close = difflib.get_close_matches(ns.rule, list(RULES_BY_ID), n=1)
         hint = f" (did you mean {close[0]!r}?)" if close else ""
         raise UsageError(f"unknown rule {ns.rule!r}{hint} (see 'launch-linter rules')")

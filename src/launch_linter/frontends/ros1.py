@@ -329,10 +329,11 @@ class Ros1Loader(Ros1Tags):
                           text_of(package) if package_text is None else package_text,
                           text_of(node_type) if type_text is None else type_text,
                           element.attrib.get("args") or "", text_of(args_value), words.words)
-        reading = Reading(form, arity_issue=arity_issue, number_issues=number_issues)
         if known:
             reading = Reading(form, decoded.parent, decoded.child, decoded.translation,
                               decoded.rotation, decoded.period_ms, arity_issue, number_issues)
+        else:
+            reading = Reading(form, arity_issue=arity_issue, number_issues=number_issues)
         transform = transform_record(site, command, reading, unresolved, reasons)
         self.transforms.append(transform)
         if transform.unresolved:

@@ -14,7 +14,13 @@ from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
+from launch_linter.model.launch import (
+    Comment,
+    FileStatus,
+    LaunchTree,
+    holds_directive,
+    may_hold_directive,
+)
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.packages import PackageIndex
@@ -285,7 +291,8 @@ class Ros1Base:
         if display not in self.files:
             self.files.append(display)
         try:
-            document = parse_xml(data, text_tags=("rosparam",), collect=("launch",))
+            document = parse_xml(data, text_tags=("rosparam",), collect=("launch",),
+                                 directives=may_hold_directive(data))
         except XmlError as exc:
             self.problems.append(Problem(
                 "parse_error", display, exc.line, exc.column,

@@ -173,8 +173,12 @@ class Ros1Tags(Ros1Base):
         if condition is None:
             return
         name_value = self._required(element, "name", context)
-        value = self._resolve(element, "value", context)
-        default = self._resolve(element, "default", context)
+        # Most values are literal text: a value is only resolved when it has one ($...).
+        value_text, default_text = attrib.get("value"), attrib.get("default")
+        value = None if value_text is None else self._resolve_text(value_text, element,
+                                                                    "value", context)
+        default = None if default_text is None else self._resolve_text(default_text, element,
+                                                                        "default", context)
         doc = attrib.get("doc")
         if doc is not None and "$" in doc:
             self._substitute(doc, element, "doc", context, None)
@@ -187,8 +191,8 @@ class Ros1Tags(Ros1Base):
             self._report("unresolved", context.filename, element,
                          f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
             return
-        for key in ("value", "default"):
-            source = self._env_in_text(attrib.get(key, ""))
+        for text in (value_text, default_text):
+            source = None if text is None or "$(" not in text else self._env_in_text(text)
             if source is not None:
                 self._env_args[name] = source
         self._declare(context, element, name, value, default, condition)
@@ -304,9 +308,9 @@ class Ros1Tags(Ros1Base):
     def _remap(self, element: Element, context: _Context) -> None:
         if self._condition(element, context) is None:
             return
-        ends = [self._required(element, a, context) for a in ("from", "to")]
-        texts = [resolved_text(v) if v is not None else None for v in ends]
-        for text in texts:
+        ends = (self._required(element, "from", context), self._required(element, "to", context))
+        for value in ends:
+            text = None if value is None else resolved_text(value)
             if text is None:
                 continue
             name = _canonical_name(text)

@@ -42,6 +42,12 @@ DIRECTIVE_MARKER = "launch-linter:"
 only feed directives, so front-ends keep them only for files with a comment that holds it."""
 
 
+def may_hold_directive(data: bytes) -> bool:
+    """Whether the file ``data`` may hold a suppression directive: it spells the marker in
+    ASCII, or it is in an encoding that does not (UTF-16 or UTF-32, with zero bytes)."""
+    return DIRECTIVE_MARKER.encode() in data or b"\x00" in data
+
+
 def holds_directive(comments: Iterable[tuple[int, str]]) -> bool:
     """Whether any of ``comments`` (line, text) may be a suppression directive."""
     return any(DIRECTIVE_MARKER in text for _, text in comments)

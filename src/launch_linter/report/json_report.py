@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any, TextIO
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
+from launch_linter.model.diagnostic import Diagnostic
+from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.report.escape import json_safe
@@ -16,13 +18,15 @@ from launch_linter.report.escape import json_safe
 JSON_VERSION = 1
 
 
+def _file_json(record: FileRecord) -> dict[str, Any]:
+    return {"path": record.path, "status": record.status.value, "transforms": record.transforms}
+
+
 def _files(result: LintResult) -> list[dict[str, Any]]:
-    return [
-        {"path": f.path, "status": f.status.value, "transforms": f.transforms} for f in result.files
-    ]
+    return [_file_json(f) for f in result.files]
 
 
-def check_document(result: LintResult, beliefs: BeliefSet, version: str) -> dict[str, Any]:
+def _check_head(beliefs: BeliefSet, version: str) -> dict[str, Any]:
     return {
         "version": JSON_VERSION,
         "tool": {"name": "launch-linter", "version": version},
@@ -31,9 +35,26 @@ def check_document(result: LintResult, beliefs: BeliefSet, version: str) -> dict
             "min_z": beliefs.min_z,
             "count": len(beliefs.beliefs),
         },
+    }
+
+
+def check_document(result: LintResult, beliefs: BeliefSet, version: str) -> dict[str, Any]:
+    return {
+        **_check_head(beliefs, version),
         "files": _files(result),
         "diagnostics": [d.to_json() for d in result.diagnostics],
     }
+
+
+def check_pieces(result: LintResult, beliefs: BeliefSet, version: str) -> Iterator[str]:
+    """``pieces(check_document(...))``, with each file and finding made JSON only when it is
+    written: a run of many files never holds every finding's JSON object (and its escaped
+    copy) at once, only the findings themselves."""
+    lists: dict[str, tuple[Iterable[Any], Callable[[Any], Any]]] = {
+        "files": (result.files, _file_json),
+        "diagnostics": (result.diagnostics, Diagnostic.to_json),
+    }
+    return _batched(_streamed(_check_head(beliefs, version), lists))
 
 
 def transform_json(t: StaticTransform) -> dict[str, Any]:
@@ -120,14 +141,47 @@ def dumps(document: dict[str, Any]) -> str:
 def pieces(document: dict[str, Any]) -> Iterator[str]:
     """``dumps(document)`` and a newline, piece by piece: the whole text of a large run
     (and the list of its pieces) is never held at once."""
+    return _batched(_encoder().iterencode(json_safe(document)))
+
+
+def _batched(chunks: Iterable[str]) -> Iterator[str]:
+    """``chunks`` joined in batches, then a newline."""
     batch: list[str] = []
-    for chunk in _encoder().iterencode(json_safe(document)):
+    for chunk in chunks:
         batch.append(chunk)
         if len(batch) >= 4096:
             yield "".join(batch)
             batch.clear()
     batch.append("\n")
     yield "".join(batch)
+
+
+ITEM_INDENT = "\n    "
+"""A line break inside an item of a list that is a value of the top-level object (the
+encoder's indent is 2). JSON text has no raw line break inside a string, so an item
+encoded alone is indented for that depth by indenting each of its line breaks."""
+
+
+def _streamed(head: Mapping[str, Any],
+              lists: Mapping[str, tuple[Iterable[Any], Callable[[Any], Any]]]) -> Iterator[str]:
+    """The text ``_encoder`` gives for ``{**head, key: [make(item) ...] for each of lists}``,
+    made one item at a time."""
+    encoder = _encoder()
+    separator = "{"
+    for key, value in head.items():
+        yield f"{separator}\n  {encoder.encode(json_safe(key))}: "
+        yield encoder.encode(json_safe(value)).replace("\n", "\n  ")
+        separator = ","
+    for key, (items, make) in lists.items():
+        yield f"{separator}\n  {encoder.encode(json_safe(key))}: "
+        separator = ","
+        opened = False
+        for item in items:
+            yield ",\n    " if opened else "[\n    "
+            opened = True
+            yield encoder.encode(json_safe(make(item))).replace("\n", ITEM_INDENT)
+        yield "\n  ]" if opened else "[]"
+    yield "\n}" if separator == "," else "{}"
 
 
 def write(document: dict[str, Any], out: TextIO) -> None:

@@ -11,7 +11,6 @@ below ``rospack_nosubdirs``. Earlier roots win; within a root, the first package
 from __future__ import annotations
 
 import os
-from pathlib import Path
 
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
 
@@ -95,29 +94,32 @@ def default_package_roots(launch_file: str) -> list[str]:
     that package (a catkin/colcon workspace: the root is its ``src``); without one, the
     package's parent folder is the root. A file outside any package has no roots."""
     # os.path.realpath, not Path.resolve: on Python 3.8 resolve() leaves a reference cycle
-    # (a recursive closure) behind for every call.
-    directory = Path(os.path.realpath(launch_file)).parent
-    package: Path | None = None
+    # (a recursive closure) behind for every call; os.path, not pathlib, which (with
+    # urllib.parse) would be start-up time for every run.
+    directory = os.path.dirname(os.path.realpath(launch_file))
+    package: str | None = None
     for _ in range(MAX_WALK_UP):
-        if (directory / "package.xml").is_file():
+        if os.path.isfile(os.path.join(directory, "package.xml")):
             package = directory
             break
-        if directory.parent == directory:
+        parent = os.path.dirname(directory)
+        if parent == directory:
             return []
-        directory = directory.parent
+        directory = parent
     if package is None:
         return []
     # A package's own ``src`` (its C++ sources) is not a workspace: only a ``src`` that
     # holds the package counts.
-    directory = package.parent
+    directory = os.path.dirname(package)
     for _ in range(MAX_WALK_UP):
-        source = directory / "src"
-        if source in package.parents and source.is_dir():
-            return [str(source)]
-        if directory.parent == directory:
+        source = os.path.join(directory, "src")
+        if package.startswith(source + os.sep) and os.path.isdir(source):
+            return [source]
+        parent = os.path.dirname(directory)
+        if parent == directory:
             break
-        directory = directory.parent
-    return [str(package.parent)]
+        directory = parent
+    return [os.path.dirname(package)]
 
 
 def nearest_package_xml(launch_file: str) -> str | None:

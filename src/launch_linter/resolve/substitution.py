@@ -16,7 +16,6 @@ from dataclasses import dataclass
 from typing import Optional, Tuple
 
 from launch_linter.model.budget import Budget
-from launch_linter.resolve import safe_eval
 from launch_linter.resolve.value import Hole, Part, Value, is_resolved, join, resolved_text
 
 VALID_COMMANDS = ("find", "env", "optenv", "dirname", "anon", "arg")
@@ -276,6 +275,10 @@ def _replace_find(
 def _evaluate(expression: str, whole: str, scope: SubstitutionScope) -> Value:
     if "__" in expression:
         raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
+    # Imported here: the interpreter (and ``ast``) is needed only by the few files with an
+    # $(eval), and most runs start up without it.
+    from launch_linter.resolve import safe_eval
+
     eval_scope = safe_eval.EvalScope(
         args={name: resolved_text(v) for name, v in scope.args.items()},
         env=scope.env,

@@ -14,12 +14,13 @@ import typing
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
-from launch_linter.frontends.robot.urdf import joints_of, literal_root
-from launch_linter.frontends.robot.xacro import Expansion, expand
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.resolve.packages import PackageIndex
+
+if typing.TYPE_CHECKING:
+    from launch_linter.frontends.robot.xacro import Expansion
 
 RSP_PACKAGE = "robot_state_publisher"
 _XACRO_NAMED = re.compile(r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]""")
@@ -41,6 +42,10 @@ class RobotCache:
         key = (file, args, tuple(packages.roots), tuple(sorted(env.items())))
         found = self._expansions.get(key)
         if found is None:
+            # Imported when a description is first expanded: xacro (with its interpreter
+            # of ${} expressions) is a third of the start-up of a run that meets none.
+            from launch_linter.frontends.robot.xacro import expand
+
             found = self._expansions[key] = expand(file, dict(args), packages.find, env)
         return found
 
@@ -114,6 +119,9 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     publishes = any(node.package == RSP_PACKAGE for node in tree.nodes)
     if not publishes:
         return tree
+    # Imported here, as xacro is in RobotCache: only trees that publish a robot need it.
+    from launch_linter.frontends.robot.urdf import joints_of, literal_root
+
     cache = cache if cache is not None else RobotCache()
     joints: list[RobotJoint] = []
     problems_found: list[Problem] = []
