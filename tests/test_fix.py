@@ -10,7 +10,7 @@ import pytest
 
 from launch_linter.cli import main
 from launch_linter.engine import LintOptions, lint_paths, lint_text
-from launch_linter.fix import apply_edits
+from launch_linter.fix import Source, apply_edits
 from launch_linter.model.diagnostic import Applicability
 from launch_linter.rules._fixes import distro_at_least
 
@@ -230,3 +230,34 @@ def test_sarif_carries_the_fix(tmp_path: Path, capsys: pytest.CaptureFixture[str
     assert path.read_bytes()[start : start + length] == b"/b"
     assert replacement["insertedContent"]["text"] == "b"
     assert result["properties"]["fixApplicability"] == "safe"
+
+
+PYTHON_TWO_NODES = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="tf2_ros", executable="static_transform_publisher", name="a",
+             arguments=["0", "0", "0", "0", "0", "0", "/odom", "base"]),
+        Node(package="tf2_ros", executable="static_transform_publisher",
+             arguments=["0", "0", "0", "0", "0", "0", "/base_link", "laser"]),
+    ])
+"""
+
+
+def test_every_python_fix_of_a_file_is_located() -> None:
+    # One parse serves both: each search keeps to the lines of its own call.
+    after = fixed(PYTHON_TWO_NODES, "leading_slash", "robot.launch.py")
+    assert after == PYTHON_TWO_NODES.replace('"/odom"', '"odom"').replace(
+        '"/base_link"', '"base_link"')
+
+
+def test_source_finds_the_call_under_a_decorator() -> None:
+    # A decorator lies above the first line of the function it decorates: searching by
+    # lines must not skip it.
+    text = b'@wrap(Node(arguments=["a", "b"]))\ndef f():\n    pass\n'
+    spans = Source("x.launch.py", text).word_spans(1, 1)
+    assert spans is not None and [text[a:b] for a, b in spans] == [b'"a"', b'"b"']
+    assert Source("x.launch.py", text).word_spans(2, 1) is None
+    assert Source("x.launch.py", b"def (:\n").word_spans(1, 1) is None

@@ -11,6 +11,7 @@ or its words are not the ones the rule read. Every byte outside the edited words
 from __future__ import annotations
 
 import ast
+import collections
 import difflib
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -25,6 +26,7 @@ MAX_FIX_PASSES = 8
 
 _ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _WORD = re.compile(rb"[^ \t\r\n]+")
+_TAG_BODY = re.compile(rb"""(?:[^>"']+|"[^"]*"|'[^']*')*""")
 
 Span = Tuple[int, int]
 
@@ -38,66 +40,113 @@ def _line_starts(data: bytes) -> list[int]:
     return starts
 
 
-def _xml_word_spans(data: bytes, line: int, column: int) -> list[Span] | None:
-    """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
-    starts = _line_starts(data)
-    if not 1 <= line <= len(starts):
-        return None
-    begin = starts[line - 1]
-    position = begin + max(column - 1, 0)
-    if data[position : position + 1] != b"<":
-        position = data.find(b"<", begin)
-        if position < 0 or (line < len(starts) and position >= starts[line]):
+class Source:
+    """One file's bytes, with what locating words in it needs, worked out once per file
+    however many of its diagnostics carry a fix: its line starts, and for Python the
+    ``arguments=[...]`` lists of its calls by line (one parse)."""
+
+    def __init__(self, path: str, data: bytes) -> None:
+        self.path = path
+        self.data = data
+        self.python = path.endswith(".py")
+        self.yaml = path.endswith((".yaml", ".yml"))
+        self._starts: list[int] | None = None
+        self._module: ast.Module | None = None
+        self._calls: dict[int, list[Span] | None] = {}
+
+    @property
+    def line_starts(self) -> list[int]:
+        if self._starts is None:
+            self._starts = _line_starts(self.data)
+        return self._starts
+
+    def word_spans(self, line: int, column: int) -> list[Span] | None:
+        """The spans of the argument words of the element or call at line:column."""
+        if self.yaml:
             return None
-    end = position + 1
-    quote = 0
-    while end < len(data):  # the end of the start tag: a '>' outside quotes
-        byte = data[end]
-        if quote:
-            if byte == quote:
-                quote = 0
-        elif byte in b"\"'":
-            quote = byte
-        elif byte == ord(">"):
-            break
-        end += 1
-    found: Span | None = None
-    for match in _ATTRIBUTE.finditer(data, position, end):
-        if match.group(1) == b"args":
-            group = 2 if match.group(2) is not None else 3
-            found = (match.start(group), match.end(group))
-    if found is None:
+        if self.python:
+            if line not in self._calls:
+                self._calls[line] = self._python_spans(line)
+            return self._calls[line]
+        return self._xml_word_spans(line, column)
+
+    def _xml_word_spans(self, line: int, column: int) -> list[Span] | None:
+        """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
+        data, starts = self.data, self.line_starts
+        if not 1 <= line <= len(starts):
+            return None
+        begin = starts[line - 1]
+        position = begin + max(column - 1, 0)
+        if data[position : position + 1] != b"<":
+            position = data.find(b"<", begin)
+            if position < 0 or (line < len(starts) and position >= starts[line]):
+                return None
+        # The end of the start tag: a '>' outside quotes (an unclosed quote runs to the
+        # end of the file).
+        body = _TAG_BODY.match(data, position + 1)  # matches always (maybe nothing)
+        end = body.end() if body is not None else position + 1
+        if data[end : end + 1] not in (b">", b""):
+            end = len(data)
+        found: Span | None = None
+        for match in _ATTRIBUTE.finditer(data, position, end):
+            if match.group(1) == b"args":
+                group = 2 if match.group(2) is not None else 3
+                found = (match.start(group), match.end(group))
+        if found is None:
+            return None
+        value = data[found[0] : found[1]]
+        if b"$(" in value or b"&" in value or b"<" in value:
+            return None
+        return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
+
+    def _python_spans(self, line: int) -> list[Span] | None:
+        """Byte spans (quotes included) of the string items of ``arguments=[...]`` of the
+        first call on ``line`` that has one (in ``ast.walk`` order); None unless every item
+        is a plain one-line string literal."""
+        if self._module is None:
+            try:
+                self._module = ast.parse(self.data)
+            except (SyntaxError, ValueError, RecursionError, MemoryError):
+                self._module = ast.Module(body=[], type_ignores=[])
+        # ast.walk's breadth-first order, without the subtrees that lie off the line (a
+        # file parsed once, each line's search a thin slice of it).
+        queue: collections.deque[ast.AST] = collections.deque([self._module])
+        while queue:
+            node = queue.popleft()
+            if isinstance(node, ast.Call) and node.lineno == line:
+                for keyword in node.keywords:
+                    value = keyword.value
+                    if keyword.arg == "arguments" and isinstance(value, (ast.List, ast.Tuple)):
+                        return _string_spans(value.elts, self.line_starts)
+            for child in ast.iter_child_nodes(node):
+                if _may_hold(child, line):
+                    queue.append(child)
         return None
-    value = data[found[0] : found[1]]
-    if b"$(" in value or b"&" in value or b"<" in value:
-        return None
-    return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
 
 
-def _python_word_spans(data: bytes, line: int, column: int) -> list[Span] | None:
-    """Byte spans (quotes included) of the string items of ``arguments=[...]`` of the call
-    at line:column; None unless every item is a plain one-line string literal."""
-    try:
-        tree = ast.parse(data)
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        return None
-    starts = _line_starts(data)
-    for node in ast.walk(tree):
-        if not isinstance(node, ast.Call) or node.lineno != line:
-            continue
-        for keyword in node.keywords:
-            if keyword.arg != "arguments" or not isinstance(keyword.value, (ast.List, ast.Tuple)):
-                continue
-            spans: list[Span] = []
-            for item in keyword.value.elts:
-                if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
-                    return None
-                if item.end_lineno != item.lineno or item.end_col_offset is None:
-                    return None
-                base = starts[item.lineno - 1]
-                spans.append((base + item.col_offset, base + item.end_col_offset))
-            return spans
-    return None
+def _may_hold(node: ast.AST, line: int) -> bool:
+    """False for a node whose lines do not include ``line`` (nor do its children's)."""
+    if isinstance(node, _DECORATED):
+        return True  # its decorators lie above its first line
+    first = getattr(node, "lineno", None)
+    last = getattr(node, "end_lineno", None)
+    return first is None or last is None or first <= line <= last
+
+
+_DECORATED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+
+
+def _string_spans(items: list[ast.expr], starts: list[int]) -> list[Span] | None:
+    """The items' spans, when each is a plain one-line string literal; else None."""
+    spans: list[Span] = []
+    for item in items:
+        if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
+            return None
+        if item.end_lineno != item.lineno or item.end_col_offset is None:
+            return None
+        base = starts[item.lineno - 1]
+        spans.append((base + item.col_offset, base + item.end_col_offset))
+    return spans
 
 
 def _python_literal(text: str, like: bytes) -> str:
@@ -107,14 +156,13 @@ def _python_literal(text: str, like: bytes) -> str:
 
 def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
     """The byte edits of ``fix`` in ``data`` (the file ``path``); () when not found."""
-    python = path.endswith(".py")
-    spans = (
-        _python_word_spans(data, line, column)
-        if python
-        else _xml_word_spans(data, line, column)
-        if not path.endswith((".yaml", ".yml"))
-        else None
-    )
+    return locate_in(fix, Source(path, data), line, column)
+
+
+def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, ...]:
+    """The byte edits of ``fix`` in ``source`` at line:column; () when not found."""
+    path, data, python = source.path, source.data, source.python
+    spans = source.word_spans(line, column)
     if spans is None:
         return ()
     words = [data[a:b] for a, b in spans]
@@ -169,19 +217,22 @@ def with_located_fixes(
 ) -> tuple[Diagnostic, ...]:
     """Each diagnostic with its fix located in its file (or without a fix when it cannot
     be), a fix that is safe for the target distribution marked safe."""
-    cache: dict[str, bytes | None] = dict(sources or {})
+    given = sources or {}
+    cache: dict[str, Source | None] = {}
     out: list[Diagnostic] = []
     for diagnostic in diagnostics:
         fix = diagnostic.fix
         if fix is None:
             out.append(diagnostic)
             continue
-        if diagnostic.path not in cache:
-            cache[diagnostic.path] = read_bytes(diagnostic.path)
-        data = cache[diagnostic.path]
+        path = diagnostic.path
+        if path not in cache:
+            data = given[path] if path in given else read_bytes(path)
+            cache[path] = None if data is None else Source(path, data)
+        source = cache[path]
         edits = (
-            locate(fix, diagnostic.path, diagnostic.line, diagnostic.column, data)
-            if data is not None
+            locate_in(fix, source, diagnostic.line, diagnostic.column)
+            if source is not None
             else ()
         )
         if not edits:
@@ -278,10 +329,12 @@ def write_file(path: str, data: bytes) -> None:
 
 
 __all__ = [
+    "Source",
     "apply_edits",
     "fix_until_stable",
     "fixes_by_file",
     "locate",
+    "locate_in",
     "read_bytes",
     "unified_diff",
     "wanted",

@@ -47,3 +47,14 @@ def test_a_static_transform_that_freezes_a_movable_joint(lint) -> None:  # type:
            '<node pkg="tf2_ros" type="static_transform_publisher" name="a" '
            'args="0 0 0 0 0 0 base_link arm_link"/></launch>')
     assert lint(xml, RULE) == [(RULE, 2)]
+
+
+def test_thousands_of_one_transform_in_one_file_and_one_other(lint_tree) -> None:  # type: ignore[no-untyped-def]
+    node = ('<node pkg="tf2_ros" type="static_transform_publisher" name="{}" '
+            'args="0.{} 0 0 0 0 0 base_link laser"/>')
+    many = "".join(node.format(f"a{i}", i + 1) for i in range(3_000))
+    files = {"a.launch": f'<launch>{many}<include file="$(dirname)/b.launch"/></launch>',
+             "b.launch": f'<launch>{node.format("b", 1)}</launch>'}
+    (found,) = lint_tree(files, "a.launch", RULE)
+    # The first of a.launch with other values than b.launch's (0.1) is the one named.
+    assert found.path.endswith("b.launch") and "static transform 'a1'" in found.message

@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import tracemalloc
 from typing import Callable, List, Tuple
 
 from launch_linter.model import Diagnostic, Location
@@ -80,3 +81,16 @@ def test_unresolved_member_makes_the_series_unknown(lint: Lint) -> None:
     ).replace("<launch>", '<launch>\n<arg name="n"/>')
     assert lint(xml, RULE) == []
     assert lint(xml, RULE, {"n": "5"}) == [(RULE, 5)]
+
+
+def test_a_huge_gap_is_counted_not_listed(lint: Lint) -> None:
+    # Listing the ten million numbers between the two would take hundreds of megabytes:
+    # the gap is counted first (and is too wide to be a series).
+    xml = launch(("tf_1", "base", "a"), ("tf_10000000", "base", "b"))
+    tracemalloc.start()
+    try:
+        assert lint(xml, RULE) == []
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 50 * 1024 * 1024

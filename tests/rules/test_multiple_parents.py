@@ -152,3 +152,23 @@ def test_description_without_state_publisher_is_not_published() -> None:
     assert ws_lint("demo_description/launch/upload.launch", RULE) == ()
     (found,) = ws_lint("demo_description/launch/plain.launch", RULE)
     assert "URDF joint 'gps_joint'" in found.message
+
+
+def test_a_frame_with_thousands_of_parents_gets_bounded_findings(
+    lint_diagnostics: LintDiagnostics,
+) -> None:
+    count = 5_000
+    xml = "\n".join(["<launch>", *(node(f"t{i}", f"p{i}", "shared") for i in range(count)),
+                     "</launch>"])
+    found = lint_diagnostics(xml, RULE)
+    assert len(found) == count - 1
+    last = found[-1]
+    assert last.message.startswith(f"frame 'shared' gets {count} parents: 'p{count - 1}' here")
+    assert f"and {count - 1 - 5} more;" in last.message and len(last.message) < 400
+    assert len(last.related) == 10 and last.related[0].line == 2
+
+
+def test_the_same_parent_many_times_is_one_parent(lint: Lint) -> None:
+    xml = "\n".join(["<launch>", *(node(f"t{i}", "base", "laser") for i in range(3_000)),
+                     node("other", "odom", "laser"), "</launch>"])
+    assert lint(xml, RULE) == [(RULE, 3_002)]

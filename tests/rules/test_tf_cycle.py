@@ -130,3 +130,43 @@ def test_reports_a_loop_exactly_when_there_is_one(edges: set[tuple[int, int]]) -
     found = run_rule(xml, RULE)
     assert bool(found) == _has_cycle(edges)
     assert all(len(d.related) >= 1 for d in found)
+
+
+LONG = 5_000
+
+
+def test_a_long_chain_has_no_loop_and_no_recursion_error(lint: Lint) -> None:
+    xml = launch(*(node(f"t{i}", f"f{i}", f"f{i + 1}") for i in range(LONG)))
+    assert lint(xml, RULE) == []
+
+
+def test_a_long_loop_is_one_finding_with_a_bounded_message(
+    lint_diagnostics: LintDiagnostics,
+) -> None:
+    xml = launch(*(node(f"t{i}", f"f{i}", f"f{(i + 1) % LONG}") for i in range(LONG)))
+    (found,) = lint_diagnostics(xml, RULE)
+    assert found.line == LONG + 1 and len(found.related) == 10
+    assert f"f0 -> f1 -> f2 -> f3 -> f4 -> and {LONG - 4} more (with line 2" in found.message
+    assert f"and {LONG - 6} more)" in found.message and len(found.message) < 400
+
+
+def test_loops_of_later_frames_of_a_closed_chain_are_found(lint: Lint) -> None:
+    # f0 closes the long loop; f2 <-> f3 is a loop of its own among the later frames.
+    nodes = [node(f"t{i}", f"f{i}", f"f{(i + 1) % 50}") for i in range(50)]
+    nodes.append(node("back", "f3", "f2"))
+    assert lint(launch(*nodes), RULE) == [(RULE, 51), (RULE, 52)]
+
+
+def test_a_conditional_transform_in_a_long_loop(lint_diagnostics: LintDiagnostics) -> None:
+    nodes = [node(f"t{i}", f"f{i}", f"f{i + 1}") for i in range(LONG - 1)]
+    nodes.append(node("close", f"f{LONG - 1}", "f0", 'if="$(arg x)"'))
+    (found,) = lint_diagnostics(launch(*nodes, args='<arg name="x"/>'), RULE)
+    assert "may form a loop" in found.message
+
+
+def test_many_two_frame_loops_in_one_component_stay_bounded(lint: Lint) -> None:
+    # A ladder f0 <-> f1 <-> f2 ...: one strongly connected component with many loops.
+    nodes = [n for i in range(300)
+             for n in (node(f"u{i}", f"f{i}", f"f{i + 1}"), node(f"d{i}", f"f{i + 1}", f"f{i}"))]
+    found = lint(launch(*nodes), RULE)
+    assert len(found) == 100

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -224,11 +225,12 @@ class StaticTransform:
 
     def is_unresolved(self, *fields: Field) -> bool:
         """True when any of ``fields`` could not be resolved."""
-        return any(f in self.unresolved for f in fields)
+        # Asked many times per transform by the rules; most transforms are fully resolved.
+        return bool(self.unresolved) and not self.unresolved.isdisjoint(fields)
 
     def knows(self, *fields: Field) -> bool:
         """True when every one of ``fields`` is resolved."""
-        return not self.is_unresolved(*fields)
+        return not self.unresolved or self.unresolved.isdisjoint(fields)
 
     @property
     def unresolved_names(self) -> tuple[str, ...]:
@@ -245,9 +247,11 @@ class StaticTransform:
     def child(self) -> str | None:
         return normalise_frame(self.child_written)
 
-    @property
+    @functools.cached_property
     def signature(self) -> tuple[str, str] | None:
-        """(parent, child) without leading slashes; None unless both are resolved."""
+        """(parent, child) without leading slashes; None unless both are resolved. Most
+        rules ask, several times per transform: worked out once (kept in the instance's
+        dictionary, which a frozen dataclass has)."""
         parent, child = self.parent, self.child
         if parent is None or child is None:
             return None

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import itertools
 import typing
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from types import ModuleType
-from typing import Callable
+from typing import Any, Callable, TypeVar
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
@@ -22,6 +23,8 @@ from launch_linter.model.diagnostic import (
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
 
+T = TypeVar("T")
+
 
 @dataclass(frozen=True)
 class RuleContext:
@@ -33,10 +36,23 @@ class RuleContext:
     """``default``, or ``study``: the study's checks and severities (see docs/severity.md)."""
     distro: str | None = None
     """The target ROS distribution (lower case), None when unknown (see docs/severity.md)."""
+    _shared: dict[Callable[[LaunchTree], Any], Any] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+    """What ``shared`` worked out for this tree, by the function that works it out."""
 
     @property
     def study(self) -> bool:
         return self.profile == "study"
+
+    def shared(self, index: Callable[[LaunchTree], T]) -> T:
+        """``index(tree)``, worked out once for all the rules run on this tree: the edges
+        of the tf tree, the transforms by file (several rules read each; none re-scans)."""
+        try:
+            return typing.cast(T, self._shared[index])
+        except KeyError:
+            value = self._shared[index] = index(self.tree)
+            return value
 
 
 @dataclass(frozen=True)
@@ -180,6 +196,12 @@ def by_file(transforms: Iterable[StaticTransform]) -> dict[str, list[StaticTrans
     return groups
 
 
+def transforms_by_file(tree: LaunchTree) -> dict[str, list[StaticTransform]]:
+    """The tree's transforms by file: an index for ``RuleContext.shared`` (read, never
+    changed, by the rules that share it)."""
+    return by_file(tree.transforms)
+
+
 def can_coexist(a: StaticTransform, b: StaticTransform) -> bool:
     """False when the two presence conditions exclude each other (``if`` vs ``unless``)."""
     return not a.condition.excludes(b.condition)
@@ -208,3 +230,11 @@ def summarised(items: list[str], limit: int = MAX_LISTED) -> list[str]:
     if len(items) <= limit:
         return items
     return [*items[:limit], f"and {len(items) - limit} more"]
+
+
+def summarised_lazily(items: Iterable[str], count: int, limit: int = MAX_LISTED) -> list[str]:
+    """``summarised`` of the ``count`` items of ``items``, only the ones shown worked out
+    (the output per finding stays bounded, and so does the work for it)."""
+    if count <= limit:
+        return list(items)
+    return [*itertools.islice(items, limit), f"and {count - limit} more"]

@@ -13,7 +13,7 @@ from typing import Callable, Optional, Tuple, Union
 
 from launch_linter.model.diagnostic import Belief, Severity
 from launch_linter.model.transform import Field, RotationKind, StaticTransform
-from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at, transforms_by_file
 
 Key = Union[Tuple[str, ...], str]
 KeyOf = Callable[[StaticTransform], Optional[Key]]
@@ -72,7 +72,7 @@ def implications(
     index = context.beliefs.by_antecedent(rule_id)
     if not index:
         return
-    for transforms in by_file(context.tree.transforms).values():
+    for transforms in context.shared(transforms_by_file).values():
         if any(unresolved(t) for t in transforms):
             continue
         first: dict[Key, StaticTransform] = {}

@@ -11,7 +11,7 @@ from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
-from launch_linter.rules._api import Finding
+from launch_linter.rules._api import Finding, RuleContext
 
 Quaternion = typing.Tuple[float, float, float, float]
 """(x, y, z, w)."""
@@ -112,7 +112,7 @@ def _joint_edge(j: RobotJoint) -> Edge | None:
                 Location(j.path, j.line, j.column), joint=j)
 
 
-def tree_edges(tree: LaunchTree) -> list[Edge]:
+def tree_edges(tree: LaunchTree) -> tuple[Edge, ...]:
     """URDF joints first (the robot's own structure), then launch static transforms in
     tree order, so that a finding lands on the launch file that adds to the robot."""
     edges: list[Edge] = []
@@ -124,7 +124,12 @@ def tree_edges(tree: LaunchTree) -> list[Edge]:
         edge = _transform_edge(transform)
         if edge is not None:
             edges.append(edge)
-    return edges
+    return tuple(edges)
+
+
+def edges_of(context: RuleContext) -> tuple[Edge, ...]:
+    """The tree's edges, built once for all the tree rules run on one tree."""
+    return context.shared(tree_edges)
 
 
 def coexist(a: Edge, b: Edge) -> bool:

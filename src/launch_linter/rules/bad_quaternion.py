@@ -94,6 +94,8 @@ def _problem(values: tuple[float, ...]) -> tuple[Severity, str] | None:
         )
     squared = sum(v * v for v in values)
     deviation = abs(squared - 1.0)
+    if deviation <= ROSWTF_TOLERANCE:
+        return None  # the usual case: nothing to say, nothing to format
     norm = math.sqrt(squared)
     unit = " ".join(f"{v / norm:.7g}" for v in values)
     if deviation >= TF2_TOLERANCE:

@@ -48,11 +48,12 @@ copy is redundant, not wrong). Values that are not resolved are not compared.
 
 from __future__ import annotations
 
+import collections
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._tree import Edge, coexist, finding_on, tree_edges
+from launch_linter.rules._tree import Edge, coexist, edges_of, finding_on
 
 ID = "conflicting_transform"
 CATEGORY = Category.TF
@@ -75,20 +76,63 @@ def _conflict(a: Edge, b: Edge) -> str:
     return "with different values; tf2 keeps whichever arrives last"
 
 
+class _Sources:
+    """The edges seen so far for one (parent, child): URDF joints, and launch transforms by
+    file, each file's only the first of each condition and values (a later one with the
+    same would conflict exactly when that one does, and comes after it), with positions."""
+
+    def __init__(self) -> None:
+        self.joints: list[tuple[int, Edge]] = []
+        self.launch: dict[str, list[tuple[int, Edge]]] = {}
+        self.kinds: dict[str, set[object]] = {}
+
+    def add(self, position: int, edge: Edge) -> None:
+        if edge.joint is not None:
+            self.joints.append((position, edge))
+            return
+        path = edge.location.path
+        kind = (edge.condition, edge.translation, edge.rotation)
+        kinds = self.kinds.setdefault(path, set())
+        if kind not in kinds:
+            kinds.add(kind)
+            self.launch.setdefault(path, []).append((position, edge))
+
+    def first_conflict(self, edge: Edge) -> tuple[Edge, str] | None:
+        """The earliest edge that conflicts with ``edge``, and why. Two joints never
+        conflict, nor two transforms of one file (dup_sig's case): those are not looked at."""
+        groups = [known for path, known in self.launch.items()
+                  if edge.joint is not None or path != edge.location.path]
+        if edge.joint is None:
+            groups.append(self.joints)
+        best: tuple[int, Edge, str] | None = None
+        for known in groups:
+            for position, other in known:
+                if best is not None and position > best[0]:
+                    break
+                why = _conflict(other, edge) if coexist(other, edge) else ""
+                if why:
+                    best = (position, other, why)
+                    break
+        return None if best is None else (best[1], best[2])
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
-    seen: dict[tuple[str, str], list[Edge]] = {}
-    for edge in tree_edges(context.tree):
-        earlier = seen.setdefault((edge.parent, edge.child), [])
-        for other in earlier:
-            if not coexist(other, edge):
-                continue
-            why = _conflict(other, edge)
-            if why:
-                yield finding_on(
-                    edge,
-                    f"'{edge.parent}' -> '{edge.child}' is also published by "
-                    f"{other.describe()}, {why}",
-                    (other,),
-                )
-                break
-        earlier.append(edge)
+    edges = edges_of(context)
+    # Only an edge published more than once can conflict (most are published once).
+    counts = collections.Counter((edge.parent, edge.child) for edge in edges)
+    seen: dict[tuple[str, str], _Sources] = {}
+    for position, edge in enumerate(edges):
+        key = (edge.parent, edge.child)
+        if counts[key] < 2:
+            continue
+        sources = seen.setdefault(key, _Sources())
+        conflict = sources.first_conflict(edge)
+        sources.add(position, edge)
+        if conflict is not None:
+            other, why = conflict
+            yield finding_on(
+                edge,
+                f"'{edge.parent}' -> '{edge.child}' is also published by "
+                f"{other.describe()}, {why}",
+                (other,),
+            )

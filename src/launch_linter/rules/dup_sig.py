@@ -40,11 +40,11 @@ from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import (
     Finding,
     RuleContext,
-    by_file,
     can_coexist,
     finding_at,
     place,
     same_element,
+    transforms_by_file,
 )
 
 ID = "dup_sig"
@@ -61,7 +61,7 @@ def _agreement(a: StaticTransform, b: StaticTransform) -> str:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    for transforms in by_file(context.tree.transforms).values():
+    for transforms in context.shared(transforms_by_file).values():
         seen: dict[tuple[str, str], list[StaticTransform]] = {}
         for transform in transforms:
             signature = transform.signature

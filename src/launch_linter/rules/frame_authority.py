@@ -63,7 +63,7 @@ from collections.abc import Iterator
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._tree import finding_on, tree_edges
+from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "frame_authority"
 CATEGORY = Category.TF
@@ -138,7 +138,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
     publishers = [(n, p) for n in context.tree.nodes if (p := publishes(n)) is not None]
     if not publishers:
         return
-    for edge in tree_edges(context.tree):
+    for edge in edges_of(context):
         if edge.joint is not None:
             continue
         for node, (what, (parent, children)) in publishers:

@@ -47,7 +47,7 @@ from dataclasses import dataclass
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.transform import Field, StaticTransform
-from launch_linter.rules._api import Finding, RuleContext, by_file, finding_at
+from launch_linter.rules._api import Finding, RuleContext, finding_at, transforms_by_file
 
 ID = "int_suffix"
 CATEGORY = Category.MAY_SEMANTIC
@@ -90,7 +90,9 @@ def _series(
     series: dict[str, dict[int, tuple[str, StaticTransform]]] = {}
     for transform in transforms:
         value = kind.value(transform)
-        if value is None or transform.is_unresolved(kind.field):
+        # Most values do not end in a digit: no pattern to try (isdigit() holds for every
+        # character \d matches).
+        if value is None or not value[-1:].isdigit() or transform.is_unresolved(kind.field):
             continue
         match = _SUFFIXED.match(value)
         if match is None or match["stem"].endswith(_SYNTHETIC_STEM):
@@ -110,16 +112,21 @@ def _unresolved_values(transforms: list[StaticTransform], kind: _Kind) -> list[s
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    for transforms in by_file(context.tree.transforms).values():
+    for transforms in context.shared(transforms_by_file).values():
+        if len(transforms) < 2:
+            continue  # a series has two numbers at least
         for kind in KINDS:
             blocked = _unresolved_values(transforms, kind)
             for stem, numbers in _series(transforms, kind).items():
                 if len(numbers) < 2 or any(text.startswith(stem) for text in blocked):
                     continue
                 present = sorted(numbers)
-                missing = sorted(set(range(present[0], present[-1] + 1)) - set(present))
-                if not missing or len(missing) >= len(present):
+                # Counted before the gap is listed: "frame_1" and "frame_999999999" must not
+                # make a range of a billion numbers.
+                gaps = present[-1] - present[0] + 1 - len(present)
+                if not gaps or gaps >= len(present):
                     continue
+                missing = sorted(set(range(present[0], present[-1] + 1)) - set(present))
                 spellings = [numbers[n][0] for n in present]
                 width = min(len(s) - len(stem) for s in spellings)
                 padded = any(s[len(stem)] == "0" and len(s) > len(stem) + 1 for s in spellings)

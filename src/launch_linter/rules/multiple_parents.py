@@ -42,42 +42,91 @@ by a node that publishes tf at run time (odometry, localization) is not seen.
 """
 from __future__ import annotations
 
+import collections
+import itertools
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.rules._api import MAX_LISTED, MAX_RELATED, Finding, RuleContext, summarised
-from launch_linter.rules._tree import Edge, coexist, finding_on, place, tree_edges
+from launch_linter.rules._api import (
+    MAX_RELATED,
+    Finding,
+    RuleContext,
+    summarised_lazily,
+)
+from launch_linter.rules._tree import Edge, coexist, edges_of, finding_on, place
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 
 
+class _Parents:
+    """The parents given so far to one frame: for each parent (in order of first mention)
+    its edges, the first of each condition only (a later edge under the same condition is
+    never the first to coexist with anything), each with its position in the tree."""
+
+    def __init__(self) -> None:
+        self.edges: dict[str, list[tuple[int, Edge]]] = {}
+        self.conditional_firsts = 0
+        """Parents whose first edge has a condition."""
+
+    def add(self, position: int, edge: Edge) -> None:
+        known = self.edges.setdefault(edge.parent, [])
+        if not known and not edge.condition.always:
+            self.conditional_firsts += 1
+        if all(other.condition != edge.condition for _, other in known):
+            known.append((position, edge))
+
+    def rivals(self, edge: Edge) -> tuple[list[tuple[str, Edge]], int, bool]:
+        """The first edge of each other parent that can coexist with ``edge`` (only the
+        first ``MAX_RELATED`` of them: what a finding shows), in the order in which they
+        come, how many there are, and whether any has a condition."""
+        parent = edge.parent
+        if edge.condition.always:
+            # Every edge coexists with this one: each other parent's first edge is its
+            # rival, in the order the parents came; no need to look at all of them.
+            count = len(self.edges) - (parent in self.edges)
+            firsts = ((p, known[0][1]) for p, known in self.edges.items() if p != parent)
+            mine = self.edges.get(parent)
+            own_conditional = mine is not None and not mine[0][1].condition.always
+            conditional = self.conditional_firsts > (1 if own_conditional else 0)
+            return list(itertools.islice(firsts, MAX_RELATED)), count, conditional
+        found: list[tuple[int, str, Edge]] = []
+        for other_parent, known in self.edges.items():
+            if other_parent == parent:
+                continue
+            first = next(((i, e) for i, e in known if coexist(e, edge)), None)
+            if first is not None:
+                found.append((first[0], other_parent, first[1]))
+        found.sort(key=lambda item: item[0])
+        conditional = any(not e.condition.always for _, _, e in found)
+        return [(p, e) for _, p, e in found[:MAX_RELATED]], len(found), conditional
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
-    by_child: dict[str, list[tuple[str, Edge]]] = {}
-    for edge in tree_edges(context.tree):
+    edges = edges_of(context)
+    # Only a frame that is the child of two edges may have two parents (most are of one).
+    counts = collections.Counter(edge.child for edge in edges)
+    by_child: dict[str, _Parents] = {}
+    for position, edge in enumerate(edges):
         parent, child = edge.parent, edge.child
-        if parent == child:
+        if parent == child or counts[child] < 2:
             continue
-        earlier = by_child.setdefault(child, [])
-        rivals: dict[str, Edge] = {}
-        for other_parent, other in earlier:
-            if other_parent != parent and coexist(other, edge):
-                rivals.setdefault(other_parent, other)
-        earlier.append((parent, edge))
-        if not rivals:
+        parents = by_child.setdefault(child, _Parents())
+        rivals, count, conditional = parents.rivals(edge)
+        parents.add(position, edge)
+        if not count:
             continue
-        others = " and ".join(summarised(
-            [f"'{p}' ({_where(t, edge)})" for p, t in rivals.items()], MAX_LISTED))
-        conditional = any(not t.condition.always for t in (edge, *rivals.values()))
-        gets = "may get" if conditional else "gets"
+        others = " and ".join(summarised_lazily(
+            (f"'{p}' ({_where(t, edge)})" for p, t in rivals), count))
+        gets = "may get" if conditional or not edge.condition.always else "gets"
         here = "here" if edge.joint is None else f"here (URDF joint '{edge.joint.name}')"
         yield finding_on(
             edge,
-            f"frame '{child}' {gets} {len(rivals) + 1} parents: '{parent}' {here} and "
+            f"frame '{child}' {gets} {count + 1} parents: '{parent}' {here} and "
             f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
             f"transform arrives last",
-            tuple(list(rivals.values())[:MAX_RELATED]),
+            tuple(t for _, t in rivals),
         )
 
 

@@ -50,10 +50,10 @@ from launch_linter.model.transform import RotationKind
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._tree import (
     Edge,
+    edges_of,
     finding_on,
     quaternion_from_ypr,
     same_rotation,
-    tree_edges,
 )
 
 ID = "optical_frame_rotation"
@@ -98,7 +98,7 @@ def _right_in_degrees(edge: Edge) -> bool:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    for edge in tree_edges(context.tree):
+    for edge in edges_of(context):
         if edge.dynamic or not is_optical(edge.child) or "optical" in edge.parent:
             continue
         if not own_body(edge.parent, edge.child):
