@@ -154,6 +154,17 @@ def _python_literal(text: str, like: bytes) -> str:
     return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
 
 
+def _constant(text: str) -> object:
+    """The value of the Python constant ``text`` (a ``ValueError`` if it is none).
+
+    ``ast.literal_eval`` would do, but its nested recursive helpers leave a reference
+    cycle per call, which only the garbage collector frees."""
+    node = ast.parse(text, mode="eval").body
+    if not isinstance(node, ast.Constant):
+        raise ValueError(f"not a constant: {text!r}")
+    return node.value
+
+
 def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
     """The byte edits of ``fix`` in ``data`` (the file ``path``); () when not found."""
     return locate_in(fix, Source(path, data), line, column)
@@ -168,7 +179,7 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
     words = [data[a:b] for a, b in spans]
     if python:
         try:
-            read = [ast.literal_eval(w.decode("utf-8")) for w in words]
+            read = [_constant(w.decode("utf-8")) for w in words]
         except (ValueError, SyntaxError, UnicodeDecodeError):
             return ()
         # ``arguments`` items are whole words only when none holds a blank.

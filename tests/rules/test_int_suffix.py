@@ -94,3 +94,19 @@ def test_a_huge_gap_is_counted_not_listed(lint: Lint) -> None:
     finally:
         tracemalloc.stop()
     assert peak < 50 * 1024 * 1024
+
+
+def test_a_suffix_of_thousands_of_digits_is_no_series(lint: Lint) -> None:
+    # Python refuses to read an integer of more than 4,300 digits: such a name must not
+    # crash the rule, and no numbering of that length is a series anybody wrote.
+    long_suffix = "7" * 5000
+    xml = launch(("tf_1", "base", "a"), (f"tf_{long_suffix}", "base", "b"),
+                 ("tf_2", "base", "c"))
+    assert lint(xml, RULE) == []
+
+
+def test_eighteen_digits_still_make_a_series(lint: Lint) -> None:
+    start = 10**17
+    xml = launch(*((f"tf_{start + n}", "base", child) for n, child in ((0, "a"), (1, "b"),
+                                                                      (3, "c"))))
+    assert [rule for rule, _ in lint(xml, RULE)] == [RULE]

@@ -53,7 +53,9 @@ ID = "int_suffix"
 CATEGORY = Category.MAY_SEMANTIC
 SEVERITY = Severity.INFO
 
-_SUFFIXED = re.compile(r"^(?P<stem>.*\D)(?P<number>\d+)$")
+# At most 18 digits: a longer run is no numbering anybody wrote by hand, and Python refuses
+# to read an integer of more than 4,300 digits (and reads long ones in quadratic time).
+_SUFFIXED = re.compile(r"^(?P<stem>.*\D)(?P<number>\d{1,18})$")
 # Our stand-in for $(anon id) numbers anonymous names itself; those numbers mean nothing.
 _SYNTHETIC_STEM = "_anon"
 MAX_LISTED = 6
