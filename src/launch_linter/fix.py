@@ -154,15 +154,22 @@ def _python_literal(text: str, like: bytes) -> str:
     return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
 
 
-def _constant(text: str) -> object:
-    """The value of the Python constant ``text`` (a ``ValueError`` if it is none).
+def _constants(words: list[str]) -> list[object]:
+    """The values of the Python constants ``words`` (a ``ValueError`` if one is none).
 
-    ``ast.literal_eval`` would do, but its nested recursive helpers leave a reference
-    cycle per call, which only the garbage collector frees."""
-    node = ast.parse(text, mode="eval").body
-    if not isinstance(node, ast.Constant):
-        raise ValueError(f"not a constant: {text!r}")
-    return node.value
+    One parse for all of them (they are items of one list in the file). Not
+    ``ast.literal_eval``: its nested recursive helpers leave a reference cycle per call,
+    which only the garbage collector frees."""
+    node = ast.parse("[" + ",\n".join(words) + "\n]", mode="eval").body
+    items = node.elts if isinstance(node, ast.List) else []
+    values: list[object] = []
+    for item in items:
+        if not isinstance(item, ast.Constant):
+            raise ValueError("not a constant")
+        values.append(item.value)
+    if len(values) != len(words):
+        raise ValueError("not one constant per word")
+    return values
 
 
 def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
@@ -179,7 +186,7 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
     words = [data[a:b] for a, b in spans]
     if python:
         try:
-            read = [_constant(w.decode("utf-8")) for w in words]
+            read = _constants([w.decode("utf-8") for w in words])
         except (ValueError, SyntaxError, UnicodeDecodeError):
             return ()
         # ``arguments`` items are whole words only when none holds a blank.
