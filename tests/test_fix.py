@@ -261,3 +261,32 @@ def test_source_finds_the_call_under_a_decorator() -> None:
     assert spans is not None and [text[a:b] for a, b in spans] == [b'"a"', b'"b"']
     assert Source("x.launch.py", text).word_spans(2, 1) is None
     assert Source("x.launch.py", b"def (:\n").word_spans(1, 1) is None
+
+
+def test_locating_fixes_keeps_only_the_last_files_sources(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Keeping every file's bytes, line starts and syntax tree until the end of a run made
+    # memory grow with the number of files.
+    import weakref
+
+    from launch_linter import fix
+
+    alive: weakref.WeakSet[Source] = weakref.WeakSet()
+    most = [0]
+
+    class CountedSource(Source):
+        def __init__(self, path: str, data: bytes) -> None:
+            super().__init__(path, data)
+            alive.add(self)
+            most[0] = max(most[0], len(alive))
+
+    monkeypatch.setattr(fix, "Source", CountedSource)
+    paths = []
+    for index in range(3 * fix.RECENT_SOURCES):
+        path = tmp_path / f"f{index}.launch"
+        path.write_text(launch(NODE.format(pkg="tf", name=f"n{index}", args="0 0 0 0 0 0 a /b 1")))
+        paths.append(str(path))
+    diagnostics = lint_paths(paths).diagnostics
+    assert sum(d.fix is not None for d in diagnostics) == len(paths)  # every one located
+    assert most[0] <= fix.RECENT_SOURCES + 1

@@ -23,6 +23,8 @@ from launch_linter.rules._fixes import distro_at_least
 
 MAX_FIX_BYTES = 8 * 1024 * 1024
 MAX_FIX_PASSES = 8
+RECENT_SOURCES = 16
+"""Files whose sources locating fixes keeps at once."""
 
 _ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _WORD = re.compile(rb"[^ \t\r\n]+")
@@ -236,7 +238,10 @@ def with_located_fixes(
     """Each diagnostic with its fix located in its file (or without a fix when it cannot
     be), a fix that is safe for the target distribution marked safe."""
     given = sources or {}
-    cache: dict[str, Source | None] = {}
+    # The diagnostics come file by file (a root file's, then its includes'), so the few
+    # files seen last are the ones asked for again; keeping every file's source (bytes,
+    # line starts, a Python file's syntax tree) would grow with the run.
+    cache: collections.OrderedDict[str, Source | None] = collections.OrderedDict()
     out: list[Diagnostic] = []
     for diagnostic in diagnostics:
         fix = diagnostic.fix
@@ -244,9 +249,13 @@ def with_located_fixes(
             out.append(diagnostic)
             continue
         path = diagnostic.path
-        if path not in cache:
+        if path in cache:
+            cache.move_to_end(path)
+        else:
             data = given[path] if path in given else read_bytes(path)
             cache[path] = None if data is None else Source(path, data)
+            if len(cache) > RECENT_SOURCES:
+                cache.popitem(last=False)
         source = cache[path]
         edits = (
             locate_in(fix, source, diagnostic.line, diagnostic.column)
