@@ -19,6 +19,7 @@ from dataclasses import replace
 from typing import Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
+from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules._fixes import distro_at_least
 
 MAX_FIX_BYTES = 8 * 1024 * 1024
@@ -54,7 +55,7 @@ class Source:
         self.yaml = path.endswith((".yaml", ".yml"))
         self._starts: list[int] | None = None
         self._module: ast.Module | None = None
-        self._calls: dict[int, list[Span] | None] = {}
+        self._calls: dict[int, tuple[list[Span], list[str]] | None] = {}
 
     @property
     def line_starts(self) -> list[int]:
@@ -67,10 +68,16 @@ class Source:
         if self.yaml:
             return None
         if self.python:
-            if line not in self._calls:
-                self._calls[line] = self._python_spans(line)
-            return self._calls[line]
+            words = self.python_words(line)
+            return None if words is None else words[0]
         return self._xml_word_spans(line, column)
+
+    def python_words(self, line: int) -> tuple[list[Span], list[str]] | None:
+        """The spans and values of the string items of ``arguments=[...]`` of the call on
+        ``line`` (see ``_python_spans``), worked out once per line."""
+        if line not in self._calls:
+            self._calls[line] = self._python_spans(line)
+        return self._calls[line]
 
     def _xml_word_spans(self, line: int, column: int) -> list[Span] | None:
         """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
@@ -101,10 +108,10 @@ class Source:
             return None
         return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
 
-    def _python_spans(self, line: int) -> list[Span] | None:
-        """Byte spans (quotes included) of the string items of ``arguments=[...]`` of the
-        first call on ``line`` that has one (in ``ast.walk`` order); None unless every item
-        is a plain one-line string literal."""
+    def _python_spans(self, line: int) -> tuple[list[Span], list[str]] | None:
+        """Byte spans (quotes included) and values of the string items of
+        ``arguments=[...]`` of the first call on ``line`` that has one (in ``ast.walk``
+        order); None unless every item is a plain one-line string literal."""
         if self._module is None:
             try:
                 self._module = ast.parse(self.data)
@@ -138,9 +145,11 @@ def _may_hold(node: ast.AST, line: int) -> bool:
 _DECORATED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
 
 
-def _string_spans(items: list[ast.expr], starts: list[int]) -> list[Span] | None:
-    """The items' spans, when each is a plain one-line string literal; else None."""
+def _string_spans(items: list[ast.expr], starts: list[int]
+                  ) -> tuple[list[Span], list[str]] | None:
+    """The items' spans and values, when each is a plain one-line string literal."""
     spans: list[Span] = []
+    values: list[str] = []
     for item in items:
         if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
             return None
@@ -148,30 +157,13 @@ def _string_spans(items: list[ast.expr], starts: list[int]) -> list[Span] | None
             return None
         base = starts[item.lineno - 1]
         spans.append((base + item.col_offset, base + item.end_col_offset))
-    return spans
+        values.append(item.value)
+    return spans, values
 
 
 def _python_literal(text: str, like: bytes) -> str:
     quote = "'" if like[-1:] == b"'" else '"'
     return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
-
-
-def _constants(words: list[str]) -> list[object]:
-    """The values of the Python constants ``words`` (a ``ValueError`` if one is none).
-
-    One parse for all of them (they are items of one list in the file). Not
-    ``ast.literal_eval``: its nested recursive helpers leave a reference cycle per call,
-    which only the garbage collector frees."""
-    node = ast.parse("[" + ",\n".join(words) + "\n]", mode="eval").body
-    items = node.elts if isinstance(node, ast.List) else []
-    values: list[object] = []
-    for item in items:
-        if not isinstance(item, ast.Constant):
-            raise ValueError("not a constant")
-        values.append(item.value)
-    if len(values) != len(words):
-        raise ValueError("not one constant per word")
-    return values
 
 
 def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
@@ -182,21 +174,21 @@ def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Ed
 def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, ...]:
     """The byte edits of ``fix`` in ``source`` at line:column; () when not found."""
     path, data, python = source.path, source.data, source.python
-    spans = source.word_spans(line, column)
-    if spans is None:
-        return ()
-    words = [data[a:b] for a, b in spans]
     if python:
-        try:
-            read = _constants([w.decode("utf-8") for w in words])
-        except (ValueError, SyntaxError, UnicodeDecodeError):
+        found = source.python_words(line)
+        if found is None:
             return ()
+        spans, values = found
         # ``arguments`` items are whole words only when none holds a blank.
-        if any(not isinstance(r, str) or not r or r.split() != [r] for r in read):
+        if any(not value or value.split() != [value] for value in values):
             return ()
-        written = tuple(read)
+        written = tuple(values)
     else:
-        written = tuple(w.decode("utf-8", "replace") for w in words)
+        xml_spans = source.word_spans(line, column)
+        if xml_spans is None:
+            return ()
+        spans = xml_spans
+        written = tuple(data[a:b].decode("utf-8", "replace") for a, b in spans)
     if written != fix.tokens:
         return ()
     edits: list[Edit] = []
@@ -214,7 +206,8 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
             content = ""
         elif python:
             items = token_edit.text.split()
-            content = ", ".join(_python_literal(i, words[first]) for i in items)
+            like = data[spans[first][0] : spans[first][1]]
+            content = ", ".join(_python_literal(i, like) for i in items)
         else:
             content = token_edit.text
         edits.append(Edit(path, start, end, content))
@@ -222,10 +215,10 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
 
 
 def read_bytes(path: str) -> bytes | None:
+    """The file's bytes, or None when it is no regular file, unreadable or too large."""
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_FIX_BYTES + 1)
-    except OSError:
+        data = read_regular_file(path, MAX_FIX_BYTES + 1)
+    except OSError:  # NotRegularFile included
         return None
     return data if len(data) <= MAX_FIX_BYTES else None
 

@@ -227,9 +227,7 @@ MAX_RELATED = 10
 
 def summarised(items: list[str], limit: int = MAX_LISTED) -> list[str]:
     """``items``, the ones past ``limit`` folded into a final "and N more"."""
-    if len(items) <= limit:
-        return items
-    return [*items[:limit], f"and {len(items) - limit} more"]
+    return summarised_lazily(items, len(items), limit)
 
 
 def summarised_lazily(items: Iterable[str], count: int, limit: int = MAX_LISTED) -> list[str]:
