@@ -49,21 +49,18 @@ def _core_commands() -> list[ModuleType]:
     return [check, transforms, rules, explain]
 
 
+def _named_command(argv: Sequence[str]) -> str | None:
+    """The core command that ``argv`` names, if any."""
+    words = [a for a in argv if not a.startswith("-")]
+    return words[0] if words and words[0] in CORE_COMMANDS else None
+
+
 def _core_only(argv: Sequence[str] | None) -> bool:
     """Whether the command line names a core command (or asks only for the version): then
     the edge commands' parsers, and the libraries their modules import, are not needed,
     which is most of the start-up time of a ``check``."""
     args = list(sys.argv[1:] if argv is None else argv)
-    words = [a for a in args if not a.startswith("-")]
-    if not words:
-        return args == ["--version"]
-    return words[0] in CORE_COMMANDS
-
-
-def _named_command(argv: Sequence[str]) -> str | None:
-    """The core command that ``argv`` names, if any."""
-    words = [a for a in argv if not a.startswith("-")]
-    return words[0] if words and words[0] in CORE_COMMANDS else None
+    return args == ["--version"] or _named_command(args) is not None
 
 
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
@@ -75,14 +72,15 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"launch-linter {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    if argv is not None and list(argv) == ["--version"]:
-        return parser  # argparse prints the version and exits before any command is read
-    named = _named_command(argv) if argv is not None else None
-    if named is not None:
-        commands = [m for m in _core_commands() if m.__name__.rsplit(".", 1)[1] == named]
+    if argv is not None and _core_only(argv):
+        # The named command's parser alone; none for ``--version``, which argparse prints
+        # before any command is read.
+        named = _named_command(argv)
+        commands = [] if named is None else [
+            m for m in _core_commands() if m.__name__.rsplit(".", 1)[1] == named
+        ]
     else:
-        edges = [] if argv is not None and _core_only(argv) else _edge_commands()
-        commands = [*_core_commands(), *edges]
+        commands = [*_core_commands(), *_edge_commands()]
     for module in commands:
         module.add_parser(subparsers)
     return parser
