@@ -173,12 +173,8 @@ class Ros1Tags(Ros1Base):
         if condition is None:
             return
         name_value = self._required(element, "name", context)
-        # Most values are literal text: a value is only resolved when it has one ($...).
-        value_text, default_text = attrib.get("value"), attrib.get("default")
-        value = None if value_text is None else self._resolve_text(value_text, element,
-                                                                    "value", context)
-        default = None if default_text is None else self._resolve_text(default_text, element,
-                                                                        "default", context)
+        value = self._resolve(element, "value", context)
+        default = self._resolve(element, "default", context)
         doc = attrib.get("doc")
         if doc is not None and "$" in doc:
             self._substitute(doc, element, "doc", context, None)
@@ -191,8 +187,8 @@ class Ros1Tags(Ros1Base):
             self._report("unresolved", context.filename, element,
                          f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
             return
-        for text in (value_text, default_text):
-            source = None if text is None or "$(" not in text else self._env_in_text(text)
+        for key in ("value", "default"):
+            source = self._env_in_text(attrib.get(key, ""))
             if source is not None:
                 self._env_args[name] = source
         self._declare(context, element, name, value, default, condition)

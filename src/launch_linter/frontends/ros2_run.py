@@ -295,12 +295,6 @@ class Ros2Runner:
         return made
 
     def _resolve(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> Value:
-        if len(subs) == 1 and type(subs[0]) is Text:
-            # Literal text, most values: what the resolver would give, without it.
-            text = subs[0].text
-            return (text,) if text else ()
-        if not subs:
-            return ()
         try:
             return resolve(subs, self._substitution_scope(scope, frame))
         except SubstitutionError as exc:

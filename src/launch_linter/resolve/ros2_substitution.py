@@ -507,6 +507,12 @@ def _loosely_equal(left: str, right: str) -> bool:
 
 def resolve(subs: Subs, scope: Ros2Scope) -> Value:
     """Resolve substitutions; raise :class:`SubstitutionError` where launch would fail."""
+    if not subs:
+        return ()
+    if len(subs) == 1 and type(subs[0]) is Text:
+        # Literal text, most values: what the resolver would give, without one.
+        text = subs[0].text
+        return (text,) if text else ()
     return _Resolver(scope).value(subs)
 
 
