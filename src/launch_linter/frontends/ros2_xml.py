@@ -275,11 +275,9 @@ def _schema_entity(entity: Entity, xml: bool) -> SchemaEntity:
         # YAML nests entities as list-valued keys, and actions under ``children``.
         nested = [item for items in entity.lists.values() for item in items]
         nested.extend(entity.children)
-    # An entity's attribute names are distinct; only YAML's other keys may repeat them.
-    names = (tuple(dict.fromkeys((*entity.attrs, *entity.other_keys))) if entity.other_keys
-             else tuple(entity.attrs))
+    names = (*entity.attrs, *entity.other_keys)
     return SchemaEntity(
-        entity.tag, entity.line, entity.column, names,
+        entity.tag, entity.line, entity.column, tuple(dict.fromkeys(names)),
         tuple([_schema_entity(child, xml) for child in nested]),
     )
 
