@@ -41,7 +41,7 @@ from typing import Callable, List, Tuple
 
 from launch_linter.frontends.dispatch import front_end, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CORPUS = os.path.join(ROOT, "..", "shared", "corpus")

@@ -41,7 +41,7 @@ from launch_linter.frontends import ros1
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions, ns_join
 from launch_linter.model.launch import LaunchTree
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHARED = os.path.join(os.path.dirname(REPO), "shared")

@@ -19,7 +19,7 @@ import shutil
 import sys
 import tempfile
 
-from launch_linter.discovery import discover
+from launch_linter.workspace.discovery import discover
 
 OLD_SUFFIXES = (".launch", ".launch.xml", ".launch.yaml", ".launch.yml", ".launch.py")
 

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from launch_linter.frontends.dispatch import front_end, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -22,7 +22,7 @@ from launch_linter.frontends.robot.urdf import joints_of
 from launch_linter.frontends.robot.xacro import expand
 from launch_linter.model.robot import DescriptionKind, DescriptionSource
 from launch_linter.model.transform import Condition
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 DRIVER = Path(__file__).resolve().parent / "xacro_oracle_driver.py"
 TEXT_SUFFIXES = (".xacro", ".urdf", "package.xml", ".yaml", ".launch")

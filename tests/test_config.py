@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from launch_linter.cli import main
-from launch_linter.config import ConfigError, config_for, find_config, load_config
 from launch_linter.model import Severity
+from launch_linter.workspace.config import ConfigError, config_for, find_config, load_config
 
 NODE = '<node pkg="tf2_ros" type="static_transform_publisher" name="{name}" args="{args}"/>'
 

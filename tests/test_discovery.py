@@ -10,10 +10,15 @@ import pytest
 from tests.workspace_fixture import LINTED, build_workspace
 
 from launch_linter.cli import main
-from launch_linter.discovery import Exclusions, discover, has_launch_root, is_workspace_folder
 from launch_linter.engine import LintOptions, lint_paths
-from launch_linter.gitignore import gitignore_predicate
-from launch_linter.resolve.packages import package_ros_version
+from launch_linter.workspace.discovery import (
+    Exclusions,
+    discover,
+    has_launch_root,
+    is_workspace_folder,
+)
+from launch_linter.workspace.gitignore import gitignore_predicate
+from launch_linter.workspace.packages import package_ros_version
 
 
 @pytest.fixture

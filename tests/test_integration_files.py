@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from launch_linter.discovery import LAUNCH_SUFFIXES
+from launch_linter.workspace.discovery import LAUNCH_SUFFIXES
 
 yaml = pytest.importorskip("yaml")
 
@@ -55,7 +55,7 @@ def test_guide_yaml_and_toml_examples_parse() -> None:
 
 
 def test_guide_config_example_is_accepted(tmp_path: Path) -> None:
-    from launch_linter.config import load_config
+    from launch_linter.workspace.config import load_config
 
     guide = (ROOT / "docs" / "integration.md").read_text()
     (toml_block,) = re.findall(r"```toml\n(.*?)```", guide, re.DOTALL)

@@ -125,10 +125,10 @@ def test_imports_follow_the_layer_table() -> None:
 
 
 def test_the_table_check_catches_a_wrong_import() -> None:
-    # resolve may import only model: the old import of a front-end module is reported.
-    graph = {"launch_linter.resolve.packages": {"launch_linter.frontends.ros1"}}
+    # The workspace may import only model and resolve: a front-end module is reported.
+    graph = {"launch_linter.workspace.packages": {"launch_linter.frontends.ros1"}}
     assert _violations(graph) == [
-        "launch_linter.resolve.packages (resolve) imports launch_linter.frontends.ros1 "
+        "launch_linter.workspace.packages (workspace) imports launch_linter.frontends.ros1 "
         "(frontends)"
     ]
 

@@ -21,7 +21,7 @@ import pytest
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import TF_PACKAGES, LoadOptions, ns_join
 from launch_linter.model.launch import LaunchTree
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "tests" / "fixtures" / "ros1"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from launch_linter.resolve.packages import PackageIndex, default_package_roots
+from launch_linter.workspace.packages import PackageIndex, default_package_roots
 
 
 def package(folder: Path, name: str, extra: str = "") -> Path:

@@ -8,13 +8,6 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import List, Optional, Tuple
 
-from launch_linter.discovery import (
-    MAX_DISCOVERED_FILES,
-    Exclusions,
-    Ignored,
-    InputFile,
-    discover,
-)
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
@@ -23,12 +16,6 @@ from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
-from launch_linter.resolve.packages import (
-    PackageIndex,
-    default_package_roots,
-    nearest_package_xml,
-    package_ros_version,
-)
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
 from launch_linter.rules._profiles import STUDY_SEVERITY
@@ -37,6 +24,19 @@ from launch_linter.suppressions import (
     PathIgnore,
     apply_suppressions,
     ignored_by_path,
+)
+from launch_linter.workspace.discovery import (
+    MAX_DISCOVERED_FILES,
+    Exclusions,
+    Ignored,
+    InputFile,
+    discover,
+)
+from launch_linter.workspace.packages import (
+    PackageIndex,
+    default_package_roots,
+    nearest_package_xml,
+    package_ros_version,
 )
 
 __all__ = [

@@ -9,7 +9,7 @@ from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import StaticTransform
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 TF2 = 'pkg="tf2_ros" type="static_transform_publisher"'
 

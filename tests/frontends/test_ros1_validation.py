@@ -9,7 +9,7 @@ import pytest
 
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions, yaml_root_kind
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 
 def errors(tmp_path: Path, body: str) -> list[str]:

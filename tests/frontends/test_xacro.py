@@ -12,7 +12,7 @@ from launch_linter.frontends.robot.urdf import joints_of
 from launch_linter.frontends.robot.xacro import Expansion, expand
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, RobotJoint
 from launch_linter.model.transform import Condition
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 WS = Path(__file__).resolve().parent.parent / "fixtures" / "robot_ws"
 HOSTILE = WS / "src" / "hostile" / "urdf"

@@ -16,10 +16,10 @@ from launch_linter.commands.options import (
     lint_options,
     load_config,
 )
-from launch_linter.config import Config
 from launch_linter.engine import LintOptions, LintResult, lint_text
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
+from launch_linter.workspace.config import Config
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -10,11 +10,11 @@ import sys
 from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
-from launch_linter.config import Config, ConfigError, check_rule_ids, config_for
-from launch_linter.discovery import Exclusions, Ignored
 from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_paths, lint_text
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.rules._profiles import PROFILES
+from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
+from launch_linter.workspace.discovery import Exclusions, Ignored
 
 
 def split_ids(values: list[str] | None) -> list[str]:
@@ -223,7 +223,7 @@ def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, I
     if not respect:
         return exclusions, None
     try:
-        from launch_linter.gitignore import gitignore_predicate
+        from launch_linter.workspace.gitignore import gitignore_predicate
     except ImportError:  # the standalone linter carries no pathspec: .gitignore not read
         return exclusions, None
     return exclusions, gitignore_predicate().ignored

@@ -23,7 +23,6 @@ from launch_linter.model.launch import (
 )
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
-from launch_linter.resolve.packages import PackageIndex
 from launch_linter.resolve.substitution import (
     SubstitutionError,
     SubstitutionScope,
@@ -32,6 +31,7 @@ from launch_linter.resolve.substitution import (
 )
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
+from launch_linter.workspace.packages import PackageIndex
 
 STATIC_TF_TYPE = "static_transform_publisher"
 TF_PACKAGES = ("tf", "tf2_ros")

@@ -27,8 +27,8 @@ from launch_linter.mining.gitread import commit_count
 from launch_linter.mining.progress import Progress
 from launch_linter.mining.store import FileRef, ParsedContent, RepoInfo, Store, transform_row
 from launch_linter.model.launch import FileStatus
-from launch_linter.resolve.packages import PackageIndex
 from launch_linter.resolve.xml_safe import read_launch_bytes
+from launch_linter.workspace.packages import PackageIndex
 
 MANIFEST = "manifest.jsonl"
 BATCH_SIZE = 256

@@ -11,7 +11,7 @@ from ros2_helpers import Load
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.launch import LaunchTree
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 
 @pytest.fixture

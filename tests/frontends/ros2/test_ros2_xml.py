@@ -261,7 +261,7 @@ def test_comments_and_element_lines_for_suppressions(load: Load) -> None:
 def test_the_fixture_tree_in_every_format(load: Load) -> None:
     from launch_linter.frontends.dispatch import load_tree
     from launch_linter.frontends.ros1 import LoadOptions
-    from launch_linter.resolve.packages import PackageIndex
+    from launch_linter.workspace.packages import PackageIndex
 
     root = FIXTURES / "robot_description" / "launch" / "robot.launch.xml"
     options = LoadOptions(packages=PackageIndex([str(FIXTURES)]),

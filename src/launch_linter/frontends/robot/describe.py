@@ -17,7 +17,7 @@ from dataclasses import replace
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord, RobotJoint
-from launch_linter.resolve.packages import PackageIndex
+from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
     from launch_linter.frontends.robot.xacro import Expansion

@@ -1,7 +1,7 @@
 """``.gitignore`` rules for folder discovery (an edge module: it uses ``pathspec``).
 
 :func:`gitignore_predicate` gives the ``ignored(path, is_folder)`` predicate that
-:func:`launch_linter.discovery.discover` accepts. Every ``.gitignore`` from the
+:func:`launch_linter.workspace.discovery.discover` accepts. Every ``.gitignore`` from the
 repository's top (the nearest folder up holding ``.git``; without one, every folder up)
 down to the path's folder applies, a deeper file overriding a shallower one, as
 git does. A folder that is ignored is not entered.

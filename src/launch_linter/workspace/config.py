@@ -21,7 +21,7 @@ from launch_linter.model.diagnostic import Severity
 from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules import RULES, RULES_BY_ID
 from launch_linter.suppressions import PathIgnore
-from launch_linter.toml_fallback import NoTomlParser, loads_without_parser
+from launch_linter.workspace.toml_fallback import NoTomlParser, loads_without_parser
 
 CONFIG_NAME = ".launch-linter.toml"
 PYPROJECT = "pyproject.toml"

@@ -1,0 +1,1 @@
+"""What reads the workspace as ROS finds it: packages, discovery, ignore files, configuration."""
