@@ -88,6 +88,9 @@ class Include:
     condition: Predicate | None
     path: Subs
     args: tuple[tuple[Subs, Subs], ...]
+    args_known: bool = True
+    """False when the arguments passed are not known (a Python expression the linter does
+    not model): they may set any launch configuration."""
 
 
 @dataclass(frozen=True)
@@ -110,6 +113,9 @@ class RunNode:
     parameters: tuple[Params | ParamsUnknown, ...] = ()
     """Kept for the nodes that tf rules need (robot_state_publisher's description,
     localization and odometry frame parameters)."""
+    uses: tuple[Subs, ...] = ()
+    """Every other substitution the action performs when it runs (remappings, parameters,
+    other attributes), resolved only to check the launch configurations they read."""
 
 
 def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:
@@ -155,6 +161,9 @@ class Component:
     name: Subs | None
     namespace: Subs | None
     parameters: tuple[Params | ParamsUnknown, ...]
+    uses: tuple[Subs, ...] = ()
+    """Every other substitution the action performs when it runs (remappings, parameters,
+    other attributes), resolved only to check the launch configurations they read."""
 
 
 @dataclass(frozen=True)
@@ -164,6 +173,9 @@ class LoadComponents:
     where: Where
     condition: Predicate | None
     components: tuple[Component, ...]
+    uses: tuple[Subs, ...] = ()
+    """Every other substitution the action performs when it runs (remappings, parameters,
+    other attributes), resolved only to check the launch configurations they read."""
 
 
 @dataclass(frozen=True)
@@ -177,6 +189,17 @@ class Deferred:
 
 
 @dataclass(frozen=True)
+class Uses:
+    """An action the linter does not otherwise model (``<set_parameter>``, ``LogInfo``,
+    an ``ExecuteProcess`` ...): only the substitutions it performs when it runs, to check
+    the launch configurations they read."""
+
+    where: Where
+    condition: Predicate | None
+    uses: tuple[Subs, ...]
+
+
+@dataclass(frozen=True)
 class Unfollowed:
     """Something that may launch nodes but that the linter cannot follow."""
 
@@ -186,12 +209,12 @@ class Unfollowed:
 
 ACTION_TYPES = (
     DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
-    LoadComponents, Deferred, Unfollowed,
+    LoadComponents, Deferred, Uses, Unfollowed,
 )
 """The action classes, for ``isinstance`` (Python 3.8 has no run-time ``X | Y``)."""
 Action = Union[
     DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
-    LoadComponents, Deferred, Unfollowed,
+    LoadComponents, Deferred, Uses, Unfollowed,
 ]
 
 

@@ -1,0 +1,82 @@
+"""Which launch files another file of the same package names: those are (also) included.
+
+ROS 2 includes a launch file by a path its includer builds (``os.path.join(share,
+'launch', 'rsp.launch.py')``, ``$(find-pkg-share pkg)/launch/rsp.launch.xml``), so the
+file's name is written in the includer even when the path around it cannot be resolved.
+A launch file that another file of its package names is (also) an included file: the
+launch configurations it reads may be passed by that includer, so reading one that the
+file does not declare is not proof that ``ros2 launch`` of it stops.
+
+The package is the folder of the nearest ``package.xml`` (else the file's own folder).
+Each folder is read once per process, bounded in files and bytes.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+
+from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+from launch_linter.workspace.discovery import VCS_FOLDERS, WORKSPACE_FOLDERS
+from launch_linter.workspace.packages import nearest_package_xml
+
+MAX_FILES = 2_000
+"""Files read per package folder; past them, the names found so far are all there is."""
+MAX_FILE_BYTES = 256 * 1024
+MAX_FOLDERS = 5_000
+MAX_CACHED_FOLDERS = 256
+READ_SUFFIXES = (".py", ".xml", ".launch", ".yaml", ".yml")
+"""Files that may include a launch file: launch files of every format and Python helpers."""
+_FILE_NAME = re.compile(rb"[\w.-]+\.(?:py|xml|launch|ya?ml)\b")
+"""A file name as written in a path or string (the name only, without its folders)."""
+
+_names_by_folder: dict[str, dict[str, tuple[str, ...]]] = {}
+"""For each package folder read: each file name written in it → the first two files
+writing it (a file may write its own name, in a usage comment)."""
+
+
+def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
+    """Every file name written in the files under ``folder``, with two files writing it."""
+    names: dict[str, tuple[str, ...]] = {}
+    files = 0
+    folders = 0
+    for directory, subdirs, entries in os.walk(folder):
+        folders += 1
+        if folders > MAX_FOLDERS:
+            break
+        subdirs[:] = sorted(
+            d for d in subdirs
+            if not d.startswith(".") and d not in VCS_FOLDERS and d not in WORKSPACE_FOLDERS
+            and d != "__pycache__"
+        )
+        for entry in sorted(entries):
+            if not entry.endswith(READ_SUFFIXES):
+                continue
+            files += 1
+            if files > MAX_FILES:
+                return names
+            path = os.path.join(directory, entry)
+            try:
+                data = read_regular_file(path, MAX_FILE_BYTES)
+            except (OSError, NotRegularFile):
+                continue
+            for name in {m.group() for m in _FILE_NAME.finditer(data)}:
+                text = name.decode("utf-8", "replace")
+                writers = names.get(text, ())
+                if len(writers) < 2:
+                    names[text] = (*writers, path)
+    return names
+
+
+def named_by_another_file(path: str) -> str | None:
+    """A file of ``path``'s package, other than ``path``, that writes its file name."""
+    absolute = os.path.abspath(path)
+    manifest = nearest_package_xml(absolute)
+    folder = os.path.dirname(manifest if manifest is not None else absolute)
+    names = _names_by_folder.get(folder)
+    if names is None:
+        if len(_names_by_folder) >= MAX_CACHED_FOLDERS:
+            _names_by_folder.clear()
+        names = _names_by_folder[folder] = _names_in(folder)
+    others = [w for w in names.get(os.path.basename(absolute), ()) if w != absolute]
+    return others[0] if others else None
