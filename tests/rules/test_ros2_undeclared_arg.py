@@ -253,3 +253,36 @@ def test_study_profile_is_silent(tmp_path: Path) -> None:
     text = '<launch><node pkg="foo" exec="bar" name="$(var robot)"/></launch>\n'
     options = LintOptions(package_paths=(), profile="study")
     assert _lint(tmp_path, {"a.launch.xml": text}, "a.launch.xml", options) == []
+
+
+def test_include_passing_its_own_read_does_not_declare_it(tmp_path: Path) -> None:
+    # leggedrobotics/elevation_mapping_cupy#108: the declaration was left out of the
+    # description, and the include passing the value reads it before setting it.
+    inner = '<launch><node pkg="foo" exec="bar" name="$(var use_sim_time)"/></launch>\n'
+    outer = _py("""    declared = DeclareLaunchArgument('use_sim_time', default_value='true')
+    return LaunchDescription([IncludeLaunchDescription(
+        PythonLaunchDescriptionSource('inner.launch.xml'),
+        launch_arguments={'use_sim_time': LaunchConfiguration('use_sim_time')}.items())])
+""")
+    files = {"inner.launch.xml": inner, "outer.launch.py": outer}
+    ((name, line, level, _),) = _lint(tmp_path, files, "outer.launch.py")
+    assert (name, line, level) == ("outer.launch.py", 12, "error")
+
+
+def test_only_what_was_not_followed_before_the_read_makes_it_an_info(tmp_path: Path) -> None:
+    text = """<launch>
+  <node pkg="foo" exec="bar" name="$(var robot)"/>
+  <include file="$(find-pkg-share elsewhere)/launch/common.launch.xml"/>
+</launch>
+"""
+    assert [level for *_, level, _ in _lint(tmp_path, {"a.launch.xml": text},
+                                             "a.launch.xml")] == ["error"]
+
+
+def test_reads_at_one_place_are_one_finding(tmp_path: Path) -> None:
+    text = """<launch>
+  <node pkg="foo" exec="bar" name="$(var a)" namespace="$(var b)"/>
+</launch>
+"""
+    ((_, _, _, message),) = _lint(tmp_path, {"a.launch.xml": text}, "a.launch.xml")
+    assert "configurations 'a', 'b' are" in message or "configurations 'b', 'a' are" in message

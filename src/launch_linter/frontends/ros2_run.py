@@ -215,7 +215,8 @@ class Ros2Runner:
         self._declared: set[str] = set()
         """Every launch configuration the tree declares, sets or passes, wherever."""
         self._open: str | None = None
-        """The first thing met that could set launch configurations the linter cannot see."""
+        """The first thing met so far that could set launch configurations the linter
+        cannot see."""
         self._reading: tuple[Where, _Frame] | None = None
         """Where the value being resolved is read (for the launch configurations it reads)."""
         self._unset: dict[tuple[str, int, int, str], tuple[_Frame, str | None]] = {}
@@ -309,7 +310,9 @@ class Ros2Runner:
         return tuple(
             UndeclaredUse(
                 name, self._display(path), line, column, self.root_display,
-                bool(frame.condition.literals), opened or self._open,
+                # What was not followed before the read: launch runs actions in order, so
+                # nothing met later could have set it in time.
+                bool(frame.condition.literals), opened,
                 None if includer is None else self._display(includer),
                 next(iter(difflib.get_close_matches(name, declared, 1, 0.8)), None),
             )
@@ -534,8 +537,9 @@ class Ros2Runner:
                 self._opened(f"line {action.where.line}: an include argument's name is "
                              f"unresolved")
                 continue
+            # Passed from here on (the include is not scoped): reads before it still fail,
+            # like the read of this very value, which launch performs before setting it.
             passed.append(name)
-            self._declared.add(name)
             value = self._resolve(value_subs, scope, frame, action.where)
             self._set(scope, name, value, frame.condition, f"$(var {name})")
         path = resolved_text(path_value)

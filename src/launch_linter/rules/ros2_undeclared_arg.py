@@ -51,7 +51,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.launch import UndeclaredUse
-from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._api import Finding, RuleContext, summarised
 
 ID = "ros2_undeclared_arg"
 CATEGORY = Category.LAUNCH
@@ -71,21 +71,30 @@ def _doubt(use: UndeclaredUse) -> str | None:
     return None
 
 
-def message(use: UndeclaredUse) -> str:
-    doubt = _doubt(use)
-    fix = ("declare it with a default, or give the read one" if use.similar is None
-           else f"did you mean '{use.similar}', which is declared?")
-    return (f"launch configuration '{use.name}' is read without a default but never "
-            f"declared, set or passed in this launch tree: ros2 launch of {use.root} stops "
-            f"with \"launch configuration '{use.name}' does not exist\""
-            + ("" if doubt is None else f" {doubt}") + f"; {fix}")
+def message(uses: list[UndeclaredUse]) -> str:
+    """One place's reads (same root, same doubt), worded once."""
+    first = uses[0]
+    doubt = _doubt(first)
+    names = summarised([f"'{use.name}'" for use in uses])
+    what = (f"launch configuration {names[0]} is" if len(uses) == 1
+            else f"launch configurations {', '.join(names)} are")
+    misspelt = [f"'{use.similar}' for '{use.name}'" for use in uses if use.similar is not None]
+    fix = "declare it with a default, or give the read one" if len(uses) == 1 else (
+        "declare them with defaults, or give the reads one")
+    if misspelt:
+        fix = f"did you mean {', '.join(summarised(misspelt))} (declared)?"
+    return (f"{what} read without a default but never declared, set or passed in this "
+            f"launch tree: ros2 launch of {first.root} stops with \"launch configuration "
+            f"'{first.name}' does not exist\"" + ("" if doubt is None else f" {doubt}")
+            + f"; {fix}")
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
     if context.study:
         return
+    places: dict[tuple[str, int, int, str | None], list[UndeclaredUse]] = {}
     for use in context.tree.undeclared:
-        yield Finding(
-            use.path, use.line, use.column, message(use),
-            severity=None if _doubt(use) is None else Severity.INFO,
-        )
+        places.setdefault((use.path, use.line, use.column, _doubt(use)), []).append(use)
+    for (path, line, column, doubt), uses in places.items():
+        yield Finding(path, line, column, message(uses),
+                      severity=None if doubt is None else Severity.INFO)

@@ -7,8 +7,11 @@ A launch file that another file of its package names is (also) an included file:
 launch configurations it reads may be passed by that includer, so reading one that the
 file does not declare is not proof that ``ros2 launch`` of it stops.
 
-The package is the folder of the nearest ``package.xml`` (else the file's own folder).
-Each folder is read once per process, bounded in files and bytes.
+The files looked at are the launch files (by name, or any file in a ``launch`` folder)
+of the workspace (the ``src`` folder of a colcon/catkin workspace), else of the
+repository (the nearest folder up with a ``.git``), else of the package (the folder of
+the nearest ``package.xml``), else of the file's own folder. Each such folder is read
+once per process, bounded in files and bytes.
 """
 
 from __future__ import annotations
@@ -17,13 +20,13 @@ import os
 import re
 
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
-from launch_linter.workspace.discovery import VCS_FOLDERS, WORKSPACE_FOLDERS
-from launch_linter.workspace.packages import nearest_package_xml
+from launch_linter.workspace.discovery import VCS_FOLDERS, WORKSPACE_FOLDERS, is_launch_name
+from launch_linter.workspace.packages import MAX_WALK_UP, default_package_roots, nearest_package_xml
 
-MAX_FILES = 2_000
-"""Files read per package folder; past them, the names found so far are all there is."""
+MAX_FILES = 5_000
+"""Files read per folder; past them, the names found so far are all there is."""
 MAX_FILE_BYTES = 256 * 1024
-MAX_FOLDERS = 5_000
+MAX_FOLDERS = 20_000
 MAX_CACHED_FOLDERS = 256
 READ_SUFFIXES = (".py", ".xml", ".launch", ".yaml", ".yml")
 """Files that may include a launch file: launch files of every format and Python helpers."""
@@ -49,8 +52,9 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
             if not d.startswith(".") and d not in VCS_FOLDERS and d not in WORKSPACE_FOLDERS
             and d != "__pycache__"
         )
+        in_launch_folder = os.path.basename(directory) == "launch"
         for entry in sorted(entries):
-            if not entry.endswith(READ_SUFFIXES):
+            if not (is_launch_name(entry) or (in_launch_folder and entry.endswith(READ_SUFFIXES))):
                 continue
             files += 1
             if files > MAX_FILES:
@@ -68,11 +72,30 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
     return names
 
 
-def named_by_another_file(path: str) -> str | None:
-    """A file of ``path``'s package, other than ``path``, that writes its file name."""
-    absolute = os.path.abspath(path)
+def _scope(absolute: str) -> str:
+    """The folder whose launch files may include ``absolute`` (see the module's doc)."""
     manifest = nearest_package_xml(absolute)
-    folder = os.path.dirname(manifest if manifest is not None else absolute)
+    if manifest is None:
+        return os.path.dirname(absolute)
+    roots = default_package_roots(absolute)
+    if roots and os.path.basename(roots[0]) == "src":
+        return roots[0]
+    directory = os.path.dirname(manifest)
+    for _ in range(MAX_WALK_UP):
+        if os.path.exists(os.path.join(directory, ".git")):
+            return directory
+        parent = os.path.dirname(directory)
+        if parent == directory:
+            break
+        directory = parent
+    return os.path.dirname(manifest)
+
+
+def named_by_another_file(path: str) -> str | None:
+    """A launch file near ``path`` (see the module's doc), other than ``path``, that writes
+    its file name."""
+    absolute = os.path.abspath(path)
+    folder = _scope(absolute)
     names = _names_by_folder.get(folder)
     if names is None:
         if len(_names_by_folder) >= MAX_CACHED_FOLDERS:
