@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import Union
 
 from launch_linter.model.transform import LaunchFormat
-from launch_linter.resolve.ros2_substitution import Subs, Text
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Value
 
 
@@ -120,11 +120,17 @@ class RunNode:
 
 def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:
     """``ros2 run PKG EXEC ARGS...`` as an executable's argv items: (package, executable,
-    arguments), or None when the command is something else."""
+    arguments), or None when the command is something else. The program may be written
+    as a path ending in ``/ros2`` or found with ``$(find-exec ros2)``."""
     if len(items) < 4:
         return None
     words = []
     for item in items[:2]:
+        if len(item) == 1 and isinstance(item[0], Call) and item[0].name == "find-exec" and (
+            [written(arg) for arg in item[0].args] == ["ros2"]
+        ):
+            words.append("ros2")  # FindExecutable(name='ros2'), $(find-exec ros2)
+            continue
         if not all(isinstance(sub, Text) for sub in item):
             return None
         words.append("".join(sub.text for sub in item if isinstance(sub, Text)))
@@ -132,6 +138,17 @@ def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | Non
     if not (program == "ros2" or program.endswith("/ros2")) or verb != "run":
         return None
     return items[2], items[3], tuple(items[4:])
+
+
+SHELL_SPECIAL = frozenset("$`;|&<>*?()[]{}~!#\n")
+"""What a shell reads other than as words and quotes (expansions, globs, several commands,
+redirections, comments)."""
+
+
+def shell_reads_as_words(line: str) -> bool:
+    """Whether a shell (``shell=True``) splits ``line`` into the words ``shlex.split``
+    gives, running one program."""
+    return not any(character in SHELL_SPECIAL for character in line)
 
 
 @dataclass(frozen=True)

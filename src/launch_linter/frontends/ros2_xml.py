@@ -32,6 +32,7 @@ from launch_linter.frontends.ros2_actions import (
     Uses,
     Where,
     ros2_run,
+    shell_reads_as_words,
 )
 from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.model.launch import may_hold_directive
@@ -44,6 +45,7 @@ from launch_linter.resolve.ros2_substitution import (
     Text,
     parse,
     split_command_line,
+    written,
 )
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
@@ -235,6 +237,9 @@ class _Reader:
         cmd = self.required(entity, "cmd")
         if cmd is None:
             return None
+        shell = (entity.attrs.get("shell") or "").strip().lower() == "true"
+        if shell and not shell_reads_as_words(written(cmd)):
+            return Uses(where, condition, self.performed(entity))
         try:
             items = split_command_line(cmd)
         except CommandLineError as exc:

@@ -8,6 +8,7 @@ or condition it stands for; any other launch class is an object that starts noth
 from __future__ import annotations
 
 import ast
+import shlex
 from collections.abc import Callable, Mapping, Sequence
 
 from launch_linter.frontends.ros2_actions import (
@@ -28,6 +29,7 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Where,
     ros2_run,
+    shell_reads_as_words,
 )
 from launch_linter.frontends.ros2_python.calls import Calls
 from launch_linter.frontends.ros2_python.values import (
@@ -50,7 +52,7 @@ from launch_linter.frontends.ros2_python.values import (
     _starts_actions,
     performed,
 )
-from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, literal
+from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, Text, literal, written
 from launch_linter.resolve.value import Value
 
 # -- the interpreter -----------------------------------------------------------------------
@@ -164,9 +166,23 @@ class Interpreter(Calls):
         """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
         other processes are not transforms."""
         cmd = self.arg(args, kwargs, 0, "cmd")
-        if not isinstance(cmd, (list, tuple)) or kwargs.get("shell") is True:
+        if not isinstance(cmd, (list, tuple)):
             return self.launch_object("ExecuteProcess", args, kwargs, node)
-        run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
+        items = [self.subs(item, node, "cmd item") for item in cmd]
+        if kwargs.get("shell") is True:
+            # launch joins the items with spaces and a shell splits the line again: known
+            # only when every item is literal text (a value's spaces would split too).
+            line = " ".join(written(item) for item in items)
+            if not all(isinstance(sub, Text) for item in items for sub in item) or (
+                not shell_reads_as_words(line)
+            ):
+                return self.launch_object("ExecuteProcess", args, kwargs, node)
+            try:
+                words = shlex.split(line)
+            except ValueError:
+                return self.launch_object("ExecuteProcess", args, kwargs, node)
+            items = [literal(word) for word in words]
+        run = ros2_run(items)
         if run is None:
             return self.launch_object("ExecuteProcess", args, kwargs, node)
         package, executable, arguments = run
