@@ -69,6 +69,9 @@ STATIC_TF_PLUGIN = "tf2_ros::StaticTransformBroadcasterNode"
 MAX_INCLUDE_DEPTH = 32
 MAX_FILES_PER_TREE = 2_000
 MAX_ACTIONS_PER_TREE = 200_000
+MAX_SUGGESTED_NAMES = 32
+MAX_SUGGESTION_CANDIDATES = 2_000
+"""Bounds of the "did you mean" of undeclared launch configurations."""
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
 
@@ -306,7 +309,14 @@ class Ros2Runner:
         import difflib
 
         includer = named_by_another_file(root)
-        declared = sorted(self._declared)
+        # A "did you mean" for the first names only, against the first declared ones:
+        # each comparison costs, and a hostile file can hold thousands of both.
+        declared = sorted(self._declared)[:MAX_SUGGESTION_CANDIDATES]
+        similar: dict[str, str | None] = {}
+        for name in dict.fromkeys(key[3] for key, _, _ in found):
+            if len(similar) >= MAX_SUGGESTED_NAMES:
+                break
+            similar[name] = next(iter(difflib.get_close_matches(name, declared, 1, 0.8)), None)
         return tuple(
             UndeclaredUse(
                 name, self._display(path), line, column, self.root_display,
@@ -314,7 +324,7 @@ class Ros2Runner:
                 # nothing met later could have set it in time.
                 bool(frame.condition.literals), opened,
                 None if includer is None else self._display(includer),
-                next(iter(difflib.get_close_matches(name, declared, 1, 0.8)), None),
+                similar.get(name),
             )
             for (path, line, column, name), frame, opened in found
         )

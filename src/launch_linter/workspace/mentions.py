@@ -26,12 +26,17 @@ from launch_linter.workspace.packages import MAX_WALK_UP, default_package_roots,
 MAX_FILES = 5_000
 """Files read per folder; past them, the names found so far are all there is."""
 MAX_FILE_BYTES = 256 * 1024
+MAX_TOTAL_BYTES = 32 * 1024 * 1024
+"""Bytes read per folder, all files together."""
 MAX_FOLDERS = 20_000
 MAX_CACHED_FOLDERS = 256
 READ_SUFFIXES = (".py", ".xml", ".launch", ".yaml", ".yml")
 """Files that may include a launch file: launch files of every format and Python helpers."""
-_FILE_NAME = re.compile(rb"[\w.-]+\.(?:py|xml|launch|ya?ml)\b")
-"""A file name as written in a path or string (the name only, without its folders)."""
+_SUFFIX = re.compile(rb"\.(?:py|xml|launch|ya?ml)\b")
+"""Where a file name written in a path or string ends. The name is then read backwards
+from there (bounded), never with a pattern that starts at every letter of a long word."""
+_NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
+MAX_NAME = 255
 
 _names_by_folder: dict[str, dict[str, tuple[str, ...]]] = {}
 """For each package folder read: each file name written in it → the first two files
@@ -43,6 +48,7 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
     names: dict[str, tuple[str, ...]] = {}
     files = 0
     folders = 0
+    total = 0
     for directory, subdirs, entries in os.walk(folder):
         folders += 1
         if folders > MAX_FOLDERS:
@@ -57,19 +63,32 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
             if not (is_launch_name(entry) or (in_launch_folder and entry.endswith(READ_SUFFIXES))):
                 continue
             files += 1
-            if files > MAX_FILES:
+            if files > MAX_FILES or total > MAX_TOTAL_BYTES:
                 return names
             path = os.path.join(directory, entry)
             try:
                 data = read_regular_file(path, MAX_FILE_BYTES)
             except (OSError, NotRegularFile):
                 continue
-            for name in {m.group() for m in _FILE_NAME.finditer(data)}:
-                text = name.decode("utf-8", "replace")
+            total += len(data)
+            for text in _file_names(data):
                 writers = names.get(text, ())
                 if len(writers) < 2:
                     names[text] = (*writers, path)
     return names
+
+
+def _file_names(data: bytes) -> set[str]:
+    """The file names (``rsp.launch.py``) written in ``data``, in linear time."""
+    found: set[str] = set()
+    for match in _SUFFIX.finditer(data):
+        start = match.start()
+        lowest = max(0, start - MAX_NAME)
+        while start > lowest and data[start - 1] in _NAME_BYTES:
+            start -= 1
+        if start < match.start():
+            found.add(data[start:match.end()].decode("ascii"))
+    return found
 
 
 def _scope(absolute: str) -> str:
