@@ -80,8 +80,9 @@ def trial(python: str, dev: bool) -> list[str]:
         if done.returncode != 1 or "[multiple_parents]" not in done.stdout:
             problems.append(f"quick start: status {done.returncode}\n{done.stdout}{done.stderr}")
         (clone / "trial.toml").write_text(f'select = ["{CONFIG_RULE}"]\n')
-        configured = run(". .venv/bin/activate && launch-linter check --config trial.toml examples/",
-                         clone, python)
+        configured = run(
+            ". .venv/bin/activate && launch-linter check --config trial.toml examples/",
+            clone, python)
         found = [line for line in configured.stdout.splitlines() if line.startswith("examples/")]
         if configured.returncode != 1 or not found or not all(
                 line.endswith(f"[{CONFIG_RULE}]") for line in found):
