@@ -211,14 +211,13 @@ class Session:
             if edge not in parents.setdefault(edge.child, []):
                 parents[edge.child].append(edge)
         chain = [frame]
-        while chain[-1] in parents and len(chain) < MAX_CHAIN:
+        cycle = False
+        while chain[-1] in parents and len(chain) < MAX_CHAIN and not cycle:
             parent = parents[chain[-1]][0].parent
-            if parent in chain:
-                chain.append(f"{parent} (a cycle)")
-                break
+            cycle = parent in chain
             chain.append(parent)
         lines = [f"**tf frame `{frame}`**", "", "parent chain: " + " → ".join(
-            f"`{name}`" for name in chain)]
+            f"`{name}`" for name in chain) + (" (a cycle)" if cycle else "")]
         publishers = parents.get(frame, [])
         if len(publishers) > 1:
             lines.append(f"\n{len(publishers)} publishers give it a parent:")
