@@ -130,6 +130,16 @@ async def test_xacro_diagnostics_follow_unsaved_edits(
     await changed(client, uri, fixed, 2)
     await eventually(lambda: "optical_frame_rotation" not in codes(client, uri))
 
+    number, line = next((n, t) for n, t in enumerate(fixed.splitlines())
+                        if 'name="laser"' in t)
+    hover = await client.text_document_hover_async(lsp.HoverParams(
+        text_document=lsp.TextDocumentIdentifier(uri=uri),
+        position=lsp.Position(line=number, character=line.index('"laser"') + 2)))
+    assert hover is not None and isinstance(hover.contents, lsp.MarkupContent)
+    # the URDF's parent and the launch file's (the entry point's included sensors.launch)
+    assert "2 publishers give it a parent" in hover.contents.value
+    assert "robot_state_publisher: fixed joint 'laser_joint'" in hover.contents.value
+
 
 @pytest.mark.asyncio
 async def test_hover_shows_parent_chain_and_publishers(
