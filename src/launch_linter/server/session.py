@@ -132,7 +132,7 @@ class Session:
 
     def relint(self, roots: Iterable[str]) -> set[str]:
         touched: set[str] = set()
-        held = {p: t.encode("utf-8", "surrogateescape") for p, t in self.texts.items()}
+        held = {p: t.encode("utf-8", "replace") for p, t in self.texts.items()}
         with unsaved_texts(held):
             for root in sorted(roots):
                 touched |= self._lint_root(root)
