@@ -30,6 +30,7 @@ from launch_linter.rules import (
     ros2_schema,
     roslaunch_error,
     rot_degrees,
+    rounded_pi,
     self_transform,
     sensor_null,
     sig_implication,
@@ -89,6 +90,7 @@ RULE_MODULES = (
     urdf_empty_robot,
     xacro_error,
     xacro_unused_block,
+    rounded_pi,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)
