@@ -164,7 +164,8 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     problems_found: list[Problem] = []
     defines_macros = False
     if source.kind is DescriptionKind.LITERAL or source.file is None:
-        root, problems = literal_root(source.text or "", source.path, source.line)
+        root, problems = literal_root(source.text or "", source.path, source.line,
+                                      own_lines=standalone)
     elif source.text is not None:
         # A description linted as text (``lint_text``): expanded, not kept in the cache.
         from launch_linter.frontends.robot.xacro import expand

@@ -51,10 +51,15 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
         return LaunchTree(path, FileStatus.PARSE_ERROR, (), (Problem(
             "parse_error", path, exc.line, 1, f"not well-formed XML: {exc.message}"),),
             (path,))
-    # Text linted as if it were the file (which need not exist) is expanded as it is.
-    given = data.decode("utf-8", "replace") if data is not None else None
-    source = DescriptionSource(path, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
-                               tuple(sorted(args.items())), text=given)
+    if path.lower().endswith(".urdf"):
+        # A URDF is read as it is, as check_urdf and a launch file's open().read() do.
+        source = DescriptionSource(path, 1, 1, DescriptionKind.LITERAL, None,
+                                   text=text.decode("utf-8", "replace"))
+    else:
+        # Text linted as if it were the file (which need not exist) is expanded as it is.
+        given = data.decode("utf-8", "replace") if data is not None else None
+        source = DescriptionSource(path, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
+                                   tuple(sorted(args.items())), text=given)
     robot, problems = read_description(source, packages, cache or RobotCache(), display,
                                        dict(env), standalone=True)
     if robot is None:

@@ -117,9 +117,10 @@ def elements_of(root: ExpandedNode, display: Display,
     return out, known
 
 
-def literal_root(text: str, path: str, line: int) -> tuple[ExpandedNode | None,
-                                                           list[XacroProblem]]:
-    """A URDF written in a launch file, as an expanded tree (no xacro in it)."""
+def literal_root(text: str, path: str, line: int, own_lines: bool = False
+                 ) -> tuple[ExpandedNode | None, list[XacroProblem]]:
+    """A URDF written in a launch file, as an expanded tree (no xacro in it); with
+    ``own_lines`` the text is the file ``path`` itself and keeps its lines."""
     try:
         document = parse_xml(text.encode("utf-8"))
     except XmlError as exc:
@@ -127,7 +128,8 @@ def literal_root(text: str, path: str, line: int) -> tuple[ExpandedNode | None,
                                                f"well-formed XML: {exc.message}", True)]
 
     def convert(element: Element) -> ExpandedNode:
-        node = ExpandedNode(element.tag, path, line, 1, ())
+        node = (ExpandedNode(element.tag, path, element.line, element.column, ())
+                if own_lines else ExpandedNode(element.tag, path, line, 1, ()))
         node.attrib = dict(element.attrib)
         # Only joints and their direct children matter; deeper levels are not copied.
         if element.tag in ("robot", "joint"):

@@ -118,7 +118,11 @@ class XacroExpander:
             if element is not None:
                 root = self._node(element, absolute, ())
                 self._include_stack.append(absolute)
-                self._children(element.children, absolute, _Table(), root, ())
+                table = _Table()
+                # xacro evaluates the root's own attributes first, before any xacro:arg
+                # of the document is declared.
+                self._attributes(element, root, table)
+                self._children(element.children, absolute, table, root, ())
         except _Abort as stop:
             self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True))
             root = None
