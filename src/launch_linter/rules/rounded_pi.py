@@ -109,12 +109,12 @@ def _angles(edge: Edge) -> list[tuple[str, float]]:
     return []
 
 
-def _farthest_child(edge: Edge, edges: tuple[Edge, ...]) -> tuple[str, float] | None:
+def _farthest_child(edge: Edge, by_parent: dict[str, list[Edge]]) -> tuple[str, float] | None:
     """The child's own child frame farthest from it, from the same kind of source (the
     same description for a URDF joint), so that the message is the same in every tree."""
     best: tuple[str, float] | None = None
-    for other in edges:
-        if other.parent != edge.child or other.translation is None:
+    for other in by_parent.get(edge.child, ()):
+        if other.translation is None:
             continue
         if (other.joint is None) != (edge.joint is None):
             continue
@@ -129,6 +129,7 @@ def _farthest_child(edge: Edge, edges: tuple[Edge, ...]) -> tuple[str, float] | 
 
 def check(context: RuleContext) -> Iterator[Finding]:
     edges = edges_of(context)
+    by_parent: dict[str, list[Edge]] | None = None
     for edge in edges:
         found = [(name, value, rounded) for name, value in _angles(edge)
                  if (rounded := rounded_pi(value)) is not None]
@@ -138,7 +139,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
         parts = [f"{name} {value!r} is {meant} rounded ({off:.1e} rad off)"
                  for name, value, (meant, off) in found]
         at_one_metre = f"{worst * 1000:.2f} mm at 1 m"
-        farthest = _farthest_child(edge, edges)
+        if by_parent is None:  # built once, when the first rounded angle is found
+            by_parent = {}
+            for other in edges:
+                by_parent.setdefault(other.parent, []).append(other)
+        farthest = _farthest_child(edge, by_parent)
         if farthest is not None and farthest[1] > 0:
             at_one_metre += (f", {worst * farthest[1] * 1000:.2f} mm at '{farthest[0]}' "
                              f"({farthest[1]:.3g} m from '{edge.child}')")

@@ -52,11 +52,17 @@ SEVERITY = Severity.ERROR
 EXAMPLE_PATH = "example.urdf"
 
 
+MAX_SUGGESTED = 20
+"""Missing links per description for which close names are looked for (each look is a
+pass over every link name)."""
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     for robot in robots_of(context):
         if not robot.complete or not judged(robot):
             continue
         links = first_by_name(robot.links)
+        suggested = 0
         for joint in robot.joints:
             if not joint.condition.always:
                 continue
@@ -64,16 +70,18 @@ def check(context: RuleContext) -> Iterator[Finding]:
             for end, name in (("child", joint.child), ("parent", joint.parent)):
                 if name is None or name in links:
                     continue
+                close = _close(name, list(links)) if suggested < MAX_SUGGESTED else []
+                suggested += 1
                 said = (f"child link [{name}] of joint [{joint.name}] not found"
                         if end == "child" else
                         f"parent link [{name}] of joint [{joint.name}] not found")
                 yield Finding(
                     joint.path, joint.line, joint.column,
                     f"joint '{joint.name}' names {end} link '{name}', which the description "
-                    f"does not define{_closest(name, list(links))}; " + refused(said),
+                    f"does not define{_closest(close)}; " + refused(said),
                     joint.name,
                     tuple(Location(links[n].path, links[n].line, links[n].column)
-                          for n in _close(name, list(links))),
+                          for n in close),
                     severity=level(robot),
                 )
                 break
@@ -86,8 +94,7 @@ def _close(name: str, known: list[str]) -> list[str]:
     return difflib.get_close_matches(name, known, n=3, cutoff=0.6)
 
 
-def _closest(name: str, known: list[str]) -> str:
-    close = _close(name, known)
+def _closest(close: list[str]) -> str:
     if not close:
         return ""
     return " (defined: " + ", ".join(f"'{n}'" for n in close) + ")"

@@ -31,7 +31,7 @@ MAX_PACKAGE_DEPTH = 4
 """Folders walked up from a description to find its package (``package.xml``)."""
 MAX_SCANNED = 300
 """Most description files of one package read to find which are included."""
-MAX_SCANNED_BYTES = 1 << 20
+MAX_SCANNED_BYTES = 1 << 18
 
 
 def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
