@@ -53,3 +53,26 @@ def test_loaded_by_a_launch_file_it_is_an_error(tmp_path: Path) -> None:
 
 def test_without_a_publisher_a_loaded_description_is_not_read(tmp_path: Path) -> None:
     assert lint_loaded(tmp_path, robot(link("a") + link("b")), RULE, publisher=False) == ()
+
+
+def test_a_wrapper_macro_that_does_not_forward_the_parent(tmp_path: Path) -> None:
+    """The pattern of franka_ros issue 374 (written here, not copied): an arm macro joins
+    its first link to ``connected_to`` only when that is given, and the wrapper that the
+    cell calls with ``parent=`` does not pass it on, so the arm floats as a second root."""
+    text = robot(
+        '<xacro:macro name="arm" params="arm_id connected_to:=\'\'">'
+        '<link name="${arm_id}_link0"/><link name="${arm_id}_link1"/>'
+        '<joint name="${arm_id}_joint1" type="revolute"><parent link="${arm_id}_link0"/>'
+        '<child link="${arm_id}_link1"/></joint>'
+        '<xacro:unless value="${not connected_to}">'
+        '<joint name="${arm_id}_joint_${connected_to}" type="fixed">'
+        '<parent link="${connected_to}"/><child link="${arm_id}_link0"/></joint>'
+        '</xacro:unless></xacro:macro>'
+        '<xacro:macro name="robot" params="arm_id parent">'
+        '<xacro:arm arm_id="${arm_id}"/></xacro:macro>'
+        '<link name="world"/>\n<xacro:robot arm_id="panda_1" parent="world"/>')
+    (found,) = lint_loaded(tmp_path, text, RULE)
+    assert "Two root links found: [panda_1_link0] and [world]" in found.message
+    fixed = text.replace('<xacro:arm arm_id="${arm_id}"/>',
+                         '<xacro:arm arm_id="${arm_id}" connected_to="${parent}"/>')
+    assert lint_loaded(tmp_path, fixed, RULE) == ()

@@ -90,6 +90,11 @@ def rounded_pi(value: float) -> tuple[str, float] | None:
     return sign + _NAMES[quarters], off
 
 
+def rounded_meaning(value: float) -> float:
+    """The multiple of π/4 that ``value`` rounds."""
+    return math.copysign(round(abs(value) / (math.pi / 4)) * math.pi / 4, value)
+
+
 def _decimals(value: float) -> int:
     """The decimals ``value`` is written with (Python's shortest spelling; 0 for an
     integer, and more than any bound for an exponent)."""
@@ -147,7 +152,9 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if farthest is not None and farthest[1] > 0:
             at_one_metre += (f", {worst * farthest[1] * 1000:.2f} mm at '{farthest[0]}' "
                              f"({farthest[1]:.3g} m from '{edge.child}')")
-        exact = "${pi/2}" if edge.joint is not None else "1.5707963"
+        meant = found[0][2][0].lstrip("-").replace("π", "pi")
+        exact = (f"${{{meant}}}" if edge.joint is not None
+                 else f"{rounded_meaning(found[0][1]):.7f}")
         finding = finding_on(
             edge,
             f"{'; '.join(parts)}: frame '{edge.child}' is turned off the "

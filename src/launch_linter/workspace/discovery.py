@@ -173,10 +173,13 @@ class Exclusions:
 
 DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
 """Robot descriptions, linted on their own (``.urdf.xacro`` ends with ``.xacro``)."""
+NOT_DESCRIPTION_SUFFIXES = (".srdf.xacro",)
+"""MoveIt's semantic descriptions: their root is ``<robot>`` too, but they hold no links."""
 
 
 def is_description_name(name: str) -> bool:
-    return name.lower().endswith(DESCRIPTION_SUFFIXES)
+    lower = name.lower()
+    return lower.endswith(DESCRIPTION_SUFFIXES) and not lower.endswith(NOT_DESCRIPTION_SUFFIXES)
 
 
 def discover(

@@ -51,8 +51,9 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
         return LaunchTree(path, FileStatus.PARSE_ERROR, (), (Problem(
             "parse_error", path, exc.line, 1, f"not well-formed XML: {exc.message}"),),
             (path,))
-    if path.lower().endswith(".urdf"):
-        # A URDF is read as it is, as check_urdf and a launch file's open().read() do.
+    if path.lower().endswith(".urdf") and b"<xacro:" not in text:
+        # A URDF is read as it is, as check_urdf and a launch file's open().read() do (one
+        # with xacro elements is xacro whatever its name).
         source = DescriptionSource(path, 1, 1, DescriptionKind.LITERAL, None,
                                    text=text.decode("utf-8", "replace"))
     else:
