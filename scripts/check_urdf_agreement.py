@@ -92,8 +92,9 @@ def main() -> int:
             diagnostics = lint_paths([str(path)], options).diagnostics
             ours_xacro = any(d.rule == "xacro_error" for d in diagnostics)
             if not text.strip():
-                key = "xacro refuses: linter says so" if ours_xacro or not robot.complete \
-                    else "xacro refuses: linter does not see it"
+                key = ("xacro refuses: linter reports xacro_error" if ours_xacro else
+                       "xacro refuses: linter leaves it unproven" if not robot.complete else
+                       "xacro refuses: linter does not see it")
                 counts[key] += 1
                 if key.endswith("not see it"):
                     print(f"{path}: the real xacro refuses it; the linter reads it whole")
