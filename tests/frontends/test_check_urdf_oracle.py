@@ -82,7 +82,7 @@ def robots(draw: st.DrawFn) -> str:
     return f'<robot name="generated">{body}</robot>'
 
 
-@settings(max_examples=150, deadline=None,
+@settings(max_examples=60, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(robots())
 def test_generated_descriptions(tmp_path: Path, text: str) -> None:
@@ -91,11 +91,8 @@ def test_generated_descriptions(tmp_path: Path, text: str) -> None:
     assert linter(path) == urdfdom(path), text
 
 
-@pytest.mark.parametrize("path", [
-    FIXTURES / "robot_real" / "turtlebot3" / "turtlebot3_burger.urdf",
-    FIXTURES / "robot_ws" / "src" / "demo_description" / "urdf" / "plain.urdf",
-])
-def test_real_urdf(path: Path) -> None:
+def test_real_urdf() -> None:
+    path = FIXTURES / "robot_ws" / "src" / "demo_description" / "urdf" / "plain.urdf"
     assert linter(path) == urdfdom(path)
 
 
@@ -103,6 +100,8 @@ def test_real_urdf(path: Path) -> None:
                     reason="the real xacro is not installed (pip install -r requirements-dev.lock)")
 @pytest.mark.parametrize("path", [
     FIXTURES / "robot_real" / "urdf_tutorial" / "08-macroed.urdf.xacro",
+    # A .urdf with xacro elements in it: the linter expands it as xacro, as its users do.
+    FIXTURES / "robot_real" / "turtlebot3" / "turtlebot3_burger.urdf",
     FIXTURES / "robot_ws" / "src" / "demo_description" / "urdf" / "robot.urdf.xacro",
 ])
 def test_real_xacro_expanded_by_the_real_xacro(tmp_path: Path, path: Path) -> None:
