@@ -19,8 +19,8 @@ from launch_linter.commands.options import (
 from launch_linter.engine import LintOptions, LintResult, lint_text
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
-from launch_linter.report.paths import shown_path
 from launch_linter.workspace.config import Config
+from launch_linter.workspace.paths import shown_path
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
