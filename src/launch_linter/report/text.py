@@ -86,9 +86,21 @@ def fix_hint(diagnostics: Sequence[Diagnostic]) -> str | None:
     return f"[*] {safe} fixable with the `--fix` option{tail}."
 
 
-def format_joint(j: RobotJoint) -> str:
+MAX_PUBLISHERS = 4
+"""Entry points named after an edge in the ``transforms`` listing (then "and N more")."""
+
+
+def _publishers(entry_points: Sequence[str]) -> list[str]:
+    if not entry_points:
+        return []
+    shown = ", ".join(entry_points[:MAX_PUBLISHERS])
+    more = len(entry_points) - MAX_PUBLISHERS
+    return [f"in {shown}" + (f" and {more} more" if more > 0 else "")]
+
+
+def format_joint(j: RobotJoint, entry_points: Sequence[str] = ()) -> str:
     """A URDF edge in the ``transforms`` text listing: ``urdf`` and the joint type where a
-    launch transform shows its node and package."""
+    launch transform shows its node and package; ``entry_points``: those that publish it."""
     translation = f"({', '.join(f'{v:g}' for v in j.translation)})" if j.translation else "?"
     rotation = f"rpy({', '.join(f'{v:g}' for v in j.rpy)})" if j.rpy else "?"
     extra = [f"via {j.source.path}:{j.source.line}"]
@@ -96,14 +108,15 @@ def format_joint(j: RobotJoint) -> str:
         extra.append(f"when {j.condition.describe()}")
     if j.unresolved:
         extra.append(f"unresolved: {', '.join(j.unresolved)}")
-    return (
+    extra.extend(_publishers(entry_points))
+    return printable(
         f"{j.path}:{j.line}:{j.column}: urdf {j.joint_type} joint {j.name} "
         f"{j.parent or '?'} -> {j.child or '?'} t={translation} r={rotation}"
         f"  [{'; '.join(extra)}]"
     )
 
 
-def format_transform(t: StaticTransform) -> str:
+def format_transform(t: StaticTransform, entry_points: Sequence[str] = ()) -> str:
     rotation = (
         f"{t.rotation.kind.value}({', '.join(f'{v:g}' for v in t.rotation.values)})"
         if t.rotation
@@ -115,6 +128,7 @@ def format_transform(t: StaticTransform) -> str:
         extra.append(f"when {t.condition.describe()}")
     if t.unresolved:
         extra.append(f"unresolved: {', '.join(t.unresolved_names)}")
+    extra.extend(_publishers(entry_points))
     tail = f"  [{'; '.join(extra)}]" if extra else ""
     return printable(
         f"{t.path}:{t.line}:{t.column}: {t.namespace}{t.name or '?'} ({t.package}) "
