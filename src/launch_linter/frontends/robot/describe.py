@@ -72,12 +72,12 @@ XacroCall = typing.Tuple[
 ]
 
 
-def xacro_command(words: Sequence[Word]) -> XacroCall | None:
-    """``(file, args, reason, open_args)`` when ``words`` run xacro (``xacro``,
-    ``xacro.py``, ``$(find xacro)/xacro``, ``rosrun xacro xacro``, ``--inorder`` and other
-    options skipped); None when the command is not xacro. ``file`` is None when
-    unresolved; ``open_args`` is true when an unresolved word may give more args."""
-from launch_linter.resolve.value import Value, holes, why_unresolved
+def xacro_command(words: Sequence[Word], command: Value = ()) -> XacroCall | None:
+    """``(file, args, reason, open_args)`` when ``words`` (of the value ``command``) run
+    xacro (``xacro``, ``xacro.py``, ``$(find xacro)/xacro``, ``rosrun xacro xacro``,
+    ``--inorder`` and other options skipped); None when the command is not xacro. ``file``
+    is None when unresolved, and ``reason`` names what blocks it; ``open_args`` is true
+    when an unresolved word may give more args."""
     start = None
     for index, (text, resolved) in enumerate(words[:4]):
         base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
