@@ -39,6 +39,7 @@ from launch_linter.workspace.packages import (
     nearest_package_xml,
     package_ros_version,
 )
+from launch_linter.workspace.paths import shown_path
 
 __all__ = [
     "AUTO_JOBS",
@@ -103,17 +104,8 @@ class LintResult:
 
 
 def _display_function(item: InputFile) -> object:
-    relative = not os.path.isabs(item.display)
-
     def display(path: str) -> str:
-        absolute = os.path.abspath(path)
-        if absolute == item.path:
-            return item.display
-        if relative:
-            rel = os.path.relpath(absolute)
-            if not rel.startswith(".."):
-                return rel
-        return absolute
+        return item.display if os.path.abspath(path) == item.path else shown_path(path)
 
     return display
 

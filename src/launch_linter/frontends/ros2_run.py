@@ -59,7 +59,15 @@ from launch_linter.resolve.ros2_substitution import (
     to_bool,
     written,
 )
-from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+from launch_linter.resolve.value import (
+    Hole,
+    Value,
+    holes,
+    is_resolved,
+    resolved_text,
+    text_of,
+    why_unresolved,
+)
 from launch_linter.resolve.xml_safe import read_launch_bytes
 from launch_linter.workspace.mentions import named_by_another_file
 
@@ -554,7 +562,7 @@ class Ros2Runner:
             self._set(scope, name, value, frame.condition, f"$(var {name})")
         path = resolved_text(path_value)
         if path is None:
-            reasons = "; ".join(f"{h.text}: {h.reason}" for h in holes(path_value))
+            reasons = why_unresolved(path_value)
             self._report("unresolved", action.where,
                          f"include file {text_of(path_value)!r} not followed: {reasons}")
             self._opened(f"line {action.where.line}: an include is not followed")
