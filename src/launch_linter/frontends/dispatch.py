@@ -5,8 +5,9 @@ launch files. XML is ROS 1 unless it uses what only ROS 2 launch XML has: any ac
 that launch or launch_ros exposes and roslaunch does not (``<executable>``, ``<let>``,
 ``<set_env>``, ``<set_parameter>``, ``<push-ros-namespace>``, the composable-node tags,
 ... :data:`ROS2_ONLY_TAGS`), a substitution only ROS 2 has (``$(var ...)``,
-``$(find-pkg-share ...)``, ...), a ``<node>`` with ``exec=`` or ``ros_args=``, a
-``<param from=...>``, or an ``<include>`` of a Python or YAML launch file. Both ROS
+``$(find-pkg-share ...)``, ...), a ``<node>`` with ``exec=`` or ``ros_args=``, or an
+``<include>`` of a Python or YAML launch file (not ``<param from=...>``: ROS 1 files
+write it for ``<remap from=...>``). Both ROS
 versions use ``.launch`` and ``.launch.xml``, so the suffix does not decide (the engine
 lets the package's build type decide for ``*.xml`` files).
 """
@@ -56,7 +57,6 @@ _ROS2_SUBSTITUTION = re.compile(
 _ROS2_WORD_SIGNS = (
     (b"exec", re.compile(rb"<node\s[^<>]*\bexec\s*=")),
     (b"ros_args", re.compile(rb"<node\s[^<>]*\bros_args\s*=")),
-    (b"from", re.compile(rb"<param\s[^<>]*\bfrom\s*=")),
     (b"<include",
      re.compile(rb"""<include\s[^<>]*\bfile\s*=\s*["'][^"'<>]*\.(?:py|ya?ml)["']""")),
 )

@@ -75,3 +75,23 @@ def test_actions_built_but_not_returned_say_so() -> None:
     assert result.transforms == ()
     (info,) = [d for d in result.diagnostics if d.rule == "unresolved"]
     assert "builds launch actions but returns none" in info.message
+
+
+def test_a_log_message_returned_alone_is_not_the_actions_built() -> None:
+    # stereolabs/zed-ros2-wrapper: an early return of a LogInfo; the nodes built later are
+    # not seen, which the info still says.
+    text = HEADER + """from launch.actions import LogInfo
+
+
+def launch_setup(context):
+    tf = Node(package='tf2_ros', executable='static_transform_publisher',
+              arguments=['--frame-id', 'a', '--child-frame-id', 'b'])
+    return [LogInfo(msg='starting')]
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=launch_setup)])
+"""
+    result = lint_text(text, "d_launch.py")
+    (info,) = [d for d in result.diagnostics if d.rule == "unresolved"]
+    assert "builds launch actions but returns none" in info.message

@@ -29,8 +29,9 @@ ROS1_NODE = '<node pkg="tf" type="static_transform_publisher" name="t" args="0 0
     ("a.launch", '<launch><set_env name="A" value="1"/></launch>', "ros2"),
     ("a.launch", '<launch><set_parameter name="a" value="1"/></launch>', "ros2"),
     ("a.launch", '<launch><timer period="1"><log message="x"/></timer></launch>', "ros2"),
-    ("a.launch", '<launch><node pkg="a" type="b"><param from="x.yaml"/></node></launch>',
-     "ros2"),
+    # A ROS 1 slip for <remap from= to=> (Robin-Wujw/nao_navigation), not a ROS 2 sign.
+    ("a.launch", '<launch><node pkg="a" type="b"><param from="a" to="b"/></node></launch>',
+     "ros1"),
     ("a.launch", '<launch><node pkg="a" name="n" ros_args="--log-level debug"/></launch>',
      "ros2"),
     ("a.launch", '<launch><arg name="a" default="$(find-exec ls)"/></launch>', "ros2"),

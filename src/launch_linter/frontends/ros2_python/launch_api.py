@@ -27,6 +27,7 @@ from launch_linter.frontends.ros2_actions import (
     SetEnv,
     SetVar,
     Unfollowed,
+    Uses,
     Where,
     ros2_run,
     shell_reads_as_words,
@@ -350,7 +351,10 @@ class Interpreter(Calls):
             for p in met
         )
         found = self.actions(result, node) if result is not None else ()
-        if not found and not notes and _starts_actions(function.node):
+        # A log message or a parameter set (an unmodelled action) starts nothing: a
+        # function that returns only those returned none of the actions it builds.
+        followed = [action for action in found if not isinstance(action, Uses)]
+        if not followed and not notes and _starts_actions(function.node):
             notes = (Unfollowed(where, f"line {node.lineno}: OpaqueFunction "
                                        f"{name}() builds launch actions but "
                                        f"returns none the linter can follow"),)
