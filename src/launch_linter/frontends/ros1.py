@@ -216,8 +216,18 @@ class Ros1Loader(Ros1Tags):
             return
         absolute = self._locate(path, context.filename)
         if absolute is None:
-            self._error(context, element, f"included file not found: {path}")
-            return
+            located = self.options.packages.locate(
+                path if os.path.isabs(path) else os.path.join(
+                    os.path.dirname(context.filename), path),
+                near=os.path.dirname(context.filename))
+            if located.path is None and not located.absent and not self.options.study_errors:
+                self._report("unresolved", context.filename, element,
+                             f"include file {path!r} not followed: {located.reason}")
+                return
+            if located.path is None:
+                self._error(context, element, f"included file not found: {path}")
+                return
+            absolute = located.path
         if absolute in context.chain:
             cycle = " -> ".join(self._display(p) for p in (*context.chain, absolute))
             self._error(context, element, f"include cycle: {cycle}")

@@ -463,6 +463,13 @@ class Ros2Runner:
                          f"include file {text_of(path_value)!r} not followed: {reasons}")
             return
         absolute = _locate(path, frame.filename)
+        located = None
+        if absolute is None:
+            located = self.options.packages.locate(
+                path if os.path.isabs(path) else os.path.join(
+                    os.path.dirname(frame.filename), path),
+                near=os.path.dirname(frame.filename))
+            absolute = located.path
         if absolute is None:
             if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
@@ -475,6 +482,10 @@ class Ros2Runner:
                 self._report("unresolved", action.where, f"include file {path!r} not followed: "
                              f"it depends on the environment ({', '.join(variables)}; give "
                              f"them with --env)")
+                return
+            if located is not None and not located.absent and not self.options.study_errors:
+                self._report("unresolved", action.where,
+                             f"include file {path!r} not followed: {located.reason}")
                 return
             self._report("roslaunch_error", action.where, f"included file not found: {path}")
             return

@@ -39,14 +39,15 @@ class RobotCache:
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str]) -> Expansion:
-        key = (file, args, tuple(packages.roots), tuple(sorted(env.items())))
+        key = (file, args, packages.key, tuple(sorted(env.items())))
         found = self._expansions.get(key)
         if found is None:
             # Imported when a description is first expanded: xacro (with its interpreter
             # of ${} expressions) is a third of the start-up of a run that meets none.
             from launch_linter.frontends.robot.xacro import expand
 
-            found = self._expansions[key] = expand(file, dict(args), packages.find, env)
+            found = self._expansions[key] = expand(
+                file, dict(args), packages.find, env, lambda path: packages.locate(path).path)
         return found
 
     def __len__(self) -> int:
@@ -133,8 +134,15 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
                                            f"{source.reason or 'unknown file'}"))
             continue
         else:
+            located = packages.locate(source.file)
+            if located.path is None and not located.absent:
+                problems_found.append(_unresolved(
+                    source, f"robot description {display(source.file)} not read: "
+                            f"{located.reason}"))
+                continue
             args = source.args if source.kind is DescriptionKind.XACRO else ()
-            expansion = cache.expansion(os.path.abspath(source.file), args, packages, env)
+            expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
+                                        packages, env)
             root, problems = expansion.root, expansion.problems
         for problem in problems[:20]:
             where = display(problem.path)

@@ -84,10 +84,13 @@ class XacroExpander:
         args: Mapping[str, str | None],
         find: Callable[[str], str | None],
         env: Mapping[str, str] | None = None,
+        locate: Callable[[str], str | None] | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
         """xacro args; None is an arg given with a value the linter does not know."""
         self.find = find
+        self.locate = locate
+        """Where a missing file is installed from (a share path to its source file)."""
         self.env = dict(env or {})
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
@@ -393,9 +396,13 @@ class XacroExpander:
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
         if not os.path.isfile(target):
-            if element.attrib.get("optional", "").lower() in ("true", "1"):
+            installed = self.locate(target) if self.locate is not None else None
+            if installed is not None:
+                target = installed
+            elif element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
-            raise _Unknown(f"included file {filename} not found")
+            else:
+                raise _Unknown(f"included file {filename} not found")
         included = self._read(target, (path, element.line))
         if included is None:
             return
@@ -497,9 +504,11 @@ def _boolean(value: str) -> bool | None:
 
 def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
-           env: Mapping[str, str] | None = None) -> Expansion:
-    """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``)."""
-    return XacroExpander(args, find, env).expand(path)
+           env: Mapping[str, str] | None = None,
+           locate: Callable[[str], str | None] | None = None) -> Expansion:
+    """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
+    ``locate`` maps an included path that is not there to the file installed there."""
+    return XacroExpander(args, find, env, locate).expand(path)
 
 
 __all__ = [
