@@ -8,9 +8,10 @@ in a subprocess, with this process's environment, so a sourced ``AMENT_PREFIX_PA
 seen) and writes ``OUT_DIR/<repo>.json``; then it prints one line per repository: errors,
 warnings and infos, whether a tree of the repository starts ``robot_state_publisher``
 with a description, and whether any such tree had its description read (URDF joints
-found). The errors and warnings are listed in ``OUT_DIR/<repo>.findings.txt`` for
-judging by reading the files. Run it with ``PYTHONPATH`` pointing at another checkout's
-``src`` to measure that version.
+found, or, for a URDF without joints, no problem reported about the description). The
+errors and warnings are listed in ``OUT_DIR/<repo>.findings.txt`` for judging by reading
+the files. Run it with ``PYTHONPATH`` pointing at another checkout's ``src`` to measure
+that version.
 """
 
 from __future__ import annotations
@@ -47,10 +48,18 @@ def counts(repo: str, out_dir: str) -> collections.Counter[str]:
 
 def descriptions(repo: str) -> tuple[bool, bool]:
     """(a tree starts robot_state_publisher with a description, one such tree has joints)."""
-    result = lint_paths([repo], LintOptions())
+    try:
+        from launch_linter.workspace.environment import environment_places
+
+        options = LintOptions(environment=environment_places(os.environ))
+    except ImportError:  # a checkout from before issue 27 (measured with PYTHONPATH)
+        options = LintOptions()
+    result = lint_paths([repo], options)
     starting = [t for t in result.trees
                 if t.descriptions and any(n.package == RSP for n in t.nodes)]
-    return bool(starting), any(t.joints for t in starting)
+    return bool(starting), any(
+        t.joints or not any(p.message.startswith("robot description") for p in t.problems)
+        for t in starting)
 
 
 def main() -> int:

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from typing import NamedTuple
 
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
+from launch_linter.workspace.environment import PREFIX, Place
 
 if typing.TYPE_CHECKING:
     from launch_linter.workspace.install_rules import Layout
@@ -39,34 +40,41 @@ class Located(NamedTuple):
 
 class PackageIndex:
     """Packages found under ``roots`` (source folders, crawled as rospkg does) and then
-    in ``prefixes`` (installed prefixes: ``<prefix>/share/<package>``), in that order,
-    crawled lazily on first use; the earlier place wins (an overlay before its
-    underlay). A package found in source is installed by its install rules (see
-    :meth:`locate`)."""
+    in ``places`` (:mod:`.environment`: installed prefixes, ``<prefix>/share/<package>``,
+    and further source folders), in that order, crawled lazily on first use; the
+    earlier place wins (an overlay before its underlay). A package found in source is
+    installed by its install rules (see :meth:`locate`)."""
 
-    def __init__(self, roots: list[str], prefixes: Sequence[str] = ()) -> None:
+    def __init__(self, roots: list[str], places: Sequence[Place] = ()) -> None:
         self.roots = [os.path.abspath(r) for r in roots]
-        self.prefixes = [os.path.abspath(p) for p in prefixes]
+        self.places = tuple((kind, os.path.abspath(folder)) for kind, folder in places)
         self._packages: dict[str, str] | None = None
         self._installed: set[str] = set()
         self._layouts: dict[str, Layout | None] = {}
 
     @property
-    def key(self) -> tuple[str, ...]:
+    def key(self) -> tuple[object, ...]:
         """What the packages found depend on (a cache key)."""
-        return (*self.roots, "", *self.prefixes)
+        return (*self.roots, *self.places)
 
     def find(self, name: str) -> str | None:
         return self._all().get(name)
 
     def _all(self) -> dict[str, str]:
         if self._packages is None:
-            self._packages = self._crawl()
-            for prefix in self.prefixes:
-                for name, share in installed_packages(prefix).items():
-                    if name not in self._packages:
-                        self._packages[name] = share
+            found: dict[str, str] = {}
+            crawl = _Crawl(found)
+            for root in self.roots:
+                crawl.source(root)
+            for kind, folder in self.places:
+                if kind != PREFIX:
+                    crawl.source(folder)
+                    continue
+                for name, share in installed_packages(folder).items():
+                    if name not in found:
+                        found[name] = share
                         self._installed.add(share)
+            self._packages = found
         return self._packages
 
     def locate(self, path: str, near: str | None = None) -> Located:
@@ -131,42 +139,47 @@ class PackageIndex:
             self._layouts[directory] = read_layout(directory, name) if ros2 else None
         return self._layouts[directory]
 
-    def _crawl(self) -> dict[str, str]:
-        found: dict[str, str] = {}
-        budget = MAX_DIRECTORIES
-        seen: set[tuple[int, int]] = set()
-        for root in self.roots:
-            if not os.path.isdir(root):
+
+
+class _Crawl:
+    """One bounded crawl of source folders, shared by every folder of an index."""
+
+    def __init__(self, found: dict[str, str]) -> None:
+        self.found = found
+        self.budget = MAX_DIRECTORIES
+        self.seen: set[tuple[int, int]] = set()
+
+    def source(self, root: str) -> None:
+        if not os.path.isdir(root):
+            return
+        for directory, subdirs, files in os.walk(root, followlinks=True):
+            self.budget -= 1
+            if self.budget <= 0:
+                return
+            try:
+                info = os.stat(directory)
+            except OSError:
+                subdirs[:] = []
                 continue
-            for directory, subdirs, files in os.walk(root, followlinks=True):
-                budget -= 1
-                if budget <= 0:
-                    return found
-                try:
-                    info = os.stat(directory)
-                except OSError:
-                    subdirs[:] = []
-                    continue
-                if (info.st_dev, info.st_ino) in seen:
-                    # A symbolic link back to a folder already crawled (a loop): skip it.
-                    subdirs[:] = []
-                    continue
-                seen.add((info.st_dev, info.st_ino))
-                subdirs.sort()
-                if "CATKIN_IGNORE" in files:
-                    subdirs[:] = []
-                    continue
-                if "package.xml" in files or "manifest.xml" in files:
-                    name = _package_name(directory, files)
-                    if name is not None:
-                        found.setdefault(name, directory)
-                    subdirs[:] = []
-                    continue
-                if "rospack_nosubdirs" in files:
-                    subdirs[:] = []
-                    continue
-                subdirs[:] = [d for d in subdirs if not d.startswith(".")]
-        return found
+            if (info.st_dev, info.st_ino) in self.seen:
+                # A symbolic link back to a folder already crawled (a loop): skip it.
+                subdirs[:] = []
+                continue
+            self.seen.add((info.st_dev, info.st_ino))
+            subdirs.sort()
+            if "CATKIN_IGNORE" in files:
+                subdirs[:] = []
+                continue
+            if "package.xml" in files or "manifest.xml" in files:
+                name = _package_name(directory, files)
+                if name is not None:
+                    self.found.setdefault(name, directory)
+                subdirs[:] = []
+                continue
+            if "rospack_nosubdirs" in files:
+                subdirs[:] = []
+                continue
+            subdirs[:] = [d for d in subdirs if not d.startswith(".")]
 
 
 def _under(path: str, folder: str) -> bool:
