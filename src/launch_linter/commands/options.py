@@ -244,5 +244,13 @@ def lint_command_paths(
             raise UsageError("'-' (stdin) cannot be combined with other paths")
         name = getattr(ns, "stdin_filename", None) or STDIN_NAME
         return lint_text(sys.stdin.read(), name, options)
+    missing = [path for path in given if not os.path.lexists(path)]
+    if missing:
+        raise UsageError(f"{missing[0]}: no such file or folder")
     exclusions, ignored = discovery_for(ns, config)
-    return lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees)
+    result = lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees)
+    if not result.files:
+        # ruff's wording: an empty run is a silent success otherwise.
+        sys.stderr.write("warning: No files found under the given path(s) (launch files: "
+                         "*.launch, *.launch.xml/.py/.yaml, *_launch.py, .test, ...)\n")
+    return result
