@@ -26,7 +26,7 @@ from launch_linter.model.robot import (
     RobotJoint,
     RobotModel,
 )
-from launch_linter.resolve.value import Value, holes, why_unresolved
+from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
@@ -129,6 +129,8 @@ def _unresolved_file(text: str, command: Value) -> str:
     inside = tuple(hole for hole in holes(command) if hole.text in text)
     if not inside:
         return f"the description file {text!r} is not resolved"
+    if all(blocker(hole)[0] == hole.text for hole in inside):
+        return f"the description file {text!r} is not resolved: {why_unresolved(inside)}"
     return f"the description file depends on {why_unresolved(inside)}"
 
 
