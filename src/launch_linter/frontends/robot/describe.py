@@ -153,13 +153,21 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     joints: list[RobotJoint] = []
     robots: list[RobotModel] = []
     problems_found: list[Problem] = []
+    # Several nodes given one description (robot_state_publisher, the controller manager,
+    # a spawner) make one message per cause, not one per node.
+    reported: set[tuple[object, ...]] = set()
     for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
+        same = (source.kind, source.file, source.args, source.text, source.reason)
+        first = same not in reported
+        reported.add(same)
         if source.file is None and source.kind is not DescriptionKind.LITERAL:
-            problems_found.append(_unresolved(source, f"robot description not read: "
-                                           f"{source.reason or 'unknown file'}"))
+            if first:
+                problems_found.append(_unresolved(source, f"robot description not read: "
+                                                  f"{source.reason or 'unknown file'}"))
             continue
         robot, unresolved = read_description(source, packages, cache, display, env)
-        problems_found.extend(unresolved)
+        if first:
+            problems_found.extend(unresolved)
         if robot is not None:
             joints.extend(robot.joints)
             robots.append(robot)
