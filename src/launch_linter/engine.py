@@ -13,6 +13,7 @@ from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
+from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -184,10 +185,14 @@ def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) ->
 
 
 def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:
-    """The distribution given, else Foxy when a file uses Foxy-era Node keywords, else None."""
+    """The distribution given, else Foxy when a file uses Foxy-era Node keywords (unless
+    the tree's ROS 2 static_transform_publisher flags, Humble's, contradict them), else
+    None."""
     if options.ros_distro:
         return options.ros_distro
-    if any(p.rule == "ros2_removed_keyword" for p in tree.problems):
+    if any(p.rule == "ros2_removed_keyword" for p in tree.problems) and not any(
+        t.ros_version == 2 and uses_flags(t.tokens) for t in tree.transforms
+    ):
         return "foxy"
     return None
 
