@@ -240,7 +240,7 @@ def test_precision_says_its_sample_and_when_it_is_small() -> None:
     try:
         measured._table = lambda: table  # type: ignore[assignment]
         assert measured.precision_text("few") == (
-            "100% of 1 judged, small sample: 95% interval 21%–100%")
+            "100% of 1 judged, small sample: 95% interval 21% to 100%")
         assert measured.precision_text("many") == "95% of 40 judged"
         assert measured.precision_text("none") == "not measured"
     finally:

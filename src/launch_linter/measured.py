@@ -44,18 +44,18 @@ def wilson_interval(true: float, judged: float, z: float = 1.96) -> tuple[float,
 
 
 def _rate(entry: dict[str, float]) -> str:
-    """``95% of 40 judged``, or ``100% of 1 judged, small sample: 95% interval 21–100%``."""
+    """``95% of 40 judged``, or ``100% of 1 judged, small sample: 95% interval 21% to 100%``."""
     true, judged = entry["true"], entry["judged"]
     text = f"{entry['precision']:.0%} of {judged:g} judged"
     if judged < SMALL_SAMPLE:
         low, high = wilson_interval(true, judged)
-        text += f", small sample: 95% interval {low:.0%}–{high:.0%}"
+        text += f", small sample: 95% interval {low:.0%} to {high:.0%}"
     return text
 
 
 def precision_text(rule_id: str) -> str:
     """The precision at the current levels with its sample size (``100% of 6 judged,
-    small sample: 95% interval 61–100%``), or that of a rule whose warnings and errors
+    small sample: 95% interval 61% to 100%``), or that of a rule whose warnings and errors
     went away (``... at the study's level``), or of one judged at warning after the study
     and lowered since (``... at warning, now info``), or ``not measured``."""
     entry = _table().get(rule_id)
