@@ -14,7 +14,7 @@ from launch_linter.fix import apply_edits
 OPTIONS = LintOptions(select=frozenset({"leading_slash"}))
 NEWLINES = st.sampled_from(["\n", "\r\n", "\r"])
 FILLER = st.text(alphabet=st.sampled_from(
-    list("ab <>/=\"'\t") + ["é", "日", "本", "\u2028", "\u0085", "\x0c", "😀", "\u202e", "ß"]),
+    [*"ab <>/=\"'\t", "é", "日", "本", "\u2028", "\x85", "\x0c", "😀", "\u202e", "ß"]),
     max_size=12)
 """Text for comments: markup characters, tabs, multi-byte text, separators that are no
 line end for the parsers (U+2028, NEL, form feed in Python) though ``str.splitlines``
