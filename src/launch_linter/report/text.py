@@ -64,7 +64,8 @@ def format_joint(j: RobotJoint) -> str:
         extra.append(f"when {j.condition.describe()}")
     if j.unresolved:
         extra.append(f"unresolved: {', '.join(j.unresolved)}")
-    return (
+    # Joint and link names come from a robot description: escaped like every input string.
+    return printable(
         f"{j.path}:{j.line}:{j.column}: urdf {j.joint_type} joint {j.name} "
         f"{j.parent or '?'} -> {j.child or '?'} t={translation} r={rotation}"
         f"  [{'; '.join(extra)}]"

@@ -13,6 +13,7 @@ from __future__ import annotations
 import os
 
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
+from launch_linter.workspace.discovery import walk
 
 MAX_DIRECTORIES = 50_000
 MAX_WALK_UP = 32
@@ -38,7 +39,7 @@ class PackageIndex:
         for root in self.roots:
             if not os.path.isdir(root):
                 continue
-            for directory, subdirs, files in os.walk(root, followlinks=True):
+            for directory, subdirs, files in walk(root, followlinks=True):
                 budget -= 1
                 if budget <= 0:
                     return found
@@ -69,23 +70,45 @@ class PackageIndex:
         return found
 
 
+_MANIFEST_NAMES: dict[tuple[str, int, int, int, int], str | None] = {}
+"""Package name of each ``package.xml`` read, by path and identity: a run whose launch
+files lie in many packages crawls one workspace many times (each package's roots), and
+reads each manifest once."""
+MAX_REMEMBERED_MANIFESTS = 20_000
+
+
 def _package_name(directory: str, files: list[str]) -> str | None:
     if "package.xml" in files:
+        path = os.path.join(directory, "package.xml")
         try:
-            data = read_regular_file(os.path.join(directory, "package.xml"), MAX_MANIFEST_BYTES)
-            document = parse_xml(data, text_tags=("name",))
-        except (OSError, XmlError):
+            info = os.stat(path)
+        except OSError:
             return None
-        name: str | None = None
-        for child in document.root.children:
-            if child.tag == "name" and name is None:
-                name = child.text.strip(" \n\r\t") or None
-            elif child.tag == "export" and any(
-                grandchild.tag == "metapackage" for grandchild in child.children
-            ):
-                return None
-        return name
+        key = (path, info.st_dev, info.st_ino, info.st_size, info.st_mtime_ns)
+        if key not in _MANIFEST_NAMES:
+            if len(_MANIFEST_NAMES) >= MAX_REMEMBERED_MANIFESTS:
+                _MANIFEST_NAMES.clear()
+            _MANIFEST_NAMES[key] = _manifest_name(path)
+        return _MANIFEST_NAMES[key]
     return os.path.basename(directory)
+
+
+def _manifest_name(path: str) -> str | None:
+    """The package name a ``package.xml`` declares (None for a metapackage or none)."""
+    try:
+        data = read_regular_file(path, MAX_MANIFEST_BYTES)
+        document = parse_xml(data, text_tags=("name",))
+    except (OSError, XmlError):
+        return None
+    name: str | None = None
+    for child in document.root.children:
+        if child.tag == "name" and name is None:
+            name = child.text.strip(" \n\r\t") or None
+        elif child.tag == "export" and any(
+            grandchild.tag == "metapackage" for grandchild in child.children
+        ):
+            return None
+    return name
 
 
 def default_package_roots(launch_file: str) -> list[str]:

@@ -98,6 +98,8 @@ class XacroExpander:
         self._resolving: list[str] = []
         self._path = ""
         self._line = 1
+        self._parsed: dict[str, Element | None] = {}
+        """Each file parsed once, however often it is included (the tree is only read)."""
 
     # -- entry -------------------------------------------------------------------------
     def expand(self, path: str) -> Expansion:
@@ -135,6 +137,14 @@ class XacroExpander:
             if len(self.files) >= MAX_FILES:
                 raise _Abort(f"description reads more than {MAX_FILES} files", *where)
             self.files.append(absolute)
+        if absolute in self._parsed:
+            return self._parsed[absolute]
+        root = self._parse(absolute, at, where)
+        self._parsed[absolute] = root
+        return root
+
+    def _parse(self, absolute: str, at: tuple[str, int] | None,
+               where: tuple[str, int]) -> Element | None:
         try:
             data = read_launch_bytes(absolute)
         except OSError as exc:
@@ -392,7 +402,7 @@ class XacroExpander:
             raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
-        if not os.path.isfile(target):
+        if not os.path.exists(target):  # a FIFO or device is read, and said to be one
             if element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
             raise _Unknown(f"included file {filename} not found")
