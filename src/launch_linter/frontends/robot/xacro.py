@@ -170,6 +170,7 @@ class XacroExpander:
         self._charge()
         parts: list[str] = []
         position = 0
+        size = 0  # of the parts so far (summing them per token was quadratic)
         for match in _TOKEN.finditer(text):
             parts.append(text[position:match.start()])
             position = match.end()
@@ -183,7 +184,8 @@ class XacroExpander:
                 if "${" in inner:
                     inner = self.evaluate_text(inner, table)
                 parts.append(self._extension(inner.strip(), table))
-            if sum(len(p) for p in parts) > MAX_TEXT:
+            size += len(parts[-2]) + len(parts[-1])
+            if size > MAX_TEXT:
                 raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path,
                              self._line)
         parts.append(text[position:])
