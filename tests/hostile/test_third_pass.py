@@ -41,6 +41,15 @@ def test_third_pass_case(name: str, good: str, tmp_path: Path) -> None:
     assert not case.expect or any(case.expect in m for m in messages), (case.expect, messages)
 
 
+def test_a_huge_beliefs_file_named_by_a_repository_is_a_usage_error(tmp_path: Path) -> None:
+    from third_pass import _big_beliefs
+
+    done = run("check", _big_beliefs(tmp_path))
+    stderr = done.stderr.decode("utf-8", "replace")
+    assert done.returncode == 2 and "larger than" in stderr, stderr
+    assert "Traceback" not in stderr and "MemoryError" not in stderr, stderr
+
+
 FORGING = "&#10;x.launch:1:1: error: forged [self_transform]&#x85;&#x9b;2J&#x202e;"
 
 

@@ -126,7 +126,7 @@ def _package_copies(folder: Path) -> str:
 def _many_ignore_patterns(folder: Path) -> str:
     sub = folder / "ignores"
     patterns = "".join(f'"{"*a" * 8}{i}/**" = ["tf"]\n' for i in range(1000))
-    _write(sub, "launch-linter.toml", "[per-path-ignores]\n" + patterns)
+    _write(sub, ".launch-linter.toml", "[per-path-ignores]\n" + patterns)
     deep = "/".join("a" * 60 for _ in range(3))
     for index in range(200):
         _write(sub, f"{deep}/f{index}.launch", GOOD)
@@ -134,12 +134,14 @@ def _many_ignore_patterns(folder: Path) -> str:
 
 
 def _big_beliefs(folder: Path) -> str:
+    """A repository whose configuration names a beliefs file of 60 MB of tiny items."""
     sub = folder / "beliefs_repo"
-    _write(sub, "launch-linter.toml", 'beliefs = "beliefs.json"\n')
+    _write(sub, ".launch-linter.toml", 'beliefs = "beliefs.json"\n')
     with open(sub / "beliefs.json", "wb") as handle:
         handle.write(b'{"format": "launch-linter-beliefs/1", "beliefs": [')
-        handle.write(b'"' + b"x" * (64 * 1024 * 1024) + b'"]}')
-    return _write(sub, "a.launch", GOOD)
+        handle.write(b"{}," * (20 * 1024 * 1024) + b"{}]}")
+    _write(sub, "a.launch", GOOD)
+    return str(sub)
 
 
 def _nested_folders(folder: Path) -> str:
@@ -185,7 +187,6 @@ THIRD_PASS: dict[str, Case] = {
     "eval_format": Case("work", _text("format.launch", _eval_format())),
     "package_copies": Case("work", _package_copies),
     "many_ignore_patterns": Case("discovery", _many_ignore_patterns),
-    "big_beliefs": Case("discovery", _big_beliefs),
     "nested_folders": Case("discovery", _nested_folders),
     "gitignore_fifo": Case("discovery", _gitignore_fifo),
     "gitignore_backtracking": Case("discovery", _gitignore_backtracking),
