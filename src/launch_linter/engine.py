@@ -13,6 +13,7 @@ from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
+from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -38,6 +39,7 @@ from launch_linter.workspace.packages import (
     nearest_package_xml,
     package_ros_version,
 )
+from launch_linter.workspace.paths import shown_path
 
 __all__ = [
     "AUTO_JOBS",
@@ -103,17 +105,8 @@ class LintResult:
 
 
 def _display_function(item: InputFile) -> object:
-    relative = not os.path.isabs(item.display)
-
     def display(path: str) -> str:
-        absolute = os.path.abspath(path)
-        if absolute == item.path:
-            return item.display
-        if relative:
-            rel = os.path.relpath(absolute)
-            if not rel.startswith(".."):
-                return rel
-        return absolute
+        return item.display if os.path.abspath(path) == item.path else shown_path(path)
 
     return display
 
@@ -193,10 +186,14 @@ def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) ->
 
 
 def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:
-    """The distribution given, else Foxy when a file uses Foxy-era Node keywords, else None."""
+    """The distribution given, else Foxy when a file uses Foxy-era Node keywords (unless
+    the tree's ROS 2 static_transform_publisher flags, Humble's, contradict them), else
+    None."""
     if options.ros_distro:
         return options.ros_distro
-    if any(p.rule == "ros2_removed_keyword" for p in tree.problems):
+    if any(p.rule == "ros2_removed_keyword" for p in tree.problems) and not any(
+        t.ros_version == 2 and uses_flags(t.tokens) for t in tree.transforms
+    ):
         return "foxy"
     return None
 
@@ -434,7 +431,8 @@ def lint_files(
 def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
     """The findings of every file, each once: a file linted on its own and also included
     by another input is reported once (the same place, rule and message found from two
-    roots, or under two spellings of its path, is one finding)."""
+    roots, or under two spellings of its path, is one finding, at the highest level any
+    root gives it: a xacro file linted alone and loaded by a launch file)."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
     for diagnostics_of_file in found:
@@ -443,7 +441,9 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
             key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
-            diagnostics.setdefault(key, diagnostic)
+            known = diagnostics.setdefault(key, diagnostic)
+            if diagnostic.severity.rank > known.severity.rank:
+                diagnostics[key] = diagnostic
     return list(diagnostics.values())
 
 

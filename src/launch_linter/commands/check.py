@@ -24,12 +24,15 @@ from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
 from launch_linter.report.escape import printable
 from launch_linter.workspace.config import Config
+from launch_linter.workspace.paths import shown_path
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     check = subparsers.add_parser("check", help="lint launch files")
     add_resolution_options(check)
-    check.add_argument("--format", choices=("text", "json", "sarif", "github"), default=None)
+    check.add_argument(
+        "--format", choices=("text", "json", "sarif", "github", "junit", "gitlab"), default=None
+    )
     check.add_argument(
         "--select",
         action="append",
@@ -98,7 +101,7 @@ def _use_colour(choice: str) -> bool:
 
 
 def _report(
-    ns: argparse.Namespace, result: LintResult, options: LintOptions
+    ns: argparse.Namespace, result: LintResult, options: LintOptions, config: Config | None
 ) -> str | Iterator[str]:
     """The report in the chosen format (statistics instead of findings if asked); JSON in
     pieces, so that a large run never holds its whole text."""
@@ -111,6 +114,12 @@ def _report(
         from launch_linter.report import formats
 
         return formats.render(fmt, result, options.beliefs, __version__)
+    if fmt in ("junit", "gitlab"):
+        from launch_linter.report import ci_formats
+
+        if fmt == "gitlab":
+            return ci_formats.gitlab(result.diagnostics)
+        return ci_formats.junit(result, Severity(_fail_on(ns, config)))
     colour = _use_colour(ns.color) and not ns.output_file
     return text.format_diagnostics(result.diagnostics, colour)
 
@@ -150,9 +159,28 @@ def _print_notes(notes: Sequence[tuple[str, str]]) -> None:
         sys.stderr.write(refused_message(path, reason) + "\n")
 
 
+def _write_bytes(ns: argparse.Namespace, data: bytes) -> None:
+    """A diff, byte for byte (its lines are the files' bytes, in their own encoding)."""
+    if not ns.output_file:
+        sys.stdout.flush()
+        buffer = getattr(sys.stdout, "buffer", None)
+        if buffer is None:  # a text-only stream (tests): the bytes as UTF-8 would show them
+            sys.stdout.write(data.decode("utf-8", "surrogateescape"))
+        else:
+            buffer.write(data)
+            buffer.flush()
+        return
+    try:
+        with open(ns.output_file, "wb") as handle:
+            handle.write(data)
+    except OSError as exc:
+        raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
+
+
 def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config) -> LintResult:
     """``--fix``: apply fixes, lint again until nothing changes; the last result."""
     from launch_linter import fix as fixing
+    from launch_linter.report import diff
 
     last: list[LintResult] = []
 
@@ -166,25 +194,30 @@ def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config) -> 
     )
     _print_notes(notes)
     if not ns.quiet:
-        total = sum(counts.values())
-        detail = ", ".join(f"{rule} {n}" for rule, n in sorted(counts.items()))
-        sys.stderr.write(f"fixed {total} finding(s)" + (f" ({detail})" if detail else "") + "\n")
+        hidden = text.hidden_fixes(last[-1].diagnostics, ns.unsafe_fixes)
+        sys.stderr.write(diff.fix_summary(counts, hidden) + "\n")
     return last[-1]
 
 
 def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
     """``--diff``: the fixes as a unified diff; no file changes. Exit 1 when there is any."""
     from launch_linter import fix as fixing
+    from launch_linter.report import diff
 
     _refuse_output_over_input(ns, result)
-    out: list[str] = []
+    out: list[bytes] = []
+    fixed = 0
     for path, fixes in fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).items():
         before = fixing.read_bytes(path)
         if before is None:
             continue
-        after, _ = fixing.apply_edits(before, fixes)
-        out.append(fixing.unified_diff(path, before, after, printable(path)))
-    _write_output(ns, "".join(out))
+        after, applied = fixing.apply_edits(before, fixes)
+        fixed += len(applied) if after != before else 0
+        out.append(diff.unified_diff(shown_path(path), before, after))
+    _write_bytes(ns, b"".join(out))
+    if not ns.quiet:
+        hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
+        sys.stderr.write(diff.diff_summary(fixed, hidden) + "\n")
     return EXIT_FINDINGS if any(out) and not ns.exit_zero else EXIT_OK
 
 
@@ -192,6 +225,7 @@ def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
     """``-`` with ``--fix``/``--diff``: the fixed bytes (or their diff) on stdout, in the
     encoding they came in."""
     from launch_linter import fix as fixing
+    from launch_linter.report import diff
 
     if len(given_paths(ns)) > 1:
         raise UsageError("'-' (stdin) cannot be combined with other paths")
@@ -199,18 +233,23 @@ def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
     data = read_stdin()
     current = data
     notes: list[tuple[str, str]] = []
+    fixed_count = 0
     for _ in range(fixing.MAX_FIX_PASSES):
         result = lint_bytes(current, name, options)
         fixes = fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).get(name, [])
         skipped: list[str] = []
-        fixed, _ = fixing.apply_edits(current, fixes, skipped)
+        fixed, applied = fixing.apply_edits(current, fixes, skipped)
         notes.extend((name, reason) for reason in skipped if (name, reason) not in notes)
         if fixed == current:
             break
+        fixed_count += len(applied)
         current = fixed
     _print_notes(notes)
     if ns.diff:
-        _write_output(ns, fixing.unified_diff(name, data, current, printable(name)))
+        _write_bytes(ns, diff.unified_diff(name, data, current))
+        if not ns.quiet:
+            hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
+            sys.stderr.write(diff.diff_summary(fixed_count, hidden) + "\n")
         return EXIT_FINDINGS if current != data and not ns.exit_zero else EXIT_OK
     if hasattr(sys.stdout, "buffer"):
         sys.stdout.flush()
@@ -224,11 +263,14 @@ def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
     return _status(ns, result, None)
 
 
+def _fail_on(ns: argparse.Namespace, config: Config | None) -> str:
+    return str(ns.fail_on or (config.fail_on if config is not None else None) or "warning")
+
+
 def _status(ns: argparse.Namespace, result: LintResult, config: Config | None) -> int:
     if ns.exit_zero:
         return EXIT_OK
-    fail_on = ns.fail_on or (config.fail_on if config is not None else None) or "warning"
-    return _exit_status(result, fail_on)
+    return _exit_status(result, _fail_on(ns, config))
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -247,7 +289,10 @@ def run(ns: argparse.Namespace) -> int:
         else lint_command_paths(ns, options, config, keep_trees=False)
     )
     _refuse_output_over_input(ns, result)
-    _write_output(ns, _report(ns, result, options))
+    _write_output(ns, _report(ns, result, options, config))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")
+        hint = text.fix_hint(result.diagnostics) if not fixing else None
+        if hint is not None:
+            sys.stderr.write(hint + "\n")
     return _status(ns, result, config)

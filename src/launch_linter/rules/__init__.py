@@ -28,8 +28,10 @@ from launch_linter.rules import (
     ros2_positional_args,
     ros2_removed_keyword,
     ros2_schema,
+    ros2_undeclared_arg,
     roslaunch_error,
     rot_degrees,
+    rounded_pi,
     self_transform,
     sensor_null,
     sig_implication,
@@ -38,6 +40,12 @@ from launch_linter.rules import (
     tf_cycle,
     unresolved,
     unused_suppression,
+    urdf_duplicate_name,
+    urdf_empty_robot,
+    urdf_missing_link,
+    urdf_root,
+    xacro_error,
+    xacro_unused_block,
 )
 from launch_linter.rules._api import Rule, RuleContext, rule_from_module
 
@@ -77,6 +85,14 @@ RULE_MODULES = (
     rep105_order,
     quaternion_order,
     ros2_schema,
+    urdf_root,
+    urdf_duplicate_name,
+    urdf_missing_link,
+    urdf_empty_robot,
+    xacro_error,
+    xacro_unused_block,
+    rounded_pi,
+    ros2_undeclared_arg,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

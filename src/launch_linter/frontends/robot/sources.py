@@ -74,14 +74,15 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
             return DescriptionSource(path, line, column, DescriptionKind.FILE,
                                      _absolute(file, directory), condition=condition,
                                      reason=None if file else f"{words[1][0]!r} is not resolved")
-        parsed = xacro_command(words)
+        parsed = xacro_command(words, command)
         if parsed is None:
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition,
                                      reason=f"command {text_of(command)!r} is not a xacro call")
-        file, args, reason = parsed
+        file, args, reason, open_args = parsed
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
-                                 _absolute(file, directory), args, condition, reason=reason)
+                                 _absolute(file, directory), args, condition, reason=reason,
+                                 open_args=open_args)
     textfile = values.get("textfile")
     if textfile is not None:
         file = resolved_text(textfile)
@@ -124,14 +125,15 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
     """The description a ROS 2 ``robot_description`` parameter gives: ``command`` is the
     resolved text of its ``Command``/``$(command ...)`` when it has one."""
     if command is not None:
-        parsed = xacro_command(words_of(command))
+        parsed = xacro_command(words_of(command), command)
         if parsed is None:
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition, node=node,
                                      reason=f"command {text_of(command)!r} is not a xacro call")
-        file, args, reason = parsed
+        file, args, reason, open_args = parsed
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
-                                 _absolute(file, "/"), args, condition, node, reason=reason)
+                                 _absolute(file, "/"), args, condition, node, reason=reason,
+                                 open_args=open_args)
     text = resolved_text(value)
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
