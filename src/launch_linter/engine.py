@@ -33,6 +33,7 @@ from launch_linter.workspace.discovery import (
     InputFile,
     discover,
 )
+from launch_linter.workspace.environment import Place, built_beside
 from launch_linter.workspace.packages import (
     PackageIndex,
     default_package_roots,
@@ -69,6 +70,9 @@ class LintOptions:
     env: dict[str, str] = field(default_factory=dict)
     package_paths: tuple[str, ...] | None = None
     """``$(find)`` roots; None means the enclosing workspace of each linted file."""
+    environment: tuple[Place, ...] = ()
+    """Package places of a sourced environment (``workspace.environment``), searched
+    after the roots and the workspace's own ``install/``/``devel/``."""
     select: frozenset[str] | None = None
     ignore: frozenset[str] = frozenset()
     severity: dict[str, Severity] = field(default_factory=dict)
@@ -147,7 +151,7 @@ def load_options_for(
     """How to load ``item``. ``cache``, ``robots`` and ``versions`` (each package.xml's ROS
     version) are shared by the files of one run, so each is worked out once."""
     if options.package_paths is not None:
-        index = _package_index(tuple(options.package_paths), cache)
+        index = _package_index(tuple(options.package_paths), cache, options.environment)
     else:
         # default_package_roots walks up the folders of a file (to / outside a package):
         # done once per folder (the real one, for a symbolic link), whose index the cache
@@ -156,7 +160,8 @@ def load_options_for(
         folder = ("", os.path.dirname(path))
         found = cache.get(folder)
         if found is None:
-            found = _package_index(tuple(default_package_roots(path)), cache)
+            found = _package_index(tuple(default_package_roots(path)), cache,
+                                   options.environment)
             cache[folder] = found
         index = found
     # The target distribution is the ROS_DISTRO of the machine that runs the files.
@@ -173,11 +178,16 @@ def load_options_for(
 
 
 def _package_index(
-    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex]
+    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex],
+    environment: tuple[Place, ...] = (),
 ) -> PackageIndex:
-    if roots not in cache:
-        cache[roots] = PackageIndex(list(roots))
-    return cache[roots]
+    """The index of ``roots``, then their workspace's build output, then ``environment``
+    (the order of ``workspace.environment``)."""
+    places = (*built_beside(roots), *environment)
+    key = (*roots, *(f"{kind}:{folder}" for kind, folder in places))
+    if key not in cache:
+        cache[key] = PackageIndex(list(roots), places)
+    return cache[key]
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:

@@ -15,6 +15,7 @@ from launch_linter.model.beliefs import BeliefSet
 from launch_linter.rules._profiles import PROFILES
 from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
 from launch_linter.workspace.discovery import Exclusions, Ignored
+from launch_linter.workspace.environment import environment_places
 
 
 def split_ids(values: list[str] | None) -> list[str]:
@@ -181,6 +182,9 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         args={**config.args, **pairs(ns.arg, ":=", "--arg")},
         env={**config.env, **pairs(ns.env, "=", "--env")},
         package_paths=tuple(ns.package_path) if ns.package_path else config.package_path,
+        # A sourced ROS shell says where installed packages are (the order is documented
+        # in workspace.environment and docs/workspace.md).
+        environment=environment_places(os.environ),
         select=frozenset(select) if select else None,
         ignore=frozenset(ignore),
         severity=dict(config.severity),
@@ -240,5 +244,13 @@ def lint_command_paths(
             raise UsageError("'-' (stdin) cannot be combined with other paths")
         name = getattr(ns, "stdin_filename", None) or STDIN_NAME
         return lint_text(sys.stdin.read(), name, options)
+    missing = [path for path in given if not os.path.lexists(path)]
+    if missing:
+        raise UsageError(f"{missing[0]}: no such file or folder")
     exclusions, ignored = discovery_for(ns, config)
-    return lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees)
+    result = lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees)
+    if not result.files:
+        # ruff's wording: an empty run is a silent success otherwise.
+        sys.stderr.write("warning: No files found under the given path(s) (launch files: "
+                         "*.launch, *.launch.xml/.py/.yaml, *_launch.py, .test, ...)\n")
+    return result

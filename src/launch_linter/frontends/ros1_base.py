@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import re
+import typing
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
@@ -97,10 +98,18 @@ class _AnonNames:
         return table[anon_id]
 
 
+IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
+"""A file and the values of the args it is given (as written where unresolved)."""
+
+
+def include_call(path: str, args: dict[str, Value]) -> IncludeCall:
+    return path, tuple(sorted((name, text_of(value)) for name, value in args.items()))
+
+
 class _Context:
     """roslaunch's ``LoaderContext``, plus what static resolution needs to know."""
 
-    __slots__ = ("anon", "arg_names", "args", "chain", "condition", "depth", "filename",
+    __slots__ = ("anon", "arg_names", "args", "calls", "chain", "condition", "depth", "filename",
                  "include_args", "included_from", "ns", "ns_unresolved", "open_args",
                  "pass_all_args", "scope", "side_scope")
 
@@ -117,6 +126,8 @@ class _Context:
         self.anon: dict[str, str] = {}
         self.condition = ALWAYS
         self.chain: tuple[str, ...] = (filename,)
+        self.calls: tuple[IncludeCall, ...] = (include_call(filename, args),)
+        """(file, argument values) of each include on the way here: a repeat is a cycle."""
         self.included_from: tuple[str, int] | None = None
         self.pass_all_args = False
         self.include_args: dict[str, Value] | None = None
@@ -135,6 +146,7 @@ class _Context:
         child.anon = dict(self.anon)
         child.condition = self.condition
         child.chain = self.chain
+        child.calls = self.calls
         child.included_from = self.included_from
         child.pass_all_args = self.pass_all_args
         child.include_args = self.include_args

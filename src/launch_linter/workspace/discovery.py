@@ -2,14 +2,15 @@
 
 A folder is walked for every launch file ROS 1 and ROS 2 name that way (``*.launch``,
 ``*.launch.xml``, ``*_launch.xml``, ``*.launch.py``, ``*_launch.py``, ``*.launch.yaml``,
-``*.launch.yml``, ``*_launch.yaml``, ``*_launch.yml``) and for ``*.xml`` files whose root
-element is ``<launch>``, and for robot descriptions (``*.urdf``, ``*.xacro``), which are
-checked as ``check_urdf`` reads them. It skips version-control folders and the other default
-exclusions (replaced by ``exclude``, extended by ``extend_exclude``, ruff's convention),
-the ``build/``, ``install/``, ``log/`` and ``devel/`` folders of catkin and colcon
-workspaces (only where they are workspace folders: beside a ``src/`` folder, or marked
-with ``COLCON_IGNORE``/``CATKIN_IGNORE``/``AMENT_IGNORE``), and whatever the injected
-``ignored`` predicate rejects (the command line passes the ``.gitignore`` rules there;
+``*.launch.yml``, ``*_launch.yaml``, ``*_launch.yml``), for ``*.xml`` and rostest ``*.test``
+files whose root element is ``<launch>``, and for robot descriptions (``*.urdf``,
+``*.xacro``), which are checked as ``check_urdf`` reads them. It skips version-control
+folders and the other default exclusions (replaced by ``exclude``, extended by
+``extend_exclude``, ruff's convention), the ``build/``, ``install/``, ``log/`` and
+``devel/`` folders of catkin and colcon workspaces (only where they are workspace folders:
+beside a ``src/`` folder, or marked with ``COLCON_IGNORE``/``CATKIN_IGNORE``/
+``AMENT_IGNORE``), and whatever the injected ``ignored`` predicate rejects (the command
+line passes the ``.gitignore`` rules there;
 this module stays standard-library only). A file named explicitly is always linted. Each
 file is taken once, by its real path, under the first name it was found by.
 """
@@ -63,7 +64,9 @@ long comments come first in some files)."""
 _LAUNCH_ROOT = re.compile(rb"<launch[\s>/]")
 _PY_LAUNCH = re.compile(rb"^def generate_launch_description\s*\(", re.MULTILINE)
 _YAML_LAUNCH = re.compile(rb"(?:\xef\xbb\xbf)?(?:\s*#[^\n]*\n|\s*\n|---[^\n]*\n)*launch\s*:")
-CONTENT_SUFFIXES = (".xml", ".py", ".yaml", ".yml")
+CONTENT_SUFFIXES = (".xml", ".test", ".py", ".yaml", ".yml")
+"""Suffixes whose content decides: ``.test`` is a rostest file, a launch file with
+``<test>`` elements when its root is ``<launch>``."""
 MAX_CONTENT_BYTES = 256 * 1024
 
 
@@ -117,7 +120,7 @@ def has_launch_content(path: str, name: str) -> bool:
     """Whether a file that is not named like a launch file is one by its content: XML
     with a ``<launch>`` root, a Python file defining ``generate_launch_description`` (what
     ``ros2 launch`` calls), or YAML whose top-level key is ``launch:``."""
-    if name.endswith(".xml"):
+    if name.endswith((".xml", ".test")):
         return has_launch_root(path)
     try:
         data = read_regular_file(path, MAX_CONTENT_BYTES)

@@ -52,14 +52,16 @@ class RobotCache:
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str]) -> Expansion:
-        key = (file, args, tuple(packages.roots), tuple(sorted(env.items())))
+        key = (file, args, packages.key, tuple(sorted(env.items())))
         found = self._expansions.get(key)
         if found is None:
             # Imported when a description is first expanded: xacro (with its interpreter
             # of ${} expressions) is a third of the start-up of a run that meets none.
             from launch_linter.frontends.robot.xacro import expand
 
-            found = self._expansions[key] = expand(file, dict(args), packages.find, env)
+            found = self._expansions[key] = expand(
+                file, dict(args), packages.find, env,
+                locate=lambda path: packages.locate(path).path)
         return found
 
     def __len__(self) -> int:
@@ -193,12 +195,20 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         from launch_linter.frontends.robot.xacro import expand
 
         expansion = expand(source.file, dict(source.args), packages.find, env,
-                           source.text.encode("utf-8"))
+                           source.text.encode("utf-8"),
+                           lambda path: packages.locate(path).path)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     else:
+        # A share path (FindPackageShare/$(find) of a ROS 2 package) is read from the
+        # source file its install rules name; one nobody can prove absent stays unknown.
+        located = packages.locate(source.file)
+        if located.path is None and not located.absent:
+            return None, [_unresolved(source, f"robot description {display(source.file)} "
+                                              f"not read: {located.reason}")]
         args = source.args if source.kind is DescriptionKind.XACRO else ()
-        expansion = cache.expansion(os.path.abspath(source.file), args, packages, env)
+        expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
+                                    packages, env)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     faults = _faults(problems, source, display)

@@ -8,8 +8,9 @@ and reads only the files the description includes, through the bounded XML reade
 Supported: ``xacro:property`` (text and block properties, ``default``, ``scope``, lazy
 evaluation as in xacro), ``xacro:arg`` with values from the xacro call, ``$(arg)``,
 ``$(find)``, ``$(env)``/``$(optenv)`` (explicit environment only), ``xacro:include``
-(relative and ``$(find)``), ``xacro:macro`` with parameters, defaults (``:=``, ``^``,
-``^|``) and block parameters (``*origin``, ``**content``), ``xacro:insert_block``,
+(relative and ``$(find)``, ``ns=`` for its macros), ``xacro:macro`` with parameters,
+defaults (``:=``, ``^``, ``^|``, quoted: ``xyz:='0 0 0'``) and block parameters
+(``*origin``, ``**content``), ``xacro:call``, ``xacro:insert_block``,
 ``xacro:if``/``xacro:unless``, ``xacro:element`` and ``xacro:attribute``.
 
 What cannot be known becomes *unknown* rather than an error: an attribute keeps a reason
@@ -92,10 +93,13 @@ class XacroExpander:
         args: Mapping[str, str | None],
         find: Callable[[str], str | None],
         env: Mapping[str, str] | None = None,
+        locate: Callable[[str], str | None] | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
         """xacro args; None is an arg given with a value the linter does not know."""
         self.find = find
+        self.locate = locate
+        """Where a missing file is installed from (a share path to its source file)."""
         self.env = dict(env or {})
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
@@ -351,7 +355,13 @@ class XacroExpander:
                 out.attrib[name] = attrib.get("value", "")
                 out.unknown[name] = unknown.reason
         elif what == "call":
-            raise _Unknown("xacro:call (a macro named at run time) is not supported")
+            # <xacro:call macro="${name}" .../>: the macro named by the (evaluated)
+            # attribute, called with the other attributes and the children.
+            called = Element(element.tag, {k: v for k, v in attrib.items() if k != "macro"},
+                             element.line, element.column)
+            called.children = element.children
+            self._call(called, self.evaluate_text(attrib.get("macro", ""), table), path,
+                       table, out, conditions)
         else:
             self._call(element, what, path, table, out, conditions)
 
@@ -388,18 +398,17 @@ class XacroExpander:
             name = name[len(_PREFIX):]
         params: list[str] = []
         defaults: dict[str, tuple[str | None, str | None]] = {}
-        for word in element.attrib.get("params", "").split():
-            param, sep, default = word.partition(":=")
-            if not sep:
-                param, sep, default = word.partition("=")
+        for match in _PARAM.finditer(element.attrib.get("params", "")):
+            param, sep, forward, default = match.groups()
             params.append(param)
             if not sep:
                 continue
-            if default.startswith("^"):
-                forward = param
-                defaults[param] = (forward, default[2:] if default.startswith("^|") else None)
+            if forward:
+                defaults[param] = (param, default if forward == "^|" else None)
             else:
-                defaults[param] = (None, default.strip("'\""))
+                # A quoted default (xyz:='0 0 0') keeps its spaces; xacro reads it as
+                # the text inside the quotes.
+                defaults[param] = (None, _unquoted(default))
         table.macros[name] = _Macro(params, defaults, element, path)
         self._defines_macros = True
         for param in params:
@@ -423,8 +432,8 @@ class XacroExpander:
 
     def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                  conditions: tuple[str, ...]) -> None:
-        if "ns" in element.attrib:
-            raise _Unknown("xacro:include with ns= is not supported")
+        namespace = self.evaluate_text(element.attrib["ns"], table) if (
+            "ns" in element.attrib) else None
         filename = self.evaluate_text(element.attrib.get("filename", ""), table)
         if _GLOB.search(filename):
             raise _Unknown(f"include pattern {filename!r} is not followed")
@@ -435,17 +444,28 @@ class XacroExpander:
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
         if not os.path.isfile(target):
-            if element.attrib.get("optional", "").lower() in ("true", "1"):
+            installed = self.locate(target) if self.locate is not None else None
+            if installed is not None:
+                target = installed
+            elif element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
-            raise _Unknown(f"included file {filename} not found")
+            else:
+                raise _Unknown(f"included file {filename} not found")
         included = self._read(target, (path, element.line))
         if included is None:
             return
         self._include_stack.append(target)
+        # With ns=, the file's macros are called as ns.name (xacro gives the file a table
+        # of its own, reached through the namespace); its properties, read as ${ns.x},
+        # stay unknown.
+        inner = table if namespace is None else _Table(table)
         try:
-            self._children(included.children, target, table, out, conditions)
+            self._children(included.children, target, inner, out, conditions)
         finally:
             self._include_stack.pop()
+        if namespace is not None:
+            for name, macro in inner.macros.items():
+                table.macros[f"{namespace}.{name}"] = macro
 
     def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                       conditions: tuple[str, ...]) -> None:
@@ -524,6 +544,19 @@ class XacroExpander:
             return _Property(None, None, unknown.reason)
 
 
+_PARAM = re.compile(
+    r"""([^\s:=]+)(?:\s*(:?=)\s*(\^\|?)?"""
+    r"""((?:\$\{[^}]*\}|\$\([^)]*\)|'[^']*'|"[^"]*"|[^\s'"])*))?""")
+"""One macro parameter: name, then optionally ``:=``/``=``, ``^``/``^|`` and a default
+that runs to the next space outside quotes, ``${}`` and ``$()`` (xacro's syntax)."""
+
+
+def _unquoted(default: str) -> str:
+    if len(default) >= 2 and default[0] == default[-1] and default[0] in "'\"":
+        return default[1:-1]
+    return default
+
+
 def _boolean(value: str) -> bool | None:
     """xacro's ``get_boolean_value``; None when the text is not a boolean."""
     if value in ("true", "True"):
@@ -542,10 +575,12 @@ def _boolean(value: str) -> bool | None:
 
 def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
-           env: Mapping[str, str] | None = None, data: bytes | None = None) -> Expansion:
+           env: Mapping[str, str] | None = None, data: bytes | None = None,
+           locate: Callable[[str], str | None] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
-    ``data`` is expanded as if it were that file (text linted by ``lint_text``)."""
-    return XacroExpander(args, find, env).expand(path, data)
+    ``data`` is expanded as if it were that file (text linted by ``lint_text``);
+    ``locate`` maps an included path that is not there to the file installed there."""
+    return XacroExpander(args, find, env, locate).expand(path, data)
 
 
 __all__ = [

@@ -210,6 +210,15 @@ class Expressions(Evaluator):
         ):
             return LazyStr((Call("path-join", (left.subs, _as_subs(right)),
                                  self.segment(node)),), path=True)
+        if isinstance(op, ast.Div) and isinstance(left, SubsVal) and _is_path_join(left) and (
+                isinstance(right, (str, LazyStr, SubsVal))):
+            # PathSubstitution / 'urdf' / 'x.xacro' and PathJoinSubstitution / ...: launch's
+            # __truediv__ makes a PathJoinSubstitution of both.
+            right_subs = right.subs if isinstance(right, SubsVal) else _as_subs(right)
+            joined = left.subs[0]
+            assert isinstance(joined, Call)  # _is_path_join checked it
+            return SubsVal((Call("path-join", (*joined.args, right_subs),
+                                 self.segment(node)),))
         if isinstance(op, ast.Mod) and isinstance(left, str):
             args = right if isinstance(right, tuple) else (right,)
             if all(isinstance(a, (str, int, float, bool)) for a in args) and (
@@ -367,3 +376,8 @@ _EXPRESSIONS: dict[type, Callable[[Expressions, Any, Env], object]] = {
 }
 """How each expression the evaluator models (other than constants and names) is worked
 out, by its class."""
+
+
+def _is_path_join(value: SubsVal) -> bool:
+    return (len(value.subs) == 1 and isinstance(value.subs[0], Call)
+            and value.subs[0].name == "path-join")
