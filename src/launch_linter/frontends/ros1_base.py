@@ -163,7 +163,9 @@ class Ros1Base:
         self.problems: list[Problem] = []
         # A file included many times reports each of its problems once: the same element
         # gives the same problem every time, and a hostile tree can repeat one 100,000 times.
-        self._reported: set[Problem] = set()
+        self._reported: set[tuple[object, ...]] = set()
+        self._included_at: dict[str, tuple[str, int]] = {}
+        """The include being walked for each included file (its file and line)."""
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -192,9 +194,20 @@ class Ros1Base:
     ) -> None:
         line, column = (element.line, element.column) if element else (1, 1)
         problem = Problem(rule, self._display(path), line, column, message, node, related)
-        if problem not in self._reported:
-            self._reported.add(problem)
-            self.problems.append(problem)
+        # Once per cause and place in a tree: a file included twice says it once (an
+        # unresolved value is one cause whichever node of the include it is in).
+        key: tuple[object, ...] = (rule, problem.path, line, column, message) + (
+            () if rule == "unresolved" else (node, related))
+        if key in self._reported:
+            return
+        self._reported.add(key)
+        site = self._included_at.get(path) if rule == "unresolved" else None
+        if site is not None:
+            # Which include gave the text its values: a file included with other
+            # arguments elsewhere can say something else at the same line.
+            problem = Problem(rule, problem.path, line, column,
+                              f"{message} (included from {site[0]}:{site[1]})", node, related)
+        self.problems.append(problem)
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         source = (

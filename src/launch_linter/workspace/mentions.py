@@ -11,13 +11,15 @@ The files looked at are the launch files (by name, or any file in a ``launch`` f
 of the workspace (the ``src`` folder of a colcon/catkin workspace), else of the
 repository (the nearest folder up with a ``.git``), else of the package (the folder of
 the nearest ``package.xml``), else of the file's own folder. Each such folder is read
-once per process, bounded in files and bytes.
+once per run (its names are kept :data:`FRESH_SECONDS`, so that a long-lived process, the
+language server, sees an include written since), bounded in files and bytes.
 """
 
 from __future__ import annotations
 
 import os
 import re
+import time
 
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.discovery import VCS_FOLDERS, WORKSPACE_FOLDERS, is_launch_name
@@ -30,6 +32,8 @@ MAX_TOTAL_BYTES = 32 * 1024 * 1024
 """Bytes read per folder, all files together."""
 MAX_FOLDERS = 20_000
 MAX_CACHED_FOLDERS = 256
+FRESH_SECONDS = 10.0
+"""How long the names read in a folder are used before the folder is read again."""
 READ_SUFFIXES = (".py", ".xml", ".launch", ".yaml", ".yml")
 """Files that may include a launch file: launch files of every format and Python helpers."""
 _SUFFIX = re.compile(rb"\.(?:py|xml|launch|ya?ml)\b")
@@ -38,8 +42,8 @@ from there (bounded), never with a pattern that starts at every letter of a long
 _NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 MAX_NAME = 255
 
-_names_by_folder: dict[str, dict[str, tuple[str, ...]]] = {}
-"""For each package folder read: each file name written in it → the first two files
+_names_by_folder: dict[str, tuple[float, dict[str, tuple[str, ...]]]] = {}
+"""For each folder read: when, and each file name written in it → the first two files
 writing it (a file may write its own name, in a usage comment)."""
 
 
@@ -115,10 +119,12 @@ def named_by_another_file(path: str) -> str | None:
     its file name."""
     absolute = os.path.abspath(path)
     folder = _scope(absolute)
-    names = _names_by_folder.get(folder)
-    if names is None:
+    now = time.monotonic()
+    read = _names_by_folder.get(folder)
+    if read is None or now - read[0] > FRESH_SECONDS:
         if len(_names_by_folder) >= MAX_CACHED_FOLDERS:
             _names_by_folder.clear()
-        names = _names_by_folder[folder] = _names_in(folder)
+        read = _names_by_folder[folder] = (now, _names_in(folder))
+    names = read[1]
     others = [w for w in names.get(os.path.basename(absolute), ()) if w != absolute]
     return others[0] if others else None

@@ -26,7 +26,7 @@ from launch_linter.model.robot import (
     RobotJoint,
     RobotModel,
 )
-from launch_linter.resolve.value import Value, holes, why_unresolved
+from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
@@ -131,6 +131,8 @@ def _unresolved_file(text: str, command: Value) -> str:
     inside = tuple(hole for hole in holes(command) if hole.text in text)
     if not inside:
         return f"the description file {text!r} is not resolved"
+    if all(blocker(hole)[0] == hole.text for hole in inside):
+        return f"the description file {text!r} is not resolved: {why_unresolved(inside)}"
     return f"the description file depends on {why_unresolved(inside)}"
 
 
@@ -153,13 +155,21 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     joints: list[RobotJoint] = []
     robots: list[RobotModel] = []
     problems_found: list[Problem] = []
+    # Several nodes given one description (robot_state_publisher, the controller manager,
+    # a spawner) make one message per cause, not one per node.
+    reported: set[tuple[object, ...]] = set()
     for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
+        same = (source.kind, source.file, source.args, source.text, source.reason)
+        first = same not in reported
+        reported.add(same)
         if source.file is None and source.kind is not DescriptionKind.LITERAL:
-            problems_found.append(_unresolved(source, f"robot description not read: "
-                                           f"{source.reason or 'unknown file'}"))
+            if first:
+                problems_found.append(_unresolved(source, f"robot description not read: "
+                                                  f"{source.reason or 'unknown file'}"))
             continue
         robot, unresolved = read_description(source, packages, cache, display, env)
-        problems_found.extend(unresolved)
+        if first:
+            problems_found.extend(unresolved)
         if robot is not None:
             joints.extend(robot.joints)
             robots.append(robot)
