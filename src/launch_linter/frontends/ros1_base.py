@@ -158,7 +158,10 @@ class Ros1Base:
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
         self.node_params: list[tuple[str, str]] = []
-        """Frame parameters set beside a node (``NODE/param``): full name, value."""
+        """Parameters set beside the nodes (``NODE/param``, ``<rosparam>`` files): full
+        name, value."""
+        self.params_unread: list[str] = []
+        """Why some parameters set beside the nodes could not be read."""
         self.anon = _AnonNames()
         self.root_display = ""
         self.node_names: dict[str, tuple[str, Element]] = {}
@@ -263,7 +266,7 @@ class Ros1Base:
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
             descriptions=tuple(self.descriptions),
-            nodes=tuple(with_node_params(self.nodes, self.node_params)),
+            nodes=tuple(with_node_params(self.nodes, self.node_params, self.params_unread)),
         )
 
     def _command_line_args(self) -> dict[str, Value]:
