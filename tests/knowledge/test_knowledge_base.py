@@ -108,3 +108,15 @@ def test_a_user_file_extends_and_overrides_the_bundled_base(tmp_path: Path) -> N
     entry = base.node("my_base", "driver", 1)
     assert entry is not None and entry.origin == str(path)
     assert base.node("amcl", "amcl", 1) is not None
+
+
+def test_the_configuration_names_knowledge_files(tmp_path: Path) -> None:
+    from launch_linter.commands.common import UsageError
+    from launch_linter.commands.options import load_knowledge
+    from launch_linter.workspace.config import parse_config
+
+    config = parse_config({"knowledge": "k.json"}, str(tmp_path / ".launch-linter.toml"))
+    assert config.knowledge == (str(tmp_path / "k.json"),)
+    (tmp_path / "k.json").write_text('{"format": 1, "entries": [{"id": "x"}]}')
+    with pytest.raises(UsageError, match="kind"):
+        load_knowledge(config.knowledge)

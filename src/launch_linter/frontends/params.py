@@ -8,6 +8,7 @@ read bounded in size and parsed once per run.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
@@ -42,9 +43,14 @@ def parse_yaml(text: str) -> tuple[Any, str | None]:
 
 
 def read_yaml_file(path: str) -> tuple[Any, str | None]:
-    """A parameter file's document, parsed once per run (bounded)."""
-    if path in _cache:
-        return _cache[path]
+    """A parameter file's document, parsed once per version of the file (bounded)."""
+    try:
+        status = os.stat(path)
+        key = f"{path}\x00{status.st_mtime_ns}\x00{status.st_size}"
+    except OSError:
+        key = path
+    if key in _cache:
+        return _cache[key]
     try:
         data = read_regular_file(path, MAX_PARAM_FILE_BYTES + 1)
     except OSError as exc:
@@ -58,7 +64,7 @@ def read_yaml_file(path: str) -> tuple[Any, str | None]:
             found = (document, None if reason is None else f"parameter file {path!r}: {reason}")
     if len(_cache) >= MAX_CACHED:
         _cache.clear()
-    _cache[path] = found
+    _cache[key] = found
     return found
 
 

@@ -89,6 +89,9 @@ class Entry:
     publishes_joint_states: bool
     publishes_description: bool
     parameters_elsewhere: str | None
+    unsure_defaults: tuple[str, ...]
+    """Parameters whose default is not assumed when the node's parameter file is unread
+    (robot_localization's ``world_frame``: the dual-filter setup sets it there)."""
     prefix: Prefix | None
     sources: tuple[Source, ...]
     origin: str
@@ -262,6 +265,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         publishes_description=bool(data.get("publishes_description", False)),
         parameters_elsewhere=None if elsewhere is None else _text(
             elsewhere, f"{where}.parameters_elsewhere"),
+        unsure_defaults=_texts(data.get("unsure_defaults"), f"{where}.unsure_defaults"),
         prefix=prefix,
         sources=tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources)),
         origin=origin,

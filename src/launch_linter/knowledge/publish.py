@@ -59,15 +59,19 @@ class Parameters:
     """The value of each parameter of ``entry`` for ``node``: as given, else the entry's
     default when every parameter source of the node was read, else unknown (None)."""
 
-    def __init__(self, entry: Entry, node: NodeRecord) -> None:
+    def __init__(self, entry: Entry, node: NodeRecord, assume: bool = False) -> None:
         self.entry = entry
         self.node = node
+        self.assume = assume
+        """Whether defaults stand for parameters that an unread file may set."""
 
     def value(self, name: str, depth: int = 0) -> str | None:
         given = self.node.given(name)
         if given is not None:
             return None if given == UNKNOWN_VALUE else given
-        if self.node.unread or self.entry.parameters_elsewhere:
+        if self.entry.parameters_elsewhere:
+            return None
+        if self.node.unread and (not self.assume or name in self.entry.unsure_defaults):
             return None
         default = _text(self.entry.default(name))
         if default is None or depth >= MAX_TEMPLATE_DEPTH:
@@ -126,10 +130,12 @@ class Parameters:
         return prefix.lstrip("/")
 
 
-def published(entry: Entry, node: NodeRecord) -> tuple[list[PublishedEdge], list[EdgeSpec]]:
+def published(entry: Entry, node: NodeRecord, assume: bool = False
+              ) -> tuple[list[PublishedEdge], list[EdgeSpec]]:
     """The edges ``node`` publishes (frames None where unknown), and the edges it may
-    publish: those whose conditions are unknown."""
-    params = Parameters(entry, node)
+    publish: those whose conditions are unknown. With ``assume``, the entry's defaults
+    stand for parameters that an unread parameter file may set."""
+    params = Parameters(entry, node, assume)
     prefix = params.prefix()
     sure: list[PublishedEdge] = []
     maybe: list[EdgeSpec] = []
@@ -140,7 +146,7 @@ def published(entry: Entry, node: NodeRecord) -> tuple[list[PublishedEdge], list
         if any(s is None for s in states):
             maybe.append(spec)
             continue
-        parent, child = params.fill(spec.parent), params.fill(spec.child)
+        parent, child = _frame(params.fill(spec.parent)), _frame(params.fill(spec.child))
         if prefix is None:
             parent = child = None
         elif prefix:
@@ -150,11 +156,18 @@ def published(entry: Entry, node: NodeRecord) -> tuple[list[PublishedEdge], list
     return sure, maybe
 
 
-def frames_named(entry: Entry, node: NodeRecord, templates: tuple[str, ...]
-                 ) -> list[tuple[str, str]]:
-    """The known frames that ``templates`` (``looks_up``, ``camera_frames``) name, each
-    with the parameter that names it (or the template)."""
-    params = Parameters(entry, node)
+def _frame(text: str | None) -> str | None:
+    """A frame id as tf compares it (one leading ``/`` dropped, as for launch edges)."""
+    if text is None or not text.strip("/"):
+        return None
+    return text[1:] if text.startswith("/") else text
+
+
+def frames_named(entry: Entry, node: NodeRecord, templates: tuple[str, ...],
+                 assume: bool = False) -> list[tuple[str, str]]:
+    """The known frames that ``templates`` (``looks_up``, ``camera_frames``) name, as
+    written, each with the parameter that names it (or the template)."""
+    params = Parameters(entry, node, assume)
     out: list[tuple[str, str]] = []
     for template in templates:
         frame = params.fill(template)

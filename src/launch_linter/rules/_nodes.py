@@ -11,7 +11,7 @@ from launch_linter.knowledge import Entry
 from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.robot import NodeRecord
-from launch_linter.rules._api import RuleContext
+from launch_linter.rules._api import Finding, RuleContext
 
 STATIC_PUBLISHERS = frozenset({"tf", "tf2_ros"})
 """Packages whose static_transform_publisher the tree already reads as launch edges."""
@@ -28,6 +28,9 @@ class NodeEdge:
     role: str
     node: NodeRecord
     entry: Entry
+    assumed: bool = False
+    """The edge rests on defaults that an unread parameter file of the node may change:
+    enough for a warning measured on real files, never for an error."""
 
     @property
     def location(self) -> Location:
@@ -96,10 +99,12 @@ def _view(context: RuleContext) -> NodeView:
         sure, maybe = published(entry, node)
         if maybe or any(e.signature is None for e in sure):
             unsure.append(node)
-        for edge in sure:
+        proven = {e.signature for e in sure if e.signature is not None}
+        assumed = published(entry, node, assume=True)[0] if node.unread else sure
+        for edge in assumed:
             if edge.signature is not None:
                 edges.append(NodeEdge(edge.signature[0], edge.signature[1], edge.role,
-                                      node, entry))
+                                      node, entry, edge.signature not in proven))
         lookups.extend(Lookup(f, p, node, entry)
                        for f, p in frames_named(entry, node, entry.looks_up))
         cameras.extend(Lookup(f, p, node, entry)
@@ -114,3 +119,21 @@ def nodes_of(context: RuleContext) -> NodeView:
 
 
 __all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of"]
+
+
+def rivals(a: NodeEdge, b: NodeEdge) -> bool:
+    """Whether two node edges come from two publishers that run together: not one launch
+    element included twice (that is ``dup_name``'s), not under exclusive conditions, and
+    not one program under two different conditions (the usual alternatives, such as
+    nav2's composed and separate amcl, whose conditions the linter may not relate)."""
+    if a.location == b.location or a.node.condition.excludes(b.node.condition):
+        return False
+    return a.entry.id != b.entry.id or a.node.condition == b.node.condition
+
+
+def finding_at_node(node: NodeRecord, message: str,
+                    related: tuple[Location, ...] = ()) -> Finding:
+    """A finding at a launched node's element (or at the controller manager's, for a
+    controller; at the Gazebo plugin's, for a plugin)."""
+    return Finding(path=node.path, line=node.line, column=node.column, message=message,
+                   node=node.name, related=related)
