@@ -18,9 +18,11 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from launch_linter.engine import LintResult
+from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Field, RotationKind, StaticTransform
+from launch_linter.rules._nodes import view_of
 
 MAX_NOTES = 12
 
@@ -45,7 +47,8 @@ class Edge:
     tooltip: str
     cluster: int = 0
     source: str = "launch"
-    """``launch`` (a static transform) or ``urdf`` (a joint of a robot description)."""
+    """``launch`` (a static transform), ``urdf`` (a joint of a robot description) or
+    ``node`` (published at run time by a launched node, by the knowledge base)."""
     dynamic: bool = False
     """A movable URDF joint (revolute, continuous, prismatic, floating, planar)."""
 
@@ -164,7 +167,38 @@ def _joint_label(joint: RobotJoint, rules: list[str]) -> tuple[str, ...]:
     return tuple(lines)
 
 
-def build_graph(result: LintResult) -> TfGraph:
+def _node_edges(result: LintResult, frames: dict[str, Frame],
+                knowledge: KnowledgeBase | None) -> list[Edge]:
+    """The edges launched nodes publish at run time (dashed, labelled by the node)."""
+    out: list[Edge] = []
+    trees = result.trees
+    placed = [(0, trees[0])] if len(trees) == 1 else [
+        (cluster, trees[index]) for cluster, index in enumerate(entry_points(result))]
+    base = knowledge if knowledge is not None else bundled()
+    for cluster, tree in placed:
+        if not tree.nodes:
+            continue
+        prefix = f"{cluster}|" if cluster else ""
+        for edge in view_of(tree, base).edges:
+            node = edge.node
+            ends = []
+            for frame in (edge.parent, edge.child):
+                frames.setdefault(prefix + frame, Frame(prefix + frame, frame, True, False,
+                                                        cluster))
+                ends.append(prefix + frame)
+            program = node.plugin or f"{node.package}/{node.executable}"
+            out.append(Edge(
+                parent=ends[0], child=ends[1],
+                label=(f"node {program}", edge.role,
+                       f"{os.path.basename(node.path)}:{node.line}"),
+                conditional=not node.condition.always, flagged=False,
+                tooltip=f"published at run time by {program} ({node.path}:{node.line})",
+                cluster=cluster, source="node", dynamic=True,
+            ))
+    return out
+
+
+def build_graph(result: LintResult, knowledge: KnowledgeBase | None = None) -> TfGraph:
     """The graph of every transform in ``result``, marked with its diagnostics."""
     at: dict[tuple[str, int, int], list[Diagnostic]] = {}
     for diagnostic in result.diagnostics:
@@ -230,6 +264,7 @@ def build_graph(result: LintResult) -> TfGraph:
             tooltip="\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found),
             cluster=cluster, source="urdf", dynamic=joint.dynamic,
         ))
+    edges.extend(_node_edges(result, frames, knowledge))
     unplaced = [
         d for d in result.diagnostics
         if (d.path, d.line, d.column) not in placed and d.severity is not Severity.INFO
@@ -247,8 +282,11 @@ def build_graph(result: LintResult) -> TfGraph:
     errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
     warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
     urdf = sum(1 for e in edges if e.source == "urdf")
+    static = sum(1 for e in edges if e.source == "launch")
+    by_nodes = len(edges) - urdf - static
     title = (
-        f"{roots}: {len(edges) - urdf} static transform(s), {urdf} URDF joint(s), "
+        f"{roots}: {static} static transform(s), {urdf} URDF joint(s), "
+        + (f"{by_nodes} node-published edge(s), " if by_nodes else "") +
         f"{len(frames)} frame(s), "
         f"{errors} error(s), {warnings} warning(s)"
     )

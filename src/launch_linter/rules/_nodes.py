@@ -7,9 +7,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from launch_linter.knowledge import Entry
+from launch_linter.knowledge import Entry, KnowledgeBase
 from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
 from launch_linter.model.diagnostic import Location
+from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
 
@@ -118,7 +119,7 @@ def nodes_of(context: RuleContext) -> NodeView:
     return context.derived(_view)
 
 
-__all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of"]
+__all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of", "view_of"]
 
 
 def rivals(a: NodeEdge, b: NodeEdge) -> bool:
@@ -137,3 +138,8 @@ def finding_at_node(node: NodeRecord, message: str,
     controller; at the Gazebo plugin's, for a plugin)."""
     return Finding(path=node.path, line=node.line, column=node.column, message=message,
                    node=node.name, related=related)
+
+
+def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
+    """The node side of one tree, outside a rule run (``transforms``, ``graph``)."""
+    return nodes_of(RuleContext(tree, knowledge=knowledge))
