@@ -437,7 +437,8 @@ def lint_files(
 def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
     """The findings of every file, each once: a file linted on its own and also included
     by another input is reported once (the same place, rule and message found from two
-    roots, or under two spellings of its path, is one finding)."""
+    roots, or under two spellings of its path, is one finding, at the highest level any
+    root gives it: a xacro file linted alone and loaded by a launch file)."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
     for diagnostics_of_file in found:
@@ -446,7 +447,9 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
             key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
-            diagnostics.setdefault(key, diagnostic)
+            known = diagnostics.setdefault(key, diagnostic)
+            if diagnostic.severity.rank > known.severity.rank:
+                diagnostics[key] = diagnostic
     return list(diagnostics.values())
 
 
