@@ -5,7 +5,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import yaml
+from hypothesis import given
+from hypothesis import strategies as st
+
 from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.frontends.params import flat_yaml, scalar_text
 from launch_linter.model.robot import NodeRecord
 
 
@@ -79,3 +84,18 @@ def test_ros2_controllers_of_a_controller_manager_file(tmp_path: Path) -> None:
     (controller,) = [n for n in found if n.kind == "controller"]
     assert controller.plugin == "diff_drive_controller/DiffDriveController"
     assert controller.given("enable_odom_tf") == "false"
+
+
+@given(st.dictionaries(st.from_regex(r"[a-z_][a-z0-9_]{0,8}", fullmatch=True),
+                       st.from_regex(r"[a-z_/][a-z0-9_/]{0,10}", fullmatch=True),
+                       max_size=8))
+def test_flat_yaml_reads_flat_text_as_pyyaml_does(pairs: dict[str, str]) -> None:
+    text = "".join(f"{key}: {value}  # note\n" for key, value in pairs.items())
+    expected = {k: scalar_text(v) for k, v in (yaml.safe_load(text) or {}).items()}
+    assert flat_yaml(text) == expected
+
+
+def test_nested_yaml_is_not_flat() -> None:
+    assert flat_yaml("a:\n  b: 1\n") is None
+    assert flat_yaml("a: [1, 2]\n") is None
+    assert flat_yaml("a: &x 1\n") is None

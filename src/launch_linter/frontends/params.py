@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import re
+import textwrap
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
 from typing import Any
@@ -27,12 +28,47 @@ _CONTROLLER_TYPE = re.compile(r"^[A-Za-z_][\w]*/[A-Za-z_][\w]*$")
 _cache: dict[str, tuple[Any, str | None]] = {}
 
 
+_FLAT_LINE = re.compile(r"^([A-Za-z_~][\w/~]*)[ \t]*:[ \t]+(?:'([^']*)'|\"([^\"\\]*)\"|"
+                        r"([^\s#'\"\[\]{}&*!|>%@`][^#]*?))[ \t]*(?:#.*)?$")
+
+
+_BOOLEANS = {word: str(truth).lower() for truth, words in (
+    (True, ("yes", "true", "on")), (False, ("no", "false", "off")))
+    for base in words for word in (base, base.capitalize(), base.upper())}
+"""YAML 1.1's booleans, as PyYAML reads them (written ``true``/``false``, like launch)."""
+_NULLS = ("~", "null", "Null", "NULL")
+
+
+def flat_yaml(text: str) -> dict[str, str] | None:
+    """A YAML text that is only ``key: scalar`` lines (comments and blank lines aside),
+    read without PyYAML; None when it is anything more (nesting, lists, anchors, tags)."""
+    found: dict[str, str] = {}
+    # A mapping indented as a whole (``<rosparam>`` text inside an element) is still flat.
+    for line in textwrap.dedent(text).splitlines():
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#") or stripped == "---":
+            continue
+        match = _FLAT_LINE.match(line)
+        if match is None or len(found) >= MAX_PARAMS:
+            return None
+        quoted = match.group(4) is None
+        value = next(v for v in match.groups()[1:] if v is not None).strip()
+        if not quoted and value in _NULLS:
+            continue
+        found[match.group(1)] = value if quoted else _BOOLEANS.get(value, value)
+    return found
+
+
 def parse_yaml(text: str) -> tuple[Any, str | None]:
-    """The YAML document (plain data, no tags run), or None and why it is not read."""
+    """The YAML document (plain data, no tags run), or None and why it is not read.
+    Without PyYAML, flat ``key: value`` text is still read (the same in both cases)."""
     try:
         # Imported on use: PyYAML stays out of the standard-library core.
         import yaml  # type: ignore[import-untyped]
     except ImportError:
+        flat = flat_yaml(text)
+        if flat is not None:
+            return flat, None
         return None, "reading YAML parameters needs PyYAML"
     if len(text) > MAX_PARAM_FILE_BYTES:
         return None, f"YAML larger than {MAX_PARAM_FILE_BYTES} bytes"

@@ -232,6 +232,11 @@ class Ros1Tags(Ros1Base):
                 always = _conjoin(context.condition, condition).always
                 self.node_params.append((full, text if text is not None and always
                                          else UNKNOWN_VALUE))
+        elif name_text.strip() in ("tf_prefix", "~tf_prefix") and anon is None:
+            # robot_state_publisher finds tf_prefix by searchParam, from its namespace up.
+            text = None if written is None else resolved_text(written)
+            scope = None if context.ns_unresolved else context.ns
+            self.tf_prefixes.append((scope, UNKNOWN_VALUE if text is None else text))
         param_type = attrib.get("type")
         if written is not None and param_type is not None:
             value = resolved_text(written)

@@ -5,6 +5,7 @@ publishes ``/joint_states`` (without which robot_state_publisher sends no movabl
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from launch_linter.knowledge import Entry, KnowledgeBase
@@ -16,6 +17,7 @@ from launch_linter.rules._api import Finding, RuleContext
 
 STATIC_PUBLISHERS = frozenset({"tf", "tf2_ros"})
 """Packages whose static_transform_publisher the tree already reads as launch edges."""
+_PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 JOINT_STATE_CONTROLLERS = ("joint_state_broadcaster/JointStateBroadcaster",
                            "joint_state_controller/JointStateController")
 
@@ -143,3 +145,15 @@ def finding_at_node(node: NodeRecord, message: str,
 def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
     """The node side of one tree, outside a rule run (``transforms``, ``graph``)."""
     return nodes_of(RuleContext(tree, knowledge=knowledge))
+
+
+def frame_parameters(entry: Entry) -> list[str]:
+    """The parameters of ``entry`` that name frames: those in its published edges, its
+    lookups and its camera frames (a parameter used only as a switch is not one)."""
+    names: list[str] = []
+    templates = [t for spec in entry.publishes for t in (spec.parent, spec.child)]
+    for template in templates + list(entry.looks_up) + list(entry.camera_frames):
+        for name in _PLACEHOLDER.findall(template):
+            if name not in names:
+                names.append(name)
+    return names

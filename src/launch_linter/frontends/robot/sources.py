@@ -144,12 +144,14 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
 
 
 def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, str]],
-                     unread: Sequence[str] = ()) -> list[NodeRecord]:
+                     unread: Sequence[str] = (),
+                     tf_prefixes: Sequence[tuple[str | None, str]] = ()) -> list[NodeRecord]:
     """``nodes`` with the parameters set outside them by their private name
     (``NODE/param``, any namespace before it; a node's own ``<param>`` comes first), the
-    reasons why parameters beside them were not read, and the ros_control controllers
-    that parameters load (``NAME/type``) at each controller manager."""
-    if not params and not unread:
+    reasons why parameters beside them were not read, the ``tf_prefix`` a
+    robot_state_publisher finds from its namespace up, and the ros_control controllers
+    that parameters load (``NAME/type``) at the first controller manager."""
+    if not params and not unread and not tf_prefixes:
         return list(nodes)
     by_name: dict[str, list[tuple[str, str]]] = {}
     for key, value in params[:MAX_GLOBAL_PARAMS]:
@@ -160,6 +162,10 @@ def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, st
     managed = False
     for node in nodes:
         extra = tuple(by_name.get(node.name, ())) if node.name is not None else ()
+        if node.package == "robot_state_publisher":
+            extra += tuple(("tf_prefix", value) for scope, value in tf_prefixes
+                           if scope is None or node.namespace is None
+                           or node.namespace.startswith(scope.rstrip("/") + "/"))
         if extra or unread:
             node = replace(node, params=node.params + extra,
                            unread=node.unread + tuple(unread[:3]))
