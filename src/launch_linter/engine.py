@@ -14,6 +14,7 @@ from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
+from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -33,12 +34,14 @@ from launch_linter.workspace.discovery import (
     InputFile,
     discover,
 )
+from launch_linter.workspace.environment import Place, built_beside
 from launch_linter.workspace.packages import (
     PackageIndex,
     default_package_roots,
     nearest_package_xml,
     package_ros_version,
 )
+from launch_linter.workspace.paths import shown_path
 
 __all__ = [
     "AUTO_JOBS",
@@ -49,6 +52,7 @@ __all__ = [
     "LintResult",
     "auto_jobs",
     "discover",
+    "lint_bytes",
     "lint_files",
     "lint_paths",
     "lint_text",
@@ -68,6 +72,9 @@ class LintOptions:
     env: dict[str, str] = field(default_factory=dict)
     package_paths: tuple[str, ...] | None = None
     """``$(find)`` roots; None means the enclosing workspace of each linted file."""
+    environment: tuple[Place, ...] = ()
+    """Package places of a sourced environment (``workspace.environment``), searched
+    after the roots and the workspace's own ``install/``/``devel/``."""
     select: frozenset[str] | None = None
     ignore: frozenset[str] = frozenset()
     severity: dict[str, Severity] = field(default_factory=dict)
@@ -105,17 +112,8 @@ class LintResult:
 
 
 def _display_function(item: InputFile) -> object:
-    relative = not os.path.isabs(item.display)
-
     def display(path: str) -> str:
-        absolute = os.path.abspath(path)
-        if absolute == item.path:
-            return item.display
-        if relative:
-            rel = os.path.relpath(absolute)
-            if not rel.startswith(".."):
-                return rel
-        return absolute
+        return item.display if os.path.abspath(path) == item.path else shown_path(path)
 
     return display
 
@@ -157,7 +155,7 @@ def load_options_for(
     """How to load ``item``. ``cache``, ``robots`` and ``versions`` (each package.xml's ROS
     version) are shared by the files of one run, so each is worked out once."""
     if options.package_paths is not None:
-        index = _package_index(tuple(options.package_paths), cache)
+        index = _package_index(tuple(options.package_paths), cache, options.environment)
     else:
         # default_package_roots walks up the folders of a file (to / outside a package):
         # done once per folder (the real one, for a symbolic link), whose index the cache
@@ -166,12 +164,15 @@ def load_options_for(
         folder = ("", os.path.dirname(path))
         found = cache.get(folder)
         if found is None:
-            found = _package_index(tuple(default_package_roots(path)), cache)
+            found = _package_index(tuple(default_package_roots(path)), cache,
+                                   options.environment)
             cache[folder] = found
         index = found
+    # The target distribution is the ROS_DISTRO of the machine that runs the files.
+    distro = {"ROS_DISTRO": options.ros_distro} if options.ros_distro else {}
     return LoadOptions(
         args=options.args,
-        env=options.env,
+        env={**distro, **options.env},
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",
@@ -181,11 +182,16 @@ def load_options_for(
 
 
 def _package_index(
-    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex]
+    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex],
+    environment: tuple[Place, ...] = (),
 ) -> PackageIndex:
-    if roots not in cache:
-        cache[roots] = PackageIndex(list(roots))
-    return cache[roots]
+    """The index of ``roots``, then their workspace's build output, then ``environment``
+    (the order of ``workspace.environment``)."""
+    places = (*built_beside(roots), *environment)
+    key = (*roots, *(f"{kind}:{folder}" for kind, folder in places))
+    if key not in cache:
+        cache[key] = PackageIndex(list(roots), places)
+    return cache[key]
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
@@ -196,10 +202,14 @@ def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) ->
 
 
 def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:
-    """The distribution given, else Foxy when a file uses Foxy-era Node keywords, else None."""
+    """The distribution given, else Foxy when a file uses Foxy-era Node keywords (unless
+    the tree's ROS 2 static_transform_publisher flags, Humble's, contradict them), else
+    None."""
     if options.ros_distro:
         return options.ros_distro
-    if any(p.rule == "ros2_removed_keyword" for p in tree.problems):
+    if any(p.rule == "ros2_removed_keyword" for p in tree.problems) and not any(
+        t.ros_version == 2 and uses_flags(t.tokens) for t in tree.transforms
+    ):
         return "foxy"
     return None
 
@@ -474,16 +484,22 @@ def lint_text(
     text: str, path: str = "<string>.launch", options: LintOptions | None = None
 ) -> LintResult:
     """Lint launch-file text as if it were the file ``path`` (which need not exist)."""
+    return lint_bytes(text.encode("utf-8"), path, options)
+
+
+def lint_bytes(
+    data: bytes, path: str = "<string>.launch", options: LintOptions | None = None
+) -> LintResult:
+    """Lint a launch file's bytes as if they were the file ``path`` (which need not
+    exist): read in the encoding they declare, fixes located in these very bytes."""
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
     cache: dict[tuple[str, ...], PackageIndex] = {}
     load = load_options_for(item, options, cache)
-    tree = load_tree(item.path, load, text.encode("utf-8"))
+    tree = load_tree(item.path, load, data)
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(
-        finish_diagnostics((tree,), found, options),
-        options.ros_distro,
-        {path: text.encode("utf-8")},
+        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data},
     )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 

@@ -9,7 +9,14 @@ import ast
 import os
 from collections.abc import Callable
 
-from launch_linter.frontends.ros2_actions import ACTION_TYPES, Action, Predicate, Unfollowed, Where
+from launch_linter.frontends.ros2_actions import (
+    ACTION_TYPES,
+    Action,
+    Predicate,
+    Unfollowed,
+    Uses,
+    Where,
+)
 from launch_linter.frontends.ros2_python.evaluator import _performed
 from launch_linter.frontends.ros2_python.expressions import Expressions
 from launch_linter.frontends.ros2_python.values import (
@@ -39,6 +46,9 @@ from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
 from launch_linter.resolve.bounded import STRING_METHODS, Refused, format_fields, string_method
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, literal
 from launch_linter.resolve.value import holes, resolved_text
+
+_UNSET_MARKER = "<unset launch configuration>"
+"""The default ``context.launch_configurations.get(name)`` reads: launch gives None there."""
 
 
 class Calls(Expressions):
@@ -220,6 +230,10 @@ class Calls(Expressions):
                 return None
         if isinstance(target, str):
             return self.string_method(target, name, args, node)
+        if isinstance(target, SubsVal) and name == "find" and len(args) == 1 and isinstance(
+                args[0], (str, LazyStr)) and _single_call(target.subs, "find-pkg-share"):
+            # FindPackageShare(p).find(name): the share folder of ``name``, as a string.
+            return LazyStr((Call("find-pkg-share", (_as_subs(args[0]),), self.segment(node)),))
         if isinstance(target, (SubsVal, LazyStr)) and name == "perform":
             if len(args) == 1 and isinstance(args[0], ContextVal):
                 return _performed(args[0].resolver, target.subs, node, self)
@@ -228,12 +242,15 @@ class Calls(Expressions):
             key = args[0]
             if isinstance(key, str):
                 default = args[1] if len(args) == 2 else None
-                subs: Subs = (Call("var", (literal(key),), self.segment(node)),)
+                # dict.get gives the default for an unset configuration: never launch's
+                # "does not exist" failure, so the read has a default of its own.
+                unset = Opaque(_UNSET_MARKER, "unset")
+                subs: Subs = (Call("var", (literal(key), (unset,)), self.segment(node)),)
                 value = target.resolver(subs)
                 text = resolved_text(value)
                 if text is not None:
                     return text
-                if all("is not set" in h.reason for h in holes(value)):
+                if all(h.text == _UNSET_MARKER for h in holes(value)):
                     return default
                 return self.unknown(node, "; ".join(h.reason for h in holes(value)))
         return self.unknown(node, f"method '{name}' is not interpreted")
@@ -378,6 +395,10 @@ class Calls(Expressions):
                                         f"launch entity not followed: {item.describe()}"))
             elif isinstance(item, ACTION_TYPES):
                 found.append(item)
+            elif isinstance(item, LaunchObject) and item.where is not None and (
+                item.uses or item.condition is not None
+            ):
+                found.append(Uses(item.where, item.condition, item.uses))
         return tuple(found)
 
     # -- defined by a subclass, further on ---------------------------------------------------
@@ -385,3 +406,7 @@ class Calls(Expressions):
                 node: ast.Call) -> object:
         """Defined by :class:`.launch_api.Interpreter`."""
         raise NotImplementedError
+
+
+def _single_call(subs: Subs, name: str) -> bool:
+    return len(subs) == 1 and isinstance(subs[0], Call) and subs[0].name == name
