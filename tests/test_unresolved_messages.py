@@ -183,3 +183,37 @@ def test_included_text_says_its_cause_once_with_the_including_file(tmp_path: Pat
     (message,) = _messages(tmp_path, "robot.launch", VARIANTS)
     assert "environment variable 'HOST_FRAME' is not given" in message
     assert message.endswith(f"(included from {tmp_path / 'robot.launch'}:2)")
+
+
+DISTRO_BRANCH = """import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    if os.environ.get('ROS_DISTRO') == 'dashing':
+        tf = Node(package='tf2_ros', node_executable='static_transform_publisher',
+                  arguments=['--frame-id', 'map', '--child-frame-id', 'odom'])
+    else:
+        tf = Node(package='tf2_ros', executable='static_transform_publisher',
+                  arguments=['--frame-id', 'map', '--child-frame-id', 'odom'])
+    return LaunchDescription([tf])
+"""
+
+
+def test_a_branch_for_another_distribution_is_silent_when_the_target_decides_it(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "tf.launch.py").write_text(DISTRO_BRANCH)
+
+    def rules(**options: object) -> list[str]:
+        result = lint_paths([str(tmp_path / "tf.launch.py")],
+                            LintOptions(**options))  # type: ignore[arg-type]
+        return sorted(d.rule for d in result.diagnostics)
+
+    # Unknown target: the branch is unknown, and the message says on what.
+    (message,) = _messages(tmp_path, "tf.launch.py", DISTRO_BRANCH)
+    assert "os.environ.get('ROS_DISTRO')" in message
+    # --ros-distro decides it: no message about the Dashing-only branch, no refused keyword.
+    assert rules(ros_distro="humble") == []
+    assert "ros2_removed_keyword" not in rules(ros_distro="jazzy")

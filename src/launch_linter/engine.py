@@ -165,9 +165,11 @@ def load_options_for(
                                    options.environment)
             cache[folder] = found
         index = found
+    # The target distribution is the ROS_DISTRO of the machine that runs the files.
+    distro = {"ROS_DISTRO": options.ros_distro} if options.ros_distro else {}
     return LoadOptions(
         args=options.args,
-        env=options.env,
+        env={**distro, **options.env},
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",

@@ -360,7 +360,7 @@ class Ros2Runner:
         if display not in self.files:
             self.files.append(display)
         if absolute.endswith(".py"):
-            read = read_python(absolute, data, self.work)
+            read = read_python(absolute, data, self.work, self.options.env)
         elif absolute.endswith((".yaml", ".yml")):
             read = read_yaml(absolute, data)
         else:

@@ -59,8 +59,6 @@ from launch_linter.frontends.robot.xacro_values import (
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
-_QUOTE = re.compile("['\"]")
-
 
 class _Symbols(typing.Mapping[str, typing.Optional[str]]):
     """The properties visible from a table, evaluated on demand, as the evaluator's args."""
@@ -514,12 +512,9 @@ class XacroExpander:
                          path, element.line)
         scoped = _Table(table)
         params = list(macro.params)
-        # Quoted defaults (``xyz:='0 0 0'``) are split at their spaces here: a parameter
-        # mismatch of such a macro is unknown, not xacro's refusal.
-        mismatch = _Unknown if _QUOTE.search(macro.body.attrib.get("params", "")) else _Refused
         for attribute, text in element.attrib.items():
             if attribute not in params:
-                raise mismatch(f"invalid parameter '{attribute}' of macro '{name}'")
+                raise _Refused(f"invalid parameter '{attribute}' of macro '{name}'")
             params.remove(attribute)
             scoped.properties[attribute] = self._evaluated(text, table)
         blocks = list(element.children)
@@ -550,7 +545,7 @@ class XacroExpander:
                     raise _Refused(f"undefined property to forward: {forward}")
             scoped.properties[param] = self._evaluated(default or "", table)
         if params:
-            raise mismatch(f"undefined parameters [{','.join(params)}] of macro '{name}'")
+            raise _Refused(f"undefined parameters [{','.join(params)}] of macro '{name}'")
         self._macro_depth += 1
         try:
             self._children(macro.body.children, macro.path, scoped, out, conditions)

@@ -259,10 +259,20 @@ class Expressions(Evaluator):
                 return result
         return self.unknown(node, "this operation is not interpreted")
 
+    def given(self, value: object) -> object:
+        """``value``, or the text of the environment variable it reads when the run is
+        told that variable (``os.environ['ROS_DISTRO']`` with ``--ros-distro humble``)."""
+        if isinstance(value, LazyStr) and len(value.subs) == 1:
+            call = value.subs[0]
+            if isinstance(call, Call) and call.name == "env" and call.args and len(
+                    call.args[0]) == 1 and isinstance(call.args[0][0], Text):
+                return self.environ.get(call.args[0][0].text, value)
+        return value
+
     def compare(self, node: ast.Compare, env: Env) -> object:
-        left = self.eval(node.left, env)
+        left = self.given(self.eval(node.left, env))
         for op, right_node in zip(node.ops, node.comparators):
-            right = self.eval(right_node, env)
+            right = self.given(self.eval(right_node, env))
             if not _plain(left) or not _plain(right):
                 # Named after the operand that is unknown, so that a message can say what
                 # really blocks the comparison (an environment variable, say).

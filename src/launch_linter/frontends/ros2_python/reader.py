@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 import os
 import tokenize
+from collections.abc import Mapping
 from io import BytesIO
 
 from launch_linter.frontends.ros2_actions import Action, FileRead, Problem, Unfollowed, Where
@@ -49,8 +50,10 @@ def _directive_comments(data: bytes) -> tuple[tuple[int, str], ...]:
     return tuple(found)
 
 
-def read_python(path: str, data: bytes, budget: Budget | None = None) -> FileRead:
-    """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes)."""
+def read_python(path: str, data: bytes, budget: Budget | None = None,
+                environ: Mapping[str, str] | None = None) -> FileRead:
+    """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes; ``environ``
+    the environment variables the run is told of)."""
     if len(data) > MAX_BYTES:
         message = f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
@@ -80,7 +83,7 @@ def read_python(path: str, data: bytes, budget: Budget | None = None) -> FileRea
         sorted({n.lineno for n in ast.walk(tree) if isinstance(n, (ast.stmt, ast.Call))})
         if comments else ()
     )
-    interpreter = Interpreter(path, source)
+    interpreter = Interpreter(path, source, environ=dict(environ or {}))
     actions = _launch_description(interpreter, tree)
     if budget is not None:
         # The interpreter's own step limit bounds one file; the root file's budget bounds
