@@ -56,12 +56,12 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
     if path.lower().endswith(".urdf") and b"<xacro:" not in text:
         # A URDF is read as it is, as check_urdf and a launch file's open().read() do (one
         # with xacro elements is xacro whatever its name).
-        source = DescriptionSource(path, 1, 1, DescriptionKind.LITERAL, None,
+        source = DescriptionSource(shown, 1, 1, DescriptionKind.LITERAL, None,
                                    text=text.decode("utf-8", "replace"))
     else:
         # Text linted as if it were the file (which need not exist) is expanded as it is.
         given = data.decode("utf-8", "replace") if data is not None else None
-        source = DescriptionSource(path, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
+        source = DescriptionSource(shown, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
                                    tuple(sorted(args.items())), text=given)
     robot, problems = read_description(source, packages, cache or RobotCache(), display,
                                        dict(env), standalone=True)
