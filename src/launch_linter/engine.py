@@ -51,6 +51,7 @@ __all__ = [
     "LintResult",
     "auto_jobs",
     "discover",
+    "lint_bytes",
     "lint_files",
     "lint_paths",
     "lint_text",
@@ -479,16 +480,22 @@ def lint_text(
     text: str, path: str = "<string>.launch", options: LintOptions | None = None
 ) -> LintResult:
     """Lint launch-file text as if it were the file ``path`` (which need not exist)."""
+    return lint_bytes(text.encode("utf-8"), path, options)
+
+
+def lint_bytes(
+    data: bytes, path: str = "<string>.launch", options: LintOptions | None = None
+) -> LintResult:
+    """Lint a launch file's bytes as if they were the file ``path`` (which need not
+    exist): read in the encoding they declare, fixes located in these very bytes."""
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
     cache: dict[tuple[str, ...], PackageIndex] = {}
     load = load_options_for(item, options, cache)
-    tree = load_tree(item.path, load, text.encode("utf-8"))
+    tree = load_tree(item.path, load, data)
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(
-        finish_diagnostics((tree,), found, options),
-        options.ros_distro,
-        {path: text.encode("utf-8")},
+        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data},
     )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 

@@ -10,7 +10,7 @@ import sys
 from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
-from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_paths, lint_text
+from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_bytes, lint_paths
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.rules._profiles import PROFILES
 from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
@@ -233,6 +233,11 @@ def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, I
     return exclusions, gitignore_predicate().ignored
 
 
+def read_stdin() -> bytes:
+    """The bytes on stdin, as they are (an XML file's declared encoding is expat's to read)."""
+    return sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+
+
 def lint_command_paths(
     ns: argparse.Namespace, options: LintOptions, config: Config, keep_trees: bool = True
 ) -> LintResult:
@@ -243,7 +248,7 @@ def lint_command_paths(
         if len(given) > 1:
             raise UsageError("'-' (stdin) cannot be combined with other paths")
         name = getattr(ns, "stdin_filename", None) or STDIN_NAME
-        return lint_text(sys.stdin.read(), name, options)
+        return lint_bytes(read_stdin(), name, options)
     missing = [path for path in given if not os.path.lexists(path)]
     if missing:
         raise UsageError(f"{missing[0]}: no such file or folder")

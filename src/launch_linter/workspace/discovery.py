@@ -20,7 +20,7 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Callable
 
@@ -175,6 +175,36 @@ class Exclusions:
         return False
 
 
+def walk(top: str, followlinks: bool = False) -> Iterator[tuple[str, list[str], list[str]]]:
+    """``os.walk`` (top-down, the caller may prune ``subdirs`` in place), without recursion:
+    before Python 3.12 ``os.walk`` recursed once per level, and 1,500 nested folders in a
+    repository raised RecursionError and lost the whole run."""
+    stack = [top]
+    while stack:
+        directory = stack.pop()
+        subdirs: list[str] = []
+        files: list[str] = []
+        links: set[str] = set()
+        try:
+            with os.scandir(directory) as entries:
+                for entry in entries:
+                    try:
+                        is_folder = entry.is_dir()
+                    except OSError:
+                        is_folder = False
+                    if is_folder:
+                        subdirs.append(entry.name)
+                        if not followlinks and entry.is_symlink():
+                            links.add(entry.name)
+                    else:
+                        files.append(entry.name)
+        except OSError:
+            continue
+        yield directory, subdirs, files
+        stack.extend(os.path.join(directory, name) for name in reversed(subdirs)
+                     if name not in links)
+
+
 DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
 """Robot descriptions, linted on their own (``.urdf.xacro`` ends with ``.xacro``)."""
 NOT_DESCRIPTION_SUFFIXES = (".srdf.xacro",)
@@ -209,13 +239,18 @@ def discover(
         if not os.path.isdir(given):
             add(given)
             continue
-        visited: set[str] = set()
-        for directory, subdirs, files in os.walk(given, followlinks=False):
-            real_dir = os.path.realpath(directory)
-            if real_dir in visited:
+        visited: set[tuple[int, int]] = set()
+        for directory, subdirs, files in walk(given):
+            # The folder's identity, not its real path (which costs a look-up per level:
+            # quadratic in a deep tree).
+            try:
+                info = os.stat(directory)
+            except OSError:
+                continue
+            if (info.st_dev, info.st_ino) in visited:
                 subdirs[:] = []
                 continue
-            visited.add(real_dir)
+            visited.add((info.st_dev, info.st_ino))
             subdirs[:] = sorted(
                 d
                 for d in subdirs

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from typing import NamedTuple
 
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
+from launch_linter.workspace.discovery import walk
 from launch_linter.workspace.environment import PREFIX, Place
 
 if typing.TYPE_CHECKING:
@@ -152,7 +153,7 @@ class _Crawl:
     def source(self, root: str) -> None:
         if not os.path.isdir(root):
             return
-        for directory, subdirs, files in os.walk(root, followlinks=True):
+        for directory, subdirs, files in walk(root, followlinks=True):
             self.budget -= 1
             if self.budget <= 0:
                 return
@@ -220,23 +221,45 @@ def installed_packages(prefix: str) -> dict[str, str]:
     return found
 
 
+_MANIFEST_NAMES: dict[tuple[str, int, int, int, int], str | None] = {}
+"""Package name of each ``package.xml`` read, by path and identity: a run whose launch
+files lie in many packages crawls one workspace many times (each package's roots), and
+reads each manifest once."""
+MAX_REMEMBERED_MANIFESTS = 20_000
+
+
 def _package_name(directory: str, files: list[str]) -> str | None:
     if "package.xml" in files:
+        path = os.path.join(directory, "package.xml")
         try:
-            data = read_regular_file(os.path.join(directory, "package.xml"), MAX_MANIFEST_BYTES)
-            document = parse_xml(data, text_tags=("name",))
-        except (OSError, XmlError):
+            info = os.stat(path)
+        except OSError:
             return None
-        name: str | None = None
-        for child in document.root.children:
-            if child.tag == "name" and name is None:
-                name = child.text.strip(" \n\r\t") or None
-            elif child.tag == "export" and any(
-                grandchild.tag == "metapackage" for grandchild in child.children
-            ):
-                return None
-        return name
+        key = (path, info.st_dev, info.st_ino, info.st_size, info.st_mtime_ns)
+        if key not in _MANIFEST_NAMES:
+            if len(_MANIFEST_NAMES) >= MAX_REMEMBERED_MANIFESTS:
+                _MANIFEST_NAMES.clear()
+            _MANIFEST_NAMES[key] = _manifest_name(path)
+        return _MANIFEST_NAMES[key]
     return os.path.basename(directory)
+
+
+def _manifest_name(path: str) -> str | None:
+    """The package name a ``package.xml`` declares (None for a metapackage or none)."""
+    try:
+        data = read_regular_file(path, MAX_MANIFEST_BYTES)
+        document = parse_xml(data, text_tags=("name",))
+    except (OSError, XmlError):
+        return None
+    name: str | None = None
+    for child in document.root.children:
+        if child.tag == "name" and name is None:
+            name = child.text.strip(" \n\r\t") or None
+        elif child.tag == "export" and any(
+            grandchild.tag == "metapackage" for grandchild in child.children
+        ):
+            return None
+    return name
 
 
 def default_package_roots(launch_file: str) -> list[str]:

@@ -58,8 +58,6 @@ from launch_linter.frontends.robot.xacro_values import (
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
-_QUOTE = re.compile("['\"]")
-
 
 class _Symbols(typing.Mapping[str, typing.Optional[str]]):
     """The properties visible from a table, evaluated on demand, as the evaluator's args."""
@@ -110,6 +108,8 @@ class XacroExpander:
         self._resolving: list[str] = []
         self._path = ""
         self._line = 1
+        self._parsed: dict[str, Element | None] = {}
+        """Each file parsed once, however often it is included (the tree is only read)."""
         self._defines_macros = False
 
     # -- entry -------------------------------------------------------------------------
@@ -155,6 +155,14 @@ class XacroExpander:
             if len(self.files) >= MAX_FILES:
                 raise _Abort(f"description reads more than {MAX_FILES} files", *where)
             self.files.append(absolute)
+        if absolute in self._parsed:
+            return self._parsed[absolute]
+        root = self._parse(absolute, at, where, data)
+        self._parsed[absolute] = root
+        return root
+
+    def _parse(self, absolute: str, at: tuple[str, int] | None,
+               where: tuple[str, int], data: bytes | None) -> Element | None:
         try:
             data = read_launch_bytes(absolute) if data is None else data
         except OSError as exc:
@@ -180,6 +188,7 @@ class XacroExpander:
         self._charge()
         parts: list[str] = []
         position = 0
+        size = 0  # of the parts so far (summing them per token was quadratic)
         for match in _TOKEN.finditer(text):
             parts.append(text[position:match.start()])
             position = match.end()
@@ -193,7 +202,8 @@ class XacroExpander:
                 if "${" in inner:
                     inner = self.evaluate_text(inner, table)
                 parts.append(self._extension(inner.strip(), table))
-            if sum(len(p) for p in parts) > MAX_TEXT:
+            size += len(parts[-2]) + len(parts[-1])
+            if size > MAX_TEXT:
                 raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path,
                              self._line)
         parts.append(text[position:])
@@ -443,7 +453,7 @@ class XacroExpander:
             raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
-        if not os.path.isfile(target):
+        if not os.path.exists(target):  # a FIFO or device is read, and said to be one
             installed = self.locate(target) if self.locate is not None else None
             if installed is not None:
                 target = installed
@@ -494,12 +504,9 @@ class XacroExpander:
                          path, element.line)
         scoped = _Table(table)
         params = list(macro.params)
-        # Quoted defaults (``xyz:='0 0 0'``) are split at their spaces here: a parameter
-        # mismatch of such a macro is unknown, not xacro's refusal.
-        mismatch = _Unknown if _QUOTE.search(macro.body.attrib.get("params", "")) else _Refused
         for attribute, text in element.attrib.items():
             if attribute not in params:
-                raise mismatch(f"invalid parameter '{attribute}' of macro '{name}'")
+                raise _Refused(f"invalid parameter '{attribute}' of macro '{name}'")
             params.remove(attribute)
             scoped.properties[attribute] = self._evaluated(text, table)
         blocks = list(element.children)
@@ -530,7 +537,7 @@ class XacroExpander:
                     raise _Refused(f"undefined property to forward: {forward}")
             scoped.properties[param] = self._evaluated(default or "", table)
         if params:
-            raise mismatch(f"undefined parameters [{','.join(params)}] of macro '{name}'")
+            raise _Refused(f"undefined parameters [{','.join(params)}] of macro '{name}'")
         self._macro_depth += 1
         try:
             self._children(macro.body.children, macro.path, scoped, out, conditions)
