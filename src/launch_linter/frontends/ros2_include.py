@@ -1,5 +1,10 @@
-"""What a ROS 2 include needs from its text: the file it names, the environment variables
-it reads, and the arguments the included file requires (helpers of :mod:`ros2_run`)."""
+"""Includes in ROS 2 launch files: where the included file is and what it requires.
+
+The file is looked for as launch opens it (relative to the including file's folder, then
+the working directory) and, when it is not there, through the package index
+(:meth:`~launch_linter.workspace.packages.PackageIndex.locate`): a share path is read from
+the source file its package's install rules name; absent or unknown is decided there.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +12,7 @@ import os
 
 from launch_linter.frontends.ros2_actions import Action, DeclareArg, Group
 from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
+from launch_linter.workspace.packages import Located, PackageIndex
 
 
 def environment_names(subs: Subs, depth: int = 0) -> list[str]:
@@ -40,8 +46,7 @@ def required_arguments(actions: tuple[Action, ...]) -> list[str]:
     return found
 
 
-def locate_include(path: str, including_file: str) -> str | None:
-    """The file an include names, relative to the including file or the current folder."""
+def _locate(path: str, including_file: str) -> str | None:
     candidates = [path] if os.path.isabs(path) else [
         os.path.join(os.path.dirname(including_file), path), os.path.abspath(path),
     ]
@@ -53,3 +58,15 @@ def locate_include(path: str, including_file: str) -> str | None:
         if os.path.exists(candidate):
             return os.path.abspath(candidate)
     return None
+
+
+def find_included(path: str, including_file: str, packages: PackageIndex
+                  ) -> tuple[str | None, Located | None]:
+    """(the file to read or None, how the package index judged a file that is not there)."""
+    absolute = _locate(path, including_file)
+    if absolute is not None:
+        return absolute, None
+    located = packages.locate(
+        path if os.path.isabs(path) else os.path.join(os.path.dirname(including_file), path),
+        near=os.path.dirname(including_file))
+    return located.path, located

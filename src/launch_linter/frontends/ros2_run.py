@@ -32,7 +32,7 @@ from launch_linter.frontends.ros2_actions import (
 )
 from launch_linter.frontends.ros2_include import (
     environment_names,
-    locate_include,
+    find_included,
     required_arguments,
 )
 from launch_linter.frontends.ros2_python import read_python
@@ -535,14 +535,7 @@ class Ros2Runner:
                          f"include file {text_of(path_value)!r} not followed: {reasons}")
             self._opened(f"line {action.where.line}: an include is not followed")
             return
-        absolute = locate_include(path, frame.filename)
-        located = None
-        if absolute is None:
-            located = self.options.packages.locate(
-                path if os.path.isabs(path) else os.path.join(
-                    os.path.dirname(frame.filename), path),
-                near=os.path.dirname(frame.filename))
-            absolute = located.path
+        absolute, located = find_included(path, frame.filename, self.options.packages)
         if absolute is None:
             if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.

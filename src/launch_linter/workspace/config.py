@@ -43,6 +43,7 @@ KEYS = (
     "respect-gitignore",
     "ros",
     "ros-distro",
+    "knowledge",
 )
 BELIEF_KEYWORDS = ("bundled", "study", "none")
 MAX_CONFIG_BYTES = 1024 * 1024
@@ -74,6 +75,8 @@ class Config:
     respect_gitignore: bool | None = None
     ros: int | None = None
     ros_distro: str | None = None
+    knowledge: tuple[str, ...] = ()
+    """Knowledge files (JSON, docs/knowledge.md) that extend the bundled knowledge base."""
 
 
 def _categories() -> set[str]:
@@ -163,6 +166,10 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
             values[key] = {
                 str(name): _scalar_text(v, f"{path}: '{key}.{name}'") for name, v in table.items()
             }
+    if "knowledge" in data:
+        files = data["knowledge"]
+        names = (files,) if isinstance(files, str) else _string_list(files, f"{path}: 'knowledge'")
+        values["knowledge"] = tuple(_relative_to(base, name) for name in names)
     if "package-path" in data:
         roots = _string_list(data["package-path"], f"{path}: 'package-path'")
         values["package_path"] = tuple(_relative_to(base, r) for r in roots)
