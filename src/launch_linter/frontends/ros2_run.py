@@ -42,6 +42,7 @@ from launch_linter.model.transform import (
     LaunchFormat,
     StaticTransform,
 )
+from launch_linter.resolve import reads
 from launch_linter.resolve.ros2_substitution import (
     Call,
     Ros2Scope,
@@ -177,11 +178,11 @@ def _locate(path: str, including_file: str) -> str | None:
         os.path.join(os.path.dirname(including_file), path), os.path.abspath(path),
     ]
     for candidate in candidates:
-        if os.path.isfile(candidate):
+        if reads.is_file(candidate):
             return os.path.abspath(candidate)
     # A folder, device or FIFO of that name is found, so that reading it says what it is.
     for candidate in candidates:
-        if os.path.exists(candidate):
+        if reads.exists(candidate):
             return os.path.abspath(candidate)
     return None
 

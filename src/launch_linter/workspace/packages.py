@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
 
 MAX_DIRECTORIES = 50_000
@@ -25,10 +26,14 @@ class PackageIndex:
     def __init__(self, roots: list[str]) -> None:
         self.roots = [os.path.abspath(r) for r in roots]
         self._packages: dict[str, str] | None = None
+        self._read = reads.ReadLog()
+        """What the crawl read: every file that asks for a package depends on it."""
 
     def find(self, name: str) -> str | None:
         if self._packages is None:
-            self._packages = self._crawl()
+            with reads.recording() as self._read:
+                self._packages = self._crawl()
+        reads.depend_on(self._read)
         return self._packages.get(name)
 
     def _crawl(self) -> dict[str, str]:
@@ -36,7 +41,7 @@ class PackageIndex:
         budget = MAX_DIRECTORIES
         seen: set[tuple[int, int]] = set()
         for root in self.roots:
-            if not os.path.isdir(root):
+            if not reads.is_dir(root):
                 continue
             for directory, subdirs, files in os.walk(root, followlinks=True):
                 budget -= 1
@@ -52,6 +57,8 @@ class PackageIndex:
                     subdirs[:] = []
                     continue
                 seen.add((info.st_dev, info.st_ino))
+                # What the crawl finds changes when an entry of a folder it listed does.
+                reads.note_folder(directory, info, subdirs, files)
                 subdirs.sort()
                 if "CATKIN_IGNORE" in files:
                     subdirs[:] = []
@@ -99,7 +106,7 @@ def default_package_roots(launch_file: str) -> list[str]:
     directory = os.path.dirname(os.path.realpath(launch_file))
     package: str | None = None
     for _ in range(MAX_WALK_UP):
-        if os.path.isfile(os.path.join(directory, "package.xml")):
+        if reads.is_file(os.path.join(directory, "package.xml")):
             package = directory
             break
         parent = os.path.dirname(directory)
@@ -113,7 +120,7 @@ def default_package_roots(launch_file: str) -> list[str]:
     directory = os.path.dirname(package)
     for _ in range(MAX_WALK_UP):
         source = os.path.join(directory, "src")
-        if package.startswith(source + os.sep) and os.path.isdir(source):
+        if package.startswith(source + os.sep) and reads.is_dir(source):
             return [source]
         parent = os.path.dirname(directory)
         if parent == directory:
@@ -127,7 +134,7 @@ def nearest_package_xml(launch_file: str) -> str | None:
     directory = os.path.dirname(os.path.abspath(launch_file))
     for _ in range(MAX_WALK_UP):
         candidate = os.path.join(directory, "package.xml")
-        if os.path.isfile(candidate):
+        if reads.is_file(candidate):
             return candidate
         parent = os.path.dirname(directory)
         if parent == directory:

@@ -11,12 +11,13 @@ from __future__ import annotations
 import os
 import re
 import typing
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Hashable, Sequence
 from dataclasses import replace
 
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord, RobotJoint
+from launch_linter.resolve import reads
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
@@ -35,19 +36,21 @@ class RobotCache:
     """Expansions made in one run, keyed by (file, args, package roots)."""
 
     def __init__(self) -> None:
-        self._expansions: dict[tuple[object, ...], Expansion] = {}
+        self._expansions: dict[Hashable, tuple[Expansion, reads.ReadLog]] = {}
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str]) -> Expansion:
         key = (file, args, tuple(packages.roots), tuple(sorted(env.items())))
-        found = self._expansions.get(key)
-        if found is None:
+
+        def expand_file() -> Expansion:
             # Imported when a description is first expanded: xacro (with its interpreter
             # of ${} expressions) is a third of the start-up of a run that meets none.
             from launch_linter.frontends.robot.xacro import expand
 
-            found = self._expansions[key] = expand(file, dict(args), packages.find, env)
-        return found
+            return expand(file, dict(args), packages.find, env)
+
+        # Every launch file that uses the expansion depends on the files it read.
+        return reads.remembered(self._expansions, key, expand_file)
 
     def __len__(self) -> int:
         return len(self._expansions)

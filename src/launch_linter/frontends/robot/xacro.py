@@ -48,6 +48,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _Table,
     _Unknown,
 )
+from launch_linter.resolve import reads
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
@@ -392,7 +393,7 @@ class XacroExpander:
             raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
-        if not os.path.isfile(target):
+        if not reads.is_file(target):
             if element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
             raise _Unknown(f"included file {filename} not found")
