@@ -117,6 +117,22 @@ def test_a_second_run_reuses_every_root(workspace: Path) -> None:
     assert relinted(workspace) == []
 
 
+def test_results_from_worker_processes_are_kept(workspace: Path) -> None:
+    assert relinted(workspace, replace(OPTIONS, jobs=2)) == ROOTS
+    assert relinted(workspace) == []
+
+
+def test_a_cache_kept_in_process_looks_at_the_files_again_each_run(workspace: Path) -> None:
+    cache = ResultsCache.open(str(workspace / "cache"), __version__, OPTIONS)
+    assert cache is not None
+    first = lint_paths(["src"], OPTIONS, keep_trees=False, cache=cache)
+    assert lint_paths(["src"], OPTIONS, keep_trees=False, cache=cache) == first
+    edit(workspace / "src/pkg/launch/inc.launch", "base_link base_link", "base_link odom")
+    cache.missed.clear()
+    assert lint_paths(["src"], OPTIONS, keep_trees=False, cache=cache) == lint(workspace, None)[0]
+    assert sorted(os.path.basename(p) for p in cache.missed) == ["a.launch", "inc.launch"]
+
+
 def test_an_included_file_relints_the_roots_that_read_it(workspace: Path) -> None:
     relinted(workspace)
     edit(workspace / "src/pkg/launch/inc.launch", "base_link base_link", "base_link odom")
@@ -278,3 +294,30 @@ def test_a_result_survives_the_round_trip() -> None:
     linted = (tree, FileRecord("p.launch", FileStatus.OK, 1), [diagnostic])
     assert results_cache.decode_linted(
         json.loads(json.dumps(results_cache.encode_linted(linted)))) == linted
+
+
+def checked(capsys: pytest.CaptureFixture[str]) -> list[str]:
+    """``check`` with the cache and without: the same JSON; the files it lists."""
+    main(["check", "--format", "json", "src"])
+    cached = capsys.readouterr().out
+    main(["check", "--no-cache", "--format", "json", "src"])
+    assert capsys.readouterr().out == cached
+    return sorted(os.path.basename(f["path"]) for f in json.loads(cached)["files"])
+
+
+def test_the_folder_walk_is_reused_until_a_folder_or_ignore_file_changes(
+    workspace: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (workspace / ".git").mkdir()
+    assert checked(capsys) == ROOTS
+    assert checked(capsys) == ROOTS
+    (workspace / "src/pkg/launch/new.launch").write_text(SELF)
+    assert checked(capsys) == sorted([*ROOTS, "new.launch"])
+    (workspace / "src/pkg/config/robot.xml").write_text("<robot/>\n")
+    assert checked(capsys) == sorted([*ROOTS, "new.launch"])
+    (workspace / "src/pkg/config/robot.xml").write_text("<launch/>\n")  # found by content
+    assert checked(capsys) == sorted([*ROOTS, "new.launch", "robot.xml"])
+    (workspace / ".gitignore").write_text("new.launch\n")
+    assert checked(capsys) == sorted([*ROOTS, "robot.xml"])
+    (workspace / "src/pkg/launch/b.launch").unlink()
+    assert checked(capsys) == sorted(["a.launch", "c.launch", "inc.launch", "robot.xml"])

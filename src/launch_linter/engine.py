@@ -481,9 +481,12 @@ def lint_paths(
     ``ignored`` an extra predicate on paths found in folders (the CLI's ``.gitignore``);
     ``keep_trees=False`` drops each file's tree once its rules ran, and ``cache`` reuses
     results (see ``lint_files``)."""
-    return lint_files(
-        discover(paths, exclusions, ignored), options or LintOptions(), keep_trees, cache
-    )
+    if cache is None or keep_trees:
+        inputs = discover(paths, exclusions, ignored)
+    else:
+        inputs = cache.discovered([list(paths), exclusions or Exclusions(), ignored is not None],
+                                  lambda: discover(paths, exclusions, ignored))
+    return lint_files(inputs, options or LintOptions(), keep_trees, cache)
 
 
 def lint_text(

@@ -281,6 +281,7 @@ class ResultsCache:
         self.path = os.path.join(folder, f"results-{key[:32]}.json")
         self._entries: dict[str, Any] = {}
         self._groups: dict[str, Any] = {}
+        self._discovery: Any = None
         self._changed = False
         self._freshness = reads.Freshness(read_regular_file)
         self._group_holds: dict[str, bool] = {}
@@ -320,6 +321,45 @@ class ResultsCache:
         entries, groups = document.get("entries"), document.get("groups")
         if isinstance(entries, dict) and isinstance(groups, dict):
             self._entries, self._groups = entries, groups
+            self._discovery = document.get("discovery")
+
+    def discovered(self, question: object,
+                   discover: Callable[[], list[InputFile]]) -> list[InputFile]:
+        """What ``discover()`` finds, from the cache while every folder it listed and file
+        it read holds for the same ``question`` (the paths given, exclusions, whether
+        ``.gitignore`` counts): a folder walk is most of a run whose results are cached."""
+        self.refresh()
+        asked = reads.digest(json.dumps(canonical(question)).encode("utf-8"))
+        try:
+            found = self._discovery_holds(asked)
+        except (CacheFormatError, TypeError, ValueError):
+            found = None
+        if found is not None:
+            return found
+        with reads.recording() as log:
+            found = discover()
+        if not log.is_unstable() and not log.groups:
+            self._discovery = {"question": asked, "stamps": _encode_stamps(log.stamps),
+                               "inputs": [[i.path, i.display] for i in found]}
+            self._changed = True
+        return found
+
+    def _discovery_holds(self, asked: str) -> list[InputFile] | None:
+        stored = self._discovery
+        if not isinstance(stored, dict) or stored.get("question") != asked:
+            return None
+        holds = self._freshness.holds
+        for raw in _list(stored.get("stamps")):
+            if not holds(*_decode_stamp(raw)):
+                return None
+        return [InputFile(_str(path), _str(display))
+                for path, display in (_list(i, 2) for i in _list(stored.get("inputs")))]
+
+    def refresh(self) -> None:
+        """Forget which stamps were found to hold: a new run looks at the files again (a
+        cache kept in a process, by an editor, serves many runs)."""
+        self._freshness = reads.Freshness(read_regular_file)
+        self._group_holds = {}
 
     def get(self, item: InputFile) -> Linted | None:
         """The result of ``item`` if its entry exists, checks out and still holds."""
@@ -383,11 +423,14 @@ class ResultsCache:
         """Write the cache if anything changed; silently nothing if it cannot be written."""
         if not self._changed:
             return
+        # Entries of root files that are gone go with them.
+        self._entries = {path: entry for path, entry in self._entries.items()
+                         if os.path.isfile(path)}
         used = {name for entry in self._entries.values() if isinstance(entry, dict)
                 for name in entry.get("groups", ()) if isinstance(name, str)}
         document = {"format": FORMAT, "key": self.key,
                     "groups": {n: s for n, s in self._groups.items() if n in used},
-                    "entries": self._entries}
+                    "entries": self._entries, "discovery": self._discovery}
         text = json.dumps(document, separators=(",", ":")).encode("utf-8")
         try:
             if len(text) > MAX_CACHE_BYTES:
@@ -461,6 +504,7 @@ def lint_with_cache(
     items = list(inputs)
     if cache is None:
         return [linted for linted, _ in lint(items)]
+    cache.refresh()
     found: list[Linted | None] = [cache.get(item) for item in items]
     misses = [item for item, hit in zip(items, found) if hit is None]
     fresh = iter(lint(misses)) if misses else iter(())

@@ -155,14 +155,15 @@ def note_path(path: str) -> None:
 
 
 def note_folder(path: str, status: os.stat_result, folders: Iterable[str],
-                files: Iterable[str]) -> None:
+                files: Iterable[str], every: bool = False) -> None:
     """The listing of the folder ``path`` (whose ``os.stat`` is ``status``; ``folders``
     and ``files`` its entries, as ``os.walk`` sorts them) decided something: its
-    subfolders and which of the ``LISTED_FILES`` it holds. An entry added or removed
-    changes the folder's modification time; only these change the listing's digest."""
+    subfolders and which of the ``LISTED_FILES`` it holds (with ``every``, every file's
+    name: discovery). An entry added or removed changes the folder's modification time;
+    only these change the listing's digest."""
     if _active:
         _active[-1].add(path, (FOLDER, -1, _vouching_mtime(status.st_mtime_ns),
-                               listing_digest(folders, files)))
+                               listing_digest(folders, files, every)))
 
 
 LISTED_FILES = frozenset(("package.xml", "manifest.xml", "CATKIN_IGNORE", "COLCON_IGNORE",
@@ -171,13 +172,18 @@ LISTED_FILES = frozenset(("package.xml", "manifest.xml", "CATKIN_IGNORE", "COLCO
 come and go without changing what a listing stamp says."""
 
 
-def listing_digest(folders: Iterable[str], files: Iterable[str]) -> str:
+EVERY_FILE = "*"
+"""What the digest of a listing of every file starts with."""
+
+
+def listing_digest(folders: Iterable[str], files: Iterable[str], every: bool = False) -> str:
     entries = sorted([*(f"d{name}" for name in folders),
-                      *(f"f{name}" for name in files if name in LISTED_FILES)])
-    return digest("\0".join(entries).encode("utf-8", "surrogateescape"))
+                      *(f"f{name}" for name in files if every or name in LISTED_FILES)])
+    found = digest("\0".join(entries).encode("utf-8", "surrogateescape"))
+    return EVERY_FILE + found if every else found
 
 
-def _listing_now(path: str) -> str:
+def _listing_now(path: str, every: bool) -> str:
     """:func:`listing_digest` of the folder ``path`` as ``os.walk`` would list it now."""
     folders: list[str] = []
     files: list[str] = []
@@ -188,7 +194,7 @@ def _listing_now(path: str) -> str:
             except OSError:
                 is_folder = False
             (folders if is_folder else files).append(entry.name)
-    return listing_digest(folders, files)
+    return listing_digest(folders, files, every)
 
 
 def _kind_now(path: str) -> str:
@@ -260,13 +266,14 @@ class Freshness:
             return kind == ABSENT
         if kind_of(status.st_mode) != kind:
             return False
-        if size < 0 and content is None:
-            return True  # a probe: the kind was all that was looked at
-        if size < 0:  # a folder's listing
+        if size < 0:
+            if content is None:
+                return True  # a probe: the kind was all that was looked at
+            # a folder's listing
             if mtime_ns > 0 and status.st_mtime_ns == mtime_ns:
                 return True
             try:
-                return _listing_now(path) == content
+                return _listing_now(path, content.startswith(EVERY_FILE)) == content
             except OSError:
                 return False
         if status.st_size != size:
