@@ -40,7 +40,7 @@ from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.workspace.discovery import InputFile
 
-CACHE_FOLDER = ".launch-linter-cache"
+CACHE_FOLDER = reads.CACHE_FOLDER
 FORMAT = "launch-linter-cache/1"
 MAX_CACHE_BYTES = 64 * 1024 * 1024
 """Largest cache file read or written; a larger one is left alone and not written."""

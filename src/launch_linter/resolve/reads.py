@@ -174,10 +174,14 @@ come and go without changing what a listing stamp says."""
 
 EVERY_FILE = "*"
 """What the digest of a listing of every file starts with."""
+CACHE_FOLDER = ".launch-linter-cache"
+UNLISTED = frozenset((CACHE_FOLDER,))
+"""Left out of every listing: the results cache's own folder, which the first run creates
+after it walked the folders (a hidden folder: discovery and the crawl never enter it)."""
 
 
 def listing_digest(folders: Iterable[str], files: Iterable[str], every: bool = False) -> str:
-    entries = sorted([*(f"d{name}" for name in folders),
+    entries = sorted([*(f"d{name}" for name in folders if name not in UNLISTED),
                       *(f"f{name}" for name in files if every or name in LISTED_FILES)])
     found = digest("\0".join(entries).encode("utf-8", "surrogateescape"))
     return EVERY_FILE + found if every else found
