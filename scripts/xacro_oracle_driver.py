@@ -1,9 +1,11 @@
 """Run the real xacro (PyPI ``xacro``, a development-only oracle) on one description and
 print its joints as JSON: ``[{"name", "type", "parent", "child", "xyz", "rpy"}, ...]``.
 
-Usage: ``python scripts/xacro_oracle_driver.py FILE PACKAGES_JSON [name:=value ...]``
+Usage: ``python scripts/xacro_oracle_driver.py FILE PACKAGES_JSON [name:=value ...] [--urdf]``
 where PACKAGES_JSON maps package names to folders (``$(find)`` reads nothing else). It runs
 in its own process because xacro keeps global state. The linter never imports xacro.
+With ``--urdf`` it prints the expanded document itself (for ``check_urdf``), or nothing
+(and xacro's refusal on standard error) when xacro refuses it.
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ def main() -> int:
     from xacro import substitution_args
 
     path, packages_json, *words = sys.argv[1:]
+    as_urdf = "--urdf" in words
+    words = [word for word in words if word != "--urdf"]
     packages = json.loads(packages_json)
 
     def find(package: str) -> str:
@@ -29,7 +33,12 @@ def main() -> int:
     try:
         document = xacro.process_file(path, mappings=mappings)
     except Exception as exc:  # the oracle's refusal is an answer too
-        print(json.dumps({"error": f"{type(exc).__name__}: {exc}"}))
+        refusal = f"{type(exc).__name__}: {exc}"
+        print(refusal if as_urdf else json.dumps({"error": refusal}),
+              file=sys.stderr if as_urdf else sys.stdout)
+        return 0
+    if as_urdf:
+        print(document.toprettyxml(indent="  "))
         return 0
     joints = []
     robot = document.documentElement

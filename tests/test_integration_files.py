@@ -15,10 +15,25 @@ yaml = pytest.importorskip("yaml")
 ROOT = Path(__file__).resolve().parent.parent
 
 
+def hooks() -> dict[str, dict[str, object]]:
+    listed = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
+    return {str(h["id"]): h for h in listed}
+
+
 def hook() -> dict[str, object]:
-    (only,) = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
-    assert isinstance(only, dict)
-    return only
+    return hooks()["launch-linter"]
+
+
+def test_robot_hook_lints_the_repository_when_a_description_changes() -> None:
+    robot = hooks()["launch-linter-robot"]
+    assert robot["entry"] == "launch-linter check" and robot["pass_filenames"] is False
+    pattern = re.compile(str(robot["files"]))
+    for name in ("urdf/robot.urdf", "urdf/robot.urdf.xacro", "urdf/arm.xacro"):
+        assert pattern.search(name), name
+    for name in ("launch/robot.launch", "urdf/robot.urdf.bak", "xacro.py"):
+        assert not pattern.search(name), name
+    guide = (ROOT / "docs" / "integration.md").read_text()
+    assert "id: launch-linter-robot" in guide
 
 
 def test_hook_runs_check() -> None:

@@ -109,7 +109,7 @@ def edit(path: Path, old: str, new: str) -> None:
     path.write_text(path.read_text(encoding="utf-8").replace(old, new), encoding="utf-8")
 
 
-ROOTS = ["a.launch", "b.launch", "c.launch", "inc.launch"]
+ROOTS = ["a.launch", "b.launch", "c.launch", "inc.launch", "parts.xacro", "robot.urdf.xacro"]
 
 
 def test_a_second_run_reuses_every_root(workspace: Path) -> None:
@@ -162,7 +162,15 @@ def test_a_settled_file_is_trusted_by_its_time_and_size(workspace: Path) -> None
 def test_a_xacro_include_relints_its_description(workspace: Path) -> None:
     relinted(workspace)
     edit(workspace / "src/pkg/urdf/parts.xacro", 'name="arm"/>', 'name="arm2"/>')
-    assert relinted(workspace) == ["c.launch"]
+    # The launch file that expands it; and each description, linted on its own, depends
+    # on the files of its package that include it.
+    assert relinted(workspace) == ["c.launch", "parts.xacro", "robot.urdf.xacro"]
+
+
+def test_a_description_added_to_a_package_relints_its_descriptions(workspace: Path) -> None:
+    relinted(workspace)
+    (workspace / "src/pkg/urdf/other.urdf").write_text("<robot name='o'><link name='x'/></robot>")
+    assert relinted(workspace) == ["other.urdf", "parts.xacro", "robot.urdf.xacro"]
 
 
 def test_a_parameter_file_that_appears_or_goes(workspace: Path) -> None:
@@ -217,7 +225,7 @@ def test_a_cache_that_cannot_be_written_is_silently_skipped(workspace: Path) -> 
     blocker = workspace / "file"
     blocker.write_text("")
     result, cache = lint(workspace, blocker / "cache")
-    assert cache is not None and len(cache.missed) == 4
+    assert cache is not None and len(cache.missed) == len(ROOTS)
     assert result == lint(workspace, None)[0]
     assert not (blocker / "cache").exists()
 
@@ -320,4 +328,14 @@ def test_the_folder_walk_is_reused_until_a_folder_or_ignore_file_changes(
     (workspace / ".gitignore").write_text("new.launch\n")
     assert checked(capsys) == sorted([*ROOTS, "robot.xml"])
     (workspace / "src/pkg/launch/b.launch").unlink()
-    assert checked(capsys) == sorted(["a.launch", "c.launch", "inc.launch", "robot.xml"])
+    assert checked(capsys) == sorted([*(r for r in ROOTS if r != "b.launch"), "robot.xml"])
+
+
+def test_a_result_resting_on_unsaved_text_is_not_kept(tmp_path: Path) -> None:
+    from launch_linter.resolve.xml_safe import read_launch_bytes, unsaved_texts
+
+    target = tmp_path / "a.launch"
+    target.write_text("<launch/>")
+    with unsaved_texts({str(target): b"<launch></launch>"}), reads.recording() as log:
+        assert read_launch_bytes(str(target)) == b"<launch></launch>"
+    assert log.is_unstable()

@@ -25,6 +25,7 @@ _EDGE_PACKAGES = (
     "launch_linter.generate",
     "launch_linter.evaluation",
     "launch_linter.graph",
+    "launch_linter.server",
 )
 
 
@@ -36,11 +37,12 @@ def _edge_commands() -> list[ModuleType]:
         from launch_linter.generate import commands as generate
         from launch_linter.graph import commands as graph
         from launch_linter.mining import commands as mine
+        from launch_linter.server import commands as server
     except ModuleNotFoundError as exc:
         if exc.name is None or not exc.name.startswith(_EDGE_PACKAGES):
             raise
         return []
-    return [mine, generate, evaluate, graph]
+    return [mine, generate, evaluate, graph, server]
 
 
 def _core_commands() -> list[ModuleType]:

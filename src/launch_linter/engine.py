@@ -6,11 +6,8 @@ import contextlib
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Dict, Optional, Tuple
+from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
-from launch_linter.frontends.dispatch import load_tree
-from launch_linter.frontends.robot.describe import RobotCache
-from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
@@ -40,6 +37,12 @@ from launch_linter.workspace.packages import (
     nearest_package_xml,
     package_ros_version,
 )
+
+if TYPE_CHECKING:
+    # Imported where a file is linted (``_front_ends``): a run whose results are all in
+    # the results cache reads no launch file, and the front-ends are a fifth of start-up.
+    from launch_linter.frontends.robot.describe import RobotCache
+    from launch_linter.frontends.ros1 import LoadOptions
 
 __all__ = [
     "AUTO_JOBS",
@@ -170,6 +173,8 @@ def load_options_for(
         index = reads.remembered(
             cache, ("", os.path.dirname(path)),
             lambda: _package_index(tuple(default_package_roots(path)), cache))
+    from launch_linter.frontends.ros1 import LoadOptions
+
     return LoadOptions(
         args=options.args,
         env=options.env,
@@ -274,6 +279,8 @@ def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
               cache: Packages, robots: RobotCache | None = None,
               versions: Versions | None = None) -> Linted:
     """One file, isolated: an unexpected exception costs this file only."""
+    from launch_linter.frontends.dispatch import load_tree
+
     try:
         tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
         return tree, _file_record(item, tree), check_tree(tree, rules, options)
@@ -304,6 +311,8 @@ def _lint_chunk(
     """Lint ``items``; with ``record``, each with the log of what linting it read."""
     rules = selected_rules(options)
     # One cache per chunk: a description included by many launch files is expanded once.
+    from launch_linter.frontends.robot.describe import RobotCache
+
     robots = RobotCache()
     versions: Versions = {}
     out: list[Recorded] = []
@@ -454,7 +463,8 @@ def lint_files(
 def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
     """The findings of every file, each once: a file linted on its own and also included
     by another input is reported once (the same place, rule and message found from two
-    roots, or under two spellings of its path, is one finding)."""
+    roots, or under two spellings of its path, is one finding, at the highest level any
+    root gives it: a xacro file linted alone and loaded by a launch file)."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
     for diagnostics_of_file in found:
@@ -463,7 +473,9 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
             key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
-            diagnostics.setdefault(key, diagnostic)
+            known = diagnostics.setdefault(key, diagnostic)
+            if diagnostic.severity.rank > known.severity.rank:
+                diagnostics[key] = diagnostic
     return list(diagnostics.values())
 
 
@@ -496,6 +508,8 @@ def lint_text(
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
     load = load_options_for(item, options, {})
+    from launch_linter.frontends.dispatch import load_tree
+
     tree = load_tree(item.path, load, text.encode("utf-8"))
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(

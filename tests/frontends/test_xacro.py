@@ -123,7 +123,12 @@ def test_variant_b_escape_keeps_literal_text() -> None:
 ])
 def test_xacro_commands(command: str, file: str, args: object) -> None:
     parsed = xacro_command([(w, True) for w in command.split()])
-    assert parsed == (file, args, None)
+    assert parsed == (file, args, None, False)
+
+
+def test_an_unresolved_word_after_the_file_may_give_more_args() -> None:
+    words = [("xacro", True), ("robot.xacro", True), ("a:=1", True), ("$(var extra)", False)]
+    assert xacro_command(words) == ("robot.xacro", (("a", "1"),), None, True)
 
 
 def test_not_xacro() -> None:

@@ -161,3 +161,22 @@ def test_a_foreign_database_is_refused(tmp_path: Path, capsys: pytest.CaptureFix
                                                  str(tmp_path / "out")]):
         assert main(argv) == 2
         assert "not a launch-linter database" in capsys.readouterr().err
+
+
+def test_a_huge_broken_robot_is_linted_quickly(tmp_path: Path) -> None:
+    """20,000 joints, each to a missing link, with a rounded π, and 20,000 root links: the
+    URDF structure rules stay linear (the old pass over every link per missing link, or
+    over every edge per rounded angle, took minutes)."""
+    import time
+
+    count = 20_000
+    links = "".join(f'<link name="l{i}"/>' for i in range(count))
+    joints = "".join(f'<joint name="j{i}" type="fixed"><origin rpy="1.57 0 0"/>'
+                     f'<parent link="l{i}"/><child link="m{i}"/></joint>' for i in range(count))
+    path = tmp_path / "huge.urdf"
+    path.write_text(f'<robot name="huge">{links}{joints}</robot>', encoding="utf-8")
+    started = time.process_time()
+    result = engine.lint_paths([str(path)], engine.LintOptions(package_paths=()))
+    assert time.process_time() - started < 60
+    rules = {d.rule for d in result.diagnostics}
+    assert {"urdf_missing_link", "rounded_pi"} <= rules

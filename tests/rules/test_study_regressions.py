@@ -50,6 +50,8 @@ def test_fig_4b_duplicated_name_missing_integer_suffix() -> None:
         ("bad_arity", 2): 1,  # pkg tf without a period: tf prints its usage and exits
         ("dup_name", 3): 1,
         ("int_suffix", 4): 1,
+        # -1.57 is π/2 rounded (info: the wheels are no sensor frames).
+        ("rounded_pi", 2): 1, ("rounded_pi", 3): 1, ("rounded_pi", 4): 1,
     })
 
 

@@ -27,7 +27,9 @@ from launch_linter.workspace.config import Config
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     check = subparsers.add_parser("check", help="lint launch files")
     add_resolution_options(check)
-    check.add_argument("--format", choices=("text", "json", "sarif", "github"), default=None)
+    check.add_argument(
+        "--format", choices=("text", "json", "sarif", "github", "junit", "gitlab"), default=None
+    )
     check.add_argument(
         "--select",
         action="append",
@@ -104,7 +106,7 @@ def _use_colour(choice: str) -> bool:
 
 
 def _report(
-    ns: argparse.Namespace, result: LintResult, options: LintOptions
+    ns: argparse.Namespace, result: LintResult, options: LintOptions, config: Config | None
 ) -> str | Iterator[str]:
     """The report in the chosen format (statistics instead of findings if asked); JSON in
     pieces, so that a large run never holds its whole text."""
@@ -117,6 +119,12 @@ def _report(
         from launch_linter.report import formats
 
         return formats.render(fmt, result, options.beliefs, __version__)
+    if fmt in ("junit", "gitlab"):
+        from launch_linter.report import ci_formats
+
+        if fmt == "gitlab":
+            return ci_formats.gitlab(result.diagnostics)
+        return ci_formats.junit(result, Severity(_fail_on(ns, config)))
     colour = _use_colour(ns.color) and not ns.output_file
     return text.format_diagnostics(result.diagnostics, colour)
 
@@ -196,11 +204,14 @@ def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
     return _status(ns, result, None)
 
 
+def _fail_on(ns: argparse.Namespace, config: Config | None) -> str:
+    return str(ns.fail_on or (config.fail_on if config is not None else None) or "warning")
+
+
 def _status(ns: argparse.Namespace, result: LintResult, config: Config | None) -> int:
     if ns.exit_zero:
         return EXIT_OK
-    fail_on = ns.fail_on or (config.fail_on if config is not None else None) or "warning"
-    return _exit_status(result, fail_on)
+    return _exit_status(result, _fail_on(ns, config))
 
 
 def run(ns: argparse.Namespace) -> int:
@@ -225,7 +236,7 @@ def run(ns: argparse.Namespace) -> int:
     finally:
         if cache is not None:
             cache.save()
-    _write_output(ns, _report(ns, result, options))
+    _write_output(ns, _report(ns, result, options, config))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")
     return _status(ns, result, config)

@@ -13,9 +13,11 @@ from __future__ import annotations
 import re
 
 from launch_linter.frontends.robot.describe import attach_robot
+from launch_linter.frontends.robot.standalone import load_description
 from launch_linter.frontends.ros1 import LoadOptions, load_ros1
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.xml_safe import read_launch_bytes
+from launch_linter.workspace.discovery import is_description_name
 
 # What only ROS 2 launch XML has. Every file is tested, so the tests are ordered by cost:
 # one pattern for the tags only ROS 2 has and one for its substitutions (a regular
@@ -86,6 +88,9 @@ def front_end(path: str, data: bytes | None, ros_version: int | None = None) -> 
 
 def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> LaunchTree:
     """Read the launch tree rooted at ``path`` with the front-end its format needs."""
+    if is_description_name(path):
+        return load_description(path, options.args, options.packages, options.robots,
+                                options.display_path, options.env, data)
     if data is None and not path.lower().endswith((".py", ".yaml", ".yml")):
         try:
             data = read_launch_bytes(path)

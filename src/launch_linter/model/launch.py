@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 from launch_linter.model.diagnostic import Problem
-from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
+from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint, RobotModel
 from launch_linter.model.transform import StaticTransform
 
 
@@ -71,3 +71,6 @@ class LaunchTree:
     """Launched nodes that tf rules need (robot_state_publisher, localization, odometry)."""
     joints: tuple[RobotJoint, ...] = ()
     """URDF joints of the descriptions a robot_state_publisher of the tree publishes."""
+    robots: tuple[RobotModel, ...] = ()
+    """The expanded descriptions themselves (links, joints, xacro faults), one per source
+    that a robot_state_publisher of the tree publishes, for the URDF structure rules."""

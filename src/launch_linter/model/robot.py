@@ -42,6 +42,8 @@ class DescriptionSource:
     node: str | None = None
     text: str | None = None
     reason: str | None = None
+    open_args: bool = False
+    """True when a word of the xacro call is unresolved and may give more args."""
 
 
 @dataclass(frozen=True)
@@ -99,3 +101,69 @@ class NodeRecord:
             if key == name or key.endswith("/" + name):
                 return value
         return None
+
+
+@dataclass(frozen=True)
+class RobotElement:
+    """A ``<link>`` or ``<joint>`` of an expanded description, by name, where it was written.
+
+    ``name`` is None when the name could not be known; ``condition`` is the launch element's
+    condition and the undecided ``xacro:if``/``xacro:unless`` around the element."""
+
+    kind: str
+    """``link`` or ``joint``."""
+    name: str | None
+    path: str
+    line: int
+    column: int
+    condition: Condition = field(default_factory=Condition)
+
+
+class FaultKind(str, Enum):
+    """What xacro itself does with a fault of the description's source."""
+
+    REFUSED = "refused"
+    """xacro stops with an error: an undefined macro, a missing macro parameter, an
+    undeclared ``$(arg)``, a block the call does not match."""
+    DROPPED = "dropped"
+    """xacro goes on and drops content silently: a block parameter the macro never inserts."""
+
+
+@dataclass(frozen=True)
+class DescriptionFault:
+    """A fault of the xacro source that xacro itself refuses or silently drops.
+
+    ``proven`` is false when an earlier element could not be followed (an include not
+    read, an unsupported directive), so that what looks missing may be defined there;
+    ``conditions`` are the undecided ``xacro:if``/``xacro:unless`` texts around it."""
+
+    path: str
+    line: int
+    kind: FaultKind
+    message: str
+    proven: bool = True
+    conditions: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class RobotModel:
+    """One expanded description as robot_state_publisher (urdfdom, then KDL) reads it.
+
+    ``complete`` is true when nothing of it is unknown: the expansion followed every
+    element and every link name and joint end is known, so that what is absent is proven
+    absent. ``standalone`` is true for a ``.urdf``/``.xacro`` file linted as an input of
+    its own (no launch file loads it in that tree)."""
+
+    source: DescriptionSource
+    elements: tuple[RobotElement, ...]
+    joints: tuple[RobotJoint, ...]
+    complete: bool
+    faults: tuple[DescriptionFault, ...] = ()
+    defines_macros: bool = False
+    """Whether the description's files define xacro macros (an empty robot made of a
+    macros-only file)."""
+    standalone: bool = False
+
+    @property
+    def links(self) -> tuple[RobotElement, ...]:
+        return tuple(e for e in self.elements if e.kind == "link")

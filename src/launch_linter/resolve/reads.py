@@ -148,46 +148,74 @@ def _vouching_mtime(mtime_ns: int) -> int:
     return mtime_ns if time.time_ns() - mtime_ns >= SETTLE_NS else 0
 
 
+def note_unsaved() -> None:
+    """Text that is not on disk (an editor's unsaved buffer) stood in for a file."""
+    if _active:
+        _active[-1].unstable = True
+
+
 def note_path(path: str) -> None:
     """The kind of ``path`` (or its absence) decided something."""
     if _active:
         _active[-1].add(path, (_kind_now(path), -1, -1, None))
 
 
-def note_folder(path: str, status: os.stat_result, folders: Iterable[str],
-                files: Iterable[str], every: bool = False) -> None:
-    """The listing of the folder ``path`` (whose ``os.stat`` is ``status``; ``folders``
-    and ``files`` its entries, as ``os.walk`` sorts them) decided something: its
-    subfolders and which of the ``LISTED_FILES`` it holds (with ``every``, every file's
-    name: discovery). An entry added or removed changes the folder's modification time;
-    only these change the listing's digest."""
-    if _active:
-        _active[-1].add(path, (FOLDER, -1, _vouching_mtime(status.st_mtime_ns),
-                               listing_digest(folders, files, every)))
-
-
-LISTED_FILES = frozenset(("package.xml", "manifest.xml", "CATKIN_IGNORE", "COLCON_IGNORE",
-                          "AMENT_IGNORE", "rospack_nosubdirs"))
-"""The files whose presence in a folder a crawl of packages acts on; any other file can
-come and go without changing what a listing stamp says."""
-
-
+PACKAGE_LISTING = "=" + ",".join(sorted((
+    "package.xml", "manifest.xml", "CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE",
+    "rospack_nosubdirs")))
+"""A listing that counts the files whose presence a crawl of packages acts on; any other
+file can come and go without changing the stamp."""
 EVERY_FILE = "*"
-"""What the digest of a listing of every file starts with."""
+"""A listing that counts every file (discovery)."""
+
+
+def suffix_listing(suffixes: Iterable[str]) -> str:
+    """A listing that counts the files whose names end (in lower case) with a suffix."""
+    return "~" + ",".join(suffixes)
+
+
 CACHE_FOLDER = ".launch-linter-cache"
 UNLISTED = frozenset((CACHE_FOLDER,))
 """Left out of every listing: the results cache's own folder, which the first run creates
 after it walked the folders (a hidden folder: discovery and the crawl never enter it)."""
 
 
-def listing_digest(folders: Iterable[str], files: Iterable[str], every: bool = False) -> str:
+def note_folder(path: str, status: os.stat_result, folders: Iterable[str],
+                files: Iterable[str], listing: str = PACKAGE_LISTING) -> None:
+    """The listing of the folder ``path`` (whose ``os.stat`` is ``status``; ``folders``
+    and ``files`` its entries, as ``os.walk`` gives them) decided something: its
+    subfolders and the files that ``listing`` counts (``PACKAGE_LISTING``, the files a
+    package crawl acts on; ``EVERY_FILE``; ``suffix_listing(...)``). An entry added or
+    removed changes the folder's modification time; only those counted change the
+    listing's digest."""
+    if _active:
+        _active[-1].add(path, (FOLDER, -1, _vouching_mtime(status.st_mtime_ns),
+                               listing_digest(folders, files, listing)))
+
+
+def _counted(listing: str) -> Callable[[str], bool]:
+    """Which file names ``listing`` counts. It is written in the cache, which is
+    untrusted: anything but the three forms counts nothing (and the stamp then fails)."""
+    kind, items = listing[:1], tuple(listing[1:].split(","))
+    if kind == "*" and not listing[1:]:
+        return lambda name: True
+    if kind == "=":
+        return frozenset(items).__contains__
+    if kind == "~":
+        return lambda name: name.lower().endswith(items)
+    raise ValueError(f"unknown listing {listing[:40]!r}")
+
+
+def listing_digest(folders: Iterable[str], files: Iterable[str], listing: str) -> str:
+    """``listing``, ``|`` and the digest of the subfolders and counted files."""
+    counted = _counted(listing)
     entries = sorted([*(f"d{name}" for name in folders if name not in UNLISTED),
-                      *(f"f{name}" for name in files if every or name in LISTED_FILES)])
+                      *(f"f{name}" for name in files if counted(name))])
     found = digest("\0".join(entries).encode("utf-8", "surrogateescape"))
-    return EVERY_FILE + found if every else found
+    return f"{listing}|{found}"
 
 
-def _listing_now(path: str, every: bool) -> str:
+def _listing_now(path: str, listing: str) -> str:
     """:func:`listing_digest` of the folder ``path`` as ``os.walk`` would list it now."""
     folders: list[str] = []
     files: list[str] = []
@@ -198,7 +226,7 @@ def _listing_now(path: str, every: bool) -> str:
             except OSError:
                 is_folder = False
             (folders if is_folder else files).append(entry.name)
-    return listing_digest(folders, files, every)
+    return listing_digest(folders, files, listing)
 
 
 def _kind_now(path: str) -> str:
@@ -277,8 +305,8 @@ class Freshness:
             if mtime_ns > 0 and status.st_mtime_ns == mtime_ns:
                 return True
             try:
-                return _listing_now(path, content.startswith(EVERY_FILE)) == content
-            except OSError:
+                return _listing_now(path, content.rpartition("|")[0]) == content
+            except (OSError, ValueError):
                 return False
         if status.st_size != size:
             return False

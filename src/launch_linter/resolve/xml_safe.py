@@ -14,7 +14,8 @@ from __future__ import annotations
 import os
 import re
 import stat
-from collections.abc import Collection
+from collections.abc import Collection, Iterator, Mapping
+from contextlib import contextmanager
 from typing import BinaryIO
 from xml.parsers import expat
 
@@ -32,9 +33,30 @@ _HANDLERS = ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
              "AttlistDeclHandler")
 
 
+_UNSAVED: dict[str, bytes] = {}
+"""Real path -> the text an editor holds for that file, unsaved (see :func:`unsaved_texts`)."""
+
+
+@contextmanager
+def unsaved_texts(texts: Mapping[str, bytes]) -> Iterator[None]:
+    """While the block runs, reads of launch, URDF and xacro files named in ``texts`` get
+    the given bytes instead of the file's: the language server lints an entry point with
+    the unsaved text of a file it includes or loads. Not for concurrent use."""
+    _UNSAVED.update({os.path.realpath(path): data for path, data in texts.items()})
+    try:
+        yield
+    finally:
+        _UNSAVED.clear()
+
+
 def read_launch_bytes(path: str) -> bytes:
     """A launch file's bytes, one byte past the size limit at most (so that an oversized
     file is reported as such without being read whole)."""
+    if _UNSAVED:
+        held = _UNSAVED.get(os.path.realpath(path))
+        if held is not None:
+            reads.note_unsaved()  # a result that rests on no file's content is not kept
+            return held[: MAX_BYTES + 1]
     return read_regular_file(path, MAX_BYTES + 1)
 
 

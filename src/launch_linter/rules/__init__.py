@@ -30,6 +30,7 @@ from launch_linter.rules import (
     ros2_schema,
     roslaunch_error,
     rot_degrees,
+    rounded_pi,
     self_transform,
     sensor_null,
     sig_implication,
@@ -38,6 +39,12 @@ from launch_linter.rules import (
     tf_cycle,
     unresolved,
     unused_suppression,
+    urdf_duplicate_name,
+    urdf_empty_robot,
+    urdf_missing_link,
+    urdf_root,
+    xacro_error,
+    xacro_unused_block,
 )
 from launch_linter.rules._api import Rule, RuleContext, rule_from_module
 
@@ -77,6 +84,13 @@ RULE_MODULES = (
     rep105_order,
     quaternion_order,
     ros2_schema,
+    urdf_root,
+    urdf_duplicate_name,
+    urdf_missing_link,
+    urdf_empty_robot,
+    xacro_error,
+    xacro_unused_block,
+    rounded_pi,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

@@ -3,7 +3,8 @@
 A folder is walked for every launch file ROS 1 and ROS 2 name that way (``*.launch``,
 ``*.launch.xml``, ``*_launch.xml``, ``*.launch.py``, ``*_launch.py``, ``*.launch.yaml``,
 ``*.launch.yml``, ``*_launch.yaml``, ``*_launch.yml``) and for ``*.xml`` files whose root
-element is ``<launch>``. It skips version-control folders and the other default
+element is ``<launch>``, and for robot descriptions (``*.urdf``, ``*.xacro``), which are
+checked as ``check_urdf`` reads them. It skips version-control folders and the other default
 exclusions (replaced by ``exclude``, extended by ``extend_exclude``, ruff's convention),
 the ``build/``, ``install/``, ``log/`` and ``devel/`` folders of catkin and colcon
 workspaces (only where they are workspace folders: beside a ``src/`` folder, or marked
@@ -187,6 +188,17 @@ def _compiled(
     return found
 
 
+DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
+"""Robot descriptions, linted on their own (``.urdf.xacro`` ends with ``.xacro``)."""
+NOT_DESCRIPTION_SUFFIXES = (".srdf.xacro",)
+"""MoveIt's semantic descriptions: their root is ``<robot>`` too, but they hold no links."""
+
+
+def is_description_name(name: str) -> bool:
+    lower = name.lower()
+    return lower.endswith(DESCRIPTION_SUFFIXES) and not lower.endswith(NOT_DESCRIPTION_SUFFIXES)
+
+
 def discover(
     paths: Sequence[str],
     exclusions: Exclusions | None = None,
@@ -224,7 +236,7 @@ def discover(
                 continue
             visited.add((info.st_dev, info.st_ino))
             # A file or folder added or removed here changes what is found.
-            reads.note_folder(directory, info, subdirs, files, every=True)
+            reads.note_folder(directory, info, subdirs, files, reads.EVERY_FILE)
             # Entries are plain names: joined to the absolute folder, made once, they are
             # the absolute paths os.path.abspath would make of each (a getcwd apiece).
             absolute_dir = os.path.abspath(directory)
@@ -236,10 +248,11 @@ def discover(
             )
             for name in sorted(files):
                 full = os.path.join(directory, name)
-                if not (is_launch_name(name) or name.endswith(CONTENT_SUFFIXES)):
+                described = is_description_name(name)
+                if not (is_launch_name(name) or name.endswith(CONTENT_SUFFIXES) or described):
                     continue
                 if skip(os.path.join(absolute_dir, name), False):
                     continue
-                if is_launch_name(name) or has_launch_content(full, name):
+                if is_launch_name(name) or described or has_launch_content(full, name):
                     add(full)
     return found

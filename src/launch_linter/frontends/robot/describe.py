@@ -14,14 +14,24 @@ import typing
 from collections.abc import Callable, Hashable, Sequence
 from dataclasses import replace
 
+from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
-from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord, RobotJoint
+from launch_linter.model.robot import (
+    DescriptionFault,
+    DescriptionKind,
+    DescriptionSource,
+    FaultKind,
+    NodeRecord,
+    RobotJoint,
+    RobotModel,
+)
 from launch_linter.resolve import reads
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
     from launch_linter.frontends.robot.xacro import Expansion
+    from launch_linter.frontends.robot.xacro_values import XacroProblem
 
 RSP_PACKAGE = "robot_state_publisher"
 _XACRO_NAMED = re.compile(r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]""")
@@ -37,6 +47,9 @@ class RobotCache:
 
     def __init__(self) -> None:
         self._expansions: dict[Hashable, tuple[Expansion, reads.ReadLog]] = {}
+        self.included: dict[Hashable, tuple[frozenset[str], reads.ReadLog]] = {}
+        """Package folder -> the description file names its descriptions include (with
+        what scanning them read: ``reads.remembered``)."""
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str]) -> Expansion:
@@ -58,14 +71,15 @@ class RobotCache:
 
 XacroCall = typing.Tuple[
     typing.Optional[str], typing.Tuple[typing.Tuple[str, typing.Optional[str]], ...],
-    typing.Optional[str],
+    typing.Optional[str], bool,
 ]
 
 
 def xacro_command(words: Sequence[Word]) -> XacroCall | None:
-    """``(file, args, reason)`` when ``words`` run xacro (``xacro``, ``xacro.py``,
-    ``$(find xacro)/xacro``, ``rosrun xacro xacro``, ``--inorder`` and other options
-    skipped); None when the command is not xacro. ``file`` is None when unresolved."""
+    """``(file, args, reason, open_args)`` when ``words`` run xacro (``xacro``,
+    ``xacro.py``, ``$(find xacro)/xacro``, ``rosrun xacro xacro``, ``--inorder`` and other
+    options skipped); None when the command is not xacro. ``file`` is None when
+    unresolved; ``open_args`` is true when an unresolved word may give more args."""
     start = None
     for index, (text, resolved) in enumerate(words[:4]):
         base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
@@ -82,6 +96,7 @@ def xacro_command(words: Sequence[Word]) -> XacroCall | None:
     reason: str | None = None
     seen_file = False
     args: list[tuple[str, str | None]] = []
+    open_args = False
     skip = False
     for text, resolved in words[start:]:
         if skip:
@@ -96,6 +111,8 @@ def xacro_command(words: Sequence[Word]) -> XacroCall | None:
             name, _, value = text.partition(":=")
             args.append((name, value if resolved else None))
             continue
+        if seen_file and not resolved:
+            open_args = True
         if not seen_file:
             seen_file = True
             if resolved:
@@ -104,7 +121,7 @@ def xacro_command(words: Sequence[Word]) -> XacroCall | None:
                 reason = f"the description file {text!r} is not resolved"
     if not seen_file:
         reason = "the xacro command names no file"
-    return file, tuple(args), reason
+    return file, tuple(args), reason, open_args
 
 
 def literal_kind(text: str) -> bool:
@@ -122,42 +139,100 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     publishes = any(node.package == RSP_PACKAGE for node in tree.nodes)
     if not publishes:
         return tree
-    # Imported here, as xacro is in RobotCache: only trees that publish a robot need it.
-    from launch_linter.frontends.robot.urdf import joints_of, literal_root
-
     cache = cache if cache is not None else RobotCache()
     joints: list[RobotJoint] = []
+    robots: list[RobotModel] = []
     problems_found: list[Problem] = []
     for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
-        if source.kind is DescriptionKind.LITERAL:
-            root, problems = literal_root(source.text or "", source.path, source.line)
-        elif source.file is None:
+        if source.file is None and source.kind is not DescriptionKind.LITERAL:
             problems_found.append(_unresolved(source, f"robot description not read: "
                                            f"{source.reason or 'unknown file'}"))
             continue
-        else:
-            args = source.args if source.kind is DescriptionKind.XACRO else ()
-            expansion = cache.expansion(os.path.abspath(source.file), args, packages, env)
-            root, problems = expansion.root, expansion.problems
-        for problem in problems[:20]:
+        robot, unresolved = read_description(source, packages, cache, display, env)
+        problems_found.extend(unresolved)
+        if robot is not None:
+            joints.extend(robot.joints)
+            robots.append(robot)
+    return replace(tree, joints=tuple(joints), robots=tuple(robots),
+                   problems=tree.problems + tuple(problems_found))
+
+
+def read_description(source: DescriptionSource, packages: PackageIndex, cache: RobotCache,
+                     display: Callable[[str], str], env: dict[str, str],
+                     standalone: bool = False) -> tuple[RobotModel | None, list[Problem]]:
+    """The expanded description ``source`` gives (None when it cannot be read), and an
+    ``unresolved`` diagnostic per problem of the expansion that is not a fault of its own."""
+    # Imported here, as xacro is in RobotCache: only trees that publish a robot need it.
+    from launch_linter.frontends.robot.urdf import elements_of, joints_of, literal_root
+
+    problems_found: list[Problem] = []
+    defines_macros = False
+    if source.kind is DescriptionKind.LITERAL or source.file is None:
+        root, problems = literal_root(source.text or "", source.path, source.line,
+                                      own_lines=standalone)
+    elif source.text is not None:
+        # A description linted as text (``lint_text``): expanded, not kept in the cache.
+        from launch_linter.frontends.robot.xacro import expand
+
+        expansion = expand(source.file, dict(source.args), packages.find, env,
+                           source.text.encode("utf-8"))
+        root, problems = expansion.root, expansion.problems
+        defines_macros = expansion.defines_macros
+    else:
+        args = source.args if source.kind is DescriptionKind.XACRO else ()
+        expansion = cache.expansion(os.path.abspath(source.file), args, packages, env)
+        root, problems = expansion.root, expansion.problems
+        defines_macros = expansion.defines_macros
+    faults = _faults(problems, source, display)
+    proven = {(f.path, f.line, f.message) for f in faults if f.proven}
+    followed_up = [p for p in problems
+                   if (display(p.path), p.line, p.message) not in proven]
+    for problem in followed_up[:20]:
             where = display(problem.path)
             problems_found.append(Problem(
                 "unresolved", source.path, source.line, source.column,
                 f"robot description {where}:{problem.line}: {problem.message}"
                 + ("; its joints are not read" if problem.fatal else ""),
             ))
-        if root is not None:
-            found = joints_of(root, source, display, source.condition)
-            joints.extend(found)
-            unknown = [j for j in found if j.reasons]
-            for joint in unknown[:20]:
-                problems_found.append(Problem(
-                    "unresolved", joint.path, joint.line, joint.column,
-                    f"URDF joint '{joint.name}' (robot_description at {source.path}:"
-                    f"{source.line}): {', '.join(joint.unresolved)} not known: "
-                    f"{'; '.join(joint.reasons)[:300]}",
-                ))
-    return replace(tree, joints=tuple(joints), problems=tree.problems + tuple(problems_found))
+    if root is None:
+        return None, problems_found
+    found = joints_of(root, source, display, source.condition)
+    unknown = [j for j in found if j.reasons]
+    for joint in unknown[:20]:
+        problems_found.append(Problem(
+            "unresolved", joint.path, joint.line, joint.column,
+            f"URDF joint '{joint.name}' (robot_description at {source.path}:"
+            f"{source.line}): {', '.join(joint.unresolved)} not known: "
+            f"{'; '.join(joint.reasons)[:300]}",
+        ))
+    elements, names_known = elements_of(root, display, source.condition)
+    followed = all(p.kind in (KEPT, DROPPED) for p in problems)
+    robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
+                       faults, defines_macros, standalone)
+    return robot, problems_found
+
+
+_FAULT_KINDS = (REFUSED, DROPPED)
+
+
+def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
+            display: Callable[[str], str]) -> tuple[DescriptionFault, ...]:
+    """The problems that are faults of the source itself (xacro refuses or drops), each
+    proven unless something before it was not followed (an include not read, an
+    unsupported directive: what looks undefined may be defined there)."""
+    out: list[DescriptionFault] = []
+    followed = True
+    for problem in problems:
+        if problem.kind in _FAULT_KINDS:
+            # A block never inserted is read from the macro alone: nothing hides it.
+            proven = problem.kind == DROPPED or (
+                followed and not (source.open_args and "$(arg " in problem.message))
+            kind = FaultKind.REFUSED if problem.kind == REFUSED else FaultKind.DROPPED
+            out.append(DescriptionFault(display(problem.path), problem.line, kind,
+                                        problem.message, proven, problem.conditions))
+        # A refusal stops the real xacro; what comes after it is checked as if it did not.
+        followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
+    return tuple(out)
 
 
 def _unresolved(source: DescriptionSource, message: str) -> Problem:

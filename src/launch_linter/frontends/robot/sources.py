@@ -79,9 +79,10 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition,
                                      reason=f"command {text_of(command)!r} is not a xacro call")
-        file, args, reason = parsed
+        file, args, reason, open_args = parsed
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
-                                 _absolute(file, directory), args, condition, reason=reason)
+                                 _absolute(file, directory), args, condition, reason=reason,
+                                 open_args=open_args)
     textfile = values.get("textfile")
     if textfile is not None:
         file = resolved_text(textfile)
@@ -129,9 +130,10 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition, node=node,
                                      reason=f"command {text_of(command)!r} is not a xacro call")
-        file, args, reason = parsed
+        file, args, reason, open_args = parsed
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
-                                 _absolute(file, "/"), args, condition, node, reason=reason)
+                                 _absolute(file, "/"), args, condition, node, reason=reason,
+                                 open_args=open_args)
     text = resolved_text(value)
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,

@@ -7,7 +7,7 @@ import math
 import typing
 
 from launch_linter.frontends.robot.xacro import ExpandedNode, XacroProblem
-from launch_linter.model.robot import DescriptionSource, RobotJoint
+from launch_linter.model.robot import DescriptionSource, RobotElement, RobotJoint
 from launch_linter.model.transform import Condition, ConditionLiteral
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
@@ -92,9 +92,35 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
     return out
 
 
-def literal_root(text: str, path: str, line: int) -> tuple[ExpandedNode | None,
-                                                           list[XacroProblem]]:
-    """A URDF written in a launch file, as an expanded tree (no xacro in it)."""
+def elements_of(root: ExpandedNode, display: Display,
+                outer: Condition) -> tuple[list[RobotElement], bool]:
+    """The links and joints directly under ``<robot>`` by name (as urdfdom reads them),
+    and whether every link name and joint end is known."""
+    out: list[RobotElement] = []
+    known = True
+    if root.tag != "robot":
+        return out, False
+    for element in root.children:
+        if element.tag not in ("link", "joint"):
+            continue
+        name: str | None = element.attrib.get("name")
+        if "name" in element.unknown:
+            name = None
+            known = known and element.tag == "joint"
+        if element.tag == "joint":
+            for end in ("parent", "child"):
+                end_element = _first(element, end)
+                if end_element is not None and "link" in end_element.unknown:
+                    known = False
+        out.append(RobotElement(element.tag, name, display(element.path), element.line,
+                                element.column, outer & _condition(element.conditions)))
+    return out, known
+
+
+def literal_root(text: str, path: str, line: int, own_lines: bool = False
+                 ) -> tuple[ExpandedNode | None, list[XacroProblem]]:
+    """A URDF written in a launch file, as an expanded tree (no xacro in it); with
+    ``own_lines`` the text is the file ``path`` itself and keeps its lines."""
     try:
         document = parse_xml(text.encode("utf-8"))
     except XmlError as exc:
@@ -102,7 +128,8 @@ def literal_root(text: str, path: str, line: int) -> tuple[ExpandedNode | None,
                                                f"well-formed XML: {exc.message}", True)]
 
     def convert(element: Element) -> ExpandedNode:
-        node = ExpandedNode(element.tag, path, line, 1, ())
+        node = (ExpandedNode(element.tag, path, element.line, element.column, ())
+                if own_lines else ExpandedNode(element.tag, path, line, 1, ()))
         node.attrib = dict(element.attrib)
         # Only joints and their direct children matter; deeper levels are not copied.
         if element.tag in ("robot", "joint"):

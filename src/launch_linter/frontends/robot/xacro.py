@@ -22,6 +22,7 @@ and total work end the expansion with a problem, never a hang.
 from __future__ import annotations
 
 import os
+import re
 import typing
 from collections.abc import Callable, Iterator, Mapping
 
@@ -31,12 +32,16 @@ from launch_linter.frontends.robot.xacro_values import (
     _MATH_PREFIX,
     _PREFIX,
     _TOKEN,
+    DROPPED,
+    KEPT,
     MAX_FILES,
     MAX_INCLUDE_DEPTH,
     MAX_MACRO_DEPTH,
     MAX_OUTPUT_ELEMENTS,
     MAX_TEXT,
     MAX_WORK,
+    REFUSED,
+    UNKNOWN,
     ExpandedNode,
     Expansion,
     XacroProblem,
@@ -45,12 +50,15 @@ from launch_linter.frontends.robot.xacro_values import (
     _literal,
     _Macro,
     _Property,
+    _Refused,
     _Table,
     _Unknown,
 )
 from launch_linter.resolve import reads
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
+
+_QUOTE = re.compile("['\"]")
 
 
 class _Symbols(typing.Mapping[str, typing.Optional[str]]):
@@ -99,17 +107,23 @@ class XacroExpander:
         self._resolving: list[str] = []
         self._path = ""
         self._line = 1
+        self._defines_macros = False
 
     # -- entry -------------------------------------------------------------------------
-    def expand(self, path: str) -> Expansion:
+    def expand(self, path: str, data: bytes | None = None) -> Expansion:
+        """Expand the file ``path``, or ``data`` as if it were that file."""
         absolute = os.path.abspath(path)
         root: ExpandedNode | None = None
         try:
-            element = self._read(absolute, None)
+            element = self._read(absolute, None, data)
             if element is not None:
                 root = self._node(element, absolute, ())
                 self._include_stack.append(absolute)
-                self._children(element.children, absolute, _Table(), root, ())
+                table = _Table()
+                # xacro evaluates the root's own attributes first, before any xacro:arg
+                # of the document is declared.
+                self._attributes(element, root, table)
+                self._children(element.children, absolute, table, root, ())
         except _Abort as stop:
             self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True))
             root = None
@@ -117,7 +131,7 @@ class XacroExpander:
             self.problems.append(XacroProblem(
                 self._path or absolute, self._line, "description nested too deeply", True))
             root = None
-        return Expansion(root, self.problems, self.files)
+        return Expansion(root, self.problems, self.files, self._defines_macros)
 
     # -- bounds and problems -------------------------------------------------------------
     def _charge(self, units: int = 1) -> None:
@@ -126,18 +140,20 @@ class XacroExpander:
             raise _Abort(f"expansion needs more than {MAX_WORK:,} steps; stopped",
                          self._path, self._line)
 
-    def _problem(self, path: str, line: int, message: str) -> None:
+    def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
+                 conditions: tuple[str, ...] = ()) -> None:
         if len(self.problems) < 1000:
-            self.problems.append(XacroProblem(path, line, message))
+            self.problems.append(XacroProblem(path, line, message, False, kind, conditions))
 
-    def _read(self, absolute: str, at: tuple[str, int] | None) -> Element | None:
+    def _read(self, absolute: str, at: tuple[str, int] | None,
+              data: bytes | None = None) -> Element | None:
         where = at or (absolute, 1)
         if absolute not in self.files:
             if len(self.files) >= MAX_FILES:
                 raise _Abort(f"description reads more than {MAX_FILES} files", *where)
             self.files.append(absolute)
         try:
-            data = read_launch_bytes(absolute)
+            data = read_launch_bytes(absolute) if data is None else data
         except OSError as exc:
             if at is None:
                 raise _Abort(f"cannot read {absolute}: {exc.strerror or exc}", *where) from None
@@ -200,7 +216,7 @@ class XacroExpander:
         if command == "arg" and len(rest) == 1:
             name = rest[0]
             if name not in self.args:
-                raise _Unknown(f"$(arg {name}): the arg is not declared and not given")
+                raise _Refused(f"$(arg {name}): the arg is not declared and not given")
             value = self.args[name]
             if value is None:
                 raise _Unknown(f"$(arg {name}): its value is not known")
@@ -260,6 +276,9 @@ class XacroExpander:
             except _Unknown as unknown:
                 node.attrib[name] = text
                 node.unknown[name] = unknown.reason
+                if isinstance(unknown, _Refused):
+                    self._problem(node.path, node.line, f"{name}={text!r}: {unknown.reason}",
+                                  REFUSED, node.conditions)
 
     def _children(self, elements: list[Element], path: str, table: _Table,
                   out: ExpandedNode, conditions: tuple[str, ...]) -> None:
@@ -276,7 +295,9 @@ class XacroExpander:
             try:
                 self._directive(element, tag[len(_PREFIX):], path, table, out, conditions)
             except _Unknown as unknown:
-                self._problem(path, element.line, f"<{tag}>: {unknown.reason}")
+                kind = REFUSED if isinstance(unknown, _Refused) else UNKNOWN
+                self._problem(path, element.line, f"<{tag}>: {unknown.reason}", kind,
+                              conditions)
 
     def _directive(self, element: Element, what: str, path: str, table: _Table,
                    out: ExpandedNode, conditions: tuple[str, ...]) -> None:
@@ -301,10 +322,12 @@ class XacroExpander:
             text = attrib.get("value", "")
             try:
                 keep: bool | None = _boolean(self.evaluate_text(text, table))
+            except _Refused:
+                raise
             except _Unknown as unknown:
                 self._problem(path, element.line,
                               f"<xacro:{what} value={text!r}>: {unknown.reason}; "
-                              "its content is kept as conditional")
+                              "its content is kept as conditional", KEPT, conditions)
                 keep = None
             if keep is None:
                 mark = text if what == "if" else "!" + text
@@ -379,6 +402,25 @@ class XacroExpander:
             else:
                 defaults[param] = (None, default.strip("'\""))
         table.macros[name] = _Macro(params, defaults, element, path)
+        self._defines_macros = True
+        for param in params:
+            if param.startswith("*") and not self._inserts(element, param.lstrip("*")):
+                self._problem(path, element.line, f"block parameter '{param}' of macro "
+                              f"'{name}' is never inserted (no <xacro:insert_block "
+                              f"name=\"{param.lstrip('*')}\"/>)", DROPPED)
+
+    def _inserts(self, element: Element, block: str) -> bool:
+        """Whether ``element`` holds an ``insert_block`` that may insert ``block`` (one
+        whose name is an expression may)."""
+        for child in element.children:
+            self._charge()
+            if child.tag == _PREFIX + "insert_block":
+                name = child.attrib.get("name", "")
+                if name == block or "$" in name:
+                    return True
+            if self._inserts(child, block):
+                return True
+        return False
 
     def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                  conditions: tuple[str, ...]) -> None:
@@ -413,7 +455,7 @@ class XacroExpander:
         if block is None:
             found = table.find_property(name)
             if found is None or found[1].block is None:
-                raise _Unknown(f"undefined block '{name}'")
+                raise _Refused(f"undefined block '{name}'")
             block_element, block_path = found[1].block
             self._children(block_element.children, block_path, table, out, conditions)
             return
@@ -427,26 +469,29 @@ class XacroExpander:
               out: ExpandedNode, conditions: tuple[str, ...]) -> None:
         macro = table.find_macro(name)
         if macro is None:
-            raise _Unknown(f"unknown macro '{name}'")
+            raise _Refused(f"unknown macro '{name}'")
         if self._macro_depth >= MAX_MACRO_DEPTH:
             raise _Abort(f"macros nested deeper than {MAX_MACRO_DEPTH} (recursive macro?)",
                          path, element.line)
         scoped = _Table(table)
         params = list(macro.params)
+        # Quoted defaults (``xyz:='0 0 0'``) are split at their spaces here: a parameter
+        # mismatch of such a macro is unknown, not xacro's refusal.
+        mismatch = _Unknown if _QUOTE.search(macro.body.attrib.get("params", "")) else _Refused
         for attribute, text in element.attrib.items():
             if attribute not in params:
-                raise _Unknown(f"invalid parameter '{attribute}' of macro '{name}'")
+                raise mismatch(f"invalid parameter '{attribute}' of macro '{name}'")
             params.remove(attribute)
             scoped.properties[attribute] = self._evaluated(text, table)
         blocks = list(element.children)
         for param in [p for p in params if p.startswith("*")]:
             if not blocks:
-                raise _Unknown(f"not enough blocks for macro '{name}'")
+                raise _Refused(f"not enough blocks for macro '{name}'")
             params.remove(param)
             content_only = param.startswith("**")
             scoped.blocks[param.lstrip("*")] = _Block(blocks.pop(0), path, content_only, table)
         if blocks:
-            raise _Unknown(f"unused block <{blocks[0].tag}> in call of macro '{name}'")
+            raise _Refused(f"unused block <{blocks[0].tag}> in call of macro '{name}'")
         for param in list(params):
             if param not in macro.defaults:
                 continue
@@ -463,10 +508,10 @@ class XacroExpander:
                     scoped.properties[param] = value
                     continue
                 if default is None:
-                    raise _Unknown(f"undefined property to forward: {forward}")
+                    raise _Refused(f"undefined property to forward: {forward}")
             scoped.properties[param] = self._evaluated(default or "", table)
         if params:
-            raise _Unknown(f"undefined parameters [{','.join(params)}] of macro '{name}'")
+            raise mismatch(f"undefined parameters [{','.join(params)}] of macro '{name}'")
         self._macro_depth += 1
         try:
             self._children(macro.body.children, macro.path, scoped, out, conditions)
@@ -498,9 +543,10 @@ def _boolean(value: str) -> bool | None:
 
 def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
-           env: Mapping[str, str] | None = None) -> Expansion:
-    """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``)."""
-    return XacroExpander(args, find, env).expand(path)
+           env: Mapping[str, str] | None = None, data: bytes | None = None) -> Expansion:
+    """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
+    ``data`` is expanded as if it were that file (text linted by ``lint_text``)."""
+    return XacroExpander(args, find, env).expand(path, data)
 
 
 __all__ = [

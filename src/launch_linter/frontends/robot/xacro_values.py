@@ -45,6 +45,21 @@ class _Unknown(Exception):
         self.reason = reason
 
 
+class _Refused(_Unknown):
+    """What the real xacro stops on (an undefined macro, a missing parameter, an
+    undeclared ``$(arg)``): unknown to the expander as well, and a fault of the source."""
+
+
+UNKNOWN = "unknown"
+"""A problem kind: something not followed; content may be missing from the expansion."""
+KEPT = "kept"
+"""A problem kind: an undecided ``xacro:if``/``xacro:unless``, its content kept."""
+REFUSED = "refused"
+"""A problem kind: the real xacro stops here (see :class:`_Refused`)."""
+DROPPED = "dropped"
+"""A problem kind: the real xacro silently drops content here (a block never inserted)."""
+
+
 @dataclass(frozen=True)
 class XacroProblem:
     """Something the expander could not follow, with where it was."""
@@ -54,6 +69,10 @@ class XacroProblem:
     message: str
     fatal: bool = False
     """True when the expansion stopped (a bound was reached or the root is unreadable)."""
+    kind: str = UNKNOWN
+    """``UNKNOWN``, ``KEPT``, ``REFUSED`` or ``DROPPED``."""
+    conditions: tuple[str, ...] = ()
+    """The undecided ``xacro:if``/``xacro:unless`` texts around it (see ExpandedNode)."""
 
 
 class ExpandedNode:
@@ -84,6 +103,8 @@ class Expansion:
     root: ExpandedNode | None
     problems: list[XacroProblem]
     files: list[str]
+    defines_macros: bool = False
+    """Whether a ``xacro:macro`` was defined (an empty robot made of a macros-only file)."""
 
 
 @dataclass

@@ -1,0 +1,1 @@
+"""Launch-Linter as an ament linter (``ament_launch_linter``)."""

@@ -1,0 +1,117 @@
+"""A ``.urdf`` or ``.xacro`` file linted as an input of its own, as ``check_urdf`` reads
+it: its expansion (xacro args from ``--arg``, the others at their defaults) becomes a tree
+of one description, so that the URDF structure rules and the tree rules see its joints
+even when no launch file loads it.
+
+A file that another description of its package includes is a part (macros, a sensor, an
+arm meant to be attached): alone it may lack the links, args and macros its includer
+gives, so it is checked only through its includer."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+from collections.abc import Callable, Mapping
+
+from launch_linter.frontends.robot.describe import RobotCache, read_description
+from launch_linter.model.diagnostic import Problem
+from launch_linter.model.launch import FileStatus, LaunchTree
+from launch_linter.model.robot import DescriptionKind, DescriptionSource
+from launch_linter.resolve import reads
+from launch_linter.resolve.xml_safe import (
+    XmlError,
+    parse_xml,
+    read_launch_bytes,
+    read_regular_file,
+)
+from launch_linter.workspace.discovery import DESCRIPTION_SUFFIXES
+from launch_linter.workspace.packages import PackageIndex
+
+_INCLUDE = re.compile(rb"""<xacro:include\s[^<>]*?filename\s*=\s*["']([^"'<>]*)["']""")
+MAX_PACKAGE_DEPTH = 4
+"""Folders walked up from a description to find its package (``package.xml``)."""
+MAX_SCANNED = 300
+"""Most description files of one package read to find which are included."""
+MAX_SCANNED_BYTES = 1 << 18
+
+
+def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
+                     cache: RobotCache | None, display: Callable[[str], str],
+                     env: Mapping[str, str], data: bytes | None = None) -> LaunchTree:
+    """The tree of the description file ``path``, or of ``data`` as if it were that file."""
+    if data is None and os.path.basename(path) in _included_names(_package_of(path), cache):
+        return LaunchTree(path, FileStatus.OK, (), (), (path,))
+    try:
+        text = data if data is not None else read_launch_bytes(path)
+        if parse_xml(text).root.tag != "robot":
+            return LaunchTree(path, FileStatus.OK, (), (), (path,))
+    except OSError as exc:
+        return LaunchTree(path, FileStatus.UNREADABLE, (), (Problem(
+            "parse_error", path, 1, 1, f"cannot read: {exc.strerror or exc}"),), (path,))
+    except XmlError as exc:
+        return LaunchTree(path, FileStatus.PARSE_ERROR, (), (Problem(
+            "parse_error", path, exc.line, 1, f"not well-formed XML: {exc.message}"),),
+            (path,))
+    if path.lower().endswith(".urdf") and b"<xacro:" not in text:
+        # A URDF is read as it is, as check_urdf and a launch file's open().read() do (one
+        # with xacro elements is xacro whatever its name).
+        source = DescriptionSource(path, 1, 1, DescriptionKind.LITERAL, None,
+                                   text=text.decode("utf-8", "replace"))
+    else:
+        # Text linted as if it were the file (which need not exist) is expanded as it is.
+        given = data.decode("utf-8", "replace") if data is not None else None
+        source = DescriptionSource(path, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
+                                   tuple(sorted(args.items())), text=given)
+    robot, problems = read_description(source, packages, cache or RobotCache(), display,
+                                       dict(env), standalone=True)
+    if robot is None:
+        return LaunchTree(path, FileStatus.OK, (), tuple(problems), (path,))
+    return LaunchTree(path, FileStatus.OK, (), tuple(problems), (path,),
+                      descriptions=(source,), joints=robot.joints, robots=(robot,))
+
+
+
+def _package_of(path: str) -> str:
+    """The package folder of ``path`` (the nearest with a ``package.xml``), or its folder."""
+    folder = os.path.dirname(os.path.abspath(path))
+    candidate = folder
+    for _ in range(MAX_PACKAGE_DEPTH):
+        if reads.is_file(os.path.join(candidate, "package.xml")):
+            return candidate
+        parent = os.path.dirname(candidate)
+        if parent == candidate:
+            break
+        candidate = parent
+    return folder
+
+
+def _included_names(package: str, cache: RobotCache | None) -> frozenset[str]:
+    """The file names that the descriptions of ``package`` include (bounded scan); once
+    per run and package, and every file that asks depends on what the scan read."""
+    if cache is None:
+        return _scan_included_names(package)
+    return reads.remembered(cache.included, package, lambda: _scan_included_names(package))
+
+
+def _scan_included_names(package: str) -> frozenset[str]:
+    names: set[str] = set()
+    scanned = 0
+    for directory, subdirs, files in os.walk(package):
+        with contextlib.suppress(OSError):  # a folder gone since it was listed
+            # A description added or removed here changes what is included.
+            reads.note_folder(directory, os.stat(directory), subdirs, files,
+                              reads.suffix_listing(DESCRIPTION_SUFFIXES))
+        subdirs.sort()
+        for name in sorted(files):
+            if not name.lower().endswith(DESCRIPTION_SUFFIXES) or scanned >= MAX_SCANNED:
+                continue
+            scanned += 1
+            try:
+                data = read_regular_file(os.path.join(directory, name), MAX_SCANNED_BYTES)
+            except OSError:
+                continue
+            for match in _INCLUDE.finditer(data):
+                target = match.group(1).decode("utf-8", "replace")
+                names.add(target.rstrip("/").rsplit("/", 1)[-1])
+    return frozenset(names)

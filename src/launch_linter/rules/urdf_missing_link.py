@@ -1,0 +1,100 @@
+"""A URDF joint whose parent or child link the description does not define.
+
+## What it does
+Reports a joint of an expanded robot description that names a parent or child link no
+`<link>` of the description defines, with the closest link names when there are any (a
+prefix the macro call did not give, a misspelling). A joint under an undecided `xacro:if`
+is not judged, nor a description whose expansion could not be followed (an include not
+read, a link name not known).
+
+## Why is this bad?
+urdfdom refuses a joint to a link that is not defined (`child link [b] of joint [j] not
+found`, `parent link [a] of joint [j] not found`): robot_state_publisher stops at
+start-up and publishes none of the robot's frames, and `check_urdf` fails. A frequent
+cause is a macro called with a `prefix` that its joints use but its links do not, or a
+sensor macro attached to a link of another robot's naming.
+
+## Example
+```xml
+<robot name="demo">
+  <link name="base_link"/>
+  <link name="laser"/>
+  <joint name="laser_joint" type="fixed">
+    <parent link="base"/>
+    <child link="laser"/>
+  </joint>
+</robot>
+```
+
+## Use instead
+```xml
+<robot name="demo">
+  <link name="base_link"/>
+  <link name="laser"/>
+  <joint name="laser_joint" type="fixed">
+    <parent link="base_link"/>
+    <child link="laser"/>
+  </joint>
+</robot>
+```
+"""
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._robot import first_by_name, judged, level, refused, robots_of
+
+ID = "urdf_missing_link"
+CATEGORY = Category.TF
+SEVERITY = Severity.ERROR
+EXAMPLE_PATH = "example.urdf"
+
+
+MAX_SUGGESTED = 20
+"""Missing links per description for which close names are looked for (each look is a
+pass over every link name)."""
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    for robot in robots_of(context):
+        if not robot.complete or not judged(robot):
+            continue
+        links = first_by_name(robot.links)
+        suggested = 0
+        for joint in robot.joints:
+            if not joint.condition.always:
+                continue
+            # urdfdom looks for the child first, and stops at the first missing link.
+            for end, name in (("child", joint.child), ("parent", joint.parent)):
+                if name is None or name in links:
+                    continue
+                close = _close(name, list(links)) if suggested < MAX_SUGGESTED else []
+                suggested += 1
+                said = (f"child link [{name}] of joint [{joint.name}] not found"
+                        if end == "child" else
+                        f"parent link [{name}] of joint [{joint.name}] not found")
+                yield Finding(
+                    joint.path, joint.line, joint.column,
+                    f"joint '{joint.name}' names {end} link '{name}', which the description "
+                    f"does not define{_closest(close)}; " + refused(said),
+                    joint.name,
+                    tuple(Location(links[n].path, links[n].line, links[n].column)
+                          for n in close),
+                    severity=level(robot),
+                )
+                break
+
+
+def _close(name: str, known: list[str]) -> list[str]:
+    # Imported here: difflib is needed only for a description with a missing link.
+    import difflib
+
+    return difflib.get_close_matches(name, known, n=3, cutoff=0.6)
+
+
+def _closest(close: list[str]) -> str:
+    if not close:
+        return ""
+    return " (defined: " + ", ".join(f"'{n}'" for n in close) + ")"

@@ -1,0 +1,74 @@
+"""What xacro itself refuses: an undefined macro, a missing parameter, an undeclared arg.
+
+## What it does
+Reports, in a xacro description that a launch file loads (or a `.xacro` file linted on its
+own), each element the real xacro stops on: a call of a macro no `xacro:macro` defines, a
+macro call without a parameter that has no default or with one the macro does not have,
+blocks that do not match the macro's block parameters, an `insert_block` of an undefined
+block, and a `$(arg x)` that no `xacro:arg` declares and the xacro call does not give.
+It is an error when a launch file loads the description; info when it sits under an
+undecided `xacro:if` and in a `.xacro` file linted on its own (it may be a part that its
+includer completes). When an include could not be read or a directive is not supported
+before it (the macro or arg may be defined there), or the xacro call has unresolved words
+(they may give the arg), nothing is proven: it stays an `unresolved` diagnostic.
+
+## Why is this bad?
+xacro stops with an error (`unknown macro name: xacro:x`, `Undefined parameters [x]`,
+`Undefined substitution argument`): the launch file's xacro command fails, so
+`robot_description` is never set and robot_state_publisher publishes nothing (ROS 1
+`roslaunch` stops with "Invalid <param> tag: Cannot load command parameter"; ROS 2 `ros2
+launch` stops on the failed `Command` substitution).
+
+## Example
+```xml
+<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="wheel" params="side">
+    <link name="${side}_wheel"/>
+  </xacro:macro>
+  <link name="base_link"/>
+  <xacro:wheel/>
+</robot>
+```
+
+## Use instead
+```xml
+<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="wheel" params="side">
+    <link name="${side}_wheel"/>
+  </xacro:macro>
+  <link name="base_link"/>
+  <xacro:wheel side="left"/>
+</robot>
+```
+"""
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.robot import FaultKind
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._robot import robots_of
+
+ID = "xacro_error"
+CATEGORY = Category.TF
+SEVERITY = Severity.ERROR
+EXAMPLE_PATH = "example.urdf.xacro"
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    for robot in robots_of(context):
+        for fault in robot.faults:
+            if fault.kind is not FaultKind.REFUSED:
+                continue
+            if not fault.proven:
+                continue  # an ``unresolved`` diagnostic says what was not followed
+            when = (f" when {' and '.join(fault.conditions)}" if fault.conditions else "")
+            # One message for a launch file's description and the file linted on its own,
+            # so that the two are one finding, at the level of the launch file's.
+            yield Finding(fault.path, fault.line, 1,
+                          f"xacro stops here{when} ({fault.message}): the xacro command "
+                          f"fails, so robot_description is not set and "
+                          f"robot_state_publisher publishes nothing",
+                          severity=(Severity.INFO if robot.standalone or fault.conditions
+                                    else None))

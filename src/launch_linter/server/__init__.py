@@ -1,0 +1,1 @@
+"""The language server (``launch-linter server``): the ``lsp`` extra's edge package."""

@@ -1,0 +1,76 @@
+from __future__ import annotations
+
+from pathlib import Path
+
+from _urdf import link, lint_loaded, lint_urdf, robot
+
+RULE = "xacro_error"
+WHEEL = '<xacro:macro name="wheel" params="side *origin"><link name="${side}"/>' \
+        '<xacro:insert_block name="origin"/></xacro:macro>'
+
+
+def test_an_undefined_macro(tmp_path: Path) -> None:
+    (found,) = lint_loaded(tmp_path, robot(link("a") + "\n<xacro:wheeel/>"), RULE)
+    assert found.severity.value == "error" and found.line == 3
+    assert "unknown macro 'wheeel'" in found.message
+
+
+def test_in_a_file_linted_on_its_own_it_is_info() -> None:
+    (found,) = lint_urdf(robot(link("a") + "\n<xacro:wheeel/>"), RULE)
+    assert found.severity.value == "info" and "xacro stops here" in found.message
+
+
+def test_a_missing_parameter(tmp_path: Path) -> None:
+    (found,) = lint_loaded(tmp_path, robot(WHEEL + '<xacro:wheel><origin/></xacro:wheel>'),
+                           RULE)
+    assert "undefined parameters [side]" in found.message and found.severity.value == "error"
+
+
+def test_a_parameter_mismatch_of_a_macro_with_quoted_defaults_is_unknown() -> None:
+    quoted = robot('<xacro:macro name="m" params="xyz:=\'0 0 0\'"><link name="a"/></xacro:macro>'
+                   '<xacro:m/>')
+    assert lint_urdf(quoted, RULE) == ()
+
+
+def test_a_missing_block(tmp_path: Path) -> None:
+    (found,) = lint_loaded(tmp_path, robot(WHEEL + '<xacro:wheel side="l"/>'), RULE)
+    assert "not enough blocks" in found.message
+
+
+def test_an_undeclared_arg(tmp_path: Path) -> None:
+    (found,) = lint_loaded(tmp_path, robot('<link name="$(arg name)"/>'), RULE)
+    assert "$(arg name)" in found.message and found.severity.value == "error"
+
+
+def test_an_arg_the_call_gives_or_declares() -> None:
+    assert lint_urdf(robot('<link name="$(arg name)"/>'), RULE, args={"name": "a"}) == ()
+    assert lint_urdf(robot('<xacro:arg name="name" default="a"/><link name="$(arg name)"/>'),
+                     RULE) == ()
+
+
+def test_a_correct_call() -> None:
+    assert lint_urdf(robot(WHEEL + '<xacro:wheel side="l"><origin/></xacro:wheel>'), RULE) == ()
+
+
+def test_after_an_include_not_read_nothing_is_proven() -> None:
+    text = robot('<xacro:include filename="$(find nowhere)/m.xacro"/><xacro:wheel/>')
+    assert lint_urdf(text, RULE) == ()
+    (_include, macro) = lint_urdf(text, "unresolved")
+    assert "unknown macro 'wheel'" in macro.message
+
+
+def test_unresolved_words_of_the_xacro_call_may_give_the_arg(tmp_path: Path) -> None:
+    text = robot('<link name="$(arg name)"/>')
+    (found,) = lint_loaded(tmp_path, text, RULE)
+    assert found.severity.value == "error"
+    assert "robot_state_publisher publishes nothing" in found.message
+    assert lint_loaded(tmp_path, text, RULE, "$(arg more)") == ()
+
+
+def test_under_an_undecided_condition_it_is_info(tmp_path: Path) -> None:
+    text = robot('<xacro:arg name="x" default="true"/><xacro:if value="$(arg x)">'
+                 '<xacro:nothing/></xacro:if>')
+    (found,) = lint_loaded(tmp_path, text, RULE, "x:=$(arg y)")
+    assert found.severity.value == "info"
+    (found,) = lint_loaded(tmp_path, text, RULE, "x:=true")
+    assert found.severity.value == "error"
