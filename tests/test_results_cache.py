@@ -339,3 +339,20 @@ def test_a_result_resting_on_unsaved_text_is_not_kept(tmp_path: Path) -> None:
     with unsaved_texts({str(target): b"<launch></launch>"}), reads.recording() as log:
         assert read_launch_bytes(str(target)) == b"<launch></launch>"
     assert log.is_unstable()
+
+
+def test_a_run_answered_by_the_cache_loads_no_front_end(workspace: Path) -> None:
+    import subprocess
+    import sys
+
+    import launch_linter
+
+    probe = ("import contextlib, io, sys\nfrom launch_linter.cli import main\n"
+             "with contextlib.redirect_stdout(io.StringIO()):\n    main(['check', 'src'])\n"
+             "print(sorted(m for m in sys.modules if m.startswith('launch_linter.frontends.')))")
+    env = {k: v for k, v in os.environ.items() if k != NO_CACHE_VARIABLE}
+    env["PYTHONPATH"] = str(Path(launch_linter.__file__).resolve().parents[1])
+    loaded = [subprocess.run([sys.executable, "-c", probe], cwd=workspace, env=env, text=True,
+                             capture_output=True, check=True).stdout for _ in range(2)]
+    assert "launch_linter.frontends.ros1" in loaded[0]
+    assert loaded[1].strip() == "[]"

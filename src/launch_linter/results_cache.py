@@ -282,6 +282,7 @@ class ResultsCache:
         self._entries: dict[str, Any] = {}
         self._groups: dict[str, Any] = {}
         self._discovery: Any = None
+        self._group_names: dict[int, tuple[reads.ReadLog, str]] = {}
         self._changed = False
         self._freshness = reads.Freshness(read_regular_file)
         self._group_holds: dict[str, bool] = {}
@@ -405,12 +406,7 @@ class ResultsCache:
         the linter failed on, or whose inputs changed while it was read, is not kept."""
         if linted[1].status is FileStatus.INTERNAL_ERROR or log.is_unstable():
             return
-        names = []
-        for group in log.closure():
-            stamps = _encode_stamps(group.stamps)
-            name = reads.digest(json.dumps(stamps, separators=(",", ":")).encode("utf-8"))
-            self._groups.setdefault(name, stamps)
-            names.append(name)
+        names = [self._group_name(group) for group in log.closure()]
         self._entries[item.path] = {
             "display": item.display,
             "stamps": _encode_stamps(log.stamps),
@@ -418,6 +414,18 @@ class ResultsCache:
             "result": encode_linted(linted),
         }
         self._changed = True
+
+    def _group_name(self, group: reads.ReadLog) -> str:
+        """The name (the digest of its stamps) under which ``group`` is stored; worked out
+        once per log, which many roots share (the package crawl)."""
+        known = self._group_names.get(id(group))
+        if known is not None and known[0] is group:
+            return known[1]
+        stamps = _encode_stamps(group.stamps)
+        name = reads.digest(json.dumps(stamps, separators=(",", ":")).encode("utf-8"))
+        self._groups.setdefault(name, stamps)
+        self._group_names[id(group)] = (group, name)  # the log kept: its id stays its own
+        return name
 
     def save(self) -> None:
         """Write the cache if anything changed; silently nothing if it cannot be written."""
