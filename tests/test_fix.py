@@ -290,3 +290,50 @@ def test_locating_fixes_keeps_only_the_last_files_sources(
     diagnostics = lint_paths(paths).diagnostics
     assert sum(d.fix is not None for d in diagnostics) == len(paths)  # every one located
     assert most[0] <= fix.RECENT_SOURCES + 1
+
+
+MULTILINE_PYTHON = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(
+        package='tf2_ros', executable='static_transform_publisher',
+        arguments=[
+            '0', '0', '0.2',
+            '0', '0', '0',
+            'base_link', 'laser',
+        ])])
+"""
+
+
+def test_a_multiline_python_list_gets_one_flag_pair_per_line() -> None:
+    after = fixed(MULTILINE_PYTHON, "ros2_positional_args", "robot.launch.py")
+    assert after == MULTILINE_PYTHON.replace(
+        "'0', '0', '0.2',\n            '0', '0', '0',\n            'base_link', 'laser',",
+        "'--x', '0',\n            '--y', '0',\n            '--z', '0.2',\n            '--yaw', '0',"
+        "\n            '--pitch', '0',\n            '--roll', '0',\n"
+        "            '--frame-id', 'base_link',\n            '--child-frame-id', 'laser',",
+    )
+
+
+def test_an_aligned_python_list_keeps_its_alignment_and_crlf() -> None:
+    text = ("from launch import LaunchDescription\r\nfrom launch_ros.actions import Node\r\n"
+            "def generate_launch_description():\r\n"
+            "    return LaunchDescription([Node(arguments=['1', '0', '0', '0', '0', '0',\r\n"
+            "                                             'map', 'odom'],\r\n"
+            "        executable='static_transform_publisher', package='tf2_ros')])\r\n")
+    after = fixed(text, "ros2_positional_args", "robot.launch.py")
+    indent = " " * 45
+    assert f"Node(arguments=['--x', '1',\r\n{indent}'--y', '0',\r\n" in after
+    assert after.endswith(f"{indent}'--child-frame-id', 'odom'],\r\n"
+                          "        executable='static_transform_publisher', package='tf2_ros')])"
+                          "\r\n")
+
+
+def test_a_multiline_xml_args_gets_one_flag_pair_per_line() -> None:
+    text = ROS2.format("1 0 0\n          0 0 0\n          map odom")
+    after = fixed(text, "ros2_positional_args", "a.launch.xml")
+    assert after == ROS2.format(
+        "--x 1\n          --y 0\n          --z 0\n          --yaw 0\n          --pitch 0\n"
+        "          --roll 0\n          --frame-id map\n          --child-frame-id odom")

@@ -114,7 +114,7 @@ def test_dot_escapes_backslashes_and_line_breaks() -> None:
 def test_mermaid_content() -> None:
     mermaid = to_mermaid(graph_of(ROBOT))
     lines = mermaid.splitlines()
-    assert lines[0] == "---" and lines[3] == "flowchart TD"
+    assert lines[0] == "---" and lines[3] == "flowchart LR"  # one rank of four: wider than deep
     assert '  f0(["base_link"])' in lines
     edges = [line for line in lines if "|" in line and "-" in line and "linkStyle" not in line]
     assert edges[0].startswith("  f0 -->|") and edges[0].endswith("| f1")
@@ -137,7 +137,7 @@ def test_cli_dot_and_mermaid(
     assert capsys.readouterr().out.startswith("digraph tf {")
     out = tmp_path / "tree.mmd"
     assert main(["graph", "--beliefs", "none", str(launch_file), "-o", str(out)]) == 0
-    assert "flowchart TD" in out.read_text()
+    assert "flowchart LR" in out.read_text()
     assert main(["graph", "--beliefs", "none", str(launch_file), "-o", str(tmp_path / "t.dot"),
                  "--arg", "use_gps:=false"]) == 0
     assert "base_to_gps" not in (tmp_path / "t.dot").read_text()
@@ -177,7 +177,7 @@ def test_usage_errors(
     assert "error" in capsys.readouterr().err
 
 
-def test_a_workspace_folder_draws_one_cluster_per_entry_point(
+def test_a_workspace_folder_draws_one_cluster_per_distinct_tree(
     tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     from tests.workspace_fixture import build_workspace
@@ -188,7 +188,7 @@ def test_a_workspace_folder_draws_one_cluster_per_entry_point(
     clusters = [line for line in dot.splitlines() if "subgraph cluster_" in line]
     # part.launch and sensors_launch.xml are included by main.launch and env.xml: no
     # cluster of their own. build/, install/, log/ and the ignored files are left out.
-    titles = [line.split('label="', 1)[1].split('"', 1)[0]
+    titles = [line.split('label="', 1)[1].split(":", 1)[0]
               for line in dot.splitlines() if line.strip().startswith("label=")]
     assert titles == [
         "src/ros1_pkg/build/keep.launch",
@@ -235,10 +235,98 @@ def test_whole_tree_of_a_workspace_folder(capsys: pytest.CaptureFixture[str]) ->
     lines = dot.splitlines()
     wheel = next(line for line in lines if "left_wheel_joint" in line)
     assert "style=dashed" in wheel and "#1565c0" in wheel
-    base = next(line for line in lines if "URDF fixed joint base_joint" in line)
+    base = next(line for line in lines if "base_joint (fixed)" in line)
     assert "style=dashed" not in base and "#1565c0" in base
     laser = next(line for line in lines if "laser_tf" in line)
     assert "#c62828" in laser and "multiple_parents" in laser
     assert main(["graph", "--beliefs", "none", "--package-path", str(WS),
                  str(WS / "src" / "demo_bringup")]) == 0
-    assert "URDF fixed joint base_joint" in capsys.readouterr().out
+    assert "base_joint (fixed)" in capsys.readouterr().out
+
+
+def _tf(parent: str, child: str, name: str) -> str:
+    return (f'  <node pkg="tf2_ros" type="static_transform_publisher" name="{name}" '
+            f'args="0 0 1 0 0 0 {parent} {child}"/>')
+
+
+def _include(name: str) -> str:
+    return f'<launch>\n  <include file="$(dirname)/{name}"/>\n</launch>\n'
+
+
+def _cluster_blocks(dot: str) -> list[str]:
+    return dot.split("subgraph cluster_")[1:]
+
+
+def test_entry_points_with_the_same_tree_are_drawn_once(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    Path("robot_a.launch").write_text(
+        "<launch>\n" + _tf("base_link", "laser", "laser_tf") + "\n</launch>\n")
+    Path("robot_b.launch").write_text(
+        "<launch>\n" + _tf("chassis", "camera", "cam_tf") + "\n</launch>\n")
+    for name in ("sim.launch", "real.launch", "demo.launch"):
+        Path(name).write_text(_include("robot_a.launch"))
+    Path("other.launch").write_text(_include("robot_b.launch"))
+    Path("nothing.launch").write_text('<launch>\n  <node pkg="rviz" type="rviz" name="v"/>\n'
+                                      "</launch>\n")
+    assert main(["graph", "--beliefs", "none"]) == 0  # the current folder by default
+    dot = capsys.readouterr().out
+    blocks = _cluster_blocks(dot)
+    assert len(blocks) == 2
+    first, second = blocks
+    assert "3 entry points with this tree (1 static transform(s), 0 URDF joint(s)):" in first
+    assert "demo.launch\\lreal.launch\\lsim.launch\\l" in first
+    assert 'label="other.launch: 1 static transform(s), 0 URDF joint(s)\\l' in second
+    # One edge per distinct tree, not one per entry point.
+    assert len(dot_edges(dot)) == 2 and dot.count('label="laser"') == 1
+    # The entry point that publishes nothing is not drawn; the caption says why.
+    assert ("1 entry point(s) publish no transform:\\l  nothing.launch: no "
+            "static_transform_publisher and no robot_description") in dot
+
+
+def test_an_empty_picture_says_which_description_was_not_read(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = tmp_path / "robot.launch"
+    path.write_text('<launch>\n  <param name="robot_description" command="$(find xacro)/xacro '
+                    '$(arg model)"/>\n  <node pkg="robot_state_publisher" '
+                    'type="robot_state_publisher" name="rsp"/>\n</launch>\n')
+    assert main(["graph", "--beliefs", "none", str(path)]) == 0
+    caption = capsys.readouterr().out.splitlines()[1].replace("\\l    ", " ")  # unwrapped
+    assert "0 frame(s)" in caption and "robot_description at " in caption
+    assert "not read" in caption and "$(arg model)" in caption
+
+
+def test_a_large_tree_is_capped_with_a_summary(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from launch_linter.graph import model
+
+    monkeypatch.setattr(model, "MAX_DRAWN_EDGES", 5)
+    chain = "\n".join(_tf(f"f{i}", f"f{i + 1}", f"t{i}") for i in range(12))
+    path = tmp_path / "chain.launch"
+    path.write_text(f"<launch>\n{chain}\n</launch>\n")
+    graph = build_graph(lint_text(path.read_text(), str(path)))
+    assert graph.left_out == 7 and len(graph.edges) == 5 and len(graph.frames) == 6
+    # Breadth-first from the root: the top of the chain.
+    assert [f.label for f in graph.frames] == ["f0", "f1", "f2", "f3", "f4", "f5"]
+    assert any("too large for a readable picture: 5 of 12 edges" in n for n in graph.notes)
+    assert main(["graph", "--beliefs", "none", str(path), "-o", str(tmp_path / "c.dot")]) == 0
+    assert "5 edge(s) (of 12: too large for a readable picture" in capsys.readouterr().err
+
+
+def test_layout_fits_the_shape_of_the_tree() -> None:
+    from launch_linter.graph.render import rank_gaps, rankdir
+
+    chain = "\n".join(_tf(f"f{i}", f"f{i + 1}", f"t{i}") for i in range(8))
+    deep = graph_of(f"<launch>\n{chain}\n</launch>")
+    assert rankdir(deep) == "TB" and "rankdir=TB" in to_dot(deep)
+    fan = "\n".join(_tf("base_link", f"part{i}", f"t{i}") for i in range(30))
+    wide = graph_of(f"<launch>\n{fan}\n</launch>")
+    assert rankdir(wide) == "LR" and "rankdir=LR" in to_dot(wide)
+    # Thirty leaves of one frame are dealt onto three ranks (of at most 14).
+    gaps = rank_gaps(wide, "LR")
+    assert sorted(set(gaps)) == [1, 2, 3] and gaps[:4] == [1, 2, 3, 1]
+    assert to_dot(wide).count("minlen=") == 20
+    assert "f0 --->|" in to_mermaid(wide)

@@ -356,3 +356,24 @@ def test_a_run_answered_by_the_cache_loads_no_front_end(workspace: Path) -> None
                              capture_output=True, check=True).stdout for _ in range(2)]
     assert "launch_linter.frontends.ros1" in loaded[0]
     assert loaded[1].strip() == "[]"
+
+
+def test_a_launch_file_named_by_a_new_file_is_linted_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from launch_linter.workspace import mentions
+
+    monkeypatch.setattr(mentions, "_names_by_folder", {})  # kept per process otherwise
+    (workspace / "src/ros2/launch").mkdir(parents=True)
+    (workspace / "src/ros2/package.xml").write_text(
+        '<package format="3"><name>ros2</name>\n'
+        "<export><build_type>ament_cmake</build_type></export></package>\n")
+    (workspace / "src/ros2/launch/inner.launch.xml").write_text(
+        '<launch><node pkg="foo" exec="bar" name="$(var robot)"/></launch>\n')
+    assert "inner.launch.xml" in relinted(workspace)
+    mentions._names_by_folder.clear()
+    assert relinted(workspace) == []
+    (workspace / "src/ros2/launch/outer.launch.xml").write_text(
+        '<launch><include file="$(dirname)/inner.launch.xml"/></launch>\n')
+    mentions._names_by_folder.clear()
+    assert relinted(workspace) == ["inner.launch.xml", "outer.launch.xml"]

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
+from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -37,6 +38,7 @@ from launch_linter.workspace.packages import (
     nearest_package_xml,
     package_ros_version,
 )
+from launch_linter.workspace.paths import shown_path
 
 if TYPE_CHECKING:
     # Imported where a file is linted (``_front_ends``): a run whose results are all in
@@ -107,17 +109,8 @@ class LintResult:
 
 
 def _display_function(item: InputFile) -> object:
-    relative = not os.path.isabs(item.display)
-
     def display(path: str) -> str:
-        absolute = os.path.abspath(path)
-        if absolute == item.path:
-            return item.display
-        if relative:
-            rel = os.path.relpath(absolute)
-            if not rel.startswith(".."):
-                return rel
-        return absolute
+        return item.display if os.path.abspath(path) == item.path else shown_path(path)
 
     return display
 
@@ -197,10 +190,14 @@ def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) ->
 
 
 def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:
-    """The distribution given, else Foxy when a file uses Foxy-era Node keywords, else None."""
+    """The distribution given, else Foxy when a file uses Foxy-era Node keywords (unless
+    the tree's ROS 2 static_transform_publisher flags, Humble's, contradict them), else
+    None."""
     if options.ros_distro:
         return options.ros_distro
-    if any(p.rule == "ros2_removed_keyword" for p in tree.problems):
+    if any(p.rule == "ros2_removed_keyword" for p in tree.problems) and not any(
+        t.ros_version == 2 and uses_flags(t.tokens) for t in tree.transforms
+    ):
         return "foxy"
     return None
 

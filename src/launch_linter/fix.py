@@ -1,18 +1,19 @@
-"""Fixes: find a rule's word edits in the file's bytes, apply them, show them as a diff.
+"""Fixes: find a rule's word edits in the file's bytes and apply them.
 
 A rule says which argument words to replace (:class:`~launch_linter.model.diagnostic.Fix`
 ``token_edits``, relative to the words it read). Here they become byte edits of the file:
 the element the diagnostic points at is found at its line and column, then its ``args``
-attribute (XML) or its ``arguments=[...]`` list of string literals (Python). A fix is
-dropped, never guessed, when the attribute holds a substitution, an entity or a comment,
-or its words are not the ones the rule read. Every byte outside the edited words is kept.
+attribute (XML) or its ``arguments=[...]`` list of string literals (Python), and new
+words are laid out like the old ones (:func:`laid_out`). A fix is dropped, never guessed,
+when the attribute holds a substitution, an entity or a comment, or its words are not the
+ones the rule read. Every byte outside the edited words is kept. The diff of the fixes is
+:mod:`launch_linter.report.diff`.
 """
 
 from __future__ import annotations
 
 import ast
 import collections
-import difflib
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
@@ -166,6 +167,56 @@ def _python_literal(text: str, like: bytes) -> str:
     return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
 
 
+def _flag_groups(words: list[str]) -> list[list[str]]:
+    """``words`` cut before each flag (``--x 1 --frame-id map`` → two groups)."""
+    groups: list[list[str]] = []
+    for word in words:
+        if not groups or (word.startswith("--") and len(word) > 2):
+            groups.append([])
+        groups[-1].append(word)
+    return groups
+
+
+def _line_break(data: bytes, spans: Sequence[Span]) -> str | None:
+    """The line break and indentation between the lines the words ``spans`` are written
+    on (what comes before the first word of their second line), or None when they are on
+    one line."""
+    for (_, end), (start, _) in zip(spans, spans[1:]):
+        between = data[end:start]
+        newline = max(between.rfind(b"\n"), between.rfind(b"\r"))
+        if newline < 0:
+            continue
+        line_start = end + newline + 1
+        indent = data[line_start:start]
+        if indent.strip(b" \t"):  # something else before the word: align with spaces
+            indent = b" " * len(indent.decode("utf-8", "replace"))
+        if between[newline:].startswith(b"\r"):
+            ending = "\r"
+        elif between[:newline].endswith(b"\r"):
+            ending = "\r\n"
+        else:
+            ending = "\n"
+        return ending + indent.decode("utf-8", "replace")
+    return None
+
+
+def laid_out(text: str, data: bytes, spans: Sequence[Span], python: bool) -> str:
+    """The replacement ``text`` (words) written as the words at ``spans`` were: Python
+    string items like the first one (its quotes), separated by ``, ``; and where the
+    old words ran over several lines, one flag with its value per line, indented like
+    the old words' second line."""
+    words = text.split()
+    groups = _flag_groups(words) if len(spans) > 1 else [words]
+    line_break = _line_break(data, spans)
+    if line_break is None or len(groups) < 2:
+        groups = [words]
+    if python:
+        like = data[spans[0][0] : spans[0][1]]
+        written = [", ".join(_python_literal(w, like) for w in group) for group in groups]
+        return ("," + (line_break or " ")).join(written)
+    return (line_break or " ").join(" ".join(group) for group in groups)
+
+
 def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Edit, ...]:
     """The byte edits of ``fix`` in ``data`` (the file ``path``); () when not found."""
     return locate_in(fix, Source(path, data), line, column)
@@ -204,12 +255,8 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
             elif last + 1 < len(spans):
                 end = spans[last + 1][0]
             content = ""
-        elif python:
-            items = token_edit.text.split()
-            like = data[spans[first][0] : spans[first][1]]
-            content = ", ".join(_python_literal(i, like) for i in items)
         else:
-            content = token_edit.text
+            content = laid_out(token_edit.text, data, spans[first : last + 1], python)
         edits.append(Edit(path, start, end, content))
     return tuple(edits)
 
@@ -304,12 +351,6 @@ def fixes_by_file(diagnostics: Iterable[Diagnostic], unsafe: bool) -> dict[str, 
     return grouped
 
 
-def unified_diff(path: str, before: bytes, after: bytes) -> str:
-    old = before.decode("utf-8", "replace").splitlines(keepends=True)
-    new = after.decode("utf-8", "replace").splitlines(keepends=True)
-    return "".join(difflib.unified_diff(old, new, f"a/{path}", f"b/{path}"))
-
-
 def fix_until_stable(
     lint: Callable[[], Sequence[Diagnostic]],
     unsafe: bool,
@@ -353,10 +394,10 @@ __all__ = [
     "apply_edits",
     "fix_until_stable",
     "fixes_by_file",
+    "laid_out",
     "locate",
     "locate_in",
     "read_bytes",
-    "unified_diff",
     "wanted",
     "with_located_fixes",
     "write_file",

@@ -68,6 +68,15 @@ def _doubling_let() -> str:
     return "\n".join(lines)
 
 
+def _undeclared_reads() -> str:
+    # 20,000 declarations and 20,000 reads of near-miss names: every "did you mean" would
+    # compare each read with each declaration.
+    declared = "".join(f'<arg name="argument_{i}" default="x"/>' for i in range(20_000))
+    reads = "".join(f'<set_parameter name="p{i}" value="$(var argument{i})"/>'
+                    for i in range(20_000))
+    return f"<launch>{declared}{reads}{ros2_node()}</launch>"
+
+
 def _many_includes(folder: Path) -> str:
     _write(folder, "included/leaf.launch",
            "<launch>" + '<arg name="x" default="1"/>' * 3000 + node("leaf") + "</launch>")
@@ -266,6 +275,8 @@ CASES: dict[str, Case] = {
     "doubling_args": Case("work", _text("doubling_args.launch", _doubling_args()), "longer than"),
     "doubling_let": Case("work", _text("doubling_let.launch.xml", _doubling_let()), "longer than"),
     "many_includes": Case("work", _many_includes, "work budget"),
+    "undeclared_reads": Case("work", _text("undeclared.launch.xml", _undeclared_reads()),
+                             "does not exist"),
     "eval_growth": Case("work", _text("eval_growth.launch", _eval_growth())),
     "python_growth": Case("work", _text("growth.launch.py", _PYTHON_GROWTH), "not interpreted"),
     "big_yaml": Case("work", _big_yaml, "larger than"),

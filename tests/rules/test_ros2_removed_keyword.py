@@ -56,3 +56,32 @@ def test_modern_keywords_are_fine(tmp_path: Path) -> None:
     path.write_text(FOXY.replace("node_executable", "executable").replace("node_name", "name"))
     result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro="humble"))
     assert [d for d in result.diagnostics if d.rule == RULE] == []
+
+
+FLAGS = FOXY.replace("arguments=['0', '0', '0.2', '0', '0', '0', 'base', 'laser']",
+                     "arguments=['--z', '0.2', '--frame-id', 'base', '--child-frame-id', 'laser']")
+
+
+def _found_in(tmp_path: Path, text: str, distro: str | None) -> list[tuple[str, str]]:
+    path = tmp_path / "mixed.launch.py"
+    path.write_text(text, encoding="utf-8")
+    result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro=distro))
+    return [(d.rule, d.message) for d in result.diagnostics
+            if d.rule in (RULE, "ros2_bad_flag")]
+
+
+def test_foxy_keywords_with_humble_flags_report_the_refused_keyword(tmp_path: Path) -> None:
+    assert FLAGS != FOXY
+    ((rule, message),) = _found_in(tmp_path, FLAGS, None)
+    assert rule == RULE
+    assert "node_executable= (now executable=)" in message
+    assert "flags at line 7 arrived in Humble" in message
+
+
+def test_foxy_keywords_with_flags_on_foxy_given_are_the_flags_mistake(tmp_path: Path) -> None:
+    assert [rule for rule, _ in _found_in(tmp_path, FLAGS, "foxy")] == ["ros2_bad_flag"]
+
+
+def test_the_fixed_keyword_is_silent(tmp_path: Path) -> None:
+    fixed = FLAGS.replace("node_executable", "executable").replace("node_name", "name")
+    assert _found_in(tmp_path, fixed, None) == []

@@ -22,6 +22,7 @@ from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
 from launch_linter.results_cache import ResultsCache
 from launch_linter.workspace.config import Config
+from launch_linter.workspace.paths import shown_path
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -143,11 +144,30 @@ def _write_output(ns: argparse.Namespace, report: str | Iterator[str]) -> None:
         raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
 
 
+def _write_bytes(ns: argparse.Namespace, data: bytes) -> None:
+    """A diff, byte for byte (its lines are the files' bytes, in their own encoding)."""
+    if not ns.output_file:
+        sys.stdout.flush()
+        buffer = getattr(sys.stdout, "buffer", None)
+        if buffer is None:  # a text-only stream (tests): the bytes as UTF-8 would show them
+            sys.stdout.write(data.decode("utf-8", "surrogateescape"))
+        else:
+            buffer.write(data)
+            buffer.flush()
+        return
+    try:
+        with open(ns.output_file, "wb") as handle:
+            handle.write(data)
+    except OSError as exc:
+        raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
+
+
 def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config,
                cache: ResultsCache | None) -> LintResult:
     """``--fix``: apply fixes, lint again until nothing changes; the last result. A fixed
     file changed, so the next pass lints it (and the roots that include it) again."""
     from launch_linter import fix as fixing
+    from launch_linter.report import diff
 
     last: list[LintResult] = []
 
@@ -159,43 +179,54 @@ def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config,
         lint, ns.unsafe_fixes, fixing.write_file  # type: ignore[arg-type]
     )
     if not ns.quiet:
-        total = sum(counts.values())
-        detail = ", ".join(f"{rule} {n}" for rule, n in sorted(counts.items()))
-        sys.stderr.write(f"fixed {total} finding(s)" + (f" ({detail})" if detail else "") + "\n")
+        hidden = text.hidden_fixes(last[-1].diagnostics, ns.unsafe_fixes)
+        sys.stderr.write(diff.fix_summary(counts, hidden) + "\n")
     return last[-1]
 
 
 def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
     """``--diff``: the fixes as a unified diff; no file changes. Exit 1 when there is any."""
     from launch_linter import fix as fixing
+    from launch_linter.report import diff
 
-    out: list[str] = []
+    out: list[bytes] = []
+    fixed = 0
     for path, fixes in fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).items():
         before = fixing.read_bytes(path)
         if before is None:
             continue
-        after, _ = fixing.apply_edits(before, fixes)
-        out.append(fixing.unified_diff(path, before, after))
-    _write_output(ns, "".join(out))
+        after, applied = fixing.apply_edits(before, fixes)
+        fixed += len(applied) if after != before else 0
+        out.append(diff.unified_diff(shown_path(path), before, after))
+    _write_bytes(ns, b"".join(out))
+    if not ns.quiet:
+        hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
+        sys.stderr.write(diff.diff_summary(fixed, hidden) + "\n")
     return EXIT_FINDINGS if any(out) and not ns.exit_zero else EXIT_OK
 
 
 def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
     """``-`` with ``--fix``/``--diff``: the fixed text (or its diff) on stdout."""
     from launch_linter import fix as fixing
+    from launch_linter.report import diff
 
     name = getattr(ns, "stdin_filename", None) or STDIN_NAME
     data = sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
     current = data
+    fixed_count = 0
     for _ in range(fixing.MAX_FIX_PASSES):
         result = lint_text(current.decode("utf-8", "replace"), name, options)
         fixes = fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).get(name, [])
-        fixed, _ = fixing.apply_edits(current, fixes)
+        fixed, applied = fixing.apply_edits(current, fixes)
         if fixed == current:
             break
+        fixed_count += len(applied)
         current = fixed
     if ns.diff:
-        _write_output(ns, fixing.unified_diff(name, data, current))
+        _write_bytes(ns, diff.unified_diff(name, data, current))
+        if not ns.quiet:
+            hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
+            sys.stderr.write(diff.diff_summary(fixed_count, hidden) + "\n")
         return EXIT_FINDINGS if current != data and not ns.exit_zero else EXIT_OK
     sys.stdout.write(current.decode("utf-8", "replace"))
     result = lint_text(current.decode("utf-8", "replace"), name, options)
@@ -239,4 +270,7 @@ def run(ns: argparse.Namespace) -> int:
     _write_output(ns, _report(ns, result, options, config))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")
+        hint = text.fix_hint(result.diagnostics) if not ns.fix else None
+        if hint is not None:
+            sys.stderr.write(hint + "\n")
     return _status(ns, result, config)

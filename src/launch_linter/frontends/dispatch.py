@@ -1,11 +1,14 @@
 """Pick the front-end for a launch file by its name and content.
 
 ``*.py`` files are ROS 2 Python launch files and ``*.yaml``/``*.yml`` files ROS 2 YAML
-launch files. XML is ROS 1 unless it uses what only ROS 2 launch XML has: a ``<node>``
-with ``exec=``, ``<let>``, ``$(var ...)``, ``$(find-pkg-share ...)``,
-``<push-ros-namespace>`` (or ``push_ros_namespace``), the composable-node tags, or an
-``<include>`` of a Python or YAML launch file. Both
-ROS versions use ``.launch`` and ``.launch.xml``, so the suffix does not decide.
+launch files. XML is ROS 1 unless it uses what only ROS 2 launch XML has: any action tag
+that launch or launch_ros exposes and roslaunch does not (``<executable>``, ``<let>``,
+``<set_env>``, ``<set_parameter>``, ``<push-ros-namespace>``, the composable-node tags,
+... :data:`ROS2_ONLY_TAGS`), a substitution only ROS 2 has (``$(var ...)``,
+``$(find-pkg-share ...)``, ...), a ``<node>`` with ``exec=`` or ``ros_args=``, a
+``<param from=...>``, or an ``<include>`` of a Python or YAML launch file. Both ROS
+versions use ``.launch`` and ``.launch.xml``, so the suffix does not decide (the engine
+lets the package's build type decide for ``*.xml`` files).
 """
 
 from __future__ import annotations
@@ -24,16 +27,36 @@ from launch_linter.workspace.discovery import is_description_name
 # expression that starts with a fixed character skips to it quickly), then, each behind a
 # word that any match contains (a substring test is far cheaper than a pattern), the
 # ``exec`` of a node and the include of a Python or YAML launch file.
-_ROS2_TAG = re.compile(
-    rb"<(?:let|push[-_]ros[-_]namespace|node_container|composable_node|load_composable_node)"
-    rb"[\s/>]"
+ROS2_ONLY_TAGS: tuple[str, ...] = (
+    "append_env", "composable_node", "executable", "let", "load_composable_node", "log",
+    "node_container", "push-ros-namespace", "push_ros_namespace", "reset", "reset_env",
+    "ros_timer", "set_env", "set_parameter", "set_parameters_from_file", "set_remap",
+    "set_ros_log_dir", "set_use_sim_time", "shutdown", "timer", "unset_env",
 )
-_ROS2_SUBSTITUTION = re.compile(rb"\$\((?:var|find-pkg-share|find-pkg-prefix)[\s)]")
+"""The action tags of ``frontends.ros2_schema.ACTIONS`` (with the nested
+``composable_node``) that roslaunch has no tag for (it has ``arg``, ``group``,
+``include`` and ``node`` too); a test keeps the two lists in step."""
+ROS2_ONLY_SUBSTITUTIONS: tuple[str, ...] = (
+    "var", "find-pkg-share", "find-pkg-prefix", "find-exec", "exec-in-pkg", "file-content",
+    "command", "not", "and", "or", "equals", "not-equals", "path-join",
+)
+"""Substitutions ROS 2 launch has and roslaunch does not (roslaunch has ``arg``, ``find``,
+``env``, ``optenv``, ``anon``, ``dirname`` and ``eval``)."""
+_ROS2_TAG = re.compile(
+    rb"<(?:" + b"|".join(re.escape(tag.encode()) for tag in sorted(
+        ROS2_ONLY_TAGS, key=len, reverse=True)) + rb")[\s/>]"
+)
+_ROS2_SUBSTITUTION = re.compile(
+    rb"\$\((?:" + b"|".join(re.escape(name.encode()) for name in sorted(
+        ROS2_ONLY_SUBSTITUTIONS, key=len, reverse=True)) + rb")[\s)]"
+)
 # ``[^<>]*`` rather than ``[^>]*``: a tag's scan stops at the next ``<``, where the next
 # candidate starts, so the scans never overlap and the search is linear in the file size
 # (a file of many unclosed ``<node `` would otherwise be quadratic).
 _ROS2_WORD_SIGNS = (
     (b"exec", re.compile(rb"<node\s[^<>]*\bexec\s*=")),
+    (b"ros_args", re.compile(rb"<node\s[^<>]*\bros_args\s*=")),
+    (b"from", re.compile(rb"<param\s[^<>]*\bfrom\s*=")),
     (b"<include",
      re.compile(rb"""<include\s[^<>]*\bfile\s*=\s*["'][^"'<>]*\.(?:py|ya?ml)["']""")),
 )

@@ -48,7 +48,7 @@ from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import ALWAYS, DECODED_FIELDS, ArgForm, Condition, Field
 from launch_linter.resolve import reads
-from launch_linter.resolve.value import Value, holes, resolved_text, text_of
+from launch_linter.resolve.value import Value, holes, resolved_text, text_of, why_unresolved
 from launch_linter.resolve.xml_safe import Element, read_launch_bytes
 
 
@@ -211,7 +211,7 @@ class Ros1Loader(Ros1Tags):
                         file_value: Value, args_passed: list[str], pass_all: bool) -> None:
         path = resolved_text(file_value)
         if path is None:
-            reasons = "; ".join(f"{h.text}: {h.reason}" for h in holes(file_value))
+            reasons = why_unresolved(file_value)
             self._report("unresolved", context.filename, element,
                          f"include file {text_of(file_value)!r} not followed: {reasons}")
             return

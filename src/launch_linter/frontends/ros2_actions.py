@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import Union
 
 from launch_linter.model.transform import LaunchFormat
-from launch_linter.resolve.ros2_substitution import Subs, Text
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Value
 
 
@@ -88,6 +88,9 @@ class Include:
     condition: Predicate | None
     path: Subs
     args: tuple[tuple[Subs, Subs], ...]
+    args_known: bool = True
+    """False when the arguments passed are not known (a Python expression the linter does
+    not model): they may set any launch configuration."""
 
 
 @dataclass(frozen=True)
@@ -110,15 +113,24 @@ class RunNode:
     parameters: tuple[Params | ParamsUnknown, ...] = ()
     """Kept for the nodes that tf rules need (robot_state_publisher's description,
     localization and odometry frame parameters)."""
+    uses: tuple[Subs, ...] = ()
+    """Every other substitution the action performs when it runs (remappings, parameters,
+    other attributes), resolved only to check the launch configurations they read."""
 
 
 def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:
     """``ros2 run PKG EXEC ARGS...`` as an executable's argv items: (package, executable,
-    arguments), or None when the command is something else."""
+    arguments), or None when the command is something else. The program may be written
+    as a path ending in ``/ros2`` or found with ``$(find-exec ros2)``."""
     if len(items) < 4:
         return None
     words = []
     for item in items[:2]:
+        if len(item) == 1 and isinstance(item[0], Call) and item[0].name == "find-exec" and (
+            [written(arg) for arg in item[0].args] == ["ros2"]
+        ):
+            words.append("ros2")  # FindExecutable(name='ros2'), $(find-exec ros2)
+            continue
         if not all(isinstance(sub, Text) for sub in item):
             return None
         words.append("".join(sub.text for sub in item if isinstance(sub, Text)))
@@ -126,6 +138,17 @@ def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | Non
     if not (program == "ros2" or program.endswith("/ros2")) or verb != "run":
         return None
     return items[2], items[3], tuple(items[4:])
+
+
+SHELL_SPECIAL = frozenset("$`;|&<>*?()[]{}~!#\n")
+"""What a shell reads other than as words and quotes (expansions, globs, several commands,
+redirections, comments)."""
+
+
+def shell_reads_as_words(line: str) -> bool:
+    """Whether a shell (``shell=True``) splits ``line`` into the words ``shlex.split``
+    gives, running one program."""
+    return not any(character in SHELL_SPECIAL for character in line)
 
 
 @dataclass(frozen=True)
@@ -155,6 +178,9 @@ class Component:
     name: Subs | None
     namespace: Subs | None
     parameters: tuple[Params | ParamsUnknown, ...]
+    uses: tuple[Subs, ...] = ()
+    """Every other substitution the action performs when it runs (remappings, parameters,
+    other attributes), resolved only to check the launch configurations they read."""
 
 
 @dataclass(frozen=True)
@@ -164,6 +190,9 @@ class LoadComponents:
     where: Where
     condition: Predicate | None
     components: tuple[Component, ...]
+    uses: tuple[Subs, ...] = ()
+    """Every other substitution the action performs when it runs (remappings, parameters,
+    other attributes), resolved only to check the launch configurations they read."""
 
 
 @dataclass(frozen=True)
@@ -177,6 +206,17 @@ class Deferred:
 
 
 @dataclass(frozen=True)
+class Uses:
+    """An action the linter does not otherwise model (``<set_parameter>``, ``LogInfo``,
+    an ``ExecuteProcess`` ...): only the substitutions it performs when it runs, to check
+    the launch configurations they read."""
+
+    where: Where
+    condition: Predicate | None
+    uses: tuple[Subs, ...]
+
+
+@dataclass(frozen=True)
 class Unfollowed:
     """Something that may launch nodes but that the linter cannot follow."""
 
@@ -186,12 +226,12 @@ class Unfollowed:
 
 ACTION_TYPES = (
     DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
-    LoadComponents, Deferred, Unfollowed,
+    LoadComponents, Deferred, Uses, Unfollowed,
 )
 """The action classes, for ``isinstance`` (Python 3.8 has no run-time ``X | Y``)."""
 Action = Union[
     DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
-    LoadComponents, Deferred, Unfollowed,
+    LoadComponents, Deferred, Uses, Unfollowed,
 ]
 
 

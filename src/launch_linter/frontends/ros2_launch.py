@@ -147,6 +147,8 @@ class Ros2Loader(Ros2Runner):
             return
         here = _Frame(frame.filename, frame.launch_format, frame.chain, frame.included_from,
                       frame.condition & own)
+        for subs in component.uses:
+            self._resolve(subs, scope, here, component.where)
         package = self._resolve(component.package, scope, here, component.where)
         plugin = self._resolve(component.plugin, scope, here, component.where)
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):

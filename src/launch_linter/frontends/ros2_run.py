@@ -26,6 +26,7 @@ from launch_linter.frontends.ros2_actions import (
     SetEnv,
     SetVar,
     Unfollowed,
+    Uses,
     Where,
 )
 from launch_linter.frontends.ros2_python import read_python
@@ -33,7 +34,13 @@ from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Problem
-from launch_linter.model.launch import Comment, FileStatus, LaunchTree, holds_directive
+from launch_linter.model.launch import (
+    Comment,
+    FileStatus,
+    LaunchTree,
+    UndeclaredUse,
+    holds_directive,
+)
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     ALWAYS,
@@ -53,8 +60,17 @@ from launch_linter.resolve.ros2_substitution import (
     to_bool,
     written,
 )
-from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+from launch_linter.resolve.value import (
+    Hole,
+    Value,
+    holes,
+    is_resolved,
+    resolved_text,
+    text_of,
+    why_unresolved,
+)
 from launch_linter.resolve.xml_safe import read_launch_bytes
+from launch_linter.workspace.mentions import named_by_another_file
 
 STATIC_TF_EXECUTABLE = "static_transform_publisher"
 STATIC_TF_PACKAGE = "tf2_ros"
@@ -62,6 +78,9 @@ STATIC_TF_PLUGIN = "tf2_ros::StaticTransformBroadcasterNode"
 MAX_INCLUDE_DEPTH = 32
 MAX_FILES_PER_TREE = 2_000
 MAX_ACTIONS_PER_TREE = 200_000
+MAX_SUGGESTED_NAMES = 32
+MAX_SUGGESTION_CANDIDATES = 2_000
+"""Bounds of the "did you mean" of undeclared launch configurations."""
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
 
@@ -205,6 +224,15 @@ class Ros2Runner:
         """The action being run (where the work budget ran out, if it does)."""
         self.root_display = ""
         self._displayed: dict[str, str] = {}
+        self._declared: set[str] = set()
+        """Every launch configuration the tree declares, sets or passes, wherever."""
+        self._open: str | None = None
+        """The first thing met so far that could set launch configurations the linter
+        cannot see."""
+        self._reading: tuple[Where, _Frame] | None = None
+        """Where the value being resolved is read (for the launch configurations it reads)."""
+        self._unset: dict[tuple[str, int, int, str], tuple[_Frame, str | None]] = {}
+        """Launch configurations read without a default where none was set, by place."""
 
     # -- diagnostics -------------------------------------------------------------------
     def _display(self, path: str) -> str:
@@ -245,20 +273,80 @@ class Ros2Runner:
         except BudgetExceeded as exc:
             self._report("unresolved", self._where or Where(absolute, 1, 1),
                          exc.message)
-        return self._tree(FileStatus.OK)
+            self._opened("the launch was followed only in part")
+        return self._tree(FileStatus.OK, self._undeclared(absolute))
 
-    def _tree(self, status: FileStatus) -> LaunchTree:
+    def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
+              ) -> LaunchTree:
         return LaunchTree(
             root=self.root_display,
             status=status,
             transforms=tuple(self.transforms),
-            problems=tuple(self.problems),
+            # An attribute resolved twice (a node's name, then its other substitutions)
+            # reports what launch refuses in it once.
+            problems=tuple(dict.fromkeys(self.problems)),
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
             descriptions=tuple(self.descriptions),
             nodes=tuple(self.nodes),
+            undeclared=undeclared,
         )
+
+    # -- launch configurations read but never declared -----------------------------------
+    def _opened(self, reason: str) -> None:
+        if self._open is None:
+            self._open = reason
+
+    def _missing(self, name: str) -> None:
+        """``resolve`` read ``name`` without a default where it is not set."""
+        if self._reading is None:
+            return
+        where, frame = self._reading
+        key = (where.path, where.line, where.column, name)
+        if key not in self._unset:
+            self._unset[key] = (frame, self._open)
+
+    def _undeclared(self, root: str) -> tuple[UndeclaredUse, ...]:
+        """The configurations read where unset that nothing in the tree declares, sets or
+        passes (a declared one without a default is the user's to give)."""
+        found = [(key, frame, opened) for key, (frame, opened) in self._unset.items()
+                 if key[3] not in self._declared]
+        if not found:
+            return ()
+        # Imported here: difflib is needed only for a finding's "did you mean".
+        import difflib
+
+        includer = named_by_another_file(root)
+        # A "did you mean" for the first names only, against the first declared ones:
+        # each comparison costs, and a hostile file can hold thousands of both.
+        declared = sorted(self._declared)[:MAX_SUGGESTION_CANDIDATES]
+        similar: dict[str, str | None] = {}
+        for name in dict.fromkeys(key[3] for key, _, _ in found):
+            if len(similar) >= MAX_SUGGESTED_NAMES:
+                break
+            similar[name] = next(iter(difflib.get_close_matches(name, declared, 1, 0.8)), None)
+        return tuple(
+            UndeclaredUse(
+                name, self._display(path), line, column, self.root_display,
+                # What was not followed before the read: launch runs actions in order, so
+                # nothing met later could have set it in time.
+                bool(frame.condition.literals), opened,
+                None if includer is None else self._display(includer),
+                similar.get(name),
+            )
+            for (path, line, column, name), frame, opened in found
+        )
+
+    def _declares(self, action: Action) -> None:
+        """Note the configuration an action declares or sets, whether or not it runs:
+        a declaration under a false condition is still the author's (it is the condition
+        that leaves the configuration unset, and the linter does not judge that)."""
+        if isinstance(action, (DeclareArg, SetVar)):
+            if all(isinstance(sub, Text) for sub in action.name):
+                self._declared.add(written(action.name))
+            else:
+                self._opened(f"line {action.where.line}: a configuration name is not literal")
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:
         display = self._display(absolute)
@@ -291,11 +379,12 @@ class Ros2Runner:
         # every value resolved in this scope and file (unless a mapping was replaced).
         if made is None or made.configs is not scope.configs or made.env is not scope.env:
             made = Ros2Scope(scope.configs, scope.env, self.options.packages.find,
-                             self._anonymous, frame.filename, self.work)
+                             self._anonymous, frame.filename, self.work, self._missing)
             scope.resolvers[frame.filename] = made
         return made
 
     def _resolve(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> Value:
+        self._reading = (where, frame)
         try:
             return resolve(subs, self._substitution_scope(scope, frame))
         except SubstitutionError as exc:
@@ -346,7 +435,9 @@ class Ros2Runner:
     def _run_one(self, action: Action, scope: _Scope, frame: _Frame) -> None:
         if isinstance(action, Unfollowed):
             self._report("unresolved", action.where, action.reason)
+            self._opened(action.reason)
             return
+        self._declares(action)
         own = self._condition(action.condition, scope, frame, action.where)
         if own is None:
             return
@@ -359,7 +450,14 @@ class Ros2Runner:
         if handler is not None:
             handler(self, action, scope, here)
 
+    def _uses(self, action: RunNode | LoadComponents | Uses, scope: _Scope, frame: _Frame
+              ) -> None:
+        """Resolve what the action performs, for the launch configurations it reads."""
+        for subs in action.uses:
+            self._resolve(subs, scope, frame, action.where)
+
     def _components(self, action: LoadComponents, scope: _Scope, frame: _Frame) -> None:
+        self._uses(action, scope, frame)
         for component in action.components:
             self._component(component, scope, frame)
 
@@ -450,18 +548,25 @@ class Ros2Runner:
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         path_value = self._resolve(action.path, scope, frame, action.where)
         passed: list[str] = []
+        if not action.args_known:
+            self._opened(f"line {action.where.line}: the arguments of an include are unknown")
         for name_subs, value_subs in action.args:
             name = self._name(name_subs, scope, frame, action.where, "include argument")
             if name is None:
+                self._opened(f"line {action.where.line}: an include argument's name is "
+                             f"unresolved")
                 continue
+            # Passed from here on (the include is not scoped): reads before it still fail,
+            # like the read of this very value, which launch performs before setting it.
             passed.append(name)
             value = self._resolve(value_subs, scope, frame, action.where)
             self._set(scope, name, value, frame.condition, f"$(var {name})")
         path = resolved_text(path_value)
         if path is None:
-            reasons = "; ".join(f"{h.text}: {h.reason}" for h in holes(path_value))
+            reasons = why_unresolved(path_value)
             self._report("unresolved", action.where,
                          f"include file {text_of(path_value)!r} not followed: {reasons}")
+            self._opened(f"line {action.where.line}: an include is not followed")
             return
         absolute = _locate(path, frame.filename)
         if absolute is None:
@@ -469,6 +574,7 @@ class Ros2Runner:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
                 self._report("unresolved", action.where, f"include file {path!r} not followed: "
                              f"it is under the user's home directory, which depends on the machine")
+                self._opened(f"line {action.where.line}: an include is not followed")
                 return
             variables = [v for v in _environment_names(action.path) if v not in scope.env]
             if variables and not self.options.study_errors:
@@ -476,26 +582,32 @@ class Ros2Runner:
                 self._report("unresolved", action.where, f"include file {path!r} not followed: "
                              f"it depends on the environment ({', '.join(variables)}; give "
                              f"them with --env)")
+                self._opened(f"line {action.where.line}: an include is not followed")
                 return
             self._report("roslaunch_error", action.where, f"included file not found: {path}")
+            self._opened(f"line {action.where.line}: an include is not followed")
             return
         if absolute in frame.chain:
             cycle = " -> ".join(self._display(p) for p in (*frame.chain, absolute))
             self._report("roslaunch_error", action.where, f"include cycle: {cycle}")
+            self._opened(f"line {action.where.line}: an include is not followed")
             return
         if len(frame.chain) > MAX_INCLUDE_DEPTH or len(self.files) >= MAX_FILES_PER_TREE:
             self._report("roslaunch_error", action.where,
                          f"includes nested deeper than {MAX_INCLUDE_DEPTH} levels; not followed")
+            self._opened(f"line {action.where.line}: an include is not followed")
             return
         try:
             data = read_launch_bytes(absolute)
         except OSError as exc:
             self._report("roslaunch_error", action.where,
                          f"cannot read included file {path}: {exc.strerror or exc}")
+            self._opened(f"line {action.where.line}: an include is not followed")
             return
         self.work.produce(len(data))
         read = self._read_file(absolute, data)
         if read.actions is None:
+            self._opened(f"line {action.where.line}: an include is not followed")
             return
         for name in _required_arguments(read.actions):
             if name not in passed:
@@ -520,6 +632,7 @@ class Ros2Runner:
 
 
 def _run_node(runner: Ros2Runner, action: RunNode, scope: _Scope, frame: _Frame) -> None:
+    runner._uses(action, scope, frame)
     runner._node(action, scope, frame)  # the subclass's, looked up on the runner
 
 
@@ -533,5 +646,6 @@ _ACTIONS: dict[type, Callable[[Ros2Runner, Any, _Scope, _Frame], None]] = {
     RunNode: _run_node,
     LoadComponents: Ros2Runner._components,
     Deferred: Ros2Runner._deferred,
+    Uses: Ros2Runner._uses,
 }
 """What running each kind of action does (an ``Unfollowed`` is reported before)."""

@@ -29,8 +29,10 @@ from launch_linter.frontends.ros2_actions import (
     RunNode,
     SetEnv,
     SetVar,
+    Uses,
     Where,
     ros2_run,
+    shell_reads_as_words,
 )
 from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.model.launch import may_hold_directive
@@ -40,8 +42,10 @@ from launch_linter.resolve.ros2_substitution import (
     Opaque,
     Subs,
     SubstitutionSyntaxError,
+    Text,
     parse,
     split_command_line,
+    written,
 )
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
@@ -113,6 +117,22 @@ class _Reader:
             return Predicate(False, unless_value)
         return None
 
+    def performed(self, entity: Entity) -> tuple[Subs, ...]:
+        """Every attribute of ``entity`` and of the entities nested in it (parameters,
+        remappings, composable nodes) but its conditions: the substitutions launch performs
+        when the action runs."""
+        found: list[Subs] = []
+        pending = [entity]
+        while pending:
+            current = pending.pop()
+            for attribute in current.attrs:
+                if attribute not in ("if", "unless"):
+                    value = self.subs(current, attribute)
+                    if value is not None and any(not isinstance(s, Text) for s in value):
+                        found.append(value)
+            pending.extend(item for items in current.lists.values() for item in items)
+        return tuple(found)
+
     def actions(self, entities: list[Entity]) -> tuple[Action, ...]:
         out: list[Action] = []
         for entity in entities:
@@ -163,8 +183,11 @@ class _Reader:
             components = tuple(
                 self.component(child) for child in entity.lists.get("composable_node", [])
             )
-            return LoadComponents(where, condition, components)
-        return None
+            return LoadComponents(where, condition, components, self.performed(entity))
+        # Any other action (<set_parameter>, <set_remap>, <log>, an extension's tag) still
+        # performs its substitutions when it runs.
+        uses = self.performed(entity)
+        return Uses(where, condition, uses) if uses or condition is not None else None
 
     def include(self, entity: Entity, where: Where, condition: Predicate | None
                 ) -> Include | None:
@@ -205,14 +228,18 @@ class _Reader:
             arguments=arguments,
             args_written=entity.attrs.get("args", ""),
             parameters=self.params(entity.lists.get("param", [])),
+            uses=self.performed(entity),
         )
 
     def executable(self, entity: Entity, where: Where, condition: Predicate | None
-                   ) -> RunNode | None:
+                   ) -> RunNode | Uses | None:
         """``<executable cmd="ros2 run PKG EXEC ARGS">`` starts that node."""
         cmd = self.required(entity, "cmd")
         if cmd is None:
             return None
+        shell = (entity.attrs.get("shell") or "").strip().lower() == "true"
+        if shell and not shell_reads_as_words(written(cmd)):
+            return Uses(where, condition, self.performed(entity))
         try:
             items = split_command_line(cmd)
         except CommandLineError as exc:
@@ -222,12 +249,13 @@ class _Reader:
             return None
         run = ros2_run(items)
         if run is None:
-            return None
+            return Uses(where, condition, self.performed(entity))
         package, executable, arguments = run
         return RunNode(
             where=where, condition=condition, package=package, executable=executable,
             name=None, namespace=None, arguments=arguments,
             args_written=entity.attrs.get("cmd", ""), pushed_namespace=False,
+            uses=self.performed(entity),
         )
 
     def component(self, entity: Entity) -> Component:
@@ -304,10 +332,12 @@ def actions_of(path: str, root: Entity, launch_format: str = "xml"
     schema = schema_problems(root, launch_format)
     reader = _Reader(path)
     actions = reader.actions(root.children)
-    if any(problem.rule in ("ros2_schema", "parse_error")
-           for problem in (*schema, *reader.problems)):
-        return None, (*schema, *reader.problems)
-    return actions, (*schema, *reader.problems)
+    # An attribute read twice (by its action, then with everything the action performs)
+    # reports its mistake once.
+    problems = tuple(dict.fromkeys((*schema, *reader.problems)))
+    if any(problem.rule in ("ros2_schema", "parse_error") for problem in problems):
+        return None, problems
+    return actions, problems
 
 
 def _entity(element: Element) -> Entity:

@@ -53,7 +53,10 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
     graph = subparsers.add_parser(
         "graph", help="draw the static transform trees of a launch file or a folder"
     )
-    graph.add_argument("path")
+    graph.add_argument(
+        "path", nargs="?", default=os.curdir,
+        help="a launch file or a folder (default: the current folder)",
+    )
     add_discovery_options(graph)
     graph.add_argument("-o", "--output", metavar="FILE.svg|.png|.dot|.mmd")
     graph.add_argument("--arg", action="append", metavar="NAME:=VALUE")
@@ -92,7 +95,9 @@ def run(ns: argparse.Namespace) -> int:
                 handle.write(text)
         except OSError as exc:
             raise UsageError(f"cannot write {output}: {exc.strerror or exc}") from None
+    capped = (f" (of {len(graph.edges) + graph.left_out}: too large for a readable picture; "
+              "`launch-linter transforms` lists them all)" if graph.left_out else "")
     sys.stderr.write(
-        f"wrote {output}: {len(graph.edges)} edge(s), {len(graph.frames)} frame(s)\n"
+        f"wrote {output}: {len(graph.edges)} edge(s){capped}, {len(graph.frames)} frame(s)\n"
     )
     return EXIT_OK

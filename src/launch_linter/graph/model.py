@@ -5,24 +5,49 @@ A transform defines its child frame (each frame has one parent in tf), so a diag
 a transform marks its edge and its child frame. Only errors and warnings mark; ``info``
 diagnostics (what could not be resolved) show as ``?`` in the labels instead.
 
-Linting a folder gives several launch trees. Each entry point (a root file that no other
-root includes) becomes one cluster with its own frames: separate launch files usually
-describe separate robots or configurations, where ``base_link`` is not one frame. A file
-that is also included by another root is drawn inside that root's cluster only.
+Linting a folder gives several launch trees. Entry points (root files that no other root
+includes) with the same edges (:mod:`launch_linter.report.published`: the same elements
+with the same values) describe one robot: it is drawn once, as one cluster titled with
+those entry points. Separate robots or configurations are separate clusters, with their
+own frames (``base_link`` of two robots is not one frame). Entry points that publish no
+edge are not drawn: a note says why (the description that was not read, the first value
+that could not be resolved). A picture of more than :data:`MAX_DRAWN_EDGES` edges would be
+unreadable and slow to lay out: the first edges from the roots are drawn, and a note says
+how many are left out.
 """
 
 from __future__ import annotations
 
+import collections
 import os
 from collections.abc import Iterable
 from dataclasses import dataclass
 
 from launch_linter.engine import LintResult
 from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Field, RotationKind, StaticTransform
+from launch_linter.report.published import (
+    TfEdge,
+    edge_identity,
+    entry_points,
+    named,
+    tree_edges,
+)
 
 MAX_NOTES = 12
+MAX_TITLE_NAMES = 8
+"""Entry points named in a cluster's title (then "... and N more")."""
+MAX_LINE_NAMES = 3
+"""Entry points named on one line of the caption."""
+MAX_REASON = 160
+MAX_REASONS = 6
+"""Characters of a reason why an entry point publishes nothing (a line or two)."""
+"""Entry points named in a cluster's title (then "... and N more")."""
+MAX_DRAWN_EDGES = 300
+"""Edges given to Graphviz: more is no longer readable at screen size, and its layout of
+labelled edges grows faster than linearly (a 30,000-joint chain took 111 s)."""
 
 
 @dataclass(frozen=True)
@@ -58,7 +83,9 @@ class TfGraph:
     notes: tuple[str, ...]
     """Diagnostics that are not at a transform (parse errors, roslaunch errors)."""
     clusters: tuple[str, ...] = ()
-    """One title per entry point when there is more than one (``cluster`` indexes it)."""
+    """One title per distinct tree when there is more than one (``cluster`` indexes it)."""
+    left_out: int = 0
+    """Edges not drawn: the picture would be too large (see :data:`MAX_DRAWN_EDGES`)."""
 
     @property
     def legend(self) -> tuple[str, ...]:
@@ -120,42 +147,15 @@ def _edge_label(
     return tuple(lines)
 
 
-def entry_points(result: LintResult) -> list[int]:
-    """Indices of the trees whose root no other tree includes."""
-    included: set[str] = set()
-    for tree in result.trees:
-        included.update(f for f in tree.files if f != tree.root)
-    return [i for i, tree in enumerate(result.trees) if tree.root not in included]
-
-
-def _placed_transforms(result: LintResult) -> list[tuple[int, StaticTransform]]:
-    """(cluster, transform) for each transform to draw; one cluster when one tree."""
-    trees = result.trees
-    if len(trees) <= 1:
-        return [(0, t) for t in result.transforms]
-    return [
-        (cluster, transform)
-        for cluster, index in enumerate(entry_points(result))
-        for transform in trees[index].transforms
-    ]
-
-
-def _placed_joints(result: LintResult) -> list[tuple[int, RobotJoint]]:
-    """(cluster, joint) for each URDF joint to draw, clustered like the transforms."""
-    trees = result.trees
-    if len(trees) <= 1:
-        return [(0, j) for tree in trees for j in tree.joints]
-    return [
-        (cluster, joint)
-        for cluster, index in enumerate(entry_points(result))
-        for joint in trees[index].joints
-    ]
-
-
 def _joint_label(joint: RobotJoint, rules: list[str]) -> tuple[str, ...]:
-    lines = [f"URDF {joint.joint_type} joint {joint.name}"]
+    """The joint, its type and origin (a zero rotation left out: most joints have one),
+    and its place; the blue colour says it is a URDF joint."""
+    lines = [f"{joint.name} ({joint.joint_type})"]
     lines.append("xyz ?" if joint.translation is None else f"xyz {_numbers(joint.translation)}")
-    lines.append("rpy ?" if joint.rpy is None else f"rpy {_numbers(joint.rpy)}")
+    if joint.rpy is None:
+        lines.append("rpy ?")
+    elif any(joint.rpy):
+        lines.append(f"rpy {_numbers(joint.rpy)}")
     if not joint.condition.always:
         lines.append(joint.condition.describe())
     lines.append(f"{os.path.basename(joint.path)}:{joint.line}")
@@ -164,92 +164,225 @@ def _joint_label(joint: RobotJoint, rules: list[str]) -> tuple[str, ...]:
     return tuple(lines)
 
 
-def build_graph(result: LintResult) -> TfGraph:
-    """The graph of every transform in ``result``, marked with its diagnostics."""
+def _diagnostics_at(result: LintResult) -> dict[tuple[str, int, int], list[Diagnostic]]:
     at: dict[tuple[str, int, int], list[Diagnostic]] = {}
     for diagnostic in result.diagnostics:
         at.setdefault((diagnostic.path, diagnostic.line, diagnostic.column), []).append(diagnostic)
-    frames: dict[str, Frame] = {}
-    edges: list[Edge] = []
-    placed: set[tuple[str, int, int]] = set()
-    seen: set[tuple[object, ...]] = set()
-    unnamed: dict[int, int] = {}
-    for index, (cluster, transform) in enumerate(_placed_transforms(result)):
-        identity = (cluster, transform.path, transform.line, transform.column, transform.args,
-                    transform.condition)
-        if identity in seen:
-            continue  # one element reached twice with the same values draws one edge
-        seen.add(identity)
-        if transform.name is None:
-            unnamed[cluster] = unnamed.get(cluster, 0) + 1
-        where = (transform.path, transform.line, transform.column)
-        placed.add(where)
-        found = at.get(where, [])
+    return at
+
+
+class _Builder:
+    """Frames and edges of the picture, cluster by cluster."""
+
+    def __init__(self, at: dict[tuple[str, int, int], list[Diagnostic]]) -> None:
+        self.at = at
+        self.frames: dict[str, Frame] = {}
+        self.edges: list[Edge] = []
+        self.placed: set[tuple[str, int, int]] = set()
+        self.unnamed: dict[int, int] = {}
+
+    def _found(self, path: str, line: int, column: int) -> tuple[list[Diagnostic], list[str]]:
+        where = (path, line, column)
+        self.placed.add(where)
+        found = self.at.get(where, [])
         serious = [d for d in found if d.severity is not Severity.INFO]
-        rules = sorted({d.rule for d in serious})
+        return found, sorted({d.rule for d in serious})
+
+    def _mark(self, key: str) -> None:
+        frame = self.frames[key]
+        self.frames[key] = Frame(frame.key, frame.label, frame.resolved, True, frame.cluster)
+
+    def add(self, cluster: int, edge: TfEdge) -> None:
+        if isinstance(edge, RobotJoint):
+            self.add_joint(cluster, edge)
+        else:
+            self.add_transform(cluster, edge)
+
+    def add_transform(self, cluster: int, transform: StaticTransform) -> None:
+        if transform.name is None:
+            self.unnamed[cluster] = self.unnamed.get(cluster, 0) + 1
+        found, rules = self._found(transform.path, transform.line, transform.column)
+        index = len(self.edges)
         parent = _frame_key(transform, "parent", index, cluster)
         child = _frame_key(transform, "child", index, cluster)
         for key, label, resolved in (parent, child):
-            frames.setdefault(key, Frame(key, label, resolved, False, cluster))
-        if serious:
-            frames[child[0]] = Frame(child[0], child[1], child[2], True, cluster)
-        edges.append(
-            Edge(
-                parent=parent[0],
-                child=child[0],
-                label=_edge_label(transform, rules, unnamed.get(cluster, 0)),
-                conditional=not transform.condition.always,
-                flagged=bool(serious),
-                tooltip="\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found),
-                cluster=cluster,
-            )
-        )
-    for cluster, joint in _placed_joints(result):
-        drawn = (cluster, joint.path, joint.line, joint.column, joint.parent, joint.child,
-                 joint.translation, joint.rpy, joint.condition)
-        if drawn in seen:
-            continue
-        seen.add(drawn)
-        where = (joint.path, joint.line, joint.column)
-        placed.add(where)
-        found = at.get(where, [])
-        serious = [d for d in found if d.severity is not Severity.INFO]
-        rules = sorted({d.rule for d in serious})
+            self.frames.setdefault(key, Frame(key, label, resolved, False, cluster))
+        if rules:
+            self._mark(child[0])
+        self.edges.append(Edge(
+            parent=parent[0], child=child[0],
+            label=_edge_label(transform, rules, self.unnamed.get(cluster, 0)),
+            conditional=not transform.condition.always, flagged=bool(rules),
+            tooltip=_tooltip(found), cluster=cluster,
+        ))
+
+    def add_joint(self, cluster: int, joint: RobotJoint) -> None:
+        found, rules = self._found(joint.path, joint.line, joint.column)
         prefix = f"{cluster}|" if cluster else ""
         ends = []
         for which, frame in (("parent", joint.parent), ("child", joint.child)):
-            key = prefix + (frame if frame is not None else f"?urdf{len(edges)}:{which}")
-            frames.setdefault(key, Frame(key, frame or "?", frame is not None, False, cluster))
+            key = prefix + (frame if frame is not None else f"?urdf{len(self.edges)}:{which}")
+            self.frames.setdefault(key, Frame(key, frame or "?", frame is not None, False,
+                                              cluster))
             ends.append(key)
-        if serious:
-            frames[ends[1]] = Frame(ends[1], frames[ends[1]].label, frames[ends[1]].resolved,
-                                    True, cluster)
-        edges.append(Edge(
+        if rules:
+            self._mark(ends[1])
+        self.edges.append(Edge(
             parent=ends[0], child=ends[1], label=_joint_label(joint, rules),
-            conditional=not joint.condition.always, flagged=bool(serious),
-            tooltip="\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found),
-            cluster=cluster, source="urdf", dynamic=joint.dynamic,
+            conditional=not joint.condition.always, flagged=bool(rules),
+            tooltip=_tooltip(found), cluster=cluster, source="urdf", dynamic=joint.dynamic,
         ))
+
+
+def _tooltip(found: list[Diagnostic]) -> str:
+    return "\n".join(f"{d.severity.value}: {d.message} [{d.rule}]" for d in found)
+
+
+def why_nothing(tree: LaunchTree, result: LintResult) -> str:
+    """Why ``tree`` publishes no edge: the descriptions that were not read (and why), or
+    the first value that could not be resolved in its files."""
+    reasons: list[str] = []
+    for source in tree.descriptions:
+        where = f"robot_description at {source.path}:{source.line}"
+        if source.file is None:
+            reasons.append(f"{where} not read: {source.reason or 'its file is not known'}")
+            continue
+        failed = [d.message for d in result.diagnostics if d.rule == "unresolved"
+                  and (d.path, d.line) == (source.path, source.line)]
+        reasons.append(f"{where} gave no joint" + (f": {failed[0]}" if failed else
+                                                   " (no robot_state_publisher publishes it)"))
+    if reasons:
+        return "; ".join(reasons[:2]) + (f"; and {len(reasons) - 2} more" if len(reasons) > 2
+                                         else "")
+    files = set(tree.files)
+    unresolved = [d for d in result.diagnostics if d.rule == "unresolved" and d.path in files]
+    tail = (f"; {len(unresolved)} value(s) unresolved, first {unresolved[0].path}:"
+            f"{unresolved[0].line}: {unresolved[0].message}" if unresolved else "")
+    return "no static_transform_publisher and no robot_description" + tail
+
+
+def _why_nothing_notes(trees: list[LaunchTree], result: LintResult) -> list[str]:
+    """One line per reason, naming the entry points it holds for (a few of them)."""
+    by_reason: dict[str, list[str]] = {}
+    for tree in trees:
+        by_reason.setdefault(_shortened(why_nothing(tree, result)), []).append(tree.root)
+    lines = [f"  {named(roots, MAX_LINE_NAMES)}: {reason}"
+             for reason, roots in list(by_reason.items())[:MAX_REASONS]]
+    if len(by_reason) > MAX_REASONS:
+        lines.append(f"  ... and {len(by_reason) - MAX_REASONS} more reasons")
+    return lines
+
+
+def _shortened(text: str) -> str:
+    return text if len(text) <= MAX_REASON else text[: MAX_REASON - 1] + "…"
+
+
+def _groups(result: LintResult) -> tuple[list[tuple[list[str], list[TfEdge]]], list[int]]:
+    """The entry points with the same edges grouped (first met first), each group with its
+    edges; and the indices of the entry points with no edge."""
+    groups: dict[frozenset[object], tuple[list[str], list[TfEdge]]] = {}
+    empty: list[int] = []
+    for index in entry_points(result):
+        tree = result.trees[index]
+        edges = tree_edges(tree)
+        if not edges:
+            empty.append(index)
+            continue
+        signature = frozenset(edge_identity(e) for e in edges)
+        groups.setdefault(signature, ([], edges))[0].append(tree.root)
+    return list(groups.values()), empty
+
+
+def _capped(edges: list[Edge]) -> list[Edge]:
+    """At most :data:`MAX_DRAWN_EDGES` edges: breadth-first from the frames that are no
+    edge's child, so that the picture shows the top of each tree."""
+    if len(edges) <= MAX_DRAWN_EDGES:
+        return edges
+    children: dict[str, list[int]] = {}
+    for index, edge in enumerate(edges):
+        children.setdefault(edge.parent, []).append(index)
+    is_child = {edge.child for edge in edges}
+    queue = collections.deque(i for i, e in enumerate(edges) if e.parent not in is_child)
+    chosen: list[int] = []
+    taken: set[int] = set()
+    while queue and len(chosen) < MAX_DRAWN_EDGES:
+        index = queue.popleft()
+        if index in taken:
+            continue
+        taken.add(index)
+        chosen.append(index)
+        queue.extend(children.get(edges[index].child, ()))
+    for index in range(len(edges)):  # cycles: no root reaches them
+        if len(chosen) >= MAX_DRAWN_EDGES:
+            break
+        if index not in taken:
+            chosen.append(index)
+    return [edges[i] for i in sorted(chosen)]
+
+
+def build_graph(result: LintResult) -> TfGraph:
+    """The graph of every transform in ``result``, marked with its diagnostics."""
+    builder = _Builder(_diagnostics_at(result))
+    notes: list[str] = []
+    clusters: tuple[str, ...] = ()
+    several = len(result.trees) > 1
+    if several:
+        groups, empty = _groups(result)
+        titles = []
+        for cluster, (roots, tf_edges) in enumerate(groups):
+            for tf_edge in tf_edges:
+                builder.add(cluster if len(groups) > 1 else 0, tf_edge)
+            titles.append(_cluster_title(roots, tf_edges))
+        clusters = tuple(titles) if len(groups) > 1 else ()
+        if len(groups) == 1 and len(groups[0][0]) > 1:
+            notes.append(titles[0])
+        if empty:
+            notes.append(f"{len(empty)} entry point(s) publish no transform:")
+            notes.extend(_why_nothing_notes([result.trees[i] for i in empty], result))
+    else:
+        for tree in result.trees:
+            for tf_edge in tree_edges(tree):
+                builder.add(0, tf_edge)
+        if not builder.edges:
+            notes.extend(f"{tree.root}: {why_nothing(tree, result)}" for tree in result.trees)
+    edges = _capped(builder.edges)
+    if len(edges) < len(builder.edges):
+        notes.append(
+            f"too large for a readable picture: {len(edges)} of {len(builder.edges)} edges "
+            f"drawn (breadth-first from the roots); `launch-linter transforms` lists them all"
+        )
+    drawn = {key for edge in edges for key in (edge.parent, edge.child)}
+    frames = [frame for key, frame in builder.frames.items() if key in drawn]
     unplaced = [
         d for d in result.diagnostics
-        if (d.path, d.line, d.column) not in placed and d.severity is not Severity.INFO
+        if (d.path, d.line, d.column) not in builder.placed and d.severity is not Severity.INFO
     ]
-    notes = [f"{d.path}:{d.line}: {d.severity.value}: {d.message} [{d.rule}]"
-             for d in unplaced[:MAX_NOTES]]
+    notes.extend(f"{d.path}:{d.line}: {d.severity.value}: {d.message} [{d.rule}]"
+                 for d in unplaced[:MAX_NOTES])
     if len(unplaced) > MAX_NOTES:
         notes.append(f"... and {len(unplaced) - MAX_NOTES} more")
-    clusters: tuple[str, ...] = ()
-    if len(result.trees) > 1:
-        clusters = tuple(result.trees[i].root for i in entry_points(result))
+    return TfGraph(_title(result, builder.edges, len(builder.frames)), tuple(frames),
+                   tuple(edges), tuple(notes), clusters, len(builder.edges) - len(edges))
+
+
+def _cluster_title(roots: list[str], edges: list[TfEdge]) -> str:
+    joints = sum(1 for e in edges if isinstance(e, RobotJoint))
+    counts = f"{len(edges) - joints} static transform(s), {joints} URDF joint(s)"
+    if len(roots) == 1:
+        return f"{roots[0]}: {counts}"
+    return f"{len(roots)} entry points with this tree ({counts}):\n" + "\n".join(
+        roots[:MAX_TITLE_NAMES]) + (f"\n... and {len(roots) - MAX_TITLE_NAMES} more"
+                                    if len(roots) > MAX_TITLE_NAMES else "")
+
+
+def _title(result: LintResult, edges: list[Edge], frames: int) -> str:
     roots = ", ".join(f.path for f in result.files)
     if len(result.files) > 3:
-        roots = f"{len(result.files)} launch files, {len(clusters)} entry point(s)"
+        roots = f"{len(result.files)} launch files, {len(entry_points(result))} entry point(s)"
     errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
     warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
     urdf = sum(1 for e in edges if e.source == "urdf")
-    title = (
+    return (
         f"{roots}: {len(edges) - urdf} static transform(s), {urdf} URDF joint(s), "
-        f"{len(frames)} frame(s), "
-        f"{errors} error(s), {warnings} warning(s)"
+        f"{frames} frame(s), {errors} error(s), {warnings} warning(s)"
     )
-    return TfGraph(title, tuple(frames.values()), tuple(edges), tuple(notes), clusters)

@@ -7,6 +7,7 @@ Frame ids and node names come from untrusted launch files: vertices get generate
 from __future__ import annotations
 
 import json
+import textwrap
 
 from launch_linter.graph.model import TfGraph
 from launch_linter.report.escape import printable
@@ -28,19 +29,105 @@ def _dot_string(text: str, line_break: str = "\\n") -> str:
     return '"' + line_break.join(lines) + '"'
 
 
+CAPTION_COLUMNS = 120
+"""Caption lines wrap here: a long message must not make the picture wider than a screen."""
+
+
+def _wrapped(text: str) -> list[str]:
+    """``text``'s lines wrapped at :data:`CAPTION_COLUMNS`, continued with an indent."""
+    indent = text[: len(text) - len(text.lstrip(" "))] + "    "
+    return [part for line in text.split("\n") for part in textwrap.wrap(
+        line, CAPTION_COLUMNS, subsequent_indent=indent, drop_whitespace=True,
+        break_on_hyphens=False) or [""]]
+
+
 def _ids(graph: TfGraph) -> dict[str, str]:
     return {frame.key: f"f{i}" for i, frame in enumerate(graph.frames)}
+
+
+WIDE_FAN = {"TB": 6, "LR": 14}
+"""Children of one frame laid side by side (``TB``: about what a screen's width holds
+with their labels) or one above the other (``LR``: a screen's height) before the leaves
+wrap onto further ranks."""
+MAX_WRAPPED_RANKS = 4
+
+
+def rank_gaps(graph: TfGraph, direction: str) -> list[int]:
+    """Per edge, how many ranks its child lies below its parent (Graphviz ``minlen``).
+    A frame with more than ``WIDE_FAN[direction]`` leaf children would make one rank as
+    long as all their labels: its leaves are dealt onto up to :data:`MAX_WRAPPED_RANKS`
+    ranks instead (what Graphviz's ``unflatten -l`` does); a child with children of its
+    own stays on the first rank, so that its subtree keeps its place."""
+    parents = {edge.parent for edge in graph.edges}
+    leaves: dict[str, list[int]] = {}
+    for index, edge in enumerate(graph.edges):
+        if edge.child not in parents:
+            leaves.setdefault(edge.parent, []).append(index)
+    gaps = [1] * len(graph.edges)
+    fan = WIDE_FAN[direction]
+    for indices in leaves.values():
+        if len(indices) <= fan:
+            continue
+        ranks = min(MAX_WRAPPED_RANKS, -(-len(indices) // fan))
+        for position, index in enumerate(indices):
+            gaps[index] = 1 + position % ranks
+    return gaps
+
+
+SCREEN = (1920, 1080)
+CELL = {"TB": (200, 110), "LR": (300, 70)}
+"""About how many pixels a frame with its edge label takes across and along a rank: a
+label's width when side by side (``TB``), its height when stacked (``LR``)."""
+
+
+def _shape(graph: TfGraph) -> tuple[int, int]:
+    """(depth, width): the most ranks of a cluster, and the frames on the widest rank of
+    each cluster summed (clusters lie side by side across the ranks)."""
+    children: dict[str, list[str]] = {}
+    for edge in graph.edges:
+        children.setdefault(edge.parent, []).append(edge.child)
+    is_child = {edge.child for edge in graph.edges}
+    cluster_of = {frame.key: frame.cluster for frame in graph.frames}
+    widths: dict[int, dict[int, int]] = {}
+    level = [key for key in children if key not in is_child]
+    seen = set(level)
+    depth = 0
+    while level:  # breadth-first: the number of frames at each depth of each cluster
+        for key in level:
+            per_depth = widths.setdefault(cluster_of.get(key, 0), {})
+            per_depth[depth] = per_depth.get(depth, 0) + 1
+        depth += 1
+        level = [c for key in level for c in children.get(key, ()) if c not in seen]
+        seen.update(level)
+    return depth, sum(max(per_depth.values()) for per_depth in widths.values())
+
+
+def rankdir(graph: TfGraph) -> str:
+    """``TB`` or ``LR``, whichever needs the picture shrunk least to fit a screen:
+    ``LR`` for a tree wider than deep, as robot descriptions are (a base with a dozen
+    parts, then one above the other), ``TB`` for deep narrow ones (arms, chains)."""
+    depth, width = _shape(graph)
+
+    def scale(direction: str) -> float:
+        across, along = CELL[direction]
+        if direction == "TB":
+            return max(width * across / SCREEN[0], depth * along / SCREEN[1])
+        return max(depth * across / SCREEN[0], width * along / SCREEN[1])
+
+    return "LR" if scale("LR") < scale("TB") else "TB"
 
 
 def to_dot(graph: TfGraph) -> str:
     """The graph in Graphviz DOT: dashed edges are conditional, red ones have findings."""
     ids = _ids(graph)
+    direction = rankdir(graph)
     legend = ("; ".join(graph.legend),) if graph.legend else ()
-    caption = "".join(line + "\n" for line in (graph.title, *legend, *graph.notes))
+    caption = "".join(line + "\n" for text in (graph.title, *legend, *graph.notes)
+                      for line in _wrapped(text))
     label = _dot_string(caption, LEFT)
     lines = [
         "digraph tf {",
-        f"  graph [rankdir=TB, labelloc=t, labeljust=l, fontname=Helvetica, "
+        f"  graph [rankdir={direction}, labelloc=t, labeljust=l, fontname=Helvetica, "
         f"fontsize=12, label={label}];",
         "  node [shape=ellipse, fontname=Helvetica, fontsize=11];",
         "  edge [fontname=Helvetica, fontsize=9];",
@@ -50,7 +137,8 @@ def to_dot(graph: TfGraph) -> str:
         indent = "  "
         if clustered:
             lines.append(f"  subgraph cluster_{cluster} {{")
-            lines.append(f"    label={_dot_string(graph.clusters[cluster])}; style=rounded;")
+            title = _dot_string("\n".join(_wrapped(graph.clusters[cluster])) + "\n", LEFT)
+            lines.append(f"    label={title}; labeljust=l; style=rounded;")
             indent = "    "
         for frame in graph.frames:
             if frame.cluster != cluster and clustered:
@@ -63,8 +151,10 @@ def to_dot(graph: TfGraph) -> str:
             lines.append(f"{indent}{ids[frame.key]} [{', '.join(attributes)}];")
         if clustered:
             lines.append("  }")
-    for edge in graph.edges:
+    for edge, gap in zip(graph.edges, rank_gaps(graph, direction)):
         attributes = [f"label={_dot_string(NEWLINE.join(edge.label))}"]
+        if gap > 1:
+            attributes.append(f"minlen={gap}")
         if edge.conditional or edge.dynamic:
             attributes.append("style=dashed")
         if edge.flagged:
@@ -100,7 +190,9 @@ def to_mermaid(graph: TfGraph) -> str:
     """The graph as a Mermaid flowchart (renders in GitHub Markdown)."""
     ids = _ids(graph)
     # The front matter is YAML, where a JSON string is a valid double-quoted scalar.
-    lines = ["---", f"title: {json.dumps(printable(graph.title))}", "---", "flowchart TD"]
+    direction = rankdir(graph)
+    lines = ["---", f"title: {json.dumps(printable(graph.title))}", "---",
+             f"flowchart {'TD' if direction == 'TB' else 'LR'}"]
     clustered = len(graph.clusters) > 1
     for cluster in range(max(len(graph.clusters), 1)):
         if clustered:
@@ -113,8 +205,10 @@ def to_mermaid(graph: TfGraph) -> str:
             lines.append("  end")
     red_links: list[int] = []
     blue_links: list[int] = []
-    for index, edge in enumerate(graph.edges):
-        arrow = "-.->" if edge.conditional or edge.dynamic else "-->"
+    for index, (edge, gap) in enumerate(zip(graph.edges, rank_gaps(graph, direction))):
+        # A longer arrow spans more ranks (Mermaid's form of minlen).
+        dashed = edge.conditional or edge.dynamic
+        arrow = "-" + "." * gap + "->" if dashed else "-" * (gap + 1) + ">"
         lines.append(
             f"  {ids[edge.parent]} {arrow}|{_mermaid_text(edge.label)}| {ids[edge.child]}"
         )

@@ -29,6 +29,12 @@ arguments "for Lyrical compatibility")."""
 LEGACY_KEYWORDS_OK: tuple[str, ...] = ("dashing", "eloquent", "foxy")
 """Distributions whose launch_ros still takes ``node_executable=``/``node_name=``."""
 
+def uses_flags(tokens: tuple[str, ...]) -> bool:
+    """Whether a ROS 2 static_transform_publisher's arguments use flags (``--frame-id``
+    ...), which its program reads from Humble on."""
+    return any(t.startswith("--") and t != "--ros-args" for t in tokens)
+
+
 FOXY_EVIDENCE = "foxy-keywords"
 """The note a front-end leaves when a file uses Foxy-era ``Node`` keywords."""
 

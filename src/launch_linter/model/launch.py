@@ -54,6 +54,30 @@ def holds_directive(comments: Iterable[tuple[int, str]]) -> bool:
 
 
 @dataclass(frozen=True)
+class UndeclaredUse:
+    """A ROS 2 launch configuration read without a default (``$(var x)``,
+    ``LaunchConfiguration('x')``) that nothing in the tree declares, sets or passes: launch
+    stops there with "launch configuration 'x' does not exist" unless something the linter
+    did not see sets it. The facts only; the rule ``ros2_undeclared_arg`` words them."""
+
+    name: str
+    path: str
+    line: int
+    column: int
+    root: str
+    """The tree's root file, the one launched."""
+    conditional: bool
+    """Read under a condition the linter cannot decide (it may never be read)."""
+    open_reason: str | None
+    """Something in the tree the linter did not follow, which could set it."""
+    included_by: str | None
+    """Another launch file that names the root: the root is (also) included, and its
+    includer may pass the argument."""
+    similar: str | None = None
+    """A configuration the tree does declare with a close name (a likely misspelling)."""
+
+
+@dataclass(frozen=True)
 class LaunchTree:
     """Everything read from one root file, its includes included."""
 
@@ -74,3 +98,5 @@ class LaunchTree:
     robots: tuple[RobotModel, ...] = ()
     """The expanded descriptions themselves (links, joints, xacro faults), one per source
     that a robot_state_publisher of the tree publishes, for the URDF structure rules."""
+    undeclared: tuple[UndeclaredUse, ...] = ()
+    """ROS 2 launch configurations read where nothing declares, sets or passes them."""

@@ -14,6 +14,7 @@ from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.report.escape import json_safe
+from launch_linter.report.published import published
 
 JSON_VERSION = 1
 
@@ -122,11 +123,22 @@ def joint_json(root: str, j: RobotJoint) -> dict[str, Any]:
 
 
 def transforms_document(result: LintResult) -> dict[str, Any]:
+    """Each edge once (see :mod:`launch_linter.report.published`): ``root`` is the first
+    tree it was found in, ``entry_points`` every entry point that publishes it."""
+    transforms: list[dict[str, Any]] = []
+    joints: list[dict[str, Any]] = []
+    for item in published(result):
+        edge = item.edge
+        if isinstance(edge, RobotJoint):
+            joints.append({**joint_json(item.entry_points[0], edge),
+                           "entry_points": list(item.entry_points)})
+        else:
+            transforms.append({**transform_json(edge), "entry_points": list(item.entry_points)})
     return {
         "version": JSON_VERSION,
         "files": _files(result),
-        "transforms": [transform_json(t) for t in result.transforms],
-        "urdf_edges": [joint_json(root, j) for root, j in result.joints],
+        "transforms": transforms,
+        "urdf_edges": joints,
     }
 
 

@@ -92,6 +92,10 @@ class Ros2Scope:
     filename: str
     budget: Budget | None = None
     """The root file's work budget, charged before a value is built."""
+    missing: Callable[[str], None] | None = None
+    """Told the name of each launch configuration read without a default where none is
+    set: launch's ``LaunchConfiguration.perform`` raises "launch configuration '…' does not
+    exist" there (the loader decides whether anything could have set it)."""
 
 
 def literal(text: str) -> Subs:
@@ -337,6 +341,10 @@ class _Resolver:
         return value if text is None else text
 
     def call(self, call: Call) -> Value:
+        if call.name == "arg":
+            raise SubstitutionError(
+                "ROS 1's '$(arg)' in a ROS 2 launch file: launch stops with 'Unknown "
+                "substitution: arg'; ROS 2 reads a launch argument with '$(var NAME)'")
         if call.name not in _ARITY:
             raise SubstitutionError(f"unknown substitution '$({call.name})'")
         low, high = _ARITY[call.name]
@@ -360,6 +368,8 @@ class _Resolver:
             return value if is_resolved(value) else _hole(call, _reasons(value))
         if len(call.args) == 2:
             return self.value(call.args[1])
+        if self.scope.missing is not None:
+            self.scope.missing(name)
         return _hole(
             call,
             f"launch argument '{name}' is not set (give it with --arg {name}:=VALUE)",

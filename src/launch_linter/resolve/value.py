@@ -74,3 +74,75 @@ def resolved_text(value: Value) -> str | None:
 
 def holes(value: Value) -> tuple[Hole, ...]:
     return tuple(p for p in value if isinstance(p, Hole))
+
+
+_OPENERS = {"(": ")", "[": "]", "{": "}"}
+
+
+def _expression_end(text: str, start: int) -> int:
+    """Where the expression written at ``text[start:]`` ends: the first ``": "`` outside
+    brackets and quotes, if what comes before it is a call or a substitution (has a
+    bracket); -1 otherwise (the text is a reason in words)."""
+    closing: list[str] = []
+    quote = ""
+    bracketed = False
+    index = start
+    while index < len(text):
+        char = text[index]
+        if quote:
+            if char == "\\":
+                index += 1
+            elif char == quote:
+                quote = ""
+        elif char in "'\"":
+            quote = char
+        elif char in _OPENERS:
+            closing.append(_OPENERS[char])
+            bracketed = True
+        elif closing and char == closing[-1]:
+            closing.pop()
+        elif not closing and text.startswith(": ", index):
+            return index if bracketed else -1
+        elif not closing and char in ";,":
+            return -1  # several reasons, or words
+        index += 1
+    return -1
+
+
+def blocker(hole: Hole) -> tuple[str, str]:
+    """``(what, why)``: the innermost unknown that the hole's reason names, and why it is
+    unknown. A reason made from other values' reasons quotes them as ``TEXT: REASON``
+    (``PathJoinSubstitution([...]): os.getenv('BASE'): environment variable 'BASE' not
+    given``): the last such ``TEXT`` is what really blocks the value, the rest only
+    passes it on. ``(hole.text, hole.reason)`` when the reason quotes none."""
+    what, why = hole.text, hole.reason
+    position = 0
+    while position < len(why):
+        end = _expression_end(why, position)
+        if end < 0:
+            break
+        what, position = why[position:end], end + 2
+    return what, why[position:]
+
+
+def why_unresolved(value: Value) -> str:
+    """Why ``value`` is unknown, each cause once: ``WHAT: WHY`` (the unknowns with one
+    cause named together), with ``(in TEXT)`` when the one blocker sits inside a
+    substitution written otherwise; the written text is left out where it is the whole
+    value (the caller shows it already)."""
+    whole = text_of(value)
+    causes: dict[str, list[str]] = {}
+    inside: dict[str, list[str]] = {}
+    for hole in holes(value):
+        what, why = blocker(hole)
+        names = causes.setdefault(why, [])
+        if what != whole and what not in names:
+            names.append(what)
+        if what != hole.text and hole.text != whole:
+            inside.setdefault(why, []).append(hole.text)
+    said = []
+    for why, names in causes.items():
+        within = inside.get(why, [])
+        tail = f" (in {within[0]})" if len(within) == 1 else ""
+        said.append(f"{', '.join(names)}: {why}{tail}" if names else why)
+    return "; ".join(said) or "unresolved"

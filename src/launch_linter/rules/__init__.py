@@ -28,6 +28,7 @@ from launch_linter.rules import (
     ros2_positional_args,
     ros2_removed_keyword,
     ros2_schema,
+    ros2_undeclared_arg,
     roslaunch_error,
     rot_degrees,
     rounded_pi,
@@ -91,6 +92,7 @@ RULE_MODULES = (
     xacro_error,
     xacro_unused_block,
     rounded_pi,
+    ros2_undeclared_arg,
 )
 
 RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)

@@ -39,7 +39,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.distro import NO_FLAGS
+from launch_linter.model.distro import NO_FLAGS, uses_flags
 from launch_linter.model.transform import ArgIssue, ArgIssueKind, Field
 from launch_linter.rules._api import Finding, RuleContext, finding_at
 
@@ -49,10 +49,6 @@ SEVERITY = Severity.ERROR
 
 _EMPTY_FRAME = {"--frame-id": "Frame id", "--child-frame-id": "Child frame id"}
 """The program's words for each frame flag in 'X must not be empty'."""
-
-
-def _uses_flags(tokens: tuple[str, ...]) -> bool:
-    return any(t.startswith("--") and t != "--ros-args" for t in tokens)
 
 
 def _suggestion(issue: ArgIssue) -> str:
@@ -115,7 +111,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
     for transform in context.tree.transforms:
         if transform.is_unresolved(Field.ARITY):
             continue
-        if no_flags and transform.ros_version == 2 and _uses_flags(transform.tokens):
+        if no_flags and transform.ros_version == 2 and uses_flags(transform.tokens):
             distro = str(context.distro).capitalize()
             yield finding_at(
                 transform,

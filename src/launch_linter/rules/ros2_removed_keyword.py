@@ -5,7 +5,10 @@ Reports a Python launch file whose `Node(...)` uses `node_executable=`, `node_na
 `node_namespace=` when the target distribution (`--ros-distro`, the `ros-distro` key,
 or `ROS_DISTRO`) is Galactic or later, and names the keyword that replaced each one
 (`executable=`, `name=`, `namespace=`). With no target given, these keywords are taken as
-evidence that the file targets Foxy and nothing is reported.
+evidence that the file targets Foxy and nothing is reported, unless a
+`static_transform_publisher` of the tree is given flags (`--frame-id` ...): the flags
+arrived in Humble, so no distribution runs the file, and the keyword is reported (rather
+than the flags as Foxy's mistake).
 
 ## Why is this bad?
 launch_ros renamed the keywords in Foxy and removed the old ones afterwards: on Humble,
@@ -44,7 +47,8 @@ from collections.abc import Iterator
 from dataclasses import replace
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.distro import LEGACY_KEYWORDS_OK
+from launch_linter.model.distro import LEGACY_KEYWORDS_OK, uses_flags
+from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 
 ID = "ros2_removed_keyword"
@@ -54,12 +58,30 @@ EXAMPLE_PATH = "example.launch.py"
 EXAMPLE_DISTRO = "humble"
 
 
+def _flags_at(context: RuleContext) -> StaticTransform | None:
+    """A ROS 2 static transform of the tree given flags (Humble's), if any."""
+    return next((t for t in context.tree.transforms
+                 if t.ros_version == 2 and uses_flags(t.tokens)), None)
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     distro = context.distro
-    if distro is None or distro in LEGACY_KEYWORDS_OK or context.study:
+    if context.study or distro in LEGACY_KEYWORDS_OK:
+        return
+    flagged = _flags_at(context) if distro is None else None
+    if distro is None and flagged is None:
         return
     for note in frontend_findings(context, ID):
-        yield replace(note, message=(
-            f"Node keyword(s) {note.message} were removed after Foxy: on "
-            f"{distro.capitalize()} ros2 launch refuses the whole file"
-        ))
+        if flagged is not None:
+            where = (f"line {flagged.line}" if flagged.path == note.path
+                     else f"{flagged.path}:{flagged.line}")
+            yield replace(note, message=(
+                f"Node keyword(s) {note.message} were removed after Foxy, but the "
+                f"static_transform_publisher flags at {where} arrived in Humble: on every "
+                f"distribution that reads those flags, ros2 launch refuses the whole file"
+            ))
+        else:
+            yield replace(note, message=(
+                f"Node keyword(s) {note.message} were removed after Foxy: on "
+                f"{str(distro).capitalize()} ros2 launch refuses the whole file"
+            ))

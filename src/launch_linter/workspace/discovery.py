@@ -25,6 +25,7 @@ from typing import Callable
 
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+from launch_linter.workspace.paths import shown_path
 
 LAUNCH_SUFFIXES = (
     ".launch",
@@ -213,7 +214,7 @@ def discover(
         real = os.path.realpath(path)
         if real not in seen and len(found) < MAX_DISCOVERED_FILES:
             seen.add(real)
-            found.append(InputFile(os.path.abspath(path), os.path.normpath(path)))
+            found.append(InputFile(os.path.abspath(path), shown_path(path)))
 
     def skip(absolute: str, is_folder: bool) -> bool:
         return rules.excludes(absolute) or (ignored is not None and ignored(absolute, is_folder))

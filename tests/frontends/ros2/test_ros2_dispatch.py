@@ -25,9 +25,36 @@ ROS1_NODE = '<node pkg="tf" type="static_transform_publisher" name="t" args="0 0
     ("a.launch", '<launch><include file="$(find pkg)/b.launch"/></launch>', "ros1"),
     ("a.launch", "<launch><!-- <let name='a' value='b'/> --></launch>", "ros1"),
     ("a.launch", '<launch><node pkg="x" type="y" exec_name="z"/></launch>', "ros1"),
+    ("a.launch", '<launch><executable cmd="ls"/></launch>', "ros2"),
+    ("a.launch", '<launch><set_env name="A" value="1"/></launch>', "ros2"),
+    ("a.launch", '<launch><set_parameter name="a" value="1"/></launch>', "ros2"),
+    ("a.launch", '<launch><timer period="1"><log message="x"/></timer></launch>', "ros2"),
+    ("a.launch", '<launch><node pkg="a" type="b"><param from="x.yaml"/></node></launch>',
+     "ros2"),
+    ("a.launch", '<launch><node pkg="a" name="n" ros_args="--log-level debug"/></launch>',
+     "ros2"),
+    ("a.launch", '<launch><arg name="a" default="$(find-exec ls)"/></launch>', "ros2"),
+    ("a.launch", '<launch><executables/><logger/><letter/></launch>', "ros1"),
+    ("a.launch", '<launch><arg name="a" default="$(eval 1 and 2)"/></launch>', "ros1"),
 ])
+
+
 def test_front_end(path: str, text: str, expected: str) -> None:
     assert front_end(path, text.encode()) == expected
+
+
+def test_ros2_only_tags_are_the_schema_actions_roslaunch_lacks() -> None:
+    from launch_linter.frontends.dispatch import ROS2_ONLY_TAGS
+    from launch_linter.frontends.ros2_schema import ACTIONS
+
+    roslaunch_tags = {"arg", "group", "include", "node"}
+    assert set(ROS2_ONLY_TAGS) == (set(ACTIONS) - roslaunch_tags) | {"composable_node"}
+
+
+def test_executable_alone_makes_ros2_and_its_mistakes_are_reported() -> None:
+    xml = '<launch><executable cmd="ls" nam="x"/></launch>'
+    result = lint_text(xml, "example.launch", LintOptions(package_paths=()))
+    assert [d.rule for d in result.diagnostics] == ["ros2_schema"]
 
 
 def test_lint_text_reads_ros2_xml_even_with_a_ros1_suffix() -> None:

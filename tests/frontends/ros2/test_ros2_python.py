@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from ros2_helpers import Load, by_name, rules
 
 from launch_linter import LintOptions, lint_paths
@@ -522,3 +523,29 @@ def test_script_style_file_reads_what_it_serves(load: Load) -> None:
         "    sys.exit(main())\n"
     }, "run.launch.py")
     assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
+
+
+@pytest.mark.parametrize(("cmd", "expected"), [
+    ("cmd=['ros2 run tf2_ros static_transform_publisher --frame-id a --child-frame-id b'],"
+     " shell=True", [("a", "b")]),
+    ("cmd=['ros2', 'run tf2_ros', \"static_transform_publisher --frame-id 'a' "
+     "--child-frame-id b\"], shell=True", [("a", "b")]),
+    ("cmd=[FindExecutable(name='ros2'), 'run', 'tf2_ros', 'static_transform_publisher',"
+     " '--frame-id', 'a', '--child-frame-id', 'b']", [("a", "b")]),
+    # A shell expands $X, runs two commands or reads a value's spaces: not read.
+    ("cmd=['ros2 run tf2_ros static_transform_publisher --frame-id $X --child-frame-id b'],"
+     " shell=True", []),
+    ("cmd=['ros2 run tf2_ros static_transform_publisher --frame-id a --child-frame-id b;"
+     " ls'], shell=True", []),
+    ("cmd=['ros2 run tf2_ros static_transform_publisher', LaunchConfiguration('a')],"
+     " shell=True", []),
+    ("cmd=['ros2 run tf2_ros static_transform_publisher --frame-id a --child-frame-id b']",
+     []),
+])
+def test_execute_process_ros2_run_in_a_shell(load: Load, cmd: str,
+                                             expected: list[tuple[str, str]]) -> None:
+    tree = load({"a.launch.py": HEADER + "from launch.actions import ExecuteProcess\n"
+        "from launch.substitutions import FindExecutable, LaunchConfiguration\n"
+        + launch_file(f"    return LaunchDescription([ExecuteProcess({cmd})])\n").replace(
+            HEADER, "", 1)}, "a.launch.py")
+    assert [(t.parent, t.child) for t in tree.transforms] == expected

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from ros2_helpers import FIXTURES, Load, by_name, rules
 
 from launch_linter.model.launch import FileStatus
@@ -319,3 +320,17 @@ def test_executable_ros2_run_is_a_node(load: Load) -> None:
     assert (transform.package, transform.executable) == ("tf2_ros", "static_transform_publisher")
     assert (transform.namespace, transform.parent, transform.child) == ("/", "base", "cam")
     assert transform.line == 3
+
+
+@pytest.mark.parametrize(("executable", "expected"), [
+    ('cmd="$(find-exec ros2) run tf2_ros static_transform_publisher --frame-id a'
+     ' --child-frame-id b"', [("a", "b")]),
+    ('cmd="ros2 run tf2_ros static_transform_publisher --frame-id a --child-frame-id b"'
+     ' shell="true"', [("a", "b")]),
+    ('cmd="ros2 run tf2_ros static_transform_publisher --frame-id $HOME'
+     ' --child-frame-id b" shell="true"', []),
+])
+def test_executable_ros2_run_forms(load: Load, executable: str,
+                                   expected: list[tuple[str, str]]) -> None:
+    tree = load({"a.launch.xml": launch(f"  <executable {executable}/>")}, "a.launch.xml")
+    assert [(t.parent, t.child) for t in tree.transforms] == expected

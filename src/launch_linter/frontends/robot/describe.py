@@ -27,6 +27,7 @@ from launch_linter.model.robot import (
     RobotModel,
 )
 from launch_linter.resolve import reads
+from launch_linter.resolve.value import Value, holes, why_unresolved
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
@@ -75,11 +76,12 @@ XacroCall = typing.Tuple[
 ]
 
 
-def xacro_command(words: Sequence[Word]) -> XacroCall | None:
-    """``(file, args, reason, open_args)`` when ``words`` run xacro (``xacro``,
-    ``xacro.py``, ``$(find xacro)/xacro``, ``rosrun xacro xacro``, ``--inorder`` and other
-    options skipped); None when the command is not xacro. ``file`` is None when
-    unresolved; ``open_args`` is true when an unresolved word may give more args."""
+def xacro_command(words: Sequence[Word], command: Value = ()) -> XacroCall | None:
+    """``(file, args, reason, open_args)`` when ``words`` (of the value ``command``) run
+    xacro (``xacro``, ``xacro.py``, ``$(find xacro)/xacro``, ``rosrun xacro xacro``,
+    ``--inorder`` and other options skipped); None when the command is not xacro. ``file``
+    is None when unresolved, and ``reason`` names what blocks it; ``open_args`` is true
+    when an unresolved word may give more args."""
     start = None
     for index, (text, resolved) in enumerate(words[:4]):
         base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
@@ -118,10 +120,20 @@ def xacro_command(words: Sequence[Word]) -> XacroCall | None:
             if resolved:
                 file = text
             else:
-                reason = f"the description file {text!r} is not resolved"
+                reason = _unresolved_file(text, command)
     if not seen_file:
         reason = "the xacro command names no file"
     return file, tuple(args), reason, open_args
+
+
+def _unresolved_file(text: str, command: Value) -> str:
+    """Why the description file ``text`` (a word of ``command``) is unknown: the first
+    unknown that really blocks it (an environment variable behind a launch argument's
+    default, say), not only the substitution written in the command."""
+    inside = tuple(hole for hole in holes(command) if hole.text in text)
+    if not inside:
+        return f"the description file {text!r} is not resolved"
+    return f"the description file depends on {why_unresolved(inside)}"
 
 
 def literal_kind(text: str) -> bool:

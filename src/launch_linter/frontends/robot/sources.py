@@ -74,7 +74,7 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
             return DescriptionSource(path, line, column, DescriptionKind.FILE,
                                      _absolute(file, directory), condition=condition,
                                      reason=None if file else f"{words[1][0]!r} is not resolved")
-        parsed = xacro_command(words)
+        parsed = xacro_command(words, command)
         if parsed is None:
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition,
@@ -125,7 +125,7 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
     """The description a ROS 2 ``robot_description`` parameter gives: ``command`` is the
     resolved text of its ``Command``/``$(command ...)`` when it has one."""
     if command is not None:
-        parsed = xacro_command(words_of(command))
+        parsed = xacro_command(words_of(command), command)
         if parsed is None:
             return DescriptionSource(path, line, column, DescriptionKind.XACRO, None,
                                      condition=condition, node=node,

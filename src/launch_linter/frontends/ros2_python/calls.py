@@ -9,7 +9,14 @@ import ast
 import os
 from collections.abc import Callable
 
-from launch_linter.frontends.ros2_actions import ACTION_TYPES, Action, Predicate, Unfollowed, Where
+from launch_linter.frontends.ros2_actions import (
+    ACTION_TYPES,
+    Action,
+    Predicate,
+    Unfollowed,
+    Uses,
+    Where,
+)
 from launch_linter.frontends.ros2_python.evaluator import _performed
 from launch_linter.frontends.ros2_python.expressions import Expressions
 from launch_linter.frontends.ros2_python.values import (
@@ -39,6 +46,9 @@ from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
 from launch_linter.resolve.bounded import STRING_METHODS, Refused, format_fields, string_method
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, literal
 from launch_linter.resolve.value import holes, resolved_text
+
+_UNSET_MARKER = "<unset launch configuration>"
+"""The default ``context.launch_configurations.get(name)`` reads: launch gives None there."""
 
 
 class Calls(Expressions):
@@ -228,12 +238,15 @@ class Calls(Expressions):
             key = args[0]
             if isinstance(key, str):
                 default = args[1] if len(args) == 2 else None
-                subs: Subs = (Call("var", (literal(key),), self.segment(node)),)
+                # dict.get gives the default for an unset configuration: never launch's
+                # "does not exist" failure, so the read has a default of its own.
+                unset = Opaque(_UNSET_MARKER, "unset")
+                subs: Subs = (Call("var", (literal(key), (unset,)), self.segment(node)),)
                 value = target.resolver(subs)
                 text = resolved_text(value)
                 if text is not None:
                     return text
-                if all("is not set" in h.reason for h in holes(value)):
+                if all(h.text == _UNSET_MARKER for h in holes(value)):
                     return default
                 return self.unknown(node, "; ".join(h.reason for h in holes(value)))
         return self.unknown(node, f"method '{name}' is not interpreted")
@@ -378,6 +391,10 @@ class Calls(Expressions):
                                         f"launch entity not followed: {item.describe()}"))
             elif isinstance(item, ACTION_TYPES):
                 found.append(item)
+            elif isinstance(item, LaunchObject) and item.where is not None and (
+                item.uses or item.condition is not None
+            ):
+                found.append(Uses(item.where, item.condition, item.uses))
         return tuple(found)
 
     # -- defined by a subclass, further on ---------------------------------------------------

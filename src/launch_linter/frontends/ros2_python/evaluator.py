@@ -272,7 +272,8 @@ class Evaluator:
         target.extend(self.guard(item) for item in items)
 
     def run_if(self, node: ast.If, env: Env) -> None:
-        test = self.truth(self.eval(node.test, env))
+        tested = self.eval(node.test, env)
+        test = self.truth(tested)
         if test is True:
             self.run_block(node.body, env)
             return
@@ -291,12 +292,15 @@ class Evaluator:
             finally:
                 self.branches.pop()
             results.append(env.vars)
-        env.vars = self.merge(before, results[0], results[1], node)
+        env.vars = self.merge(before, results[0], results[1], node, tested)
 
     def merge(self, before: dict[str, object], then: dict[str, object],
-              otherwise: dict[str, object], node: ast.If) -> dict[str, object]:
+              otherwise: dict[str, object], node: ast.If, tested: object = None
+              ) -> dict[str, object]:
         merged = dict(before)
         text = self.segment(node.test)
+        # What makes the test unknown is what really blocks the variables it sets.
+        cause = f" ({tested.reason})" if isinstance(tested, Unknown) else ""
         for name in set(then) | set(otherwise):
             a, b = then.get(name), otherwise.get(name)
             if a is b:
@@ -306,8 +310,10 @@ class Evaluator:
                     *self.under(a, True, text, node), *self.under(b, False, text, node)
                 ]
             else:
-                merged[name] = self.unknown(node.test, f"'{name}' depends on the condition "
-                                                       f"'{text}'")
+                # Named by the variable (what the reader sees where it is used), not by
+                # the condition's text.
+                merged[name] = Unknown(f"set under the condition '{text}'{cause}", name,
+                                       node.lineno)
         return merged
 
     def under(self, items: list[object], positive: bool, text: str, node: ast.If

@@ -36,6 +36,24 @@ from launch_linter.resolve.ros2_substitution import Call, Sub, Text, literal
 from launch_linter.resolve.safe_eval import subscript_index
 
 
+def _why_unknown(value: object) -> str | None:
+    """``WHAT: WHY`` for an operand the linter does not know as a plain value: an unknown
+    value, or a string only known when the launch runs (an environment variable)."""
+    if isinstance(value, Unknown):
+        return f"{value.text}: {value.reason}"
+    if isinstance(value, LazyStr):
+        call = next((sub for sub in value.subs if isinstance(sub, Call)), None)
+        if call is None:
+            return None
+        if call.name == "env" and len(call.args) == 1 and len(call.args[0]) == 1 and \
+                isinstance(call.args[0][0], Text):
+            # Python compares it before launch runs: --env does not reach this far.
+            return (f"{call.written}: the environment variable '{call.args[0][0].text}' is "
+                    "only known when the launch runs")
+        return f"{call.written}: only known when the launch runs"
+    return None
+
+
 class Expressions(Evaluator):
     """Expressions, over known values, bounded in sizes."""
 
@@ -237,6 +255,12 @@ class Expressions(Evaluator):
         for op, right_node in zip(node.ops, node.comparators):
             right = self.eval(right_node, env)
             if not _plain(left) or not _plain(right):
+                # Named after the operand that is unknown, so that a message can say what
+                # really blocks the comparison (an environment variable, say).
+                for operand in (left, right):
+                    blocking = _why_unknown(operand)
+                    if blocking is not None:
+                        return self.unknown(node, blocking)
                 return self.unknown(node, "compares a value the linter does not know")
             try:
                 outcome = _COMPARE[type(op)](left, right)

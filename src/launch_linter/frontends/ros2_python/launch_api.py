@@ -8,6 +8,7 @@ or condition it stands for; any other launch class is an object that starts noth
 from __future__ import annotations
 
 import ast
+import shlex
 from collections.abc import Callable, Mapping, Sequence
 
 from launch_linter.frontends.ros2_actions import (
@@ -28,6 +29,7 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Where,
     ros2_run,
+    shell_reads_as_words,
 )
 from launch_linter.frontends.ros2_python.calls import Calls
 from launch_linter.frontends.ros2_python.values import (
@@ -48,8 +50,9 @@ from launch_linter.frontends.ros2_python.values import (
     _keyword,
     _OutOfSteps,
     _starts_actions,
+    performed,
 )
-from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, literal
+from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, Text, literal, written
 from launch_linter.resolve.value import Value
 
 # -- the interpreter -----------------------------------------------------------------------
@@ -95,9 +98,16 @@ class Interpreter(Calls):
             if name in ("ParameterValue", "ParameterFile") and args:
                 return args[0] if name == "ParameterValue" else self.unknown(
                     node, "parameters from a file")
-            return LaunchObject(name)
+            return self.launch_object(name, args, kwargs, node)
         result: object = handler(self, args, kwargs, node)
         return result
+
+    def launch_object(self, name: str, args: list[object], kwargs: dict[str, object],
+                      node: ast.Call) -> LaunchObject:
+        """A launch class the linter does not model (``SetParameter``, ``LogInfo``, an
+        ``ExecuteProcess``): as an action it performs the substitutions it was given."""
+        uses = performed([*args, *(v for k, v in kwargs.items() if k != "condition")])
+        return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses)
 
     def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
                                  node: ast.Call) -> object:
@@ -148,6 +158,7 @@ class Interpreter(Calls):
             args_written=self.segment(_keyword(node, "arguments") or node),
             unknown=unknown,
             parameters=self.parameters(kwargs.get("parameters"), node),
+            uses=performed([v for k, v in kwargs.items() if k != "condition"]),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
@@ -155,16 +166,31 @@ class Interpreter(Calls):
         """``ExecuteProcess(cmd=['ros2', 'run', PKG, EXEC, ARGS...])`` starts that node;
         other processes are not transforms."""
         cmd = self.arg(args, kwargs, 0, "cmd")
-        if not isinstance(cmd, (list, tuple)) or kwargs.get("shell") is True:
-            return LaunchObject("ExecuteProcess")
-        run = ros2_run([self.subs(item, node, "cmd item") for item in cmd])
+        if not isinstance(cmd, (list, tuple)):
+            return self.launch_object("ExecuteProcess", args, kwargs, node)
+        items = [self.subs(item, node, "cmd item") for item in cmd]
+        if kwargs.get("shell") is True:
+            # launch joins the items with spaces and a shell splits the line again: known
+            # only when every item is literal text (a value's spaces would split too).
+            line = " ".join(written(item) for item in items)
+            if not all(isinstance(sub, Text) for item in items for sub in item) or (
+                not shell_reads_as_words(line)
+            ):
+                return self.launch_object("ExecuteProcess", args, kwargs, node)
+            try:
+                words = shlex.split(line)
+            except ValueError:
+                return self.launch_object("ExecuteProcess", args, kwargs, node)
+            items = [literal(word) for word in words]
+        run = ros2_run(items)
         if run is None:
-            return LaunchObject("ExecuteProcess")
+            return self.launch_object("ExecuteProcess", args, kwargs, node)
         package, executable, arguments = run
         return RunNode(
             where=self.where(node), condition=self.condition(kwargs, node), package=package,
             executable=executable, name=None, namespace=None, arguments=arguments,
             args_written=self.segment(_keyword(node, "cmd") or node), pushed_namespace=False,
+            uses=performed([*args, *(v for k, v in kwargs.items() if k != "condition")]),
         )
 
     def launch_DeclareLaunchArgument(self, args: list[object], kwargs: dict[str, object],
@@ -265,7 +291,11 @@ class Interpreter(Calls):
                                   self.subs(pair[1], node, "argument value")))
         elif launch_arguments is not None:
             self.problem("unresolved", node, "launch_arguments of this include are unknown")
-        return Include(self.where(node), self.condition(kwargs, node), path, tuple(pairs))
+        pairs_known = isinstance(launch_arguments, (list, tuple)) and all(
+            isinstance(pair, (tuple, list)) and len(pair) == 2 for pair in launch_arguments)
+        known = launch_arguments is None or pairs_known
+        return Include(self.where(node), self.condition(kwargs, node), path, tuple(pairs),
+                       args_known=known)
 
     def _source(self, args: list[object], kwargs: dict[str, object], node: ast.Call
                 ) -> object:
@@ -370,7 +400,11 @@ class Interpreter(Calls):
                                          node: ast.Call) -> object:
         name = self.subs(self.arg(args, kwargs, 0, "launch_configuration_name"), node, "name")
         expected = self.subs(self.arg(args, kwargs, 1, "expected_value") or "", node, "value")
-        variable = Call("var", (name,), self.segment(node))
+        # An unset configuration compares as None (launch catches the KeyError): never the
+        # "does not exist" failure of a LaunchConfiguration.
+        unset = (Opaque(self.segment(node), f"line {node.lineno}: the configuration may be "
+                                            f"unset (compared as None)"),)
+        variable = Call("var", (name, unset), self.segment(node))
         return CondVal(Predicate(True, (Call("equals", ((variable,), expected),
                                              self.segment(node)),)))
 
@@ -391,6 +425,7 @@ class Interpreter(Calls):
             name=self.optional_subs(kwargs.get("name"), node, "name"),
             namespace=self.optional_subs(kwargs.get("namespace"), node, "namespace"),
             parameters=self.parameters(kwargs.get("parameters"), node),
+            uses=performed([v for k, v in kwargs.items() if k != "condition"]),
         ))
 
     def parameters(self, value: object, node: ast.Call) -> tuple[Params | ParamsUnknown, ...]:
@@ -436,7 +471,10 @@ class Interpreter(Calls):
             return Unfollowed(self.where(node), f"line {node.lineno}: composable nodes of "
                                                 f"{self.segment(node)} are unknown")
         components = tuple(d.component for d in descriptions if isinstance(d, ComponentVal))
-        return LoadComponents(self.where(node), self.condition(kwargs, node), components)
+        others = [v for k, v in kwargs.items()
+                  if k not in ("condition", "composable_node_descriptions")]
+        return LoadComponents(self.where(node), self.condition(kwargs, node), components,
+                              performed(others))
 
     launch_ComposableNodeContainer = _container
     launch_LoadComposableNodes = _container

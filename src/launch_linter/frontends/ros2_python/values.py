@@ -14,7 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from launch_linter.frontends.ros2_actions import Component, Predicate
+from launch_linter.frontends.ros2_actions import Component, Predicate, Where
 from launch_linter.resolve.ros2_substitution import Opaque, Subs, literal
 from launch_linter.resolve.value import Value
 
@@ -114,9 +114,13 @@ class ModuleVal:
 
 @dataclass(frozen=True)
 class LaunchObject:
-    """An instance of a launch class that starts no static transform."""
+    """An instance of a launch class that starts no static transform. As an action of a
+    launch description it still performs ``uses`` (under ``condition``) when it runs."""
 
     name: str
+    where: Where | None = None
+    condition: Predicate | None = None
+    uses: tuple[Subs, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -242,3 +246,32 @@ _PLAIN_BUILTINS: dict[str, Callable[..., object]] = {
     "int": int, "float": float, "bool": bool, "abs": abs, "round": round, "min": min,
     "max": max,
 }
+
+
+MAX_PERFORMED_ITEMS = 10_000
+"""Items of an action's arguments looked at for the substitutions they hold."""
+
+
+def performed(values: list[object]) -> tuple[Subs, ...]:
+    """The launch substitutions held anywhere in an action's arguments (in lists, tuples,
+    dict keys and values): what launch performs when the action runs. Iterative and
+    bounded; a list that holds itself is looked at once."""
+    found: list[Subs] = []
+    pending: list[object] = list(values)
+    seen: set[int] = set()
+    looked = 0
+    while pending and looked < MAX_PERFORMED_ITEMS:
+        value = pending.pop()
+        looked += 1
+        if isinstance(value, SubsVal):
+            found.append(value.subs)
+        elif isinstance(value, (list, tuple, dict)):
+            if id(value) in seen:
+                continue
+            seen.add(id(value))
+            if isinstance(value, dict):
+                pending.extend(value.keys())
+                pending.extend(value.values())
+            else:
+                pending.extend(value)
+    return tuple(found)

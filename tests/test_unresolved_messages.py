@@ -1,0 +1,138 @@
+"""Unresolved messages name the first unknown that really blocks the value, each cause
+once, without printing the written expression twice or a condition for a variable."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.resolve.value import Hole, blocker, why_unresolved
+
+
+def test_blocker_is_the_innermost_quoted_unknown() -> None:
+    hole = Hole("LaunchConfiguration('urdf')",
+                'PathJoinSubstitution([FindPackageShare("d"), f"{base}.urdf.xacro"]): '
+                "os.getenv('BASE'): environment variable 'BASE' not given (use --env)")
+    assert blocker(hole) == ("os.getenv('BASE')",
+                             "environment variable 'BASE' not given (use --env)")
+    # A reason in words quotes nothing: the hole itself blocks.
+    plain = Hole("$(arg model)", "arg 'model' is not set: give it with --arg")
+    assert blocker(plain) == ("$(arg model)", "arg 'model' is not set: give it with --arg")
+    assert blocker(Hole("x", "line 5: a: b")) == ("x", "line 5: a: b")
+
+
+def test_why_unresolved_names_each_cause_once_and_not_the_whole_value_again() -> None:
+    whole = Hole("$(find nav2)", "package 'nav2' not found")
+    assert why_unresolved((whole,)) == "package 'nav2' not found"
+    cause = "set under the condition 'c'"
+    twice = (Hole("a", cause), "/", Hole("b", cause))
+    assert why_unresolved(twice) == "a, b: set under the condition 'c'"
+    nested = ("xacro ", Hole("LaunchConfiguration('urdf')",
+                             "os.getenv('BASE'): environment variable 'BASE' not given"))
+    assert why_unresolved(nested) == ("os.getenv('BASE'): environment variable 'BASE' not "
+                                      "given (in LaunchConfiguration('urdf'))")
+
+
+def _messages(folder: Path, name: str, text: str, **options: object) -> list[str]:
+    (folder / name).write_text(text)
+    result = lint_paths([str(folder / name)], LintOptions(**options))  # type: ignore[arg-type]
+    return [d.message for d in result.diagnostics if d.rule == "unresolved"]
+
+
+DESCRIPTION = """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import Command, LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    robot_base = os.getenv('LINOROBOT2_BASE')
+    urdf_path = PathJoinSubstitution(
+        [FindPackageShare("linorobot2_description"), "urdf/robots", f"{robot_base}.urdf.xacro"])
+    return LaunchDescription([
+        DeclareLaunchArgument(name='urdf', default_value=urdf_path),
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             parameters=[{'robot_description': Command(['xacro ', LaunchConfiguration('urdf')])}]),
+    ])
+"""
+
+
+def test_an_environment_variable_behind_a_default_is_named(tmp_path: Path) -> None:
+    package = tmp_path / "linorobot2_description"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        "<package><name>linorobot2_description</name><export><build_type>ament_cmake"
+        "</build_type></export></package>")
+    (message,) = _messages(package / "launch", "description.launch.py", DESCRIPTION,
+                           package_paths=(str(tmp_path),))
+    assert message.startswith("robot description not read: the description file depends on "
+                              "os.getenv('LINOROBOT2_BASE'): environment variable "
+                              "'LINOROBOT2_BASE' not given (use --env)")
+    assert message.count("LaunchConfiguration('urdf')") <= 1
+
+
+INCLUDE = """from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    return LaunchDescription([IncludeLaunchDescription(PythonLaunchDescriptionSource(
+        PathJoinSubstitution([FindPackageShare('nav2_bringup'), 'launch', 'x.launch.py'])))])
+"""
+
+
+def test_a_python_include_message_prints_its_expression_once(tmp_path: Path) -> None:
+    (message,) = _messages(tmp_path, "inc.launch.py", INCLUDE)
+    assert message.count("PathJoinSubstitution(") == 1
+    assert message.endswith("not followed: FindPackageShare('nav2_bringup'): package "
+                            "'nav2_bringup' not found under the package path")
+
+
+BRANCHES = """import os
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    LDS_MODEL = os.environ['LDS_MODEL']
+    LDS_LAUNCH_FILE = '/hlds_laser.launch.py'
+    if LDS_MODEL == 'LDS-01':
+        lidar_pkg_dir = '/opt/a'
+    else:
+        lidar_pkg_dir = '/opt/b'
+        LDS_LAUNCH_FILE = '/ld08.launch.py'
+    robots = os.environ['ROBOTS']
+    if len(robots) == 0:
+        robots_list = []
+    else:
+        robots_list = robots.split(',')
+    ld = LaunchDescription([IncludeLaunchDescription(
+        PythonLaunchDescriptionSource([lidar_pkg_dir, LDS_LAUNCH_FILE]))])
+    for robot in robots_list:
+        ld.add_action(Node(package='tf2_ros', executable='static_transform_publisher',
+                           arguments=['0', '0', '0', '0', '0', '0', 'map', robot]))
+    return ld
+"""
+
+
+def test_variables_set_under_an_unknown_condition_are_named_by_themselves(
+    tmp_path: Path,
+) -> None:
+    include, loop = _messages(tmp_path, "robot.launch.py", BRANCHES)
+    # Both unknowns have one cause, said once, with what really blocks the condition.
+    assert include.startswith("include file 'lidar_pkg_dirLDS_LAUNCH_FILE' not followed: "
+                              "lidar_pkg_dir, LDS_LAUNCH_FILE: line 11: set under the "
+                              "condition 'LDS_MODEL == 'LDS-01'' (os.environ['LDS_MODEL']:")
+    assert include.count("set under") == 1
+    # "the loop over robots_list", not "the loop over len(robots) == 0".
+    assert loop.startswith("the loop over robots_list (set under the condition "
+                           "'len(robots) == 0'")
+
+
