@@ -58,13 +58,12 @@ GITLAB_SCHEMA: dict[str, Any] = {
 
 # junit-10.xsd: element -> (required attributes, optional attributes, allowed children)
 JUNIT = {
-    "testsuites": ({"name"} - {"name"}, {"name", "tests", "failures", "errors", "disabled",
-                                          "skipped", "time"}, {"testsuite"}),
+    "testsuites": (set(), {"name", "tests", "failures", "errors", "disabled", "time"},
+                   {"testsuite"}),
     "testsuite": ({"name", "tests"}, {"failures", "errors", "disabled", "skipped", "time",
-                                      "timestamp", "hostname", "id", "package", "file", "log",
-                                      "url", "version"},
+                                      "timestamp", "hostname", "id", "package"},
                   {"testcase", "properties", "system-out", "system-err"}),
-    "testcase": ({"name"}, {"classname", "time", "status", "assertions", "file", "line"},
+    "testcase": ({"name"}, {"classname", "time", "status", "assertions"},
                  {"failure", "error", "skipped", "system-out", "system-err"}),
     "failure": (set(), {"message", "type"}, set()),
     "system-out": (set(), set(), set()),

@@ -192,7 +192,8 @@ def test_bad_option_value_exits_2(workdir: Path) -> None:
 
 def test_rules_table(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["rules"]) == 0
-    lines = capsys.readouterr().out.splitlines()
+    header, *lines = capsys.readouterr().out.splitlines()
+    assert header.split()[:4] == ["ID", "CATEGORY", "SEVERITY", "SUMMARY"]
     assert len(lines) == len(RULES)
     for rule, line in zip(RULES, lines):
         # The contract's columns, in order; what this version adds follows the summary.
@@ -223,3 +224,24 @@ def test_a_core_command_line_builds_only_the_core_parsers() -> None:
     commands = build_parser(["--help"])._subparsers._group_actions[0].choices  # type: ignore[union-attr]
     assert {"check", "transforms", "rules", "explain"} <= set(commands)
     assert "mine" in build_parser()._subparsers._group_actions[0].choices  # type: ignore[union-attr]
+
+
+def test_precision_says_its_sample_and_when_it_is_small() -> None:
+    from launch_linter.measured import wilson_interval
+
+    low, high = wilson_interval(1, 1)
+    assert round(low, 2) == 0.21 and high == pytest.approx(1.0)
+    assert wilson_interval(19, 20)[0] == pytest.approx(0.764, abs=0.001)
+    from launch_linter import measured
+
+    table = {"few": {"after": {"judged": 1, "precision": 1.0, "true": 1}},
+             "many": {"after": {"judged": 40, "precision": 0.95, "true": 38}}}
+    original = measured._table
+    try:
+        measured._table = lambda: table  # type: ignore[assignment]
+        assert measured.precision_text("few") == (
+            "100% of 1 judged, small sample: 95% interval 21% to 100%")
+        assert measured.precision_text("many") == "95% of 40 judged"
+        assert measured.precision_text("none") == "not measured"
+    finally:
+        measured._table = original  # type: ignore[assignment]

@@ -167,3 +167,36 @@ def test_without_a_package_content_decides(tmp_path: Path) -> None:
 
 
 ENV_ONLY = '<launch>\n  <arg name="f" default="$(env ROBOT_FRAME base_link)"/>\n</launch>\n'
+
+
+def test_rostest_files_with_a_launch_root(tmp_path: Path) -> None:
+    (tmp_path / "tf.test").write_text(
+        '<launch>\n  <node pkg="tf2_ros" type="static_transform_publisher" name="t"\n'
+        '        args="0 0 0 0 0 0 a b"/>\n  <test test-name="t" pkg="p" type="t.py"/>\n'
+        "</launch>\n")
+    (tmp_path / "data.test").write_text("not xml at all\n")
+    names = [os.path.basename(f.path) for f in discover([str(tmp_path)])]
+    assert names == ["tf.test"]
+    result = lint_paths([str(tmp_path)])
+    assert [t.child for t in result.transforms] == ["b"]
+
+
+def test_a_pytest_module_named_like_a_launch_test_is_not_a_broken_launch_file(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "test_talker_launch.py").write_text("def test_x():\n    assert True\n")
+    (tmp_path / "other_launch.py").write_text("def test_x():\n    assert True\n")
+    messages = {os.path.basename(d.path): d.message for d in lint_paths([str(tmp_path)])
+                .diagnostics}
+    assert "test_talker_launch.py" not in messages
+    assert "not a launch file" in messages["other_launch.py"]
+
+
+def test_an_empty_run_says_so_and_a_missing_path_is_a_usage_error(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert main(["check", str(tmp_path)]) == 0
+    assert "No files found" in capsys.readouterr().err
+    assert main(["check", "missing.launch"]) == 2
+    assert "missing.launch" in capsys.readouterr().err

@@ -69,3 +69,12 @@ def test_file_names_in_linear_time() -> None:
     # A pattern that starts at every letter of a long word would take minutes here.
     data = b"a" * 2_000_000 + b" rsp.launch.py " + b"x." * 500_000
     assert mentions._file_names(data) == {"rsp.launch", "rsp.launch.py"}
+
+
+def test_an_include_written_since_is_seen(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    _write(tmp_path, {"launch/rsp.launch.py": ""})
+    rsp = str(tmp_path / "launch/rsp.launch.py")
+    assert named_by_another_file(rsp) is None
+    _write(tmp_path, {"launch/all.launch.py": "'rsp.launch.py'\n"})
+    monkeypatch.setattr(mentions, "FRESH_SECONDS", 0.0)
+    assert named_by_another_file(rsp) == str(tmp_path / "launch/all.launch.py")

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 import subprocess
+import sys
 import textwrap
 from pathlib import Path
 from typing import Iterator
@@ -161,7 +162,14 @@ def test_every_file_is_python_3_8() -> None:
 
 @pytest.mark.parametrize(("source", "expected"), [
     ("match x:\n    case 1:\n        pass\n", "not Python 3.8 syntax"),
-    ("with (open(a) as f, open(b) as g):\n    pass\n", "not Python 3.8 syntax"),
+    pytest.param(
+        "with (open(a) as f, open(b) as g):\n    pass\n", "not Python 3.8 syntax",
+        marks=pytest.mark.skipif(
+            sys.version_info >= (3, 13),
+            reason="Python 3.13's parser accepts parenthesised context managers whatever"
+            " feature_version says; the Python 3.8 leg of CI still rejects them",
+        ),
+    ),
     ("for a, b in zip(x, y, strict=True):\n    pass\n", "zip(strict=)"),
     ("@dataclass(frozen=True, slots=True)\nclass A:\n    x = 1\n", "dataclass(slots="),
     ("y = x.removeprefix('./')\n", ".removeprefix() needs Python 3.9"),

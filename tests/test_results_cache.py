@@ -291,7 +291,7 @@ def test_the_codec_knows_every_field() -> None:
 
 def test_a_result_survives_the_round_trip() -> None:
     fix = Fix(Applicability.UNSAFE, "m", ("a", "b"), (TokenEdit(0, 1, "x"),),
-              (Edit("p", 1, 2, "y"),), "humble")
+              (Edit("p", 1, 2, "y", "z"),), "humble")
     diagnostic = Diagnostic(
         "tf_self_loop", Category.TF, Severity.ERROR, "p.launch", 3, 4, "msg", "node",
         (Location("q.launch", 5, 6),), Belief("sig_implication", ("a", "b"), "c", 3, 1, 0.1),

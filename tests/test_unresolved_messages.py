@@ -136,3 +136,84 @@ def test_variables_set_under_an_unknown_condition_are_named_by_themselves(
                            "'len(robots) == 0'")
 
 
+
+
+TWO_NODES = """from launch import LaunchDescription
+from launch.substitutions import Command, LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    description = {'robot_description': Command(['xacro ', LaunchConfiguration('model')])}
+    return LaunchDescription([
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             parameters=[description]),
+        Node(package='controller_manager', executable='ros2_control_node',
+             parameters=[description]),
+        Node(package='joint_state_publisher', executable='joint_state_publisher',
+             parameters=[description]),
+    ])
+"""
+
+
+def test_one_description_given_to_several_nodes_is_reported_once(tmp_path: Path) -> None:
+    messages = _messages(tmp_path, "bringup.launch.py", TWO_NODES)
+    described = [m for m in messages if m.startswith("robot description not read")]
+    assert len(described) == 1, messages
+    assert "LaunchConfiguration('model')" in described[0]
+
+
+PART = """<launch>
+  <arg name="model"/>
+  <node pkg="tf" type="static_transform_publisher" name="t_$(arg model)"
+        args="0 0 0 0 0 0 a $(env HOST_FRAME) 100"/>
+</launch>
+"""
+
+VARIANTS = """<launch>
+  <include file="$(dirname)/part.launch"><arg name="model" value="burger"/></include>
+  <include file="$(dirname)/part.launch"><arg name="model" value="waffle"/></include>
+  <include file="$(dirname)/part.launch"><arg name="model" value="waffle_pi"/></include>
+</launch>
+"""
+
+
+def test_included_text_says_its_cause_once_with_the_including_file(tmp_path: Path) -> None:
+    (tmp_path / "part.launch").write_text(PART)
+    (message,) = _messages(tmp_path, "robot.launch", VARIANTS)
+    assert "environment variable 'HOST_FRAME' is not given" in message
+    assert message.endswith(f"(included from {tmp_path / 'robot.launch'}:2)")
+
+
+DISTRO_BRANCH = """import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    if os.environ.get('ROS_DISTRO') == 'dashing':
+        tf = Node(package='tf2_ros', node_executable='static_transform_publisher',
+                  arguments=['--frame-id', 'map', '--child-frame-id', 'odom'])
+    else:
+        tf = Node(package='tf2_ros', executable='static_transform_publisher',
+                  arguments=['--frame-id', 'map', '--child-frame-id', 'odom'])
+    return LaunchDescription([tf])
+"""
+
+
+def test_a_branch_for_another_distribution_is_silent_when_the_target_decides_it(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "tf.launch.py").write_text(DISTRO_BRANCH)
+
+    def rules(**options: object) -> list[str]:
+        result = lint_paths([str(tmp_path / "tf.launch.py")],
+                            LintOptions(**options))  # type: ignore[arg-type]
+        return sorted(d.rule for d in result.diagnostics)
+
+    # Unknown target: the branch is unknown, and the message says on what.
+    (message,) = _messages(tmp_path, "tf.launch.py", DISTRO_BRANCH)
+    assert "os.environ.get('ROS_DISTRO')" in message
+    # --ros-distro decides it: no message about the Dashing-only branch, no refused keyword.
+    assert rules(ros_distro="humble") == []
+    assert "ros2_removed_keyword" not in rules(ros_distro="jazzy")

@@ -32,6 +32,7 @@ from launch_linter.workspace.discovery import (
     InputFile,
     discover,
 )
+from launch_linter.workspace.environment import Place, built_beside
 from launch_linter.workspace.packages import (
     PackageIndex,
     default_package_roots,
@@ -55,6 +56,7 @@ __all__ = [
     "LintResult",
     "auto_jobs",
     "discover",
+    "lint_bytes",
     "lint_files",
     "lint_paths",
     "lint_text",
@@ -74,6 +76,9 @@ class LintOptions:
     env: dict[str, str] = field(default_factory=dict)
     package_paths: tuple[str, ...] | None = None
     """``$(find)`` roots; None means the enclosing workspace of each linted file."""
+    environment: tuple[Place, ...] = ()
+    """Package places of a sourced environment (``workspace.environment``), searched
+    after the roots and the workspace's own ``install/``/``devel/``."""
     select: frozenset[str] | None = None
     ignore: frozenset[str] = frozenset()
     severity: dict[str, Severity] = field(default_factory=dict)
@@ -157,7 +162,7 @@ def load_options_for(
     version) are shared by the files of one run, so each is worked out once (and each
     file depends on what working it out read: ``reads.remembered``)."""
     if options.package_paths is not None:
-        index = _package_index(tuple(options.package_paths), cache)
+        index = _package_index(tuple(options.package_paths), cache, options.environment)
     else:
         # default_package_roots walks up the folders of a file (to / outside a package):
         # done once per folder (the real one, for a symbolic link), whose index the cache
@@ -165,12 +170,15 @@ def load_options_for(
         path = os.path.realpath(item.path) if os.path.islink(item.path) else item.path
         index = reads.remembered(
             cache, ("", os.path.dirname(path)),
-            lambda: _package_index(tuple(default_package_roots(path)), cache))
+            lambda: _package_index(tuple(default_package_roots(path)), cache,
+                                   options.environment))
+    # The target distribution is the ROS_DISTRO of the machine that runs the files.
+    distro = {"ROS_DISTRO": options.ros_distro} if options.ros_distro else {}
     from launch_linter.frontends.ros1 import LoadOptions
 
     return LoadOptions(
         args=options.args,
-        env=options.env,
+        env={**distro, **options.env},
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",
@@ -179,8 +187,13 @@ def load_options_for(
     )
 
 
-def _package_index(roots: tuple[str, ...], cache: Packages) -> PackageIndex:
-    return reads.remembered(cache, roots, lambda: PackageIndex(list(roots)))
+def _package_index(roots: tuple[str, ...], cache: Packages,
+                   environment: tuple[Place, ...] = ()) -> PackageIndex:
+    """The index of ``roots``, then their workspace's build output, then ``environment``
+    (the order of ``workspace.environment``)."""
+    places = (*built_beside(roots), *environment)
+    key = (*roots, *(f"{kind}:{folder}" for kind, folder in places))
+    return reads.remembered(cache, key, lambda: PackageIndex(list(roots), places))
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
@@ -502,17 +515,23 @@ def lint_text(
     text: str, path: str = "<string>.launch", options: LintOptions | None = None
 ) -> LintResult:
     """Lint launch-file text as if it were the file ``path`` (which need not exist)."""
+    return lint_bytes(text.encode("utf-8"), path, options)
+
+
+def lint_bytes(
+    data: bytes, path: str = "<string>.launch", options: LintOptions | None = None
+) -> LintResult:
+    """Lint a launch file's bytes as if they were the file ``path`` (which need not
+    exist): read in the encoding they declare, fixes located in these very bytes."""
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
     load = load_options_for(item, options, {})
     from launch_linter.frontends.dispatch import load_tree
 
-    tree = load_tree(item.path, load, text.encode("utf-8"))
+    tree = load_tree(item.path, load, data)
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(
-        finish_diagnostics((tree,), found, options),
-        options.ros_distro,
-        {path: text.encode("utf-8")},
+        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data},
     )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 

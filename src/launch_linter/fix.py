@@ -13,6 +13,8 @@ ones the rule read. Every byte outside the edited words is kept. The diff of the
 from __future__ import annotations
 
 import ast
+import bisect
+import codecs
 import collections
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -20,7 +22,7 @@ from dataclasses import replace
 from typing import Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import declared_encoding, read_regular_file
 from launch_linter.rules._fixes import distro_at_least
 
 MAX_FIX_BYTES = 8 * 1024 * 1024
@@ -31,42 +33,83 @@ RECENT_SOURCES = 16
 _ATTRIBUTE = re.compile(rb"""([A-Za-z_][\w:.-]*)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _WORD = re.compile(rb"[^ \t\r\n]+")
 _TAG_BODY = re.compile(rb"""(?:[^>"']+|"[^"]*"|'[^']*')*""")
+_LINE_END = re.compile(rb"\r\n?|\n")
+"""What ends a line for expat and for Python's tokenizer alike: LF, CRLF and a lone CR
+(``bytes.splitlines`` would also split at form feeds and other separators)."""
+_BOM = b"\xef\xbb\xbf"
+_ASCII = "".join(map(chr, range(128)))
 
 Span = Tuple[int, int]
 
 
-def _line_starts(data: bytes) -> list[int]:
-    starts = [0]
-    index = data.find(b"\n")
-    while index >= 0:
-        starts.append(index + 1)
-        index = data.find(b"\n", index + 1)
-    return starts
+def line_starts(data: bytes, first: int = 0) -> list[int]:
+    """The offset of each line's first byte; the first line starts at ``first``."""
+    return [first] + [match.end() for match in _LINE_END.finditer(data, first)]
+
+
+def fix_encoding(path: str, data: bytes) -> str | None:
+    """The codec a file is read with, when fixes can be located and written in it: UTF-8
+    (a Python file, an XML file without a declaration) or a declared ASCII-compatible
+    single-byte encoding (where a character is a byte and every markup byte is ASCII); None
+    for anything else (UTF-16, multi-byte or unknown encodings), whose fixes are dropped."""
+    if path.endswith(".py"):
+        return "utf-8"
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        return None
+    declared = declared_encoding(data)
+    if not declared:
+        return "utf-8"
+    try:
+        name = codecs.lookup(declared).name
+        if name == "utf-8":
+            return name
+        if (bytes(range(128)).decode(name) != _ASCII
+                or len(bytes(range(256)).decode(name, "replace")) != 256
+                or not codecs.lookup(name)._is_text_encoding):
+            return None
+    except (LookupError, UnicodeError, ValueError, TypeError):
+        return None
+    return name
 
 
 class Source:
     """One file's bytes, with what locating words in it needs, worked out once per file
-    however many of its diagnostics carry a fix: its line starts, and for Python the
-    ``arguments=[...]`` lists of its calls by line (one parse)."""
+    however many of its diagnostics carry a fix: its encoding, its line starts (the lines
+    the parser counted: LF, CRLF and a lone CR), and for Python its syntax tree.
 
-    def __init__(self, path: str, data: bytes) -> None:
+    Positions are worked out from the decoded text: expat's columns count characters and
+    Python's count UTF-8 bytes of the line (after a byte order mark, which expat counts as
+    a character of the first line and Python skips)."""
+
+    def __init__(self, path: str, data: bytes, module: ast.Module | None = None) -> None:
         self.path = path
         self.data = data
         self.python = path.endswith(".py")
         self.yaml = path.endswith((".yaml", ".yml"))
+        self.encoding = fix_encoding(path, data)
         self._starts: list[int] | None = None
-        self._module: ast.Module | None = None
+        self._module = module
         self._calls: dict[int, tuple[list[Span], list[str]] | None] = {}
 
     @property
     def line_starts(self) -> list[int]:
         if self._starts is None:
-            self._starts = _line_starts(self.data)
+            skip = len(_BOM) if self.python and self.data.startswith(_BOM) else 0
+            self._starts = line_starts(self.data, skip)
         return self._starts
+
+    def text(self, start: int, end: int) -> str | None:
+        """The bytes ``[start, end)`` decoded, None when they are not text."""
+        if self.encoding is None:
+            return None
+        try:
+            return self.data[start:end].decode(self.encoding)
+        except UnicodeDecodeError:
+            return None
 
     def word_spans(self, line: int, column: int) -> list[Span] | None:
         """The spans of the argument words of the element or call at line:column."""
-        if self.yaml:
+        if self.yaml or self.encoding is None:
             return None
         if self.python:
             words = self.python_words(line)
@@ -80,26 +123,36 @@ class Source:
             self._calls[line] = self._python_spans(line)
         return self._calls[line]
 
-    def _xml_word_spans(self, line: int, column: int) -> list[Span] | None:
-        """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
-        data, starts = self.data, self.line_starts
-        if not 1 <= line <= len(starts):
+    def _tag_start(self, line: int, column: int) -> int | None:
+        """The byte offset of the ``<`` that starts the tag at line:column (the column in
+        characters, as expat counts), None unless there is exactly one there."""
+        starts = self.line_starts
+        if not 1 <= line <= len(starts) or column < 1:
             return None
         begin = starts[line - 1]
-        position = begin + max(column - 1, 0)
-        if data[position : position + 1] != b"<":
-            position = data.find(b"<", begin)
-            if position < 0 or (line < len(starts) and position >= starts[line]):
-                return None
-        # The end of the start tag: a '>' outside quotes (an unclosed quote runs to the
-        # end of the file).
+        end = starts[line] if line < len(starts) else len(self.data)
+        text = self.text(begin, end)
+        if text is None or column > len(text) or text[column - 1] != "<":
+            return None
+        assert self.encoding is not None
+        return begin + len(text[: column - 1].encode(self.encoding))
+
+    def _xml_word_spans(self, line: int, column: int) -> list[Span] | None:
+        """Byte spans of the words of the ``args`` attribute of the start tag at line:column."""
+        data = self.data
+        position = self._tag_start(line, column)
+        if position is None:
+            return None
+        # The end of the start tag: a '>' outside quotes.
         body = _TAG_BODY.match(data, position + 1)  # matches always (maybe nothing)
         end = body.end() if body is not None else position + 1
-        if data[end : end + 1] not in (b">", b""):
-            end = len(data)
+        if data[end : end + 1] != b">":
+            return None
         found: Span | None = None
         for match in _ATTRIBUTE.finditer(data, position, end):
             if match.group(1) == b"args":
+                if found is not None:
+                    return None
                 group = 2 if match.group(2) is not None else 3
                 found = (match.start(group), match.end(group))
         if found is None:
@@ -109,29 +162,64 @@ class Source:
             return None
         return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
 
+    def _tree(self) -> ast.Module:
+        if self._module is None:
+            try:
+                # As the front-end reads it: UTF-8, a byte order mark allowed.
+                self._module = ast.parse(self.data.decode("utf-8-sig"))
+            except (SyntaxError, ValueError, RecursionError, MemoryError):
+                self._module = ast.Module(body=[], type_ignores=[])
+        return self._module
+
     def _python_spans(self, line: int) -> tuple[list[Span], list[str]] | None:
         """Byte spans (quotes included) and values of the string items of
         ``arguments=[...]`` of the first call on ``line`` that has one (in ``ast.walk``
         order); None unless every item is a plain one-line string literal."""
-        if self._module is None:
-            try:
-                self._module = ast.parse(self.data)
-            except (SyntaxError, ValueError, RecursionError, MemoryError):
-                self._module = ast.Module(body=[], type_ignores=[])
         # ast.walk's breadth-first order, without the subtrees that lie off the line (a
         # file parsed once, each line's search a thin slice of it).
-        queue: collections.deque[ast.AST] = collections.deque([self._module])
+        queue: collections.deque[ast.AST] = collections.deque([self._tree()])
         while queue:
             node = queue.popleft()
             if isinstance(node, ast.Call) and node.lineno == line:
                 for keyword in node.keywords:
                     value = keyword.value
                     if keyword.arg == "arguments" and isinstance(value, (ast.List, ast.Tuple)):
-                        return _string_spans(value.elts, self.line_starts)
+                        return self._string_spans(value.elts)
             for child in ast.iter_child_nodes(node):
                 if _may_hold(child, line):
                     queue.append(child)
         return None
+
+    def _string_spans(self, items: list[ast.expr]) -> tuple[list[Span], list[str]] | None:
+        """The items' spans and values, when each is a plain one-line string literal
+        whose bytes in the file read as that string."""
+        starts = self.line_starts
+        spans: list[Span] = []
+        values: list[str] = []
+        for item in items:
+            if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
+                return None
+            if item.end_lineno != item.lineno or item.end_col_offset is None:
+                return None
+            if not 1 <= item.lineno <= len(starts):
+                return None
+            base = starts[item.lineno - 1]
+            span = (base + item.col_offset, base + item.end_col_offset)
+            if not _reads_as(self.text(*span), item.value):
+                return None
+            spans.append(span)
+            values.append(item.value)
+        return spans, values
+
+
+def _reads_as(literal: str | None, value: str) -> bool:
+    """Whether ``literal`` is one Python string literal whose value is ``value``."""
+    if literal is None or literal[-1:] not in ("'", '"'):
+        return False
+    try:
+        return bool(ast.literal_eval(literal) == value)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return False
 
 
 def _may_hold(node: ast.AST, line: int) -> bool:
@@ -146,25 +234,16 @@ def _may_hold(node: ast.AST, line: int) -> bool:
 _DECORATED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
 
 
-def _string_spans(items: list[ast.expr], starts: list[int]
-                  ) -> tuple[list[Span], list[str]] | None:
-    """The items' spans and values, when each is a plain one-line string literal."""
-    spans: list[Span] = []
-    values: list[str] = []
-    for item in items:
-        if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
-            return None
-        if item.end_lineno != item.lineno or item.end_col_offset is None:
-            return None
-        base = starts[item.lineno - 1]
-        spans.append((base + item.col_offset, base + item.end_col_offset))
-        values.append(item.value)
-    return spans, values
-
-
 def _python_literal(text: str, like: bytes) -> str:
-    quote = "'" if like[-1:] == b"'" else '"'
-    return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
+    """``text`` as a Python string literal in the quotes of ``like`` where it can be (every
+    control character, separator and surrogate escaped, as ``repr`` writes them)."""
+    literal = repr(text)
+    if like[-1:] == b'"' and literal[0] == "'" and '"' not in text:
+        literal = '"' + literal[1:-1] + '"'
+    return literal
+
+
+_XML_UNSAFE = re.compile("[&<>\"'\x00-\x1f\x7f-\x9f\u2028\u2029\ud800-\udfff]")
 
 
 def _flag_groups(words: list[str]) -> list[list[str]]:
@@ -223,7 +302,8 @@ def locate(fix: Fix, path: str, line: int, column: int, data: bytes) -> tuple[Ed
 
 
 def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, ...]:
-    """The byte edits of ``fix`` in ``source`` at line:column; () when not found."""
+    """The byte edits of ``fix`` in ``source`` at line:column; () when the words found
+    there are not exactly the words the rule read, or a new word could not be written."""
     path, data, python = source.path, source.data, source.python
     if python:
         found = source.python_words(line)
@@ -239,7 +319,10 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
         if xml_spans is None:
             return ()
         spans = xml_spans
-        written = tuple(data[a:b].decode("utf-8", "replace") for a, b in spans)
+        words = [source.text(a, b) for a, b in spans]
+        if any(word is None for word in words):
+            return ()
+        written = tuple(word for word in words if word is not None)
     if written != fix.tokens:
         return ()
     edits: list[Edit] = []
@@ -256,8 +339,13 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
                 end = spans[last + 1][0]
             content = ""
         else:
+            if not python and _XML_UNSAFE.search(token_edit.text):
+                return ()  # markup or a character an attribute cannot hold as it is
             content = laid_out(token_edit.text, data, spans[first : last + 1], python)
-        edits.append(Edit(path, start, end, content))
+        expected = source.text(start, end)
+        if expected is None:
+            return ()
+        edits.append(Edit(path, start, end, content, expected))
     return tuple(edits)
 
 
@@ -321,72 +409,125 @@ def wanted(diagnostic: Diagnostic, unsafe: bool) -> bool:
     )
 
 
-def apply_edits(data: bytes, fixes: Iterable[Fix]) -> tuple[bytes, list[Fix]]:
+def apply_edits(
+    data: bytes, fixes: Iterable[Fix], skipped: list[str] | None = None
+) -> tuple[bytes, list[Fix]]:
     """``data`` with every fix whose edits overlap no earlier fix's applied; the fixes
-    applied. A fix is all or nothing."""
-    taken: list[tuple[int, int]] = []
+    applied. A fix is all or nothing, and is skipped (its reason added to ``skipped``)
+    unless every byte it replaces still reads as the words it was located on and its new
+    words can be written in the file's encoding."""
+    taken: list[tuple[int, int]] = []  # sorted, disjoint
     applied: list[Fix] = []
-    chosen: list[Edit] = []
+    chosen: list[tuple[int, int, bytes]] = []
     for fix in fixes:
-        spans = [(e.start, e.end) for e in fix.edits]
-        if any((a < d and c < b) or a == b == c == d for a, b in spans for c, d in taken):
+        encoded = _encoded_edits(data, fix)
+        if isinstance(encoded, str):
+            if skipped is not None:
+                skipped.append(f"fix skipped ({fix.message}): {encoded}")
             continue
-        taken.extend(spans)
-        chosen.extend(fix.edits)
+        if any(_overlaps(taken, start, end) for start, end, _ in encoded):
+            continue
+        for start, end, _ in encoded:
+            bisect.insort(taken, (start, end))
+        chosen.extend(encoded)
         applied.append(fix)
-    out = data
-    for edit in sorted(chosen, key=lambda e: (e.start, e.end), reverse=True):
-        out = out[: edit.start] + edit.content.encode("utf-8") + out[edit.end :]
-    return out, applied
+    if not chosen:
+        return data, applied
+    pieces: list[bytes] = []
+    done = 0
+    for start, end, content in sorted(chosen, key=lambda e: (e[0], e[1])):
+        pieces += (data[done:start], content)
+        done = end
+    pieces.append(data[done:])
+    return b"".join(pieces), applied
+
+
+def _encoded_edits(data: bytes, fix: Fix) -> list[tuple[int, int, bytes]] | str:
+    """The fix's edits as (start, end, new bytes), or why it cannot be applied."""
+    encoded: list[tuple[int, int, bytes]] = []
+    for edit in fix.edits:
+        encoding = fix_encoding(edit.path, data)
+        if encoding is None:
+            return "the file's encoding is not one fixes are written in"
+        if not 0 <= edit.start <= edit.end <= len(data):
+            return "the file is shorter than when the fix was located"
+        try:
+            if edit.expected is not None and (
+                    data[edit.start:edit.end] != edit.expected.encode(encoding)):
+                return (f"the file no longer holds {edit.expected!r} at byte {edit.start}"
+                        " (changed since it was read)")
+            encoded.append((edit.start, edit.end, edit.content.encode(encoding)))
+        except UnicodeEncodeError:
+            return f"{edit.content!r} cannot be written in the file's encoding ({encoding})"
+    return encoded
+
+
+def _overlaps(taken: list[tuple[int, int]], start: int, end: int) -> bool:
+    """Whether [start, end) overlaps a taken span (two insertions at one place do too)."""
+    index = max(bisect.bisect_left(taken, (start, start)) - 1, 0)
+    while index < len(taken) and taken[index][0] <= end:
+        near = taken[index]
+        if (near[0] < end and start < near[1]) or near[0] == near[1] == start == end:
+            return True
+        index += 1
+    return False
 
 
 def fixes_by_file(diagnostics: Iterable[Diagnostic], unsafe: bool) -> dict[str, list[Fix]]:
-    grouped: dict[str, list[Fix]] = {}
+    grouped: dict[str, dict[Fix, None]] = {}
     for diagnostic in diagnostics:
         fix = diagnostic.fix
         if wanted(diagnostic, unsafe) and fix is not None:
-            listed = grouped.setdefault(diagnostic.path, [])
-            if fix not in listed:
-                listed.append(fix)
-    return grouped
+            grouped.setdefault(diagnostic.path, {})[fix] = None
+    return {path: list(fixes) for path, fixes in grouped.items()}
 
 
 def fix_until_stable(
     lint: Callable[[], Sequence[Diagnostic]],
     unsafe: bool,
-    write: Callable[[str, bytes], None],
+    write: Callable[[str, bytes, bytes], str | None],
     read: Callable[[str], bytes | None] = read_bytes,
+    notes: list[tuple[str, str]] | None = None,
 ) -> tuple[dict[str, int], Sequence[Diagnostic]]:
     """Apply fixes, lint again, repeat while something changes (bounded). Returns the
-    count of fixes applied per rule and the diagnostics of the last lint."""
+    count of fixes applied per rule and the diagnostics of the last lint.
+
+    ``write(path, before, after)`` writes a file or says why not; every fix skipped and
+    every file not written is added to ``notes`` as (path, reason), once."""
     counts: dict[str, int] = {}
+    noted: dict[tuple[str, str], None] = {}
+    refused: set[str] = set()
     diagnostics = lint()
     for _ in range(MAX_FIX_PASSES):
         grouped = fixes_by_file(diagnostics, unsafe)
         rule_of = {id(d.fix): d.rule for d in diagnostics if d.fix is not None}
         changed = False
         for path, fixes in grouped.items():
+            if path in refused:
+                continue
             data = read(path)
             if data is None:
                 continue
-            fixed, applied = apply_edits(data, fixes)
-            if fixed != data:
-                write(path, fixed)
-                changed = True
-                for fix in applied:
-                    rule = rule_of.get(id(fix), "?")
-                    counts[rule] = counts.get(rule, 0) + 1
+            skipped: list[str] = []
+            fixed, applied = apply_edits(data, fixes, skipped)
+            noted.update(((path, reason), None) for reason in skipped)
+            if fixed == data:
+                continue
+            reason = write(path, data, fixed)
+            if reason is not None:
+                refused.add(path)
+                noted[(path, reason)] = None
+                continue
+            changed = True
+            for fix in applied:
+                rule = rule_of.get(id(fix), "?")
+                counts[rule] = counts.get(rule, 0) + 1
         if not changed:
             break
         diagnostics = lint()
+    if notes is not None:
+        notes.extend(noted)
     return counts, diagnostics
-
-
-def write_file(path: str, data: bytes) -> None:
-    """Replace the file's bytes, keeping its permissions (written in place)."""
-    with open(path, "r+b") as handle:
-        handle.write(data)
-        handle.truncate()
 
 
 __all__ = [
@@ -400,5 +541,4 @@ __all__ = [
     "read_bytes",
     "wanted",
     "with_located_fixes",
-    "write_file",
 ]

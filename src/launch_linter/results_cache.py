@@ -59,7 +59,7 @@ _CODEC_FIELDS: dict[type, tuple[str, ...]] = {
     Belief: ("cls", "antecedent", "consequent", "n", "e", "z"),
     Fix: ("applicability", "message", "tokens", "token_edits", "edits", "safe_from_distro"),
     TokenEdit: ("start", "end", "text"),
-    Edit: ("path", "start", "end", "content"),
+    Edit: ("path", "start", "end", "content", "expected"),
     FileRecord: ("path", "status", "transforms"),
     Comment: ("path", "line", "text"),
 }
@@ -157,7 +157,8 @@ def _belief(value: Belief) -> list[object]:
 def _fix(value: Fix) -> list[object]:
     return [value.applicability.value, value.message, list(value.tokens),
             [[t.start, t.end, t.text] for t in value.token_edits],
-            [[e.path, e.start, e.end, e.content] for e in value.edits], value.safe_from_distro]
+            [[e.path, e.start, e.end, e.content, e.expected] for e in value.edits],
+            value.safe_from_distro]
 
 
 def encode_diagnostic(d: Diagnostic) -> list[object]:
@@ -219,8 +220,8 @@ def _decode_fix(value: object) -> Fix:
         Applicability(applicability), _str(message), tuple(_str(t) for t in _list(tokens)),
         tuple(TokenEdit(_int(s), _int(e), _str(t))
               for s, e, t in (_list(x, 3) for x in _list(token_edits))),
-        tuple(Edit(_str(p), _int(s), _int(e), _str(c))
-              for p, s, e, c in (_list(x, 4) for x in _list(edits))),
+        tuple(Edit(_str(p), _int(s), _int(e), _str(c), _optional_str(x))
+              for p, s, e, c, x in (_list(edit, 5) for edit in _list(edits))),
         _optional_str(distro),
     )
 

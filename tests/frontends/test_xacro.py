@@ -143,3 +143,29 @@ def test_one_expansion_per_file_and_args() -> None:
     assert cache.expansion(path, (), index, {}) is first
     assert cache.expansion(path, (("use_lidar", "false"),), index, {}) is not first
     assert len(cache) == 2
+
+
+def test_quoted_defaults_call_and_namespaced_includes(tmp_path: Path) -> None:
+    (tmp_path / "parts.xacro").write_text("""<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="mount" params="parent child xyz:='0.1 0 0.2' prefix:=''">
+    <link name="${prefix}${child}"/>
+    <joint name="${prefix}${child}_joint" type="fixed">
+      <origin xyz="${xyz}"/><parent link="${parent}"/><child link="${prefix}${child}"/>
+    </joint>
+  </xacro:macro>
+</robot>""")
+    (tmp_path / "robot.xacro").write_text("""<robot name="r"
+  xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:include filename="parts.xacro" ns="parts"/>
+  <xacro:property name="which" value="parts.mount"/>
+  <link name="base"/>
+  <xacro:parts.mount parent="base" child="lidar"/>
+  <xacro:call macro="${which}" parent="base" child="imu" xyz="1 2 3"/>
+</robot>""")
+    expansion = expand(str(tmp_path / "robot.xacro"), {}, lambda _: None)
+    assert [p.message for p in expansion.problems] == []
+    assert expansion.root is not None
+    joints = {j.attrib["name"]: j for j in expansion.root.children if j.tag == "joint"}
+    origins = {name: [c.attrib["xyz"] for c in j.children if c.tag == "origin"]
+               for name, j in joints.items()}
+    assert origins == {"lidar_joint": ["0.1 0 0.2"], "imu_joint": ["1 2 3"]}

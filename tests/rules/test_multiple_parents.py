@@ -2,6 +2,7 @@ from __future__ import annotations
 
 from typing import Callable, List, Tuple
 
+from _urdf import joint, link, lint_urdf, robot
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -172,3 +173,11 @@ def test_the_same_parent_many_times_is_one_parent(lint: Lint) -> None:
     xml = "\n".join(["<launch>", *(node(f"t{i}", "base", "laser") for i in range(3_000)),
                      node("other", "odom", "laser"), "</launch>"])
     assert lint(xml, RULE) == [(RULE, 3_002)]
+
+
+def test_two_parent_joints_in_one_description_say_which_one_kdl_keeps() -> None:
+    text = robot(link("a") + link("b") + link("c") + joint("z_first", "a", "c")
+                 + joint("j3", "a", "b") + "\n" + joint("a_second", "b", "c"))
+    (found,) = lint_urdf(text, "multiple_parents")
+    assert "keeps one: 'c' under 'a' by joint 'z_first', the name that sorts last" \
+        in found.message

@@ -26,10 +26,12 @@ def test_a_missing_parameter(tmp_path: Path) -> None:
     assert "undefined parameters [side]" in found.message and found.severity.value == "error"
 
 
-def test_a_parameter_mismatch_of_a_macro_with_quoted_defaults_is_unknown() -> None:
-    quoted = robot('<xacro:macro name="m" params="xyz:=\'0 0 0\'"><link name="a"/></xacro:macro>'
-                   '<xacro:m/>')
-    assert lint_urdf(quoted, RULE) == ()
+def test_quoted_defaults_are_read_as_xacro_reads_them(tmp_path: Path) -> None:
+    macro = ('<xacro:macro name="m" params="name xyz:=\'0 0 0\'"><link name="${name}"/>'
+             '</xacro:macro>')
+    assert lint_urdf(robot(macro + '<xacro:m name="a"/>'), RULE) == ()
+    (found,) = lint_loaded(tmp_path, robot(macro + '<xacro:m xyz="1 0 0"/>'), RULE)
+    assert "undefined parameters [name]" in found.message
 
 
 def test_a_missing_block(tmp_path: Path) -> None:

@@ -8,7 +8,6 @@ import shutil
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
 import pytest
 
@@ -31,7 +30,9 @@ def workspace(tmp_path: Path) -> Path:
 @pytest_lsp.fixture(
     config=ClientServerConfig(server_command=[sys.executable, "-m", "launch_linter", "server"])
 )
-async def client(lsp_client: LanguageClient, workspace: Path) -> Any:
+async def client(lsp_client: LanguageClient, workspace: Path):  # type: ignore[no-untyped-def]
+    # no return annotation: pytest-lsp 0.4 calls issubclass() on every annotation, which
+    # fails for typing.Any and generic aliases on Python 3.8
     await lsp_client.initialize_session(lsp.InitializeParams(
         capabilities=lsp.ClientCapabilities(),
         root_uri=workspace.as_uri(),

@@ -5,21 +5,25 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 
 from launch_linter import __version__
 from launch_linter.commands.common import EXIT_FINDINGS, EXIT_OK, UsageError
+from launch_linter.commands.fix_write import WriteGuard, refused_message
 from launch_linter.commands.options import (
     STDIN_NAME,
     add_resolution_options,
+    given_paths,
     lint_command_paths,
     lint_options,
     load_config,
+    read_stdin,
     results_cache,
 )
-from launch_linter.engine import LintOptions, LintResult, lint_text
+from launch_linter.engine import LintOptions, LintResult, lint_bytes
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
+from launch_linter.report.escape import printable
 from launch_linter.results_cache import ResultsCache
 from launch_linter.workspace.config import Config
 from launch_linter.workspace.paths import shown_path
@@ -144,6 +148,27 @@ def _write_output(ns: argparse.Namespace, report: str | Iterator[str]) -> None:
         raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
 
 
+def _refuse_output_over_input(ns: argparse.Namespace, result: LintResult) -> None:
+    """``-o`` naming a file that was linted would overwrite the user's input."""
+    if not ns.output_file or not os.path.exists(ns.output_file):
+        return
+    output = os.path.realpath(ns.output_file)
+    if any(os.path.realpath(record.path) == output for record in result.files):
+        raise UsageError(f"the output file {printable(ns.output_file)} is one of the files "
+                         "linted; refusing to overwrite it")
+
+
+def _write_guard(ns: argparse.Namespace) -> WriteGuard:
+    """``--fix`` writes under the paths given (the current folder when none)."""
+    return WriteGuard(given_paths(ns) or [os.curdir],
+                      [ns.output_file] if ns.output_file else [])
+
+
+def _print_notes(notes: Sequence[tuple[str, str]]) -> None:
+    for path, reason in notes:
+        sys.stderr.write(refused_message(path, reason) + "\n")
+
+
 def _write_bytes(ns: argparse.Namespace, data: bytes) -> None:
     """A diff, byte for byte (its lines are the files' bytes, in their own encoding)."""
     if not ns.output_file:
@@ -175,9 +200,11 @@ def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config,
         last.append(lint_command_paths(ns, options, config, keep_trees=False, cache=cache))
         return last[-1].diagnostics
 
+    notes: list[tuple[str, str]] = []
     counts, _ = fixing.fix_until_stable(
-        lint, ns.unsafe_fixes, fixing.write_file  # type: ignore[arg-type]
+        lint, ns.unsafe_fixes, _write_guard(ns).write, notes=notes  # type: ignore[arg-type]
     )
+    _print_notes(notes)
     if not ns.quiet:
         hidden = text.hidden_fixes(last[-1].diagnostics, ns.unsafe_fixes)
         sys.stderr.write(diff.fix_summary(counts, hidden) + "\n")
@@ -189,6 +216,7 @@ def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
     from launch_linter import fix as fixing
     from launch_linter.report import diff
 
+    _refuse_output_over_input(ns, result)
     out: list[bytes] = []
     fixed = 0
     for path, fixes in fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).items():
@@ -206,30 +234,42 @@ def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
 
 
 def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
-    """``-`` with ``--fix``/``--diff``: the fixed text (or its diff) on stdout."""
+    """``-`` with ``--fix``/``--diff``: the fixed bytes (or their diff) on stdout, in the
+    encoding they came in."""
     from launch_linter import fix as fixing
     from launch_linter.report import diff
 
+    if len(given_paths(ns)) > 1:
+        raise UsageError("'-' (stdin) cannot be combined with other paths")
     name = getattr(ns, "stdin_filename", None) or STDIN_NAME
-    data = sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+    data = read_stdin()
     current = data
+    notes: list[tuple[str, str]] = []
     fixed_count = 0
     for _ in range(fixing.MAX_FIX_PASSES):
-        result = lint_text(current.decode("utf-8", "replace"), name, options)
+        result = lint_bytes(current, name, options)
         fixes = fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).get(name, [])
-        fixed, applied = fixing.apply_edits(current, fixes)
+        skipped: list[str] = []
+        fixed, applied = fixing.apply_edits(current, fixes, skipped)
+        notes.extend((name, reason) for reason in skipped if (name, reason) not in notes)
         if fixed == current:
             break
         fixed_count += len(applied)
         current = fixed
+    _print_notes(notes)
     if ns.diff:
         _write_bytes(ns, diff.unified_diff(name, data, current))
         if not ns.quiet:
             hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
             sys.stderr.write(diff.diff_summary(fixed_count, hidden) + "\n")
         return EXIT_FINDINGS if current != data and not ns.exit_zero else EXIT_OK
-    sys.stdout.write(current.decode("utf-8", "replace"))
-    result = lint_text(current.decode("utf-8", "replace"), name, options)
+    if hasattr(sys.stdout, "buffer"):
+        sys.stdout.flush()
+        sys.stdout.buffer.write(current)
+        sys.stdout.buffer.flush()
+    else:
+        sys.stdout.write(current.decode("utf-8", "replace"))
+    result = lint_bytes(current, name, options)
     if not ns.quiet:
         sys.stderr.write(text.format_diagnostics(result.diagnostics))
     return _status(ns, result, None)
@@ -267,6 +307,7 @@ def run(ns: argparse.Namespace) -> int:
     finally:
         if cache is not None:
             cache.save()
+    _refuse_output_over_input(ns, result)
     _write_output(ns, _report(ns, result, options, config))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")

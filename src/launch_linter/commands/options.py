@@ -11,12 +11,13 @@ from launch_linter import __version__
 from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
-from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_paths, lint_text
+from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_bytes, lint_paths
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.results_cache import ResultsCache, results_cache_folder
 from launch_linter.rules._profiles import PROFILES
 from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
 from launch_linter.workspace.discovery import Exclusions, Ignored
+from launch_linter.workspace.environment import environment_places
 
 
 def split_ids(values: list[str] | None) -> list[str]:
@@ -185,6 +186,9 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         args={**config.args, **pairs(ns.arg, ":=", "--arg")},
         env={**config.env, **pairs(ns.env, "=", "--env")},
         package_paths=tuple(ns.package_path) if ns.package_path else config.package_path,
+        # A sourced ROS shell says where installed packages are (the order is documented
+        # in workspace.environment and docs/workspace.md).
+        environment=environment_places(os.environ),
         select=frozenset(select) if select else None,
         ignore=frozenset(ignore),
         severity=dict(config.severity),
@@ -233,6 +237,11 @@ def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, I
     return exclusions, gitignore_predicate().ignored
 
 
+def read_stdin() -> bytes:
+    """The bytes on stdin, as they are (an XML file's declared encoding is expat's to read)."""
+    return sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+
+
 def lint_command_paths(
     ns: argparse.Namespace, options: LintOptions, config: Config, keep_trees: bool = True,
     cache: ResultsCache | None = None,
@@ -245,9 +254,17 @@ def lint_command_paths(
         if len(given) > 1:
             raise UsageError("'-' (stdin) cannot be combined with other paths")
         name = getattr(ns, "stdin_filename", None) or STDIN_NAME
-        return lint_text(sys.stdin.read(), name, options)
+        return lint_bytes(read_stdin(), name, options)
+    missing = [path for path in given if not os.path.lexists(path)]
+    if missing:
+        raise UsageError(f"{missing[0]}: no such file or folder")
     exclusions, ignored = discovery_for(ns, config)
-    return lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees, cache)
+    result = lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees, cache)
+    if not result.files:
+        # ruff's wording: an empty run is a silent success otherwise.
+        sys.stderr.write("warning: No files found under the given path(s) (launch files: "
+                         "*.launch, *.launch.xml/.py/.yaml, *_launch.py, .test, ...)\n")
+    return result
 
 
 def results_cache(

@@ -19,6 +19,8 @@ def run(ns: argparse.Namespace) -> int:
     from launch_linter.rules._profiles import study_severity
 
     width = max(len(r.id) for r in RULES)
+    sys.stdout.write(f"{'ID':<{width}}  {'CATEGORY':<12}  {'SEVERITY':<8}  SUMMARY  "
+                     "[FIX; STUDY'S LEVEL; MEASURED PRECISION]\n")
     for rule in RULES:
         # The contract's columns first (id, category, severity, summary); what this version
         # adds follows the summary, so a reader of the four columns is not misled.
@@ -29,7 +31,7 @@ def run(ns: argparse.Namespace) -> int:
         if rule.fix:
             notes.insert(0, f"fix: {rule.fix.value}")
         sys.stdout.write(
-            f"{rule.id:<{width}}  {rule.category.value:<12}  {rule.severity.value:<7}  "
+            f"{rule.id:<{width}}  {rule.category.value:<12}  {rule.severity.value:<8}  "
             f"{rule.summary}  [{'; '.join(notes)}]\n"
         )
     return EXIT_OK

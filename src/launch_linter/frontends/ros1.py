@@ -32,6 +32,7 @@ from launch_linter.frontends.ros1_base import (
     TF_PACKAGES,
     LoadOptions,
     _Context,
+    include_call,
     relative_to_cwd,
 )
 from launch_linter.frontends.ros1_checks import (
@@ -48,7 +49,14 @@ from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import ALWAYS, DECODED_FIELDS, ArgForm, Condition, Field
 from launch_linter.resolve import reads
-from launch_linter.resolve.value import Value, holes, resolved_text, text_of, why_unresolved
+from launch_linter.resolve.value import (
+    Value,
+    holes,
+    is_resolved,
+    resolved_text,
+    text_of,
+    why_unresolved,
+)
 from launch_linter.resolve.xml_safe import Element, read_launch_bytes
 
 
@@ -217,11 +225,31 @@ class Ros1Loader(Ros1Tags):
             return
         absolute = self._locate(path, context.filename)
         if absolute is None:
-            self._error(context, element, f"included file not found: {path}")
-            return
-        if absolute in context.chain:
+            located = self.options.packages.locate(
+                path if os.path.isabs(path) else os.path.join(
+                    os.path.dirname(context.filename), path),
+                near=os.path.dirname(context.filename))
+            if located.path is None and not located.absent and not self.options.study_errors:
+                self._report("unresolved", context.filename, element,
+                             f"include file {path!r} not followed: {located.reason}")
+                return
+            if located.path is None:
+                self._error(context, element, f"included file not found: {path}")
+                return
+            absolute = located.path
+        call = include_call(absolute, child.args)
+        if call in context.calls:
+            # roslaunch would recurse for ever only if the file comes back with the same
+            # argument values under a condition that held: a recursion that changes its
+            # arguments ends when its condition turns false (followed below, to the depth
+            # bound), and one whose values or condition are unknown may end too.
             cycle = " -> ".join(self._display(p) for p in (*context.chain, absolute))
-            self._error(context, element, f"include cycle: {cycle}")
+            if child.condition.always and all(is_resolved(v) for v in child.args.values()):
+                self._error(context, element, f"include cycle: {cycle}")
+            else:
+                self._report("unresolved", context.filename, element,
+                             f"include of {self._display(absolute)} repeats with the same "
+                             f"unknown argument values or condition ({cycle}); not followed")
             return
         if len(context.chain) >= MAX_INCLUDE_DEPTH or len(self.files) >= MAX_FILES_PER_TREE:
             self._report("unresolved", context.filename, element,
@@ -242,7 +270,9 @@ class Ros1Loader(Ros1Tags):
         child.filename = absolute
         child.scope = child.side_scope = None
         child.chain = (*context.chain, absolute)
+        child.calls = (*context.calls, call)
         child.included_from = (self._display(context.filename), element.line)
+        self._included_at[absolute] = child.included_from
         self._launch_conditions(root, child)
         self._walk(root.children, child)
         self._path = context.filename

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import re
+import typing
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
@@ -97,10 +98,18 @@ class _AnonNames:
         return table[anon_id]
 
 
+IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
+"""A file and the values of the args it is given (as written where unresolved)."""
+
+
+def include_call(path: str, args: dict[str, Value]) -> IncludeCall:
+    return path, tuple(sorted((name, text_of(value)) for name, value in args.items()))
+
+
 class _Context:
     """roslaunch's ``LoaderContext``, plus what static resolution needs to know."""
 
-    __slots__ = ("anon", "arg_names", "args", "chain", "condition", "depth", "filename",
+    __slots__ = ("anon", "arg_names", "args", "calls", "chain", "condition", "depth", "filename",
                  "include_args", "included_from", "ns", "ns_unresolved", "open_args",
                  "pass_all_args", "scope", "side_scope")
 
@@ -117,6 +126,8 @@ class _Context:
         self.anon: dict[str, str] = {}
         self.condition = ALWAYS
         self.chain: tuple[str, ...] = (filename,)
+        self.calls: tuple[IncludeCall, ...] = (include_call(filename, args),)
+        """(file, argument values) of each include on the way here: a repeat is a cycle."""
         self.included_from: tuple[str, int] | None = None
         self.pass_all_args = False
         self.include_args: dict[str, Value] | None = None
@@ -135,6 +146,7 @@ class _Context:
         child.anon = dict(self.anon)
         child.condition = self.condition
         child.chain = self.chain
+        child.calls = self.calls
         child.included_from = self.included_from
         child.pass_all_args = self.pass_all_args
         child.include_args = self.include_args
@@ -151,7 +163,9 @@ class Ros1Base:
         self.problems: list[Problem] = []
         # A file included many times reports each of its problems once: the same element
         # gives the same problem every time, and a hostile tree can repeat one 100,000 times.
-        self._reported: set[Problem] = set()
+        self._reported: set[tuple[object, ...]] = set()
+        self._included_at: dict[str, tuple[str, int]] = {}
+        """The include being walked for each included file (its file and line)."""
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -180,9 +194,20 @@ class Ros1Base:
     ) -> None:
         line, column = (element.line, element.column) if element else (1, 1)
         problem = Problem(rule, self._display(path), line, column, message, node, related)
-        if problem not in self._reported:
-            self._reported.add(problem)
-            self.problems.append(problem)
+        # Once per cause and place in a tree: a file included twice says it once (an
+        # unresolved value is one cause whichever node of the include it is in).
+        key: tuple[object, ...] = (rule, problem.path, line, column, message) + (
+            () if rule == "unresolved" else (node, related))
+        if key in self._reported:
+            return
+        self._reported.add(key)
+        site = self._included_at.get(path) if rule == "unresolved" else None
+        if site is not None:
+            # Which include gave the text its values: a file included with other
+            # arguments elsewhere can say something else at the same line.
+            problem = Problem(rule, problem.path, line, column,
+                              f"{message} (included from {site[0]}:{site[1]})", node, related)
+        self.problems.append(problem)
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         source = (

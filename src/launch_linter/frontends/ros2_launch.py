@@ -18,6 +18,7 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.record import (
@@ -145,8 +146,7 @@ class Ros2Loader(Ros2Runner):
         own = self._condition(component.condition, scope, frame, component.where)
         if own is None or component.package is None or component.plugin is None:
             return
-        here = _Frame(frame.filename, frame.launch_format, frame.chain, frame.included_from,
-                      frame.condition & own)
+        here = replace(frame, condition=frame.condition & own)
         for subs in component.uses:
             self._resolve(subs, scope, here, component.where)
         package = self._resolve(component.package, scope, here, component.where)

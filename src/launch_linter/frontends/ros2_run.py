@@ -6,8 +6,9 @@ from __future__ import annotations
 
 import os
 import shlex
+import typing
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from launch_linter.frontends.ros1 import LoadOptions
@@ -115,6 +116,10 @@ class _Scope:
         return _Scope(dict(self.configs), dict(self.env), condition)
 
 
+IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
+"""An included file and the values of the arguments it is given (as written if unknown)."""
+
+
 @dataclass(frozen=True)
 class _Frame:
     """Where the actions being run come from."""
@@ -124,6 +129,8 @@ class _Frame:
     chain: tuple[str, ...]
     included_from: tuple[str, int] | None
     condition: Condition
+    calls: tuple[IncludeCall, ...] = ()
+    """(file, values of the arguments it was given) of each include on the way here."""
 
 
 @dataclass
@@ -268,7 +275,8 @@ class Ros2Runner:
                 name: (value,) if value else () for name, value in self.options.args.items()
             }
             scope = _Scope(configs, dict(self.options.env), Condition())
-            frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition())
+            frame = _Frame(absolute, read.launch_format, (absolute,), None, Condition(),
+                           ((absolute, ()),))
             self._run(read.actions, scope, frame)
         except BudgetExceeded as exc:
             self._report("unresolved", self._where or Where(absolute, 1, 1),
@@ -353,7 +361,7 @@ class Ros2Runner:
         if display not in self.files:
             self.files.append(display)
         if absolute.endswith(".py"):
-            read = read_python(absolute, data, self.work)
+            read = read_python(absolute, data, self.work, self.options.env)
         elif absolute.endswith((".yaml", ".yml")):
             read = read_yaml(absolute, data)
         else:
@@ -442,10 +450,7 @@ class Ros2Runner:
         if own is None:
             return
         # Most actions have no condition of their own: they run in the frame as it is.
-        here = frame if not own.literals else _Frame(
-            frame.filename, frame.launch_format, frame.chain, frame.included_from,
-            frame.condition & own,
-        )
+        here = frame if not own.literals else replace(frame, condition=frame.condition & own)
         handler = _ACTIONS.get(type(action))
         if handler is not None:
             handler(self, action, scope, here)
@@ -548,6 +553,7 @@ class Ros2Runner:
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         path_value = self._resolve(action.path, scope, frame, action.where)
         passed: list[str] = []
+        given_values: list[tuple[str, Value]] = []
         if not action.args_known:
             self._opened(f"line {action.where.line}: the arguments of an include are unknown")
         for name_subs, value_subs in action.args:
@@ -560,7 +566,10 @@ class Ros2Runner:
             # like the read of this very value, which launch performs before setting it.
             passed.append(name)
             value = self._resolve(value_subs, scope, frame, action.where)
+            given_values.append((name, value))
             self._set(scope, name, value, frame.condition, f"$(var {name})")
+        given = tuple(sorted((name, text_of(value)) for name, value in given_values))
+        known = all(is_resolved(value) for _, value in given_values)
         path = resolved_text(path_value)
         if path is None:
             reasons = why_unresolved(path_value)
@@ -569,6 +578,13 @@ class Ros2Runner:
             self._opened(f"line {action.where.line}: an include is not followed")
             return
         absolute = _locate(path, frame.filename)
+        located = None
+        if absolute is None:
+            located = self.options.packages.locate(
+                path if os.path.isabs(path) else os.path.join(
+                    os.path.dirname(frame.filename), path),
+                near=os.path.dirname(frame.filename))
+            absolute = located.path
         if absolute is None:
             if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
@@ -584,16 +600,30 @@ class Ros2Runner:
                              f"them with --env)")
                 self._opened(f"line {action.where.line}: an include is not followed")
                 return
+            if located is not None and not located.absent and not self.options.study_errors:
+                self._report("unresolved", action.where,
+                             f"include file {path!r} not followed: {located.reason}")
+                self._opened(f"line {action.where.line}: an include is not followed")
+                return
             self._report("roslaunch_error", action.where, f"included file not found: {path}")
             self._opened(f"line {action.where.line}: an include is not followed")
             return
-        if absolute in frame.chain:
+        call = (absolute, given)
+        if call in frame.calls:
+            # A cycle is the same file given the same argument values under a condition that
+            # held; a recursion that changes its arguments ends when its condition turns
+            # false, and one whose values or condition are unknown may end too.
             cycle = " -> ".join(self._display(p) for p in (*frame.chain, absolute))
-            self._report("roslaunch_error", action.where, f"include cycle: {cycle}")
+            if known and frame.condition.always:
+                self._report("roslaunch_error", action.where, f"include cycle: {cycle}")
+            else:
+                self._report("unresolved", action.where,
+                             f"include of {self._display(absolute)} repeats with the same "
+                             f"unknown argument values or condition ({cycle}); not followed")
             self._opened(f"line {action.where.line}: an include is not followed")
             return
         if len(frame.chain) > MAX_INCLUDE_DEPTH or len(self.files) >= MAX_FILES_PER_TREE:
-            self._report("roslaunch_error", action.where,
+            self._report("unresolved", action.where,
                          f"includes nested deeper than {MAX_INCLUDE_DEPTH} levels; not followed")
             self._opened(f"line {action.where.line}: an include is not followed")
             return
@@ -618,7 +648,8 @@ class Ros2Runner:
                     f"missing required argument'",
                 )
         inner = _Frame(absolute, read.launch_format, (*frame.chain, absolute),
-                       (self._display(frame.filename), action.where.line), frame.condition)
+                       (self._display(frame.filename), action.where.line), frame.condition,
+                       (*frame.calls, call))
         self._run(read.actions, scope, inner)
 
     # -- defined by a subclass, further on ---------------------------------------------------

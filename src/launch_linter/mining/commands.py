@@ -24,6 +24,7 @@ from launch_linter.mining.stats import check_p0
 from launch_linter.mining.store import Store, StoreError
 from launch_linter.model.beliefs import BELIEF_CLASSES
 from launch_linter.model.diagnostic import Belief
+from launch_linter.report.escape import printable
 
 if TYPE_CHECKING:
     from launch_linter.mining.ingest import IngestReport
@@ -91,7 +92,7 @@ def mine_corpus(
 
 
 def _error(message: str) -> int:
-    sys.stderr.write(f"launch-linter: error: {message}\n")
+    sys.stderr.write(f"launch-linter: error: {printable(message)}\n")
     return EXIT_USAGE
 
 
@@ -141,9 +142,11 @@ def run_mine(ns: argparse.Namespace) -> int:
         )
         return EXIT_INTERRUPTED
     for name in ingested.unknown_mature:
-        sys.stderr.write(f"launch-linter: warning: --mature {name}: no such repository\n")
+        sys.stderr.write(f"launch-linter: warning: --mature {printable(name)}: no such "
+                         "repository\n")
     for where, reason in ingested.unreadable:
-        sys.stderr.write(f"launch-linter: warning: {where}: {reason}\n")
+        # Corpus file names are a stranger's: no terminal escapes, one line each.
+        sys.stderr.write(f"launch-linter: warning: {printable(where)}: {printable(reason)}\n")
     share = totals["unresolved_transforms"] / totals["transforms"] if totals["transforms"] else 0.0
     sys.stdout.write(
         f"ingested {ingested.new_files} new of {ingested.files} files "

@@ -93,12 +93,16 @@ class TokenEdit:
 
 @dataclass(frozen=True)
 class Edit:
-    """A replacement of the bytes ``[start, end)`` of the file ``path``."""
+    """A replacement of the bytes ``[start, end)`` of the file ``path``.
+
+    ``expected``: the text those bytes held when the edit was located (a fix is applied
+    only where they still do)."""
 
     path: str
     start: int
     end: int
     content: str
+    expected: str | None = None
 
     def to_json(self) -> dict:  # type: ignore[type-arg]
         return {"path": self.path, "start": self.start, "end": self.end, "content": self.content}

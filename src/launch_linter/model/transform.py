@@ -9,6 +9,8 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import Enum
 
+from launch_linter.model.equality import Test, equality_test, exclusive
+
 NULL_TOLERANCE = 1e-9
 
 
@@ -135,8 +137,17 @@ class Condition:
         return Condition(tuple(merged))
 
     def excludes(self, other: Condition) -> bool:
-        """True when the two conditions can never hold together."""
-        return any(lit.negated() in other.literals for lit in self.literals)
+        """True when the two conditions can never hold together: one requires a test the
+        other negates, or both compare one value with constants that cannot both hold
+        (``== 'a'`` and ``== 'b'``; ``== 'a'`` and ``!= 'a'``)."""
+        if any(lit.negated() in other.literals for lit in self.literals):
+            return True
+        tests = [t for t in map(_test, other.literals) if t is not None]
+        return bool(tests) and any(
+            exclusive(mine, theirs)
+            for mine in map(_test, self.literals) if mine is not None
+            for theirs in tests
+        )
 
     def describe(self) -> str:
         if self.always:
@@ -148,6 +159,13 @@ class Condition:
 
 
 ALWAYS = Condition()
+
+
+@functools.lru_cache(maxsize=4096)
+def _test(literal: ConditionLiteral) -> Test | None:
+    """The comparison a literal requires (an ``unless`` negates it)."""
+    found = equality_test(literal.text)
+    return None if found is None else (found[0], found[1], found[2] == literal.positive)
 
 
 @dataclass(frozen=True)

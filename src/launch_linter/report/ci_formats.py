@@ -58,10 +58,10 @@ def junit(result: LintResult, fail_on: Severity, suite: str = "launch-linter",
         by_file.setdefault(diagnostic.path, []).append(diagnostic)
     failures = sum(1 for findings in by_file.values()
                    if any(d.severity.rank >= fail_on.rank for d in findings))
-    counts = {"tests": str(len(by_file)), "failures": str(failures), "errors": "0",
-              "skipped": "0", "time": "0"}
+    counts = {"tests": str(len(by_file)), "failures": str(failures), "errors": "0", "time": "0"}
     root = ET.Element("testsuites", {"name": printable(suite), **counts})
-    suite_element = ET.SubElement(root, "testsuite", {"name": printable(suite), **counts})
+    suite_element = ET.SubElement(root, "testsuite",
+                                  {"name": printable(suite), **counts, "skipped": "0"})
     for path in sorted(by_file):
         _testcase(suite_element, path, by_file[path], fail_on, classname)
     if hasattr(ET, "indent"):  # Python 3.9+; without it the document is only less readable
@@ -72,8 +72,9 @@ def junit(result: LintResult, fail_on: Severity, suite: str = "launch-linter",
 def _testcase(parent: ET.Element, path: str, findings: list[Diagnostic], fail_on: Severity,
               classname: str) -> None:
     name = printable(_relative(path))
+    # no ``file`` attribute: junit-10.xsd (the schema pytest's xunit2 follows) has none
     case = ET.SubElement(parent, "testcase", {"name": name, "classname": printable(classname),
-                                              "file": name, "time": "0"})
+                                              "time": "0"})
     below: list[str] = []
     for diagnostic in findings:
         if diagnostic.severity.rank < fail_on.rank:

@@ -109,6 +109,7 @@ def format_joint(j: RobotJoint, entry_points: Sequence[str] = ()) -> str:
     if j.unresolved:
         extra.append(f"unresolved: {', '.join(j.unresolved)}")
     extra.extend(_publishers(entry_points))
+    # Joint and link names come from a robot description: escaped like every input string.
     return printable(
         f"{j.path}:{j.line}:{j.column}: urdf {j.joint_type} joint {j.name} "
         f"{j.parent or '?'} -> {j.child or '?'} t={translation} r={rotation}"

@@ -89,8 +89,8 @@ class ReadLog:
 
 def _looked_at_less(weaker: Stamp, stronger: Stamp) -> bool:
     """Whether ``weaker`` is ``stronger`` with less looked at (a probe of a file read)."""
-    return (weaker[1] == -1 or weaker[1] == stronger[1]) and weaker[2] == -1 \
-        and weaker[3] is None
+    return (weaker[1] == -1 or weaker[1] == stronger[1]) \
+        and (weaker[2] == -1 or weaker[2] == stronger[2]) and weaker[3] is None
 
 
 _active: list[ReadLog] = []
@@ -146,6 +146,36 @@ def note_read(path: str, status: os.stat_result, data: bytes) -> None:
 
 def _vouching_mtime(mtime_ns: int) -> int:
     return mtime_ns if time.time_ns() - mtime_ns >= SETTLE_NS else 0
+
+
+def too_recent(status: os.stat_result) -> bool:
+    """Whether a file's modification time is too recent to vouch for its content."""
+    return _vouching_mtime(status.st_mtime_ns) == 0
+
+
+def note_status(path: str, status: os.stat_result) -> None:
+    """A value made from the file ``path`` was reused because its ``os.stat`` (``status``)
+    is unchanged: it depends on the file as a read would, without a digest."""
+    if _active:
+        _active[-1].add(path, (kind_of(status.st_mode), status.st_size,
+                               _vouching_mtime(status.st_mtime_ns), None))
+
+
+def list_folder(path: str) -> list[str]:
+    """``os.listdir``, noted as a listing of every entry (:func:`note_folder`)."""
+    if not _active:
+        return os.listdir(path)
+    folders: list[str] = []
+    files: list[str] = []
+    with os.scandir(path) as entries:
+        for entry in entries:
+            try:
+                is_folder = entry.is_dir()
+            except OSError:
+                is_folder = False
+            (folders if is_folder else files).append(entry.name)
+    note_folder(path, os.stat(path), folders, files, EVERY_FILE)
+    return [*folders, *files]
 
 
 def note_unsaved() -> None:

@@ -317,7 +317,12 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
     current = text
     parts: list[Part] | None = None
     commands = _commands(text)
+    # A needle replaced everywhere by text without "$(" cannot come back: the same
+    # command again (200,000 $(arg a) in one value) is skipped, not searched for again.
+    gone: set[str] = set()
     for body, needle, words in commands:
+        if needle in gone:
+            continue
         if words is None:
             _check_command(body)
             continue
@@ -326,13 +331,18 @@ def resolve(text: str, scope: SubstitutionScope) -> Value:
             continue
         replacement = _first_pass_value(command, body, words[1:], scope)
         if parts is None:
+            if scope.budget is not None:
+                scope.budget.step(1 + len(current) // 4096)  # each replace reads the text
             if not replacement:
                 current = current.replace(needle, "")
+                gone.add(needle)
                 continue
             if len(replacement) == 1 and type(replacement[0]) is str:
                 if len(replacement[0]) > len(needle):
                     _charge(scope, _grown_size(current, needle, len(replacement[0])))
                 current = current.replace(needle, replacement[0])
+                if "$(" not in replacement[0]:
+                    gone.add(needle)
                 continue
             parts = [current]
         parts = _replace_all(parts, needle, replacement, scope)

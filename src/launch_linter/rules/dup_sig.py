@@ -63,6 +63,10 @@ def _agreement(a: StaticTransform, b: StaticTransform) -> str:
 def check(context: RuleContext) -> Iterator[Finding]:
     for transforms in context.shared(transforms_by_file).values():
         seen: dict[tuple[str, str], list[StaticTransform]] = {}
+        # Of the earlier transforms of one element under one condition only the first can
+        # be named (the search takes the first that qualifies, and they qualify alike):
+        # one element reached through 2^k includes is one candidate, not 2^k.
+        kept: set[tuple[object, ...]] = set()
         for transform in transforms:
             signature = transform.signature
             if signature is None:
@@ -76,7 +80,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 ),
                 None,
             )
-            earlier.append(transform)
+            key = (signature, transform.path, transform.line, transform.column,
+                   transform.condition)
+            if key not in kept:
+                kept.add(key)
+                earlier.append(transform)
             if first is None:
                 continue
             maybe = " if both are launched" if first.condition != transform.condition else ""

@@ -124,10 +124,29 @@ def check(context: RuleContext) -> Iterator[Finding]:
         yield finding_on(
             edge,
             f"frame '{child}' {gets} {count + 1} parents: '{parent}' {here} and "
-            f"{others}; a tf frame has exactly one parent, and tf2 keeps whichever "
-            f"transform arrives last",
+            f"{others}; a tf frame has exactly one parent, and "
+            + (_kdl_keeps(edge, rivals, context) or
+               "tf2 keeps whichever transform arrives last"),
             tuple(t for _, t in rivals),
         )
+
+
+def _kdl_keeps(edge: Edge, rivals: list[tuple[str, Edge]], context: RuleContext) -> str | None:
+    """What robot_state_publisher publishes when every parent comes from joints of one
+    robot description: urdfdom keeps, as the link's parent joint, the joint whose name
+    sorts last (its joints are a map by name), and KDL hangs the link under that joint's
+    parent only (its other ``addSegment`` fails, unchecked)."""
+    joint = edge.joint
+    if joint is None or any(r.joint is None or r.joint.source != joint.source
+                            for _, r in rivals):
+        return None
+    kept = max((j for j in context.tree.joints
+                if j.source == joint.source and j.child == edge.child and j.parent is not None),
+               key=lambda j: j.name, default=None)
+    if kept is None:
+        return None
+    return (f"robot_state_publisher (urdfdom, then KDL) keeps one: '{edge.child}' under "
+            f"'{kept.parent}' by joint '{kept.name}', the name that sorts last")
 
 
 def _where(edge: Edge, seen_from: Edge) -> str:

@@ -4,8 +4,12 @@
 Reports a static transform (or an `<include>`) whose values depend on something the linter
 cannot know without running roslaunch: an `$(arg)` that is never set, an `$(env)` variable
 not given with `--env`, a `$(find)` package that is not under the package path, or an
-`$(eval)` outside the safe expression language. The message names each substitution that
-blocked resolution. Rules that need an unknown value stay silent about it.
+`$(eval)` outside the safe expression language. The message names what really blocks the
+value: the innermost unknown (the environment variable behind a launch argument's default,
+not the `LaunchConfiguration` that passes it on), each cause once; in included text it
+names the include that gave the values, once per place in a tree however often the file
+is included; a description given to several nodes is reported once. Rules that need an
+unknown value stay silent about it.
 
 ## Why is this bad?
 It is not a fault in itself: it tells you what the linter could not check, so that a

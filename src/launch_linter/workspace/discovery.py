@@ -2,14 +2,15 @@
 
 A folder is walked for every launch file ROS 1 and ROS 2 name that way (``*.launch``,
 ``*.launch.xml``, ``*_launch.xml``, ``*.launch.py``, ``*_launch.py``, ``*.launch.yaml``,
-``*.launch.yml``, ``*_launch.yaml``, ``*_launch.yml``) and for ``*.xml`` files whose root
-element is ``<launch>``, and for robot descriptions (``*.urdf``, ``*.xacro``), which are
-checked as ``check_urdf`` reads them. It skips version-control folders and the other default
-exclusions (replaced by ``exclude``, extended by ``extend_exclude``, ruff's convention),
-the ``build/``, ``install/``, ``log/`` and ``devel/`` folders of catkin and colcon
-workspaces (only where they are workspace folders: beside a ``src/`` folder, or marked
-with ``COLCON_IGNORE``/``CATKIN_IGNORE``/``AMENT_IGNORE``), and whatever the injected
-``ignored`` predicate rejects (the command line passes the ``.gitignore`` rules there;
+``*.launch.yml``, ``*_launch.yaml``, ``*_launch.yml``), for ``*.xml`` and rostest ``*.test``
+files whose root element is ``<launch>``, and for robot descriptions (``*.urdf``,
+``*.xacro``), which are checked as ``check_urdf`` reads them. It skips version-control
+folders and the other default exclusions (replaced by ``exclude``, extended by
+``extend_exclude``, ruff's convention), the ``build/``, ``install/``, ``log/`` and
+``devel/`` folders of catkin and colcon workspaces (only where they are workspace folders:
+beside a ``src/`` folder, or marked with ``COLCON_IGNORE``/``CATKIN_IGNORE``/
+``AMENT_IGNORE``), and whatever the injected ``ignored`` predicate rejects (the command
+line passes the ``.gitignore`` rules there;
 this module stays standard-library only). A file named explicitly is always linted. Each
 file is taken once, by its real path, under the first name it was found by.
 """
@@ -19,7 +20,7 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Callable
 
@@ -64,7 +65,9 @@ long comments come first in some files)."""
 _LAUNCH_ROOT = re.compile(rb"<launch[\s>/]")
 _PY_LAUNCH = re.compile(rb"^def generate_launch_description\s*\(", re.MULTILINE)
 _YAML_LAUNCH = re.compile(rb"(?:\xef\xbb\xbf)?(?:\s*#[^\n]*\n|\s*\n|---[^\n]*\n)*launch\s*:")
-CONTENT_SUFFIXES = (".xml", ".py", ".yaml", ".yml")
+CONTENT_SUFFIXES = (".xml", ".test", ".py", ".yaml", ".yml")
+"""Suffixes whose content decides: ``.test`` is a rostest file, a launch file with
+``<test>`` elements when its root is ``<launch>``."""
 MAX_CONTENT_BYTES = 256 * 1024
 
 
@@ -118,7 +121,7 @@ def has_launch_content(path: str, name: str) -> bool:
     """Whether a file that is not named like a launch file is one by its content: XML
     with a ``<launch>`` root, a Python file defining ``generate_launch_description`` (what
     ``ros2 launch`` calls), or YAML whose top-level key is ``launch:``."""
-    if name.endswith(".xml"):
+    if name.endswith((".xml", ".test")):
         return has_launch_root(path)
     try:
         data = read_regular_file(path, MAX_CONTENT_BYTES)
@@ -189,6 +192,36 @@ def _compiled(
     return found
 
 
+def walk(top: str, followlinks: bool = False) -> Iterator[tuple[str, list[str], list[str]]]:
+    """``os.walk`` (top-down, the caller may prune ``subdirs`` in place), without recursion:
+    before Python 3.12 ``os.walk`` recursed once per level, and 1,500 nested folders in a
+    repository raised RecursionError and lost the whole run."""
+    stack = [top]
+    while stack:
+        directory = stack.pop()
+        subdirs: list[str] = []
+        files: list[str] = []
+        links: set[str] = set()
+        try:
+            with os.scandir(directory) as entries:
+                for entry in entries:
+                    try:
+                        is_folder = entry.is_dir()
+                    except OSError:
+                        is_folder = False
+                    if is_folder:
+                        subdirs.append(entry.name)
+                        if not followlinks and entry.is_symlink():
+                            links.add(entry.name)
+                    else:
+                        files.append(entry.name)
+        except OSError:
+            continue
+        yield directory, subdirs, files
+        stack.extend(os.path.join(directory, name) for name in reversed(subdirs)
+                     if name not in links)
+
+
 DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
 """Robot descriptions, linted on their own (``.urdf.xacro`` ends with ``.xacro``)."""
 NOT_DESCRIPTION_SUFFIXES = (".srdf.xacro",)
@@ -224,13 +257,12 @@ def discover(
             add(given)
             continue
         visited: set[tuple[int, int]] = set()
-        for directory, subdirs, files in os.walk(given, followlinks=False):
-            # A folder is known by its device and inode (one stat; os.path.realpath would
-            # take one per component of the path).
+        for directory, subdirs, files in walk(given):
+            # The folder's identity, not its real path (which costs a look-up per level:
+            # quadratic in a deep tree).
             try:
                 info = os.stat(directory)
             except OSError:
-                subdirs[:] = []
                 continue
             if (info.st_dev, info.st_ino) in visited:
                 subdirs[:] = []

@@ -14,6 +14,7 @@ linter carries none) no ``.gitignore`` is read and nothing is ignored.
 from __future__ import annotations
 
 import os
+import re
 import typing
 
 from launch_linter.resolve import reads
@@ -24,6 +25,14 @@ if typing.TYPE_CHECKING:
 
 MAX_GITIGNORE_BYTES = 1024 * 1024
 MAX_WALK_UP = 64
+MAX_STARS_PER_SEGMENT = 2
+"""``pathspec`` matches with Python's backtracking regular expressions: a segment with k
+single ``*`` costs up to n^k steps on a name of n characters (``*a*a*a*a*b`` on a 255-character
+name: seconds per path). Real patterns hold one or two (``*.tar.*``); a pattern with more
+is dropped (it then ignores nothing)."""
+MAX_PATTERNS = 10_000
+"""Lines of one ``.gitignore`` read (each is matched against every path below it)."""
+_STARS = re.compile(r"(?<!\*)\*(?!\*)")
 
 
 class GitIgnore:
@@ -38,9 +47,11 @@ class GitIgnore:
         if directory not in self._specs:
             spec = None
             try:
+                # A repository's file: a FIFO or device named .gitignore is not read.
                 data = read_regular_file(os.path.join(directory, ".gitignore"),
                                          MAX_GITIGNORE_BYTES)
-                lines = data.decode("utf-8", "replace").splitlines()
+                lines = [line for line in data.decode("utf-8", "replace").splitlines()
+                         [:MAX_PATTERNS] if _cheap(line)]
                 import pathspec
 
                 spec = pathspec.GitIgnoreSpec.from_lines(lines)
@@ -55,8 +66,8 @@ class GitIgnore:
         if directory in self._tops:
             return self._tops[directory]
         current = directory
-        passed: list[str] = []
         top = ""  # no repository: every .gitignore up the folders applies
+        passed: list[str] = []
         for _ in range(MAX_WALK_UP):
             if current in self._tops:  # a folder further up answered already
                 top = self._tops[current]
@@ -110,6 +121,12 @@ class GitIgnore:
             if result is not None:
                 verdict = result
         return verdict
+
+
+def _cheap(line: str) -> bool:
+    """Whether ``pathspec`` matches the pattern in low polynomial time."""
+    return all(len(_STARS.findall(segment)) <= MAX_STARS_PER_SEGMENT
+               for segment in line.split("/"))
 
 
 def _check(spec: pathspec.GitIgnoreSpec, relative: str) -> bool | None:

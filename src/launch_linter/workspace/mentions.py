@@ -11,7 +11,8 @@ The files looked at are the launch files (by name, or any file in a ``launch`` f
 of the workspace (the ``src`` folder of a colcon/catkin workspace), else of the
 repository (the nearest folder up with a ``.git``), else of the package (the folder of
 the nearest ``package.xml``), else of the file's own folder. Each such folder is read
-once per process, bounded in files and bytes.
+once per run (its names are kept :data:`FRESH_SECONDS`, so that a long-lived process, the
+language server, sees an include written since), bounded in files and bytes.
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from __future__ import annotations
 import contextlib
 import os
 import re
+import time
 
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
@@ -32,6 +34,8 @@ MAX_TOTAL_BYTES = 32 * 1024 * 1024
 """Bytes read per folder, all files together."""
 MAX_FOLDERS = 20_000
 MAX_CACHED_FOLDERS = 256
+FRESH_SECONDS = 10.0
+"""How long the names read in a folder are used before the folder is read again."""
 READ_SUFFIXES = (".py", ".xml", ".launch", ".yaml", ".yml")
 """Files that may include a launch file: launch files of every format and Python helpers."""
 _SUFFIX = re.compile(rb"\.(?:py|xml|launch|ya?ml)\b")
@@ -40,10 +44,10 @@ from there (bounded), never with a pattern that starts at every letter of a long
 _NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 MAX_NAME = 255
 
-_names_by_folder: dict[str, tuple[dict[str, tuple[str, ...]], reads.ReadLog]] = {}
-"""For each package folder read: each file name written in it → the first two files
-writing it (a file may write its own name, in a usage comment); with what reading them
-read, on which every file that asks depends (``reads.remembered``)."""
+_names_by_folder: dict[str, tuple[float, dict[str, tuple[str, ...]], reads.ReadLog]] = {}
+"""For each folder read: when, and each file name written in it → the first two files
+writing it (a file may write its own name, in a usage comment), and what reading them
+read: every file that asks depends on it (the results cache, ``resolve.reads``)."""
 _LISTING = reads.suffix_listing(READ_SUFFIXES)
 """The files of a folder that count for the results cache: those that may be read (a
 launch file's name ends with one of these suffixes too)."""
@@ -123,8 +127,15 @@ def named_by_another_file(path: str) -> str | None:
     its file name."""
     absolute = os.path.abspath(path)
     folder = _scope(absolute)
-    if folder not in _names_by_folder and len(_names_by_folder) >= MAX_CACHED_FOLDERS:
-        _names_by_folder.clear()
-    names = reads.remembered(_names_by_folder, folder, lambda: _names_in(folder))
+    now = time.monotonic()
+    read = _names_by_folder.get(folder)
+    if read is None or now - read[0] > FRESH_SECONDS:
+        if len(_names_by_folder) >= MAX_CACHED_FOLDERS:
+            _names_by_folder.clear()
+        with reads.recording() as log:
+            names = _names_in(folder)
+        read = _names_by_folder[folder] = (now, names, log)
+    reads.depend_on(read[2])
+    names = read[1]
     others = [w for w in names.get(os.path.basename(absolute), ()) if w != absolute]
     return others[0] if others else None

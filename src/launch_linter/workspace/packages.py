@@ -11,88 +11,271 @@ below ``rospack_nosubdirs``. Earlier roots win; within a root, the first package
 from __future__ import annotations
 
 import os
+import typing
+from collections.abc import Sequence
+from typing import NamedTuple
 
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
+from launch_linter.workspace.discovery import walk
+from launch_linter.workspace.environment import PREFIX, Place
+
+if typing.TYPE_CHECKING:
+    from launch_linter.workspace.install_rules import Layout
 
 MAX_DIRECTORIES = 50_000
 MAX_WALK_UP = 32
 MAX_MANIFEST_BYTES = 1024 * 1024
+MAX_PREFIX_ENTRIES = 20_000
+
+
+class Located(NamedTuple):
+    """Where a file named by a launch file or description is, as ROS would find it."""
+
+    path: str | None
+    """The file to read (a source file for an installed path), None when not found."""
+    absent: bool
+    """Provably absent: its package is found and no install rule provides it, or it is
+    in the linted tree and not there. False with ``path`` None: unknown (``reason``)."""
+    reason: str = ""
 
 
 class PackageIndex:
-    """Packages found under ``roots``, crawled lazily on first use."""
+    """Packages found under ``roots`` (source folders, crawled as rospkg does) and then
+    in ``places`` (:mod:`.environment`: installed prefixes, ``<prefix>/share/<package>``,
+    and further source folders), in that order, crawled lazily on first use; the
+    earlier place wins (an overlay before its underlay). A package found in source is
+    installed by its install rules (see :meth:`locate`)."""
 
-    def __init__(self, roots: list[str]) -> None:
+    def __init__(self, roots: list[str], places: Sequence[Place] = ()) -> None:
         self.roots = [os.path.abspath(r) for r in roots]
+        self.places = tuple((kind, os.path.abspath(folder)) for kind, folder in places)
         self._packages: dict[str, str] | None = None
+        self._installed: set[str] = set()
+        self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
         self._read = reads.ReadLog()
         """What the crawl read: every file that asks for a package depends on it."""
 
+    @property
+    def key(self) -> tuple[object, ...]:
+        """What the packages found depend on (a cache key)."""
+        return (*self.roots, *self.places)
+
     def find(self, name: str) -> str | None:
+        return self._all().get(name)
+
+    def _all(self) -> dict[str, str]:
         if self._packages is None:
             with reads.recording() as self._read:
                 self._packages = self._crawl()
         reads.depend_on(self._read)
-        return self._packages.get(name)
+        return self._packages
 
     def _crawl(self) -> dict[str, str]:
         found: dict[str, str] = {}
-        budget = MAX_DIRECTORIES
-        seen: set[tuple[int, int]] = set()
+        crawl = _Crawl(found)
         for root in self.roots:
-            if not reads.is_dir(root):
+            crawl.source(root)
+        for kind, folder in self.places:
+            if kind != PREFIX:
+                crawl.source(folder)
                 continue
-            for directory, subdirs, files in os.walk(root, followlinks=True):
-                budget -= 1
-                if budget <= 0:
-                    return found
-                try:
-                    info = os.stat(directory)
-                except OSError:
-                    subdirs[:] = []
-                    continue
-                if (info.st_dev, info.st_ino) in seen:
-                    # A symbolic link back to a folder already crawled (a loop): skip it.
-                    subdirs[:] = []
-                    continue
-                seen.add((info.st_dev, info.st_ino))
-                # What the crawl finds changes when an entry of a folder it listed does.
-                reads.note_folder(directory, info, subdirs, files)
-                subdirs.sort()
-                if "CATKIN_IGNORE" in files:
-                    subdirs[:] = []
-                    continue
-                if "package.xml" in files or "manifest.xml" in files:
-                    name = _package_name(directory, files)
-                    if name is not None:
-                        found.setdefault(name, directory)
-                    subdirs[:] = []
-                    continue
-                if "rospack_nosubdirs" in files:
-                    subdirs[:] = []
-                    continue
-                subdirs[:] = [d for d in subdirs if not d.startswith(".")]
+            for name, share in installed_packages(folder).items():
+                if name not in found:
+                    found[name] = share
+                    self._installed.add(share)
         return found
+
+    def locate(self, path: str, near: str | None = None) -> Located:
+        """The file that ``path`` names, the way ROS finds it: the path itself if it
+        exists; else, inside a package found in source, the source file its install
+        rules install there (``FindPackageShare`` names the share folder, which the
+        source folder stands for); else absent when that is proven (see
+        :class:`Located`), unknown otherwise. ``near`` is a folder of the linted tree
+        (the including file's): a path under it or a source root can be proven absent."""
+        path = os.path.normpath(os.path.abspath(path))
+        if reads.is_file(path):
+            return Located(path, False)
+        if reads.exists(path):
+            # A folder, device or FIFO: found, so that reading it says what it is.
+            return Located(path, False)
+        owner = self._owner(path)
+        if owner is not None:
+            return self._in_package(path, *owner)
+        inside = [*self.roots, *([near] if near else [])]
+        if any(_under(path, os.path.abspath(root)) for root in inside):
+            return Located(None, True, "not found")
+        return Located(None, False, "it is outside the linted workspace and no package "
+                       "found holds it; the machine that runs the launch may have it")
+
+    def _owner(self, path: str) -> tuple[str, str] | None:
+        best: tuple[str, str] | None = None
+        for name, directory in self._all().items():
+            if _under(path, directory) and (best is None or len(directory) > len(best[1])):
+                best = (name, directory)
+        return best
+
+    def _in_package(self, path: str, name: str, directory: str) -> Located:
+        if directory in self._installed:
+            return Located(None, True, f"not in the installed share folder of '{name}'")
+        layout = self._layout(name, directory)
+        if layout is None or (not layout.rules and not layout.reasons):
+            return Located(None, True, "not found")
+        relative = os.path.relpath(path, directory).replace(os.sep, "/")
+        explained = layout.explain(relative)
+        for source in explained.sources:
+            candidate = os.path.normpath(os.path.join(directory, source))
+            if reads.exists(candidate):
+                return Located(candidate, False)
+        if explained.sources and explained.complete:
+            sources = " or ".join(explained.sources[:3])
+            return Located(None, True, f"package '{name}' installs share/{name}/{relative} "
+                           f"from {sources}, which is not there")
+        why = "; ".join(explained.reasons[:3])
+        return Located(None, False, f"share/{name}/{relative} is not explained by the install "
+                       f"rules of package '{name}'" + (f" ({why})" if why else ""))
+
+    def _layout(self, name: str, directory: str) -> Layout | None:
+        """The install layout of a ROS 2 package found in source; None for ROS 1 (catkin
+        runs from the source folder: ``$(find)`` is it, in the devel space)."""
+        def read() -> Layout | None:
+            manifest = os.path.join(directory, "package.xml")
+            ros2 = reads.is_file(manifest) and package_ros_version(manifest) == 2
+            # Imported here: install rules are read only when a file is not where the
+            # source folder would have it.
+            from launch_linter.workspace.install_layout import read_layout
+
+            return read_layout(directory, name) if ros2 else None
+
+        # Every file that asks depends on the install rules read.
+        return reads.remembered(self._layouts, directory, read)
+
+
+
+class _Crawl:
+    """One bounded crawl of source folders, shared by every folder of an index."""
+
+    def __init__(self, found: dict[str, str]) -> None:
+        self.found = found
+        self.budget = MAX_DIRECTORIES
+        self.seen: set[tuple[int, int]] = set()
+
+    def source(self, root: str) -> None:
+        if not reads.is_dir(root):
+            return
+        for directory, subdirs, files in walk(root, followlinks=True):
+            self.budget -= 1
+            if self.budget <= 0:
+                return
+            try:
+                info = os.stat(directory)
+            except OSError:
+                subdirs[:] = []
+                continue
+            if (info.st_dev, info.st_ino) in self.seen:
+                # A symbolic link back to a folder already crawled (a loop): skip it.
+                subdirs[:] = []
+                continue
+            self.seen.add((info.st_dev, info.st_ino))
+            # What the crawl finds changes when an entry of a folder it listed does.
+            reads.note_folder(directory, info, subdirs, files)
+            subdirs.sort()
+            if "CATKIN_IGNORE" in files:
+                subdirs[:] = []
+                continue
+            if "package.xml" in files or "manifest.xml" in files:
+                name = _package_name(directory, files)
+                if name is not None:
+                    self.found.setdefault(name, directory)
+                subdirs[:] = []
+                continue
+            if "rospack_nosubdirs" in files:
+                subdirs[:] = []
+                continue
+            subdirs[:] = [d for d in subdirs if not d.startswith(".")]
+
+
+def _under(path: str, folder: str) -> bool:
+    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
+
+
+def installed_packages(prefix: str) -> dict[str, str]:
+    """The packages an installed prefix holds, name to ``<prefix>/share/<name>``: those
+    the ament index registers (``share/ament_index/resource_index/packages/<name>``)
+    and every ``share/<name>`` with a ``package.xml`` (catkin installs, and ament ones);
+    for a colcon isolated install (``install/<pkg>/share/<pkg>``), each sub-prefix."""
+    share = os.path.join(prefix, "share")
+    found: dict[str, str] = {}
+    if not reads.is_dir(share):
+        try:
+            entries = sorted(reads.list_folder(prefix))[:MAX_PREFIX_ENTRIES]
+        except OSError:
+            return found
+        for entry in entries:
+            isolated = os.path.join(prefix, entry, "share", entry)
+            if reads.is_dir(isolated):
+                found.setdefault(entry, isolated)
+        return found
+    index = os.path.join(share, "ament_index", "resource_index", "packages")
+    names: list[str] = []
+    for folder in (index, share):
+        try:
+            names.extend(sorted(reads.list_folder(folder))[:MAX_PREFIX_ENTRIES])
+        except OSError:
+            continue
+    for name in names:
+        directory = os.path.join(share, name)
+        if name in found or not reads.is_dir(directory):
+            continue
+        if reads.is_file(os.path.join(index, name)) or reads.is_file(
+                os.path.join(directory, "package.xml")):
+            found[name] = directory
+    return found
+
+
+_MANIFEST_NAMES: dict[tuple[str, int, int, int, int], str | None] = {}
+"""Package name of each ``package.xml`` read, by path and identity: a run whose launch
+files lie in many packages crawls one workspace many times (each package's roots), and
+reads each manifest once."""
+MAX_REMEMBERED_MANIFESTS = 20_000
 
 
 def _package_name(directory: str, files: list[str]) -> str | None:
     if "package.xml" in files:
+        path = os.path.join(directory, "package.xml")
         try:
-            data = read_regular_file(os.path.join(directory, "package.xml"), MAX_MANIFEST_BYTES)
-            document = parse_xml(data, text_tags=("name",))
-        except (OSError, XmlError):
+            info = os.stat(path)
+        except OSError:
             return None
-        name: str | None = None
-        for child in document.root.children:
-            if child.tag == "name" and name is None:
-                name = child.text.strip(" \n\r\t") or None
-            elif child.tag == "export" and any(
-                grandchild.tag == "metapackage" for grandchild in child.children
-            ):
-                return None
-        return name
+        key = (path, info.st_dev, info.st_ino, info.st_size, info.st_mtime_ns)
+        if key not in _MANIFEST_NAMES or reads.too_recent(info):
+            # (A file changed in the last moments is read again: its time cannot tell
+            # the results cache that it stays unchanged, its content can.)
+            if len(_MANIFEST_NAMES) >= MAX_REMEMBERED_MANIFESTS:
+                _MANIFEST_NAMES.clear()
+            _MANIFEST_NAMES[key] = _manifest_name(path)
+        else:
+            reads.note_status(path, info)  # the name read before, from this very file
+        return _MANIFEST_NAMES[key]
     return os.path.basename(directory)
+
+
+def _manifest_name(path: str) -> str | None:
+    """The package name a ``package.xml`` declares (None for a metapackage or none)."""
+    try:
+        data = read_regular_file(path, MAX_MANIFEST_BYTES)
+        document = parse_xml(data, text_tags=("name",))
+    except (OSError, XmlError):
+        return None
+    name: str | None = None
+    for child in document.root.children:
+        if child.tag == "name" and name is None:
+            name = child.text.strip(" \n\r\t") or None
+        elif child.tag == "export" and any(
+            grandchild.tag == "metapackage" for grandchild in child.children
+        ):
+            return None
+    return name
 
 
 def default_package_roots(launch_file: str) -> list[str]:

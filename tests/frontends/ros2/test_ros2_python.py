@@ -525,6 +525,35 @@ def test_script_style_file_reads_what_it_serves(load: Load) -> None:
     assert [(t.parent, t.child) for t in tree.transforms] == [("map", "odom")]
 
 
+def test_path_substitution_division_and_find_share_find(load: Load) -> None:
+    package = '<package format="3"><name>robot</name></package>'
+    inner = (
+        '<launch><arg name="frame"/><node pkg="tf2_ros" exec="static_transform_publisher" '
+        'name="tf_$(var frame)" args="--frame-id base --child-frame-id $(var frame)"/></launch>')
+    tree = load({
+        "ws/robot/package.xml": package,
+        "ws/robot/launch/b.launch.xml": inner,
+        "a.launch.py": (
+            "from launch.substitutions import PathSubstitution\n" + HEADER
+            + "share = FindPackageShare(package='robot').find('robot')\n\n\n"
+            + "def generate_launch_description():\n"
+            "    return LaunchDescription([\n"
+            "        IncludeLaunchDescription(\n"
+            "            PathSubstitution(FindPackageShare('robot')) / 'launch' / 'b.launch.xml',\n"
+            "            launch_arguments={'frame': 'gps'}.items()),\n"
+            "        IncludeLaunchDescription(\n"
+            "            PathJoinSubstitution([FindPackageShare('robot'), 'launch']) / "
+            "'b.launch.xml',\n"
+            "            launch_arguments={'frame': 'imu'}.items()),\n"
+            "        IncludeLaunchDescription(os.path.join(share, 'launch', 'b.launch.xml'),\n"
+            "            launch_arguments={'frame': 'gnss'}.items()),\n"
+            "    ])\n"
+        ),
+    }, "a.launch.py", packages=("ws",))
+    assert sorted(str(t.child) for t in tree.transforms) == ["gnss", "gps", "imu"]
+    assert tree.problems == ()
+
+
 @pytest.mark.parametrize(("cmd", "expected"), [
     ("cmd=['ros2 run tf2_ros static_transform_publisher --frame-id a --child-frame-id b'],"
      " shell=True", [("a", "b")]),

@@ -27,7 +27,7 @@ from launch_linter.model.robot import (
     RobotModel,
 )
 from launch_linter.resolve import reads
-from launch_linter.resolve.value import Value, holes, why_unresolved
+from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
@@ -54,14 +54,15 @@ class RobotCache:
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str]) -> Expansion:
-        key = (file, args, tuple(packages.roots), tuple(sorted(env.items())))
+        key = (file, args, packages.key, tuple(sorted(env.items())))
 
         def expand_file() -> Expansion:
             # Imported when a description is first expanded: xacro (with its interpreter
             # of ${} expressions) is a third of the start-up of a run that meets none.
             from launch_linter.frontends.robot.xacro import expand
 
-            return expand(file, dict(args), packages.find, env)
+            return expand(file, dict(args), packages.find, env,
+                          locate=lambda path: packages.locate(path).path)
 
         # Every launch file that uses the expansion depends on the files it read.
         return reads.remembered(self._expansions, key, expand_file)
@@ -133,6 +134,8 @@ def _unresolved_file(text: str, command: Value) -> str:
     inside = tuple(hole for hole in holes(command) if hole.text in text)
     if not inside:
         return f"the description file {text!r} is not resolved"
+    if all(blocker(hole)[0] == hole.text for hole in inside):
+        return f"the description file {text!r} is not resolved: {why_unresolved(inside)}"
     return f"the description file depends on {why_unresolved(inside)}"
 
 
@@ -155,13 +158,21 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     joints: list[RobotJoint] = []
     robots: list[RobotModel] = []
     problems_found: list[Problem] = []
+    # Several nodes given one description (robot_state_publisher, the controller manager,
+    # a spawner) make one message per cause, not one per node.
+    reported: set[tuple[object, ...]] = set()
     for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
+        same = (source.kind, source.file, source.args, source.text, source.reason)
+        first = same not in reported
+        reported.add(same)
         if source.file is None and source.kind is not DescriptionKind.LITERAL:
-            problems_found.append(_unresolved(source, f"robot description not read: "
-                                           f"{source.reason or 'unknown file'}"))
+            if first:
+                problems_found.append(_unresolved(source, f"robot description not read: "
+                                                  f"{source.reason or 'unknown file'}"))
             continue
         robot, unresolved = read_description(source, packages, cache, display, env)
-        problems_found.extend(unresolved)
+        if first:
+            problems_found.extend(unresolved)
         if robot is not None:
             joints.extend(robot.joints)
             robots.append(robot)
@@ -187,12 +198,20 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         from launch_linter.frontends.robot.xacro import expand
 
         expansion = expand(source.file, dict(source.args), packages.find, env,
-                           source.text.encode("utf-8"))
+                           source.text.encode("utf-8"),
+                           lambda path: packages.locate(path).path)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     else:
+        # A share path (FindPackageShare/$(find) of a ROS 2 package) is read from the
+        # source file its install rules name; one nobody can prove absent stays unknown.
+        located = packages.locate(source.file)
+        if located.path is None and not located.absent:
+            return None, [_unresolved(source, f"robot description {display(source.file)} "
+                                              f"not read: {located.reason}")]
         args = source.args if source.kind is DescriptionKind.XACRO else ()
-        expansion = cache.expansion(os.path.abspath(source.file), args, packages, env)
+        expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
+                                    packages, env)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     faults = _faults(problems, source, display)

@@ -39,20 +39,22 @@ MAX_SCANNED_BYTES = 1 << 18
 def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
                      cache: RobotCache | None, display: Callable[[str], str],
                      env: Mapping[str, str], data: bytes | None = None) -> LaunchTree:
-    """The tree of the description file ``path``, or of ``data`` as if it were that file."""
+    """The tree of the description file ``path``, or of ``data`` as if it were that file;
+    its root, files and problems named as every path is shown (``display``)."""
+    shown = display(path)
     if data is None and os.path.basename(path) in _included_names(_package_of(path), cache):
-        return LaunchTree(path, FileStatus.OK, (), (), (path,))
+        return LaunchTree(shown, FileStatus.OK, (), (), (shown,))
     try:
         text = data if data is not None else read_launch_bytes(path)
         if parse_xml(text).root.tag != "robot":
-            return LaunchTree(path, FileStatus.OK, (), (), (path,))
+            return LaunchTree(shown, FileStatus.OK, (), (), (shown,))
     except OSError as exc:
-        return LaunchTree(path, FileStatus.UNREADABLE, (), (Problem(
-            "parse_error", path, 1, 1, f"cannot read: {exc.strerror or exc}"),), (path,))
+        return LaunchTree(shown, FileStatus.UNREADABLE, (), (Problem(
+            "parse_error", shown, 1, 1, f"cannot read: {exc.strerror or exc}"),), (shown,))
     except XmlError as exc:
-        return LaunchTree(path, FileStatus.PARSE_ERROR, (), (Problem(
-            "parse_error", path, exc.line, 1, f"not well-formed XML: {exc.message}"),),
-            (path,))
+        return LaunchTree(shown, FileStatus.PARSE_ERROR, (), (Problem(
+            "parse_error", shown, exc.line, 1, f"not well-formed XML: {exc.message}"),),
+            (shown,))
     if path.lower().endswith(".urdf") and b"<xacro:" not in text:
         # A URDF is read as it is, as check_urdf and a launch file's open().read() do (one
         # with xacro elements is xacro whatever its name).
@@ -66,8 +68,8 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
     robot, problems = read_description(source, packages, cache or RobotCache(), display,
                                        dict(env), standalone=True)
     if robot is None:
-        return LaunchTree(path, FileStatus.OK, (), tuple(problems), (path,))
-    return LaunchTree(path, FileStatus.OK, (), tuple(problems), (path,),
+        return LaunchTree(shown, FileStatus.OK, (), tuple(problems), (shown,))
+    return LaunchTree(shown, FileStatus.OK, (), tuple(problems), (shown,),
                       descriptions=(source,), joints=robot.joints, robots=(robot,))
 
 

@@ -8,8 +8,9 @@ and reads only the files the description includes, through the bounded XML reade
 Supported: ``xacro:property`` (text and block properties, ``default``, ``scope``, lazy
 evaluation as in xacro), ``xacro:arg`` with values from the xacro call, ``$(arg)``,
 ``$(find)``, ``$(env)``/``$(optenv)`` (explicit environment only), ``xacro:include``
-(relative and ``$(find)``), ``xacro:macro`` with parameters, defaults (``:=``, ``^``,
-``^|``) and block parameters (``*origin``, ``**content``), ``xacro:insert_block``,
+(relative and ``$(find)``, ``ns=`` for its macros), ``xacro:macro`` with parameters,
+defaults (``:=``, ``^``, ``^|``, quoted: ``xyz:='0 0 0'``) and block parameters
+(``*origin``, ``**content``), ``xacro:call``, ``xacro:insert_block``,
 ``xacro:if``/``xacro:unless``, ``xacro:element`` and ``xacro:attribute``.
 
 What cannot be known becomes *unknown* rather than an error: an attribute keeps a reason
@@ -58,8 +59,6 @@ from launch_linter.resolve import reads
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
-_QUOTE = re.compile("['\"]")
-
 
 class _Symbols(typing.Mapping[str, typing.Optional[str]]):
     """The properties visible from a table, evaluated on demand, as the evaluator's args."""
@@ -93,10 +92,13 @@ class XacroExpander:
         args: Mapping[str, str | None],
         find: Callable[[str], str | None],
         env: Mapping[str, str] | None = None,
+        locate: Callable[[str], str | None] | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
         """xacro args; None is an arg given with a value the linter does not know."""
         self.find = find
+        self.locate = locate
+        """Where a missing file is installed from (a share path to its source file)."""
         self.env = dict(env or {})
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
@@ -107,6 +109,8 @@ class XacroExpander:
         self._resolving: list[str] = []
         self._path = ""
         self._line = 1
+        self._parsed: dict[str, Element | None] = {}
+        """Each file parsed once, however often it is included (the tree is only read)."""
         self._defines_macros = False
 
     # -- entry -------------------------------------------------------------------------
@@ -152,6 +156,14 @@ class XacroExpander:
             if len(self.files) >= MAX_FILES:
                 raise _Abort(f"description reads more than {MAX_FILES} files", *where)
             self.files.append(absolute)
+        if absolute in self._parsed:
+            return self._parsed[absolute]
+        root = self._parse(absolute, at, where, data)
+        self._parsed[absolute] = root
+        return root
+
+    def _parse(self, absolute: str, at: tuple[str, int] | None,
+               where: tuple[str, int], data: bytes | None) -> Element | None:
         try:
             data = read_launch_bytes(absolute) if data is None else data
         except OSError as exc:
@@ -177,6 +189,7 @@ class XacroExpander:
         self._charge()
         parts: list[str] = []
         position = 0
+        size = 0  # of the parts so far (summing them per token was quadratic)
         for match in _TOKEN.finditer(text):
             parts.append(text[position:match.start()])
             position = match.end()
@@ -190,7 +203,8 @@ class XacroExpander:
                 if "${" in inner:
                     inner = self.evaluate_text(inner, table)
                 parts.append(self._extension(inner.strip(), table))
-            if sum(len(p) for p in parts) > MAX_TEXT:
+            size += len(parts[-2]) + len(parts[-1])
+            if size > MAX_TEXT:
                 raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path,
                              self._line)
         parts.append(text[position:])
@@ -352,7 +366,13 @@ class XacroExpander:
                 out.attrib[name] = attrib.get("value", "")
                 out.unknown[name] = unknown.reason
         elif what == "call":
-            raise _Unknown("xacro:call (a macro named at run time) is not supported")
+            # <xacro:call macro="${name}" .../>: the macro named by the (evaluated)
+            # attribute, called with the other attributes and the children.
+            called = Element(element.tag, {k: v for k, v in attrib.items() if k != "macro"},
+                             element.line, element.column)
+            called.children = element.children
+            self._call(called, self.evaluate_text(attrib.get("macro", ""), table), path,
+                       table, out, conditions)
         else:
             self._call(element, what, path, table, out, conditions)
 
@@ -389,18 +409,17 @@ class XacroExpander:
             name = name[len(_PREFIX):]
         params: list[str] = []
         defaults: dict[str, tuple[str | None, str | None]] = {}
-        for word in element.attrib.get("params", "").split():
-            param, sep, default = word.partition(":=")
-            if not sep:
-                param, sep, default = word.partition("=")
+        for match in _PARAM.finditer(element.attrib.get("params", "")):
+            param, sep, forward, default = match.groups()
             params.append(param)
             if not sep:
                 continue
-            if default.startswith("^"):
-                forward = param
-                defaults[param] = (forward, default[2:] if default.startswith("^|") else None)
+            if forward:
+                defaults[param] = (param, default if forward == "^|" else None)
             else:
-                defaults[param] = (None, default.strip("'\""))
+                # A quoted default (xyz:='0 0 0') keeps its spaces; xacro reads it as
+                # the text inside the quotes.
+                defaults[param] = (None, _unquoted(default))
         table.macros[name] = _Macro(params, defaults, element, path)
         self._defines_macros = True
         for param in params:
@@ -424,8 +443,8 @@ class XacroExpander:
 
     def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                  conditions: tuple[str, ...]) -> None:
-        if "ns" in element.attrib:
-            raise _Unknown("xacro:include with ns= is not supported")
+        namespace = self.evaluate_text(element.attrib["ns"], table) if (
+            "ns" in element.attrib) else None
         filename = self.evaluate_text(element.attrib.get("filename", ""), table)
         if _GLOB.search(filename):
             raise _Unknown(f"include pattern {filename!r} is not followed")
@@ -435,18 +454,29 @@ class XacroExpander:
             raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
-        if not reads.is_file(target):
-            if element.attrib.get("optional", "").lower() in ("true", "1"):
+        if not reads.exists(target):  # a FIFO or device is read, and said to be one
+            installed = self.locate(target) if self.locate is not None else None
+            if installed is not None:
+                target = installed
+            elif element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
-            raise _Unknown(f"included file {filename} not found")
+            else:
+                raise _Unknown(f"included file {filename} not found")
         included = self._read(target, (path, element.line))
         if included is None:
             return
         self._include_stack.append(target)
+        # With ns=, the file's macros are called as ns.name (xacro gives the file a table
+        # of its own, reached through the namespace); its properties, read as ${ns.x},
+        # stay unknown.
+        inner = table if namespace is None else _Table(table)
         try:
-            self._children(included.children, target, table, out, conditions)
+            self._children(included.children, target, inner, out, conditions)
         finally:
             self._include_stack.pop()
+        if namespace is not None:
+            for name, macro in inner.macros.items():
+                table.macros[f"{namespace}.{name}"] = macro
 
     def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                       conditions: tuple[str, ...]) -> None:
@@ -475,12 +505,9 @@ class XacroExpander:
                          path, element.line)
         scoped = _Table(table)
         params = list(macro.params)
-        # Quoted defaults (``xyz:='0 0 0'``) are split at their spaces here: a parameter
-        # mismatch of such a macro is unknown, not xacro's refusal.
-        mismatch = _Unknown if _QUOTE.search(macro.body.attrib.get("params", "")) else _Refused
         for attribute, text in element.attrib.items():
             if attribute not in params:
-                raise mismatch(f"invalid parameter '{attribute}' of macro '{name}'")
+                raise _Refused(f"invalid parameter '{attribute}' of macro '{name}'")
             params.remove(attribute)
             scoped.properties[attribute] = self._evaluated(text, table)
         blocks = list(element.children)
@@ -511,7 +538,7 @@ class XacroExpander:
                     raise _Refused(f"undefined property to forward: {forward}")
             scoped.properties[param] = self._evaluated(default or "", table)
         if params:
-            raise mismatch(f"undefined parameters [{','.join(params)}] of macro '{name}'")
+            raise _Refused(f"undefined parameters [{','.join(params)}] of macro '{name}'")
         self._macro_depth += 1
         try:
             self._children(macro.body.children, macro.path, scoped, out, conditions)
@@ -523,6 +550,19 @@ class XacroExpander:
             return _Property(None, self.evaluate_text(text, table))
         except _Unknown as unknown:
             return _Property(None, None, unknown.reason)
+
+
+_PARAM = re.compile(
+    r"""([^\s:=]+)(?:\s*(:?=)\s*(\^\|?)?"""
+    r"""((?:\$\{[^}]*\}|\$\([^)]*\)|'[^']*'|"[^"]*"|[^\s'"])*))?""")
+"""One macro parameter: name, then optionally ``:=``/``=``, ``^``/``^|`` and a default
+that runs to the next space outside quotes, ``${}`` and ``$()`` (xacro's syntax)."""
+
+
+def _unquoted(default: str) -> str:
+    if len(default) >= 2 and default[0] == default[-1] and default[0] in "'\"":
+        return default[1:-1]
+    return default
 
 
 def _boolean(value: str) -> bool | None:
@@ -543,10 +583,12 @@ def _boolean(value: str) -> bool | None:
 
 def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
-           env: Mapping[str, str] | None = None, data: bytes | None = None) -> Expansion:
+           env: Mapping[str, str] | None = None, data: bytes | None = None,
+           locate: Callable[[str], str | None] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
-    ``data`` is expanded as if it were that file (text linted by ``lint_text``)."""
-    return XacroExpander(args, find, env).expand(path, data)
+    ``data`` is expanded as if it were that file (text linted by ``lint_text``);
+    ``locate`` maps an included path that is not there to the file installed there."""
+    return XacroExpander(args, find, env, locate).expand(path, data)
 
 
 __all__ = [

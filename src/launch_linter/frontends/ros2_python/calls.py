@@ -230,6 +230,10 @@ class Calls(Expressions):
                 return None
         if isinstance(target, str):
             return self.string_method(target, name, args, node)
+        if isinstance(target, SubsVal) and name == "find" and len(args) == 1 and isinstance(
+                args[0], (str, LazyStr)) and _single_call(target.subs, "find-pkg-share"):
+            # FindPackageShare(p).find(name): the share folder of ``name``, as a string.
+            return LazyStr((Call("find-pkg-share", (_as_subs(args[0]),), self.segment(node)),))
         if isinstance(target, (SubsVal, LazyStr)) and name == "perform":
             if len(args) == 1 and isinstance(args[0], ContextVal):
                 return _performed(args[0].resolver, target.subs, node, self)
@@ -402,3 +406,7 @@ class Calls(Expressions):
                 node: ast.Call) -> object:
         """Defined by :class:`.launch_api.Interpreter`."""
         raise NotImplementedError
+
+
+def _single_call(subs: Subs, name: str) -> bool:
+    return len(subs) == 1 and isinstance(subs[0], Call) and subs[0].name == name

@@ -9,7 +9,7 @@ library :mod:`.launch_api`'s.
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -66,6 +66,10 @@ class Evaluator:
     """Whether an ``OpaqueFunction`` will be run later, in its scopes (then they stay)."""
     served: list[object] = field(default_factory=list)
     """What a script gives ``LaunchService.include_launch_description``."""
+    environ: Mapping[str, str] = field(default_factory=dict)
+    """The environment the run is told of (``--env``, and ``ROS_DISTRO`` from
+    ``--ros-distro``): a Python comparison of one of its variables is decided, so that a
+    branch for another distribution is not taken."""
 
     # -- helpers -------------------------------------------------------------------------
     def scope(self, parent: Env | None) -> Env:

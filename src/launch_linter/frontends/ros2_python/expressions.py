@@ -210,6 +210,15 @@ class Expressions(Evaluator):
         ):
             return LazyStr((Call("path-join", (left.subs, _as_subs(right)),
                                  self.segment(node)),), path=True)
+        if isinstance(op, ast.Div) and isinstance(left, SubsVal) and _is_path_join(left) and (
+                isinstance(right, (str, LazyStr, SubsVal))):
+            # PathSubstitution / 'urdf' / 'x.xacro' and PathJoinSubstitution / ...: launch's
+            # __truediv__ makes a PathJoinSubstitution of both.
+            right_subs = right.subs if isinstance(right, SubsVal) else _as_subs(right)
+            joined = left.subs[0]
+            assert isinstance(joined, Call)  # _is_path_join checked it
+            return SubsVal((Call("path-join", (*joined.args, right_subs),
+                                 self.segment(node)),))
         if isinstance(op, ast.Mod) and isinstance(left, str):
             args = right if isinstance(right, tuple) else (right,)
             if all(isinstance(a, (str, int, float, bool)) for a in args) and (
@@ -250,10 +259,20 @@ class Expressions(Evaluator):
                 return result
         return self.unknown(node, "this operation is not interpreted")
 
+    def given(self, value: object) -> object:
+        """``value``, or the text of the environment variable it reads when the run is
+        told that variable (``os.environ['ROS_DISTRO']`` with ``--ros-distro humble``)."""
+        if isinstance(value, LazyStr) and len(value.subs) == 1:
+            call = value.subs[0]
+            if isinstance(call, Call) and call.name == "env" and call.args and len(
+                    call.args[0]) == 1 and isinstance(call.args[0][0], Text):
+                return self.environ.get(call.args[0][0].text, value)
+        return value
+
     def compare(self, node: ast.Compare, env: Env) -> object:
-        left = self.eval(node.left, env)
+        left = self.given(self.eval(node.left, env))
         for op, right_node in zip(node.ops, node.comparators):
-            right = self.eval(right_node, env)
+            right = self.given(self.eval(right_node, env))
             if not _plain(left) or not _plain(right):
                 # Named after the operand that is unknown, so that a message can say what
                 # really blocks the comparison (an environment variable, say).
@@ -357,3 +376,8 @@ _EXPRESSIONS: dict[type, Callable[[Expressions, Any, Env], object]] = {
 }
 """How each expression the evaluator models (other than constants and names) is worked
 out, by its class."""
+
+
+def _is_path_join(value: SubsVal) -> bool:
+    return (len(value.subs) == 1 and isinstance(value.subs[0], Call)
+            and value.subs[0].name == "path-join")

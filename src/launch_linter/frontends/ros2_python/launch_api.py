@@ -386,6 +386,12 @@ class Interpreter(Calls):
         return SubsVal((Call("path-join", tuple(self.subs(p, node, "path part") for p in parts),
                              self.segment(node)),))
 
+    def launch_PathSubstitution(self, args: list[object], kwargs: dict[str, object],
+                                node: ast.Call) -> object:
+        path = self.arg(args, kwargs, 0, "path")
+        return SubsVal((Call("path-join", (self.subs(path, node, "path"),),
+                             self.segment(node)),))
+
     def launch_IfCondition(self, args: list[object], kwargs: dict[str, object],
                            node: ast.Call) -> object:
         value = self.arg(args, kwargs, 0, "predicate_expression")
@@ -527,6 +533,7 @@ HANDLERS: Mapping[
     "LaunchLogDir": Interpreter.launch_LaunchLogDir,
     "TextSubstitution": Interpreter.launch_TextSubstitution,
     "PathJoinSubstitution": Interpreter.launch_PathJoinSubstitution,
+    "PathSubstitution": Interpreter.launch_PathSubstitution,
     "IfCondition": Interpreter.launch_IfCondition,
     "UnlessCondition": Interpreter.launch_UnlessCondition,
     "LaunchConfigurationEquals": Interpreter.launch_LaunchConfigurationEquals,

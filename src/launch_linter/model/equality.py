@@ -1,0 +1,117 @@
+"""An unresolved condition that compares one value with a constant, read from its text.
+
+Two branches on the same unknown value with different constants (``$(eval
+env('RUN_TYPE') == 'simulation')`` and ``== 'uav'``; ``LaunchConfigurationEquals('mode',
+'sim')`` and ``'real'``; ``xacro:if value="${mode == 'a'}"`` and ``'b'``) are
+alternatives: at most one runs. This module reads such a test from the condition's text
+(never evaluating it) as (subject, constant, equal); texts it does not recognise give
+None, and then nothing is assumed.
+"""
+
+from __future__ import annotations
+
+import re
+import typing
+
+Test = typing.Tuple[str, str, bool]
+"""(normalised subject, constant, True for ``==`` / False for ``!=``)."""
+
+MAX_TEXT = 500
+_LAUNCH_EQUALS = re.compile(
+    r"""LaunchConfiguration(Not)?Equals\(\s*(['"])(\w+)\2\s*,\s*(['"])(.*?)\4\s*\)""")
+_EVAL = re.compile(r"\$\(eval\s+(.*)\)", re.DOTALL)
+_XACRO = re.compile(r"xacro:\$\{(.*)\}", re.DOTALL)
+_QUOTED = re.compile(r"""(['"])(.*)\1""", re.DOTALL)
+_LIST_ITEM = re.compile(r"""\s*(('[^'\\]*'|"[^"\\]*")|([A-Za-z_]\w*))\s*(?:,|$)""")
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+_SUBJECT_FORMS = (
+    (re.compile(r"""^arg\((['"])(\w+)\1\)$"""), "{}"),
+    (re.compile(r"""^\$\((?:var|arg)\s+(\w+)\)$"""), "{}"),
+    (re.compile(r"""^(?:opt)?env\((['"])(\w+)\1(?:,.*)?\)$"""), "env:{}"),
+    (re.compile(r"""^\$\((?:opt)?env\s+(\w+)(?:\s.*)?\)$"""), "env:{}"),
+    (re.compile(r"""^LaunchConfiguration\((['"])(\w+)\1\)$"""), "{}"),
+)
+
+
+def equality_test(text: str) -> Test | None:
+    """The comparison a condition's text makes, or None when it is not one."""
+    if len(text) > MAX_TEXT:
+        return None
+    text = text.strip()
+    match = _LAUNCH_EQUALS.fullmatch(text)
+    if match:
+        return match.group(3), match.group(5), match.group(1) is None
+    if text.startswith("PythonExpression([") and text.endswith("])"):
+        return _comparison(_joined(text[len("PythonExpression(["):-2]))
+    for form in (_EVAL, _XACRO):
+        match = form.fullmatch(text)
+        if match:
+            return _comparison(_unquote(match.group(1).strip()))
+    return None
+
+
+def _joined(items: str) -> str:
+    """The text a ``PythonExpression([...])`` list makes: its string pieces joined, each
+    variable (a ``LaunchConfiguration``) standing as its name."""
+    pieces: list[str] = []
+    for match in _LIST_ITEM.finditer(items):
+        text, name = match.group(2), match.group(3)
+        pieces.append(text[1:-1] if text is not None else name)
+    return "".join(pieces)
+
+
+def _unquote(expression: str) -> str:
+    """ROS 2 writes ``$(eval '...')`` with the expression quoted (inner quotes escaped)."""
+    quoted = _QUOTED.fullmatch(expression)
+    if quoted and "\\" + quoted.group(1) in quoted.group(2):
+        return quoted.group(2).replace("\\" + quoted.group(1), quoted.group(1))
+    return expression
+
+
+def _comparison(expression: str) -> Test | None:
+    operators = re.findall(r"==|!=", expression)
+    if len(operators) != 1 or re.search(r"\b(?:and|or|not|if)\b", expression):
+        return None
+    left, right = (side.strip() for side in expression.split(operators[0]))
+    for subject, constant in ((left, right), (right, left)):
+        value = _constant(constant)
+        name = _subject(subject)
+        if value is not None and name is not None:
+            return name, value, operators[0] == "=="
+    return None
+
+
+def _constant(text: str) -> str | None:
+    quoted = _QUOTED.fullmatch(text)
+    if quoted and "$" not in quoted.group(2) and quoted.group(1) not in quoted.group(2):
+        return quoted.group(2)
+    if _NUMBER.fullmatch(text):
+        return repr(float(text))
+    if text in ("True", "False", "true", "false"):
+        return text.lower()
+    return None
+
+
+def _subject(text: str) -> str | None:
+    quoted = _QUOTED.fullmatch(text)
+    if quoted:
+        text = quoted.group(2).strip()
+    compact = re.sub(r"\s+", "", text) if "$(" not in text else text.strip()
+    for pattern, spelling in _SUBJECT_FORMS:
+        match = pattern.fullmatch(compact)
+        if match:
+            return spelling.format(match.group(match.lastindex or 1))
+    if re.fullmatch(r"[A-Za-z_]\w*", compact):
+        return compact
+    return None
+
+
+def exclusive(first: Test, second: Test) -> bool:
+    """Whether two tests of one subject can never both hold."""
+    if first[0] != second[0]:
+        return False
+    if first[2] and second[2]:
+        return first[1] != second[1]
+    if first[2] != second[2]:
+        return first[1] == second[1]
+    return False

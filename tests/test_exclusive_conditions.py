@@ -1,0 +1,93 @@
+"""Branches on one unknown value with exclusive tests are alternatives (issue 27)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.model.equality import equality_test, exclusive
+from launch_linter.model.transform import Condition, ConditionLiteral
+
+
+def literal(text: str, positive: bool = True) -> Condition:
+    return Condition((ConditionLiteral(text, positive),))
+
+
+def test_tests_read_from_condition_texts() -> None:
+    assert equality_test("$(eval env('RUN_TYPE') == 'uav')") == ("env:RUN_TYPE", "uav", True)
+    assert equality_test("$(eval optenv('RUN_TYPE') != \"uav\")") == ("env:RUN_TYPE", "uav",
+                                                                      False)
+    assert equality_test("$(eval arg('mode') == 'x')") == ("mode", "x", True)
+    assert equality_test("$(eval mode == 'x')") == ("mode", "x", True)
+    assert equality_test("LaunchConfigurationEquals('mode', 'sim')") == ("mode", "sim", True)
+    assert equality_test("LaunchConfigurationNotEquals('mode', 'sim')") == ("mode", "sim",
+                                                                            False)
+    assert equality_test("$(eval '\\'$(var mode)\\' == \\'sim\\'')") == ("mode", "sim", True)
+    assert equality_test("""PythonExpression(["'", mode, "' == 'x'"])""") == ("mode", "x",
+                                                                              True)
+    assert equality_test("xacro:${side == 'left'}") == ("side", "left", True)
+    assert equality_test("xacro:${n == 2}") == ("n", "2.0", True)
+    for undecided in ("$(eval arg('n') > 1)", "$(eval a == 'x' or b == 'y')",
+                      "$(arg use_sim)", "$(eval a == b)", "LaunchConfiguration('x')"):
+        assert equality_test(undecided) is None, undecided
+
+
+def test_which_conditions_exclude_each_other() -> None:
+    sim = literal("$(eval env('RUN_TYPE') == 'simulation')")
+    uav = literal("$(eval env('RUN_TYPE') == 'uav')")
+    assert sim.excludes(uav) and uav.excludes(sim)
+    assert sim.excludes(literal("$(eval env('RUN_TYPE') != 'simulation')"))
+    assert not sim.excludes(literal("$(eval env('RUN_TYPE') != 'uav')"))
+    assert not sim.excludes(literal("$(eval env('OTHER') == 'uav')"))
+    # unless of one test is its negation: "unless x == 'a'" and "if x == 'b'" may both hold.
+    assert not literal("$(eval mode == 'a')", False).excludes(literal("$(eval mode == 'b')"))
+    assert literal("$(eval mode == 'a')", False).excludes(literal("$(eval mode == 'a')"))
+
+
+@given(st.text(max_size=80), st.text(max_size=80))
+def test_reading_never_fails_and_exclusion_is_symmetric(first: str, second: str) -> None:
+    a, b = equality_test(first), equality_test(second)
+    if a is not None and b is not None:
+        assert exclusive(a, b) == exclusive(b, a)
+    assert literal(first).excludes(literal(second)) == literal(second).excludes(literal(first))
+
+
+def test_alternative_groups_do_not_give_a_frame_two_parents(tmp_path: Path) -> None:
+    node = '<node pkg="tf2_ros" type="static_transform_publisher" name="{}" args="{}"/>'
+    (tmp_path / "a.launch").write_text(f"""<launch>
+  <group if="$(eval env('RUN_TYPE') == 'simulation')">
+    {node.format("a", "0 0 0 0 0 0 map odom")}</group>
+  <group if="$(eval env('RUN_TYPE') == 'uav')">
+    {node.format("b", "1 0 0 0 0 0 world odom")}</group>
+  <group if="$(eval env('RUN_TYPE') != 'x')">
+    {node.format("c", "0 0 0 0 0 0 m1 base")}</group>
+  <group if="$(eval env('RUN_TYPE') != 'y')">
+    {node.format("d", "0 0 0 0 0 0 m2 base")}</group>
+</launch>""")
+    result = lint_paths([str(tmp_path / "a.launch")], LintOptions())
+    parents = [d.message for d in result.diagnostics if d.rule == "multiple_parents"]
+    assert len(parents) == 1 and "'base'" in parents[0]
+
+
+def test_xacro_alternatives_are_alternatives(tmp_path: Path) -> None:
+    (tmp_path / "r.urdf.xacro").write_text("""<robot name="r"
+  xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="mount" default="top"/>
+  <link name="base"/><link name="top_mount"/><link name="side_mount"/><link name="lidar"/>
+  <xacro:if value="${mode == 'top'}">
+    <joint name="a" type="fixed"><parent link="top_mount"/><child link="lidar"/></joint>
+  </xacro:if>
+  <xacro:if value="${mode == 'side'}">
+    <joint name="b" type="fixed"><parent link="side_mount"/><child link="lidar"/></joint>
+  </xacro:if>
+</robot>""")
+    (tmp_path / "a.launch").write_text("""<launch>
+  <param name="robot_description" command="xacro $(dirname)/r.urdf.xacro"/>
+  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+</launch>""")
+    result = lint_paths([str(tmp_path / "a.launch")], LintOptions())
+    assert sorted(j.name for _, j in result.joints) == ["a", "b"]
+    assert not [d for d in result.diagnostics if d.rule == "multiple_parents"]
