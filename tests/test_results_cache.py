@@ -377,3 +377,35 @@ def test_a_launch_file_named_by_a_new_file_is_linted_again(
         '<launch><include file="$(dirname)/inner.launch.xml"/></launch>\n')
     mentions._names_by_folder.clear()
     assert relinted(workspace) == ["inner.launch.xml", "outer.launch.xml"]
+
+
+def test_install_rules_read_to_locate_an_include_relint_its_includer(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    inner = ("from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+             "def generate_launch_description():\n    return LaunchDescription([Node("
+             "package='tf2_ros', executable='static_transform_publisher', arguments=["
+             "'--frame-id', 'a', '--child-frame-id', 'b'])])\n")
+    top = ("import os\nfrom ament_index_python.packages import get_package_share_directory\n"
+           "from launch import LaunchDescription\nfrom launch.actions import "
+           "IncludeLaunchDescription\nfrom launch.launch_description_sources import "
+           "PythonLaunchDescriptionSource\ndef generate_launch_description():\n    path = "
+           "os.path.join(get_package_share_directory('demo'), 'launch/inner.launch.py')\n"
+           "    return LaunchDescription([IncludeLaunchDescription("
+           "PythonLaunchDescriptionSource(path))])\n")
+    files = {
+        "src/demo/package.xml": '<package format="3"><name>demo</name><export><build_type>'
+                                "ament_cmake</build_type></export></package>\n",
+        "src/demo/CMakeLists.txt": "project(demo)\n"
+                                   "install(DIRECTORY bringup/launch DESTINATION share/demo)\n",
+        "src/demo/bringup/launch/inner.launch.py": inner,
+        "src/demo/top.launch.py": top,
+    }
+    for name, text in files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text(text)
+    assert "top.launch.py" in relinted(tmp_path)
+    assert relinted(tmp_path) == []
+    edit(tmp_path / "src/demo/CMakeLists.txt", "bringup/launch", "bringup/other")
+    assert relinted(tmp_path) == ["top.launch.py"]
