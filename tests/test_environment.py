@@ -138,3 +138,9 @@ def test_check_reads_a_sourced_shell(tmp_path: Path) -> None:
                                       check=True).stdout)
     assert any("not found" in d["message"] for d in before["diagnostics"])
     assert not any("not found" in d["message"] for d in after["diagnostics"])
+
+
+def test_a_hostile_environment_is_bounded() -> None:
+    many = os.pathsep.join(f"/p{i}" for i in range(20_000))
+    places = environment_places({"AMENT_PREFIX_PATH": many, "ROS_PACKAGE_PATH": many})
+    assert len(places) == 2 * 256

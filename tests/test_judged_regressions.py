@@ -160,7 +160,8 @@ CASES = [
               stp("tf", "map_nav_broadcaster", "0 0 0 0 0 0 map nav 100")),
          "frame_authority", "fails"),
     Case("dfb1f12ed472", "FALSE", "gnss_and_INS.launch",
-         ros1(stp("tf2_ros", "odom_to_base_link", "0 0 0 0 0 0 odom base_link"),
+         ros1('  <rosparam command="load" file="$(find ndt_localizer)/cfgs/gnss_and_INS.yaml"/>',
+              stp("tf2_ros", "odom_to_base_link", "0 0 0 0 0 0 odom base_link"),
               '  <node pkg="robot_localization" type="ekf_localization_node" '
               'name="ekf_localization">\n'
               '    <remap from="/odometry/filtered" to="/ndt/ekf/global_odom"/>\n  </node>'),

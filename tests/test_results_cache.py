@@ -409,3 +409,9 @@ def test_install_rules_read_to_locate_an_include_relint_its_includer(
     assert relinted(tmp_path) == []
     edit(tmp_path / "src/demo/CMakeLists.txt", "bringup/launch", "bringup/other")
     assert relinted(tmp_path) == ["top.launch.py"]
+
+
+def test_a_parameter_file_read_relints_its_launch_file(workspace: Path) -> None:
+    relinted(workspace)
+    edit(workspace / "src/pkg/config/params.yaml", "rate: 10", "rate: 20")
+    assert relinted(workspace) == ["c.launch"]

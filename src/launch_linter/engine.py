@@ -8,6 +8,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
+from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
@@ -94,6 +95,8 @@ class LintOptions:
     ros_distro: str | None = None
     """Target ROS distribution (lower case), for the rules and fixes that depend on it;
     None: from evidence in the files, else unknown."""
+    knowledge: KnowledgeBase | None = None
+    """The knowledge base of tf publishers; None: the bundled one."""
 
 
 @dataclass(frozen=True)
@@ -198,7 +201,8 @@ def _package_index(roots: tuple[str, ...], cache: Packages,
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
     """Run ``rules`` on one tree; each finding becomes a diagnostic stamped by its rule."""
-    context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options))
+    context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options),
+                          options.knowledge if options.knowledge is not None else bundled())
     return [_stamp(rule, f, options) for rule in rules for f in rule.check(context)]
 
 

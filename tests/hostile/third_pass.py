@@ -176,7 +176,7 @@ THIRD_PASS: dict[str, Case] = {
     "xacro_doubling": Case("work", _xacro_doubling, "steps; stopped"),
     "xacro_big_include": Case("work", _xacro_big_include),
     "xacro_many_descriptions": Case("work", _xacro_many_descriptions),
-    "xacro_copied_property": Case("work", _xacro_copied_property),
+    "xacro_copied_property": Case("work", _xacro_copied_property, "characters of attribute text"),
     "xacro_escapes": Case("work", _xacro_escapes),
     "xacro_special_include": Case("special", _xacro_special_include, "not a regular file"),
     "suppressions": Case("work", _text("suppressions.launch", _suppressions()),

@@ -43,10 +43,23 @@ def test_a_static_transform_that_freezes_a_movable_joint(lint) -> None:  # type:
     urdf = ("&lt;robot name='r'&gt;&lt;joint name='arm' type='revolute'&gt;&lt;parent "
             "link='base_link'/&gt;&lt;child link='arm_link'/&gt;&lt;/joint&gt;&lt;/robot&gt;")
     xml = (f'<launch><param name="robot_description" value="{urdf}"/>'
-           '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>\n'
+           '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+           '<node pkg="joint_state_publisher" type="joint_state_publisher" name="jsp"/>\n'
            '<node pkg="tf2_ros" type="static_transform_publisher" name="a" '
            'args="0 0 0 0 0 0 base_link arm_link"/></launch>')
     assert lint(xml, RULE) == [(RULE, 2)]
+
+
+def test_a_movable_joint_without_joint_states_is_not_published(lint) -> None:  # type: ignore[no-untyped-def]
+    """robot_state_publisher sends a movable joint only from /joint_states: with nothing
+    publishing them, the static transform is the wheel's only publisher."""
+    urdf = ("&lt;robot name='r'&gt;&lt;joint name='wheel' type='continuous'&gt;&lt;parent "
+            "link='base_link'/&gt;&lt;child link='wheel_link'/&gt;&lt;/joint&gt;&lt;/robot&gt;")
+    xml = (f'<launch><param name="robot_description" value="{urdf}"/>'
+           '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>\n'
+           '<node pkg="tf2_ros" type="static_transform_publisher" name="a" '
+           'args="0 0 0 0 0 0 base_link wheel_link"/></launch>')
+    assert lint(xml, RULE) == []
 
 
 def test_thousands_of_one_transform_in_one_file_and_one_other(lint_tree) -> None:  # type: ignore[no-untyped-def]

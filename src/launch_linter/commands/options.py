@@ -12,6 +12,7 @@ from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
 from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_bytes, lint_paths
+from launch_linter.knowledge import KnowledgeBase, KnowledgeError, bundled, load
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.results_cache import ResultsCache, results_cache_folder
 from launch_linter.rules._profiles import PROFILES
@@ -198,7 +199,22 @@ def lint_options(ns: argparse.Namespace, config: Config | None = None) -> LintOp
         profile=getattr(ns, "profile", None) or config.profile or "default",
         ros=ns.ros if getattr(ns, "ros", None) is not None else config.ros,
         ros_distro=ros_distro(getattr(ns, "ros_distro", None), config.ros_distro),
+        knowledge=load_knowledge(config.knowledge),
     )
+
+
+def load_knowledge(files: tuple[str, ...]) -> KnowledgeBase | None:
+    """The bundled knowledge base extended by the configuration's files (the later file
+    first); None when there are none."""
+    if not files:
+        return None
+    base = bundled()
+    try:
+        for path in files:
+            base = base.extended(load(path))
+    except KnowledgeError as exc:
+        raise UsageError(str(exc)) from None
+    return base
 
 
 def ros_distro(given: str | None, configured: str | None) -> str | None:

@@ -14,13 +14,13 @@ from launch_linter.commands.options import (
     load_config,
 )
 from launch_linter.model.robot import RobotJoint
-from launch_linter.report import json_report, text
+from launch_linter.report import json_report, node_edges, text
 from launch_linter.report.published import published
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     transforms = subparsers.add_parser(
-        "transforms", help="print every static transform and URDF edge found"
+        "transforms", help="print every static transform, URDF edge and node-published edge found"
     )
     add_resolution_options(transforms)
     transforms.add_argument("--format", choices=("text", "json"), default="text")
@@ -29,9 +29,12 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(ns: argparse.Namespace) -> int:
     config = load_config(ns)
-    result = lint_command_paths(ns, lint_options(ns, config), config)
+    options = lint_options(ns, config)
+    result = lint_command_paths(ns, options, config)
     if ns.format == "json":
-        json_report.write(json_report.transforms_document(result), sys.stdout)
+        document = json_report.transforms_document(result)
+        document.update(node_edges.document_part(result, options.knowledge))
+        json_report.write(document, sys.stdout)
         return EXIT_OK
     edges = published(result)
     # The entry points are named only when there are several to tell apart.
@@ -42,4 +45,6 @@ def run(ns: argparse.Namespace) -> int:
             sys.stdout.write(text.format_joint(item.edge, roots) + "\n")
         else:
             sys.stdout.write(text.format_transform(item.edge, roots) + "\n")
+    for line in node_edges.text_lines(result, options.knowledge):
+        sys.stdout.write(line + "\n")
     return EXIT_OK

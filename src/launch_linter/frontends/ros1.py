@@ -22,7 +22,6 @@ from launch_linter.frontends.record import (
     transform_record,
     unresolved_message,
 )
-from launch_linter.frontends.robot.sources import FRAME_NODE_PACKAGES
 from launch_linter.frontends.ros1_base import (
     _NODE_LATE_ATTRS,
     MAX_FILES_PER_TREE,
@@ -113,8 +112,9 @@ class Ros1Loader(Ros1Tags):
             ns = _COLLAPSE_SLASHES.sub("/", ns)
         if not is_test and name_text and not ns_unresolved:
             self._register_name(element, context, name_text, ns)
-        if package_text in FRAME_NODE_PACKAGES and type_text is not None:
-            self._frame_node(element, context, condition, name_text, package_text, type_text)
+        if package_text is not None and type_text is not None:
+            self._frame_node(element, context, condition, name_text, package_text, type_text,
+                             None if ns_unresolved else ns)
         if is_test or package is None or node_type is None:
             return
         if type_text is not None and type_text != STATIC_TF_TYPE:

@@ -172,7 +172,12 @@ class Ros1Base:
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
         self.node_params: list[tuple[str, str]] = []
-        """Frame parameters set beside a node (``NODE/param``): full name, value."""
+        """Parameters set beside the nodes (``NODE/param``, ``<rosparam>`` files): full
+        name, value."""
+        self.tf_prefixes: list[tuple[str | None, str]] = []
+        """``tf_prefix`` parameters set in a namespace (None: unresolved): value."""
+        self.params_unread: list[str] = []
+        """Why some parameters set beside the nodes could not be read."""
         self.anon = _AnonNames()
         self.root_display = ""
         self.node_names: dict[str, tuple[str, Element]] = {}
@@ -288,7 +293,8 @@ class Ros1Base:
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
             descriptions=tuple(self.descriptions),
-            nodes=tuple(with_node_params(self.nodes, self.node_params)),
+            nodes=tuple(with_node_params(self.nodes, self.node_params, self.params_unread,
+                                          self.tf_prefixes)),
         )
 
     def _command_line_args(self) -> dict[str, Value]:

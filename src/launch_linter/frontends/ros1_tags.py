@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import os
 
+from launch_linter.frontends.params import parse_yaml, read_yaml_file, ros1_params
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,
-    FRAME_PARAMS,
     from_ros1_param,
     is_description_name,
     params_from_yaml,
@@ -225,7 +225,7 @@ class Ros1Tags(Ros1Base):
             if written is not None:
                 sources["value"] = written
             self._description(element, context, _conjoin(context.condition, condition), sources)
-        elif "/" in name_text and name_text.rsplit("/", 1)[-1] in FRAME_PARAMS and anon is None:
+        elif "/" in name_text and anon is None:
             # ``<param name="hector_mapping/pub_map_odom_transform" .../>`` beside the node.
             full = resolved_text(name_value)
             text = None if written is None else resolved_text(written)
@@ -233,6 +233,11 @@ class Ros1Tags(Ros1Base):
                 always = _conjoin(context.condition, condition).always
                 self.node_params.append((full, text if text is not None and always
                                          else UNKNOWN_VALUE))
+        elif name_text.strip() in ("tf_prefix", "~tf_prefix") and anon is None:
+            # robot_state_publisher finds tf_prefix by searchParam, from its namespace up.
+            text = None if written is None else resolved_text(written)
+            scope = None if context.ns_unresolved else context.ns
+            self.tf_prefixes.append((scope, UNKNOWN_VALUE if text is None else text))
         param_type = attrib.get("type")
         if written is not None and param_type is not None:
             value = resolved_text(written)
@@ -249,31 +254,77 @@ class Ros1Tags(Ros1Base):
             self.descriptions.append(source)
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
-                    name: str | None, package: str, executable: str) -> None:
-        """Keep a node that publishes tf or owns a frame, with its frame params."""
+                    name: str | None, package: str, executable: str,
+                    namespace: str | None) -> None:
+        """Keep a launched node with the parameters it is given inside its element
+        (``<param>``, ``<rosparam>`` text and files); the knowledge base tells which of
+        them matter."""
         params: list[tuple[str, str]] = []
+        unread: list[str] = []
         for sub in element.children:
             if sub.tag == "param":
-                key, value = sub.attrib.get("name"), sub.attrib.get("value")
-                if not key or value is None or key.rsplit("/", 1)[-1] not in FRAME_PARAMS:
+                key = sub.attrib.get("name")
+                if not key:
                     continue
+                value = sub.attrib.get("value")
                 known: str | None = value
-                if "$" in value:
+                if value is None:
+                    known = None
+                elif "$" in value:
                     # Anonymous names are left alone: resolving one here would renumber.
                     known = None if "$(anon" in value else resolved_text(self._resolve_text(
                         value, sub, "value", context, dict(context.anon)))
-                params.append((key, UNKNOWN_VALUE if known is None else known))
-            elif sub.tag == "rosparam" and sub.text:
-                params.extend(params_from_yaml(sub.text))
+                params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
+            elif sub.tag == "rosparam":
+                found, why = self._rosparam_values(sub, context)
+                params.extend(found)
+                if why:
+                    unread.append(why)
         self.nodes.append(NodeRecord(
             self._display(context.filename), element.line, element.column, package,
             executable, name, tuple(params), _conjoin(context.condition, condition),
+            unread=tuple(unread), namespace=namespace, ros=1,
         ))
+
+    def _rosparam_values(self, element: Element, context: _Context
+                         ) -> tuple[list[tuple[str, str]], str | None]:
+        """The parameters a ``<rosparam>`` loads (its text or its file, under its ``ns``),
+        and why they are not read when they are not."""
+        attrib = element.attrib
+        if (attrib.get("command") or "load") != "load" or "param" in attrib:
+            return [], None
+        ns_text = attrib.get("ns", "")
+        if "$" in ns_text:
+            ns_text = resolved_text(self._resolve_text(ns_text, element, "ns", context,
+                                                       dict(context.anon))) or ""
+        file_text = attrib.get("file")
+        if file_text is not None:
+            path = resolved_text(self._resolve_text(file_text, element, "file", context,
+                                                    dict(context.anon)))
+            if path is None:
+                return [], f"parameter file {file_text!r} is not resolved"
+            document, why = read_yaml_file(path)
+        elif element.text and "$(" not in element.text:
+            document, why = parse_yaml(element.text)
+            if why is not None:
+                # Without PyYAML, flat ``key: value`` lines are still read.
+                return params_from_yaml(element.text), why
+        else:
+            return [], None if not element.text else "<rosparam> text with substitutions"
+        if why is not None:
+            return [], why
+        return ros1_params(document, ns_text), None
 
     def _rosparam(self, element: Element, context: _Context,
                   anon: dict[str, str] | None = None) -> None:
         if self._condition(element, context, anon) is None:
             return
+        if anon is None:
+            # Beside the nodes: ``NODE/param`` names reach a node by its name.
+            found, why = self._rosparam_values(element, context)
+            self.node_params.extend(found)
+            if why:
+                self.params_unread.append(why)
         command, _ns, file, _param, subst = self._resolve_all(element, _ROSPARAM_ATTRS, context,
                                                               anon)
         substitute = self._check_bool(context, element, subst, "subst_value")

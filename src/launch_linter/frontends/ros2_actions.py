@@ -110,7 +110,7 @@ class RunNode:
     pushed_namespace: bool = True
     """False for ``ros2 run`` in an executable action: launch_ros's pushed namespace
     applies to ``Node`` actions only."""
-    parameters: tuple[Params | ParamsUnknown, ...] = ()
+    parameters: tuple[Params | ParamsFile | ParamsUnknown, ...] = ()
     """Kept for the nodes that tf rules need (robot_state_publisher's description,
     localization and odometry frame parameters)."""
     uses: tuple[Subs, ...] = ()
@@ -161,6 +161,13 @@ class Params:
 
 
 @dataclass(frozen=True)
+class ParamsFile:
+    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``)."""
+
+    path: Subs
+
+
+@dataclass(frozen=True)
 class ParamsUnknown:
     """Parameters from somewhere the linter does not read (a file, an expression)."""
 
@@ -177,7 +184,7 @@ class Component:
     plugin: Subs | None
     name: Subs | None
     namespace: Subs | None
-    parameters: tuple[Params | ParamsUnknown, ...]
+    parameters: tuple[Params | ParamsFile | ParamsUnknown, ...]
     uses: tuple[Subs, ...] = ()
     """Every other substitution the action performs when it runs (remappings, parameters,
     other attributes), resolved only to check the launch configurations they read."""

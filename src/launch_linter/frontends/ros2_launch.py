@@ -21,6 +21,12 @@ import os
 from dataclasses import replace
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.params import (
+    MAX_PARAMS,
+    controllers_of,
+    read_yaml_file,
+    ros2_file_params,
+)
 from launch_linter.frontends.record import (
     Command,
     Reading,
@@ -29,14 +35,19 @@ from launch_linter.frontends.record import (
     unresolved_message,
 )
 from launch_linter.frontends.robot.sources import (
-    FRAME_NODE_PACKAGES,
-    FRAME_PARAMS,
     from_file_value,
     from_ros2_value,
     is_description_name,
 )
 from launch_linter.frontends.ros1 import LoadOptions
-from launch_linter.frontends.ros2_actions import Component, Params, RunNode, Where
+from launch_linter.frontends.ros2_actions import (
+    Component,
+    Params,
+    ParamsFile,
+    ParamsUnknown,
+    RunNode,
+    Where,
+)
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -81,7 +92,7 @@ class Ros2Loader(Ros2Runner):
         package = self._resolve(action.package, scope, frame, action.where)
         executable = self._resolve(action.executable, scope, frame, action.where)
         package_text = resolved_text(package)
-        if package_text in FRAME_NODE_PACKAGES:
+        if package_text is not None:
             self._frame_node(action, scope, frame, package_text, resolved_text(executable))
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
@@ -100,27 +111,62 @@ class Ros2Loader(Ros2Runner):
 
     def _frame_node(self, action: RunNode, scope: _Scope, frame: _Frame, package: str,
                     executable: str | None) -> None:
-        """Keep a node that tf rules need, with its frame parameters and, for
-        robot_state_publisher, its ``robot_description``."""
+        """Keep a launched node with the parameters it is given (dictionaries and
+        parameter files) and, for robot_state_publisher, its ``robot_description``; a
+        controller manager's controllers are kept as nodes of their own."""
         where = action.where
         name_value = (None if action.name is None
                       else self._resolve(action.name, scope, frame, where))
         name = None if name_value is None else resolved_text(name_value)
-        params: list[tuple[str, str]] = []
+        namespace, pending = self._namespace(action.namespace, scope, frame, where)
+        known_namespace = None if pending else namespace
+        params, unread, documents = self._node_params(action.parameters, scope, frame, where,
+                                                      name, known_namespace)
         for group in action.parameters:
-            if not isinstance(group, Params):
-                continue
-            for key, subs in group.items:
-                short = key.rsplit(".", 1)[-1]
-                if is_description_name(short):
-                    self._ros2_description(subs, scope, frame, where, name)
-                elif short in FRAME_PARAMS:
-                    text = resolved_text(self._resolve(subs, scope, frame, where))
-                    params.append((short, UNKNOWN_VALUE if text is None else text))
-        self.nodes.append(NodeRecord(
+            if isinstance(group, Params):
+                for key, subs in group.items:
+                    if is_description_name(key.rsplit(".", 1)[-1]):
+                        self._ros2_description(subs, scope, frame, where, name)
+        node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
-            executable or "", name, tuple(params), frame.condition,
-        ))
+            executable or "", name, params, frame.condition,
+            unread=unread, namespace=known_namespace, ros=2,
+        )
+        self.nodes.append(node)
+        if package == "controller_manager" and documents:
+            self.nodes.extend(controllers_of(node, documents))
+
+    def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
+                     scope: _Scope, frame: _Frame, where: Where, name: str | None,
+                     namespace: str | None
+                     ) -> tuple[tuple[tuple[str, str], ...], tuple[str, ...], list[object]]:
+        """The parameters a node is given (dictionaries and parameter files, in order),
+        why some are not read, and the parameter files' documents."""
+        params: list[tuple[str, str]] = []
+        unread: list[str] = []
+        documents: list[object] = []
+        for group in groups:
+            if isinstance(group, ParamsUnknown):
+                unread.append(group.reason)
+            elif isinstance(group, ParamsFile):
+                path_value = self._resolve(group.path, scope, frame, where)
+                path = resolved_text(path_value)
+                if path is None:
+                    unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
+                    continue
+                document, why = read_yaml_file(path)
+                if why is not None:
+                    unread.append(why)
+                    continue
+                documents.append(document)
+                params.extend(ros2_file_params(document, name, namespace))
+            else:
+                for key, subs in group.items:
+                    if is_description_name(key.rsplit(".", 1)[-1]):
+                        continue
+                    text = resolved_text(self._resolve(subs, scope, frame, where))
+                    params.append((key, UNKNOWN_VALUE if text is None else text))
+        return tuple(params[:MAX_PARAMS]), tuple(unread), documents
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
@@ -151,6 +197,20 @@ class Ros2Loader(Ros2Runner):
             self._resolve(subs, scope, here, component.where)
         package = self._resolve(component.package, scope, here, component.where)
         plugin = self._resolve(component.plugin, scope, here, component.where)
+        package_text, plugin_text = resolved_text(package), resolved_text(plugin)
+        if package_text is not None and plugin_text is not None:
+            name_value = (None if component.name is None
+                          else self._resolve(component.name, scope, here, component.where))
+            name = None if name_value is None else resolved_text(name_value)
+            namespace, pending = self._namespace(component.namespace, scope, here,
+                                                 component.where)
+            node_params, unread, _ = self._node_params(
+                component.parameters, scope, here, component.where, name,
+                None if pending else namespace)
+            self.nodes.append(NodeRecord(
+                self._display(here.filename), component.where.line, component.where.column,
+                package_text, "", name, node_params, here.condition, plugin=plugin_text,
+                unread=unread, namespace=None if pending else namespace, ros=2))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}
@@ -158,7 +218,8 @@ class Ros2Loader(Ros2Runner):
         unknown: list[str] = []
         for source in component.parameters:
             if not isinstance(source, Params):
-                unknown.append(source.reason)
+                unknown.append(source.reason if isinstance(source, ParamsUnknown)
+                               else "parameters from a file")
                 continue
             for name, subs in source.items:
                 value = self._resolve(subs, scope, here, component.where)

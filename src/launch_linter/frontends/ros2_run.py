@@ -30,6 +30,11 @@ from launch_linter.frontends.ros2_actions import (
     Uses,
     Where,
 )
+from launch_linter.frontends.ros2_include import (
+    environment_names,
+    find_included,
+    required_arguments,
+)
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
@@ -50,9 +55,7 @@ from launch_linter.model.transform import (
     LaunchFormat,
     StaticTransform,
 )
-from launch_linter.resolve import reads
 from launch_linter.resolve.ros2_substitution import (
-    Call,
     Ros2Scope,
     Subs,
     SubstitutionError,
@@ -84,22 +87,6 @@ MAX_SUGGESTION_CANDIDATES = 2_000
 """Bounds of the "did you mean" of undeclared launch configurations."""
 NAMESPACE_KEY = "ros_namespace"
 """The launch configuration in which ``push_ros_namespace`` keeps the namespace."""
-
-def _environment_names(subs: Subs, depth: int = 0) -> list[str]:
-    """The environment variables (written as literal names) that ``subs`` reads."""
-    names: list[str] = []
-    if depth > 32:
-        return names
-    for sub in subs:
-        if isinstance(sub, Call):
-            if sub.name in ("env", "optenv") and sub.args:
-                first = sub.args[0]
-                if all(isinstance(part, Text) for part in first):
-                    names.append("".join(part.text for part in first if isinstance(part, Text)))
-            for argument in sub.args:
-                names.extend(_environment_names(argument, depth + 1))
-    return names
-
 
 @dataclass
 class _Scope:
@@ -182,35 +169,6 @@ def _yaml_is_string(text: str) -> bool:
     except ValueError:
         return True
     return False
-
-
-def _required_arguments(actions: tuple[Action, ...]) -> list[str]:
-    """Arguments an included file declares unconditionally and without a default."""
-    found: list[str] = []
-    pending: list[Action] = list(actions)
-    while pending:
-        action = pending.pop(0)
-        if isinstance(action, Group) and action.condition is None:
-            pending[:0] = action.actions
-        elif isinstance(action, DeclareArg) and action.condition is None and (
-            action.default is None
-        ) and all(isinstance(sub, Text) for sub in action.name):
-            found.append(written(action.name))
-    return found
-
-
-def _locate(path: str, including_file: str) -> str | None:
-    candidates = [path] if os.path.isabs(path) else [
-        os.path.join(os.path.dirname(including_file), path), os.path.abspath(path),
-    ]
-    for candidate in candidates:
-        if reads.is_file(candidate):
-            return os.path.abspath(candidate)
-    # A folder, device or FIFO of that name is found, so that reading it says what it is.
-    for candidate in candidates:
-        if reads.exists(candidate):
-            return os.path.abspath(candidate)
-    return None
 
 
 class Ros2Runner:
@@ -577,14 +535,7 @@ class Ros2Runner:
                          f"include file {text_of(path_value)!r} not followed: {reasons}")
             self._opened(f"line {action.where.line}: an include is not followed")
             return
-        absolute = _locate(path, frame.filename)
-        located = None
-        if absolute is None:
-            located = self.options.packages.locate(
-                path if os.path.isabs(path) else os.path.join(
-                    os.path.dirname(frame.filename), path),
-                near=os.path.dirname(frame.filename))
-            absolute = located.path
+        absolute, located = find_included(path, frame.filename, self.options.packages)
         if absolute is None:
             if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
@@ -592,7 +543,7 @@ class Ros2Runner:
                              f"it is under the user's home directory, which depends on the machine")
                 self._opened(f"line {action.where.line}: an include is not followed")
                 return
-            variables = [v for v in _environment_names(action.path) if v not in scope.env]
+            variables = [v for v in environment_names(action.path) if v not in scope.env]
             if variables and not self.options.study_errors:
                 # os.getenv('TEST_LAUNCH_DIR', '') is set by whoever runs the file.
                 self._report("unresolved", action.where, f"include file {path!r} not followed: "
@@ -639,7 +590,7 @@ class Ros2Runner:
         if read.actions is None:
             self._opened(f"line {action.where.line}: an include is not followed")
             return
-        for name in _required_arguments(read.actions):
+        for name in required_arguments(read.actions):
             if name not in passed:
                 self._report(
                     "roslaunch_error", action.where,

@@ -22,6 +22,7 @@ from launch_linter.frontends.ros2_actions import (
     Include,
     LoadComponents,
     Params,
+    ParamsFile,
     ParamsUnknown,
     Predicate,
     Problem,
@@ -269,11 +270,11 @@ class _Reader:
             parameters=self.params(entity.lists.get("param", [])),
         )
 
-    def params(self, entities: list[Entity]) -> tuple[Params | ParamsUnknown, ...]:
-        out: list[Params | ParamsUnknown] = []
+    def params(self, entities: list[Entity]) -> tuple[Params | ParamsFile | ParamsUnknown, ...]:
+        out: list[Params | ParamsFile | ParamsUnknown] = []
         for entity in entities:
             if "from" in entity.attrs:
-                out.append(ParamsUnknown(f"parameters from file {entity.attrs['from']!r}"))
+                out.append(ParamsFile(self.subs(entity, "from") or ()))
                 continue
             items: list[tuple[str, Subs]] = []
             self.param_items(entity, "", items)

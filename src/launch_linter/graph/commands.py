@@ -81,8 +81,9 @@ def run(ns: argparse.Namespace) -> int:
         known = ", ".join(sorted({*TEXT_FORMATS, *IMAGE_FORMATS}))
         raise UsageError(f"cannot tell the format of {output!r}: use one of {known}")
     config = load_config(ns)
-    result = lint_command_paths(ns, lint_options(ns, config), config)
-    graph = build_graph(result)
+    options = lint_options(ns, config)
+    result = lint_command_paths(ns, options, config)
+    graph = build_graph(result, options.knowledge)
     if output is None:
         sys.stdout.write(to_dot(graph))
         return EXIT_OK

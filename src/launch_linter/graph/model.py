@@ -24,6 +24,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from launch_linter.engine import LintResult
+from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
@@ -35,6 +36,7 @@ from launch_linter.report.published import (
     named,
     tree_edges,
 )
+from launch_linter.rules._nodes import NodeEdge, view_of
 
 MAX_NOTES = 12
 MAX_TITLE_NAMES = 8
@@ -70,7 +72,8 @@ class Edge:
     tooltip: str
     cluster: int = 0
     source: str = "launch"
-    """``launch`` (a static transform) or ``urdf`` (a joint of a robot description)."""
+    """``launch`` (a static transform), ``urdf`` (a joint of a robot description) or
+    ``node`` (published at run time by a launched node, by the knowledge base)."""
     dynamic: bool = False
     """A movable URDF joint (revolute, continuous, prismatic, floating, planar)."""
 
@@ -216,6 +219,20 @@ class _Builder:
             tooltip=_tooltip(found), cluster=cluster,
         ))
 
+    def add_node_edge(self, edge: NodeEdge) -> None:
+        """An edge a launched node publishes at run time: dashed, labelled by the node."""
+        node = edge.node
+        for frame in (edge.parent, edge.child):
+            self.frames.setdefault(frame, Frame(frame, frame, True, False, 0))
+        program = node.plugin or f"{node.package}/{node.executable}"
+        self.edges.append(Edge(
+            parent=edge.parent, child=edge.child,
+            label=(f"node {program}", edge.role, f"{os.path.basename(node.path)}:{node.line}"),
+            conditional=not node.condition.always, flagged=False,
+            tooltip=f"published at run time by {program} ({node.path}:{node.line})",
+            source="node", dynamic=True,
+        ))
+
     def add_joint(self, cluster: int, joint: RobotJoint) -> None:
         found, rules = self._found(joint.path, joint.line, joint.column)
         prefix = f"{cluster}|" if cluster else ""
@@ -320,7 +337,7 @@ def _capped(edges: list[Edge]) -> list[Edge]:
     return [edges[i] for i in sorted(chosen)]
 
 
-def build_graph(result: LintResult) -> TfGraph:
+def build_graph(result: LintResult, knowledge: KnowledgeBase | None = None) -> TfGraph:
     """The graph of every transform in ``result``, marked with its diagnostics."""
     builder = _Builder(_diagnostics_at(result))
     notes: list[str] = []
@@ -340,9 +357,13 @@ def build_graph(result: LintResult) -> TfGraph:
             notes.append(f"{len(empty)} entry point(s) publish no transform:")
             notes.extend(_why_nothing_notes([result.trees[i] for i in empty], result))
     else:
+        base = knowledge if knowledge is not None else bundled()
         for tree in result.trees:
             for tf_edge in tree_edges(tree):
                 builder.add(0, tf_edge)
+            # One tree: the edges its nodes publish too (several trees: left out for now).
+            for node_edge in view_of(tree, base).edges if tree.nodes else ():
+                builder.add_node_edge(node_edge)
         if not builder.edges:
             notes.extend(f"{tree.root}: {why_nothing(tree, result)}" for tree in result.trees)
     edges = _capped(builder.edges)
@@ -382,7 +403,9 @@ def _title(result: LintResult, edges: list[Edge], frames: int) -> str:
     errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
     warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
     urdf = sum(1 for e in edges if e.source == "urdf")
+    by_nodes = sum(1 for e in edges if e.source == "node")
     return (
-        f"{roots}: {len(edges) - urdf} static transform(s), {urdf} URDF joint(s), "
-        f"{frames} frame(s), {errors} error(s), {warnings} warning(s)"
+        f"{roots}: {len(edges) - urdf - by_nodes} static transform(s), {urdf} URDF joint(s), "
+        + (f"{by_nodes} node-published edge(s), " if by_nodes else "")
+        + f"{frames} frame(s), {errors} error(s), {warnings} warning(s)"
     )

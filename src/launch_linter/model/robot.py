@@ -84,8 +84,17 @@ class RobotJoint:
 
 @dataclass(frozen=True)
 class NodeRecord:
-    """A launched node that rules about frame authority need: which program it runs, and
-    the frame parameters it is given (as ``(name, value)`` pairs, resolved ones only)."""
+    """A launched node (or a Gazebo plugin, or a ros2_control controller): which program
+    it runs, and the parameters it is given as ``(name, value)`` pairs (a value the linter
+    cannot resolve is ``UNKNOWN_VALUE``; nested names joined with ``/`` in ROS 1 and
+    ``.`` in ROS 2).
+
+    ``kind`` is ``node``, ``gazebo_plugin`` or ``controller``; ``plugin`` the composable
+    node's plugin, the plugin's filename or the controller's type. ``unread`` says why
+    some of its parameters could not be read (a parameter file not found or not parsed):
+    a parameter it does not set then has no known value. ``namespace`` is the node's
+    namespace (None when unresolved); ``ros`` the ROS version of the launch file.
+    """
 
     path: str
     line: int
@@ -95,6 +104,20 @@ class NodeRecord:
     name: str | None = None
     params: tuple[tuple[str, str], ...] = ()
     condition: Condition = field(default_factory=Condition)
+    kind: str = "node"
+    plugin: str | None = None
+    unread: tuple[str, ...] = ()
+    namespace: str | None = "/"
+    ros: int | None = None
+
+    def given(self, name: str) -> str | None:
+        """The value of the parameter ``name`` exactly as the node is given it (the last
+        setting wins), None when it is not set."""
+        found = None
+        for key, value in self.params:
+            if key == name:
+                found = value
+        return found
 
     def param(self, name: str) -> str | None:
         for key, value in self.params:

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from types import ModuleType
 from typing import Any, Callable, TypeVar
 
+from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
     Applicability,
@@ -36,7 +37,9 @@ class RuleContext:
     """``default``, or ``study``: the study's checks and severities (see docs/severity.md)."""
     distro: str | None = None
     """The target ROS distribution (lower case), None when unknown (see docs/severity.md)."""
-    _shared: dict[Callable[[LaunchTree], Any], Any] = field(
+    knowledge: KnowledgeBase = field(default_factory=bundled)
+    """The tf publishers and frame consumers known (bundled, extended by the config)."""
+    _shared: dict[Callable[[Any], Any], Any] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )
     """What ``shared`` worked out for this tree, by the function that works it out."""
@@ -52,6 +55,15 @@ class RuleContext:
             return typing.cast(T, self._shared[index])
         except KeyError:
             value = self._shared[index] = index(self.tree)
+            return value
+
+    def derived(self, index: Callable[[RuleContext], T]) -> T:
+        """``index(context)``, worked out once per tree, for what needs more than the tree
+        (the knowledge base): the node-published edges."""
+        try:
+            return typing.cast(T, self._shared[index])
+        except KeyError:
+            value = self._shared[index] = index(self)
             return value
 
 

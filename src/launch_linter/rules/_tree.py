@@ -12,6 +12,7 @@ from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._nodes import nodes_of
 
 Quaternion = typing.Tuple[float, float, float, float]
 """(x, y, z, w)."""
@@ -127,9 +128,19 @@ def tree_edges(tree: LaunchTree) -> tuple[Edge, ...]:
     return tuple(edges)
 
 
+def _published_edges(context: RuleContext) -> tuple[Edge, ...]:
+    edges = context.shared(tree_edges)
+    if nodes_of(context).joint_states:
+        return edges
+    # robot_state_publisher sends a movable joint only from /joint_states: with no known
+    # publisher of them, the joint's edge is not in the tree.
+    return tuple(edge for edge in edges if not edge.dynamic)
+
+
 def edges_of(context: RuleContext) -> tuple[Edge, ...]:
-    """The tree's edges, built once for all the tree rules run on one tree."""
-    return context.shared(tree_edges)
+    """The tree's edges (static transforms and the URDF joints robot_state_publisher
+    sends), built once for all the tree rules run on one tree."""
+    return context.derived(_published_edges)
 
 
 def coexist(a: Edge, b: Edge) -> bool:

@@ -44,6 +44,7 @@ KEYS = (
     "ros",
     "ros-distro",
     "cache-dir",
+    "knowledge",
 )
 BELIEF_KEYWORDS = ("bundled", "study", "none")
 MAX_CONFIG_BYTES = 1024 * 1024
@@ -77,6 +78,8 @@ class Config:
     ros_distro: str | None = None
     cache_dir: str | None = None
     """The results cache's folder (absolute; relative in the file to its folder)."""
+    knowledge: tuple[str, ...] = ()
+    """Knowledge files (JSON, docs/knowledge.md) that extend the bundled knowledge base."""
 
 
 def _categories() -> set[str]:
@@ -166,6 +169,10 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
             values[key] = {
                 str(name): _scalar_text(v, f"{path}: '{key}.{name}'") for name, v in table.items()
             }
+    if "knowledge" in data:
+        files = data["knowledge"]
+        names = (files,) if isinstance(files, str) else _string_list(files, f"{path}: 'knowledge'")
+        values["knowledge"] = tuple(_relative_to(base, name) for name in names)
     if "package-path" in data:
         roots = _string_list(data["package-path"], f"{path}: 'package-path'")
         values["package_path"] = tuple(_relative_to(base, r) for r in roots)

@@ -13,6 +13,7 @@ import shlex
 from collections.abc import Sequence
 from dataclasses import replace
 
+from launch_linter.frontends.params import ros1_controllers
 from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition
@@ -33,6 +34,7 @@ FRAME_PARAMS = ("world_frame", "map_frame", "odom_frame", "base_link_frame", "pu
                 "global_frame_id", "odom_frame_id", "base_frame_id", "base_frame",
                 "pub_map_odom_transform")
 
+MAX_GLOBAL_PARAMS = 20000
 _PLACEHOLDER = re.compile("\x00([0-9]+)\x00")
 _YAML_LINE = re.compile(r"^\s*([A-Za-z_][\w/]*)\s*:\s*([^#\n]*?)\s*(?:#.*)?$", re.MULTILINE)
 
@@ -141,19 +143,36 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
     return None
 
 
-def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, str]]
-                     ) -> list[NodeRecord]:
-    """``nodes`` with the frame parameters set outside them by their private name
-    (``NODE/param``, any namespace before it); a node's own ``<param>`` comes first."""
-    if not params:
+def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, str]],
+                     unread: Sequence[str] = (),
+                     tf_prefixes: Sequence[tuple[str | None, str]] = ()) -> list[NodeRecord]:
+    """``nodes`` with the parameters set outside them by their private name
+    (``NODE/param``, any namespace before it; a node's own ``<param>`` comes first), the
+    reasons why parameters beside them were not read, the ``tf_prefix`` a
+    robot_state_publisher finds from its namespace up, and the ros_control controllers
+    that parameters load (``NAME/type``) at the first controller manager."""
+    if not params and not unread and not tf_prefixes:
         return list(nodes)
+    by_name: dict[str, list[tuple[str, str]]] = {}
+    for key, value in params[:MAX_GLOBAL_PARAMS]:
+        parts = key.strip("/").split("/")
+        for i, part in enumerate(parts[:-1]):
+            by_name.setdefault(part, []).append(("/".join(parts[i + 1:]), value))
     out: list[NodeRecord] = []
+    managed = False
     for node in nodes:
-        extra = tuple(
-            (key.rsplit("/", 1)[-1], value) for key, value in params
-            if node.name is not None and key.rstrip("/").rsplit("/", 2)[-2:-1] == [node.name]
-        )
-        out.append(replace(node, params=node.params + extra) if extra else node)
+        extra = tuple(by_name.get(node.name, ())) if node.name is not None else ()
+        if node.package == "robot_state_publisher":
+            extra += tuple(("tf_prefix", value) for scope, value in tf_prefixes
+                           if scope is None or node.namespace is None
+                           or node.namespace.startswith(scope.rstrip("/") + "/"))
+        if extra or unread:
+            node = replace(node, params=node.params + extra,
+                           unread=node.unread + tuple(unread[:3]))
+        out.append(node)
+        if node.package == "controller_manager" and not managed:
+            managed = True
+            out.extend(ros1_controllers(params[:MAX_GLOBAL_PARAMS], node))
     return out
 
 

@@ -38,6 +38,7 @@ from launch_linter.frontends.robot.xacro_values import (
     MAX_FILES,
     MAX_INCLUDE_DEPTH,
     MAX_MACRO_DEPTH,
+    MAX_OUTPUT_CHARS,
     MAX_OUTPUT_ELEMENTS,
     MAX_TEXT,
     MAX_WORK,
@@ -109,6 +110,9 @@ class XacroExpander:
         self._resolving: list[str] = []
         self._path = ""
         self._line = 1
+        self._produced = 0
+        """Characters of attribute text in the expansion (a property copied into 100,000
+        elements passed 1 GB)."""
         self._parsed: dict[str, Element | None] = {}
         """Each file parsed once, however often it is included (the tree is only read)."""
         self._defines_macros = False
@@ -286,7 +290,11 @@ class XacroExpander:
             if name.startswith(_PREFIX) or name.startswith("xmlns"):
                 continue
             try:
-                node.attrib[name] = self.evaluate_text(text, table)
+                value = node.attrib[name] = self.evaluate_text(text, table)
+                self._produced += len(value)
+                if self._produced > MAX_OUTPUT_CHARS:
+                    raise _Abort(f"expansion produces more than {MAX_OUTPUT_CHARS:,} "
+                                 "characters of attribute text", node.path, node.line)
             except _Unknown as unknown:
                 node.attrib[name] = text
                 node.unknown[name] = unknown.reason

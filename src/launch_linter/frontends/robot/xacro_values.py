@@ -13,6 +13,8 @@ MAX_FILES = 200
 MAX_INCLUDE_DEPTH = 32
 MAX_MACRO_DEPTH = 64
 MAX_OUTPUT_ELEMENTS = 100_000
+MAX_OUTPUT_CHARS = 16 * 1024 * 1024
+"""Attribute text of one expansion: some 200 MB of Python strings and nodes at most."""
 MAX_WORK = 1_000_000
 """Work units for one expansion: one per element visited and per substitution made."""
 MAX_TEXT = 65_536

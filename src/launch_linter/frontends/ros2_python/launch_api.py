@@ -20,6 +20,7 @@ from launch_linter.frontends.ros2_actions import (
     Include,
     LoadComponents,
     Params,
+    ParamsFile,
     ParamsUnknown,
     Predicate,
     PushNamespace,
@@ -96,8 +97,8 @@ class Interpreter(Calls):
         handler = HANDLERS.get(name)
         if handler is None:
             if name in ("ParameterValue", "ParameterFile") and args:
-                return args[0] if name == "ParameterValue" else self.unknown(
-                    node, "parameters from a file")
+                # A ParameterFile is its path, which a node's parameters list reads.
+                return args[0]
             return self.launch_object(name, args, kwargs, node)
         result: object = handler(self, args, kwargs, node)
         return result
@@ -434,12 +435,13 @@ class Interpreter(Calls):
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),
         ))
 
-    def parameters(self, value: object, node: ast.Call) -> tuple[Params | ParamsUnknown, ...]:
+    def parameters(self, value: object, node: ast.Call
+                   ) -> tuple[Params | ParamsFile | ParamsUnknown, ...]:
         if value is None:
             return ()
         if not isinstance(value, (list, tuple)):
             return (ParamsUnknown(f"line {node.lineno}: parameters are not a list"),)
-        out: list[Params | ParamsUnknown] = []
+        out: list[Params | ParamsFile | ParamsUnknown] = []
         for entry in value:
             if isinstance(entry, dict):
                 items: list[tuple[str, Subs]] = []
@@ -447,6 +449,8 @@ class Interpreter(Calls):
                     out.append(ParamsUnknown(f"line {node.lineno}: a parameter name or value "
                                              f"is unknown"))
                 out.append(Params(tuple(items)))
+            elif isinstance(entry, (str, SubsVal, LazyStr)):
+                out.append(ParamsFile(self.subs(entry, node, "parameter file")))
             else:
                 reason = entry.describe() if isinstance(entry, Unknown) else (
                     f"line {node.lineno}: parameters from a file")

@@ -1,0 +1,219 @@
+"""Node parameters read statically: YAML text (``<rosparam>``, parameter files of both ROS
+versions) flattened to ``(name, value)`` pairs, and ros2_control controllers found in them.
+
+PyYAML is imported on first use (the standalone linter's core is stdlib only): where it is
+absent a parameter file is *unread*, and the node's defaults are then unknown. Files are
+read bounded in size and parsed once per run.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import textwrap
+from collections.abc import Iterable, Sequence
+from dataclasses import replace
+from typing import Any
+
+from launch_linter.model.robot import NodeRecord
+from launch_linter.resolve import reads
+from launch_linter.resolve.xml_safe import read_regular_file
+
+MAX_PARAM_FILE_BYTES = 512 * 1024
+MAX_PARAMS = 5000
+"""Parameters kept per file or per YAML text: what a real node is given is far less."""
+MAX_CACHED = 512
+ROS2_SECTION = "ros__parameters"
+_CONTROLLER_TYPE = re.compile(r"^[A-Za-z_][\w]*/[A-Za-z_][\w]*$")
+
+_cache: dict[str, tuple[Any, str | None]] = {}
+
+
+_FLAT_LINE = re.compile(r"^([A-Za-z_~][\w/~]*)[ \t]*:[ \t]+(?:'([^']*)'|\"([^\"\\]*)\"|"
+                        r"([^\s#'\"\[\]{}&*!|>%@`][^#]*?))[ \t]*(?:#.*)?$")
+
+
+_BOOLEANS = {word: str(truth).lower() for truth, words in (
+    (True, ("yes", "true", "on")), (False, ("no", "false", "off")))
+    for base in words for word in (base, base.capitalize(), base.upper())}
+"""YAML 1.1's booleans, as PyYAML reads them (written ``true``/``false``, like launch)."""
+_NULLS = ("~", "null", "Null", "NULL")
+
+
+def flat_yaml(text: str) -> dict[str, str] | None:
+    """A YAML text that is only ``key: scalar`` lines (comments and blank lines aside),
+    read without PyYAML; None when it is anything more (nesting, lists, anchors, tags)."""
+    found: dict[str, str] = {}
+    # A mapping indented as a whole (``<rosparam>`` text inside an element) is still flat.
+    for line in textwrap.dedent(text).splitlines():
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#") or stripped == "---":
+            continue
+        match = _FLAT_LINE.match(line)
+        if match is None or len(found) >= MAX_PARAMS:
+            return None
+        quoted = match.group(4) is None
+        value = next(v for v in match.groups()[1:] if v is not None).strip()
+        if not quoted and value in _NULLS:
+            continue
+        found[match.group(1)] = value if quoted else _BOOLEANS.get(value, value)
+    return found
+
+
+def parse_yaml(text: str) -> tuple[Any, str | None]:
+    """The YAML document (plain data, no tags run), or None and why it is not read.
+    Without PyYAML, flat ``key: value`` text is still read (the same in both cases)."""
+    try:
+        # Imported on use: PyYAML stays out of the standard-library core.
+        import yaml  # type: ignore[import-untyped]
+    except ImportError:
+        flat = flat_yaml(text)
+        if flat is not None:
+            return flat, None
+        return None, "reading YAML parameters needs PyYAML"
+    if len(text) > MAX_PARAM_FILE_BYTES:
+        return None, f"YAML larger than {MAX_PARAM_FILE_BYTES} bytes"
+    try:
+        return yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)), None
+    except (yaml.YAMLError, RecursionError, ValueError) as exc:
+        return None, f"not readable YAML: {str(exc)[:200]}"
+
+
+def read_yaml_file(path: str) -> tuple[Any, str | None]:
+    """A parameter file's document, parsed once per version of the file (bounded)."""
+    status: os.stat_result | None
+    try:
+        status = os.stat(path)
+        key = f"{path}\x00{status.st_mtime_ns}\x00{status.st_size}"
+    except OSError:
+        status, key = None, path
+    # A document reused is a read of the file for the results cache (resolve.reads); one
+    # changed in the last moments is read again, since its time cannot vouch for it.
+    if key in _cache and (status is None or not reads.too_recent(status)):
+        if status is None:
+            reads.note_path(path)
+        else:
+            reads.note_status(path, status)
+        return _cache[key]
+    try:
+        data = read_regular_file(path, MAX_PARAM_FILE_BYTES + 1)
+    except OSError as exc:
+        found: tuple[Any, str | None] = (None, f"parameter file {path!r} not read: "
+                                               f"{exc.strerror or exc}")
+    else:
+        if len(data) > MAX_PARAM_FILE_BYTES:
+            found = (None, f"parameter file {path!r} is larger than {MAX_PARAM_FILE_BYTES} bytes")
+        else:
+            document, reason = parse_yaml(data.decode("utf-8", "replace"))
+            found = (document, None if reason is None else f"parameter file {path!r}: {reason}")
+    if len(_cache) >= MAX_CACHED:
+        _cache.clear()
+    _cache[key] = found
+    return found
+
+
+def scalar_text(value: object) -> str | None:
+    """A YAML scalar as launch would pass it on; None for lists, maps and nulls."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    if isinstance(value, str):
+        return value
+    return None
+
+
+def flatten(data: object, separator: str, prefix: str = "") -> list[tuple[str, str]]:
+    """``data``'s scalar leaves as ``(a<sep>b<sep>c, value)``, iteratively and bounded."""
+    out: list[tuple[str, str]] = []
+    stack: list[tuple[str, object]] = [(prefix, data)]
+    while stack and len(out) < MAX_PARAMS:
+        name, value = stack.pop()
+        if isinstance(value, dict):
+            items = list(value.items())
+            for key, child in reversed(items[:MAX_PARAMS]):
+                stack.append((f"{name}{separator}{key}" if name else str(key), child))
+            continue
+        text = scalar_text(value)
+        if text is not None and name:
+            out.append((name, text))
+    return out
+
+
+def ros1_params(document: object, namespace: str = "") -> list[tuple[str, str]]:
+    """A ``<rosparam>`` document's parameters, names joined with ``/`` under ``namespace``."""
+    prefix = namespace.strip("/")
+    return [(key.lstrip("~"), value) for key, value in flatten(document, "/", prefix)]
+
+
+def _section_pattern(key: str) -> re.Pattern[str]:
+    """A ROS 2 parameter file's node key as a pattern over ``/namespace/name``."""
+    text = "/" + key.strip("/")
+    pattern = re.escape(text).replace(r"\*\*", ".*").replace(r"\*", "[^/]*")
+    return re.compile(f"^{pattern}$")
+
+
+def ros2_sections(document: object) -> list[tuple[str, dict[Any, Any]]]:
+    """Each ``ros__parameters`` mapping of a ROS 2 parameter file with its node key (nested
+    namespace keys joined with ``/``)."""
+    out: list[tuple[str, dict[Any, Any]]] = []
+    stack: list[tuple[str, object]] = [("", document)]
+    while stack and len(out) < MAX_PARAMS:
+        path, value = stack.pop()
+        if not isinstance(value, dict):
+            continue
+        for key, child in value.items():
+            if key == ROS2_SECTION and isinstance(child, dict):
+                out.append((path, child))
+            elif isinstance(child, dict) and path.count("/") < 16:
+                stack.append((f"{path}/{key}", child))
+    return out
+
+
+def ros2_file_params(document: object, name: str | None, namespace: str | None
+                     ) -> list[tuple[str, str]]:
+    """The parameters a ROS 2 parameter file gives the node ``namespace/name`` (``/**``,
+    wildcards and the node's own key; later sections win, as in rcl)."""
+    full = "/" + "/".join(p for p in ((namespace or "").strip("/"), name or "") if p)
+    out: list[tuple[str, str]] = []
+    for key, section in ros2_sections(document):
+        pattern = _section_pattern(key)
+        plain = key.strip("/")
+        if pattern.match(full) or (name is not None and plain == name):
+            out.extend(flatten(section, "."))
+    return out
+
+
+def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[NodeRecord]:
+    """The ros2_control controllers a controller manager is given (``NAME.type`` set to a
+    controller type), each with its own section of the same parameter files."""
+    out: list[NodeRecord] = []
+    for key, value in manager.params:
+        if not key.endswith(".type") or not _CONTROLLER_TYPE.match(value):
+            continue
+        controller = key[:-len(".type")]
+        if "." in controller:
+            continue
+        params: list[tuple[str, str]] = []
+        for document in documents:
+            params.extend(ros2_file_params(document, controller, manager.namespace))
+        out.append(replace(manager, executable="", name=controller, kind="controller",
+                           plugin=value, params=tuple(params)))
+    return out
+
+
+def ros1_controllers(global_params: Iterable[tuple[str, str]], manager: NodeRecord
+                     ) -> list[NodeRecord]:
+    """ROS 1 controllers loaded as parameters (``NAME/type`` set to a controller type),
+    with the parameters under ``NAME/``, recorded at the controller manager's node."""
+    pairs = list(global_params)
+    out: list[NodeRecord] = []
+    for key, value in pairs:
+        if not key.endswith("/type") or not _CONTROLLER_TYPE.match(value):
+            continue
+        controller = key[:-len("/type")]
+        head = controller + "/"
+        params = tuple((k[len(head):], v) for k, v in pairs if k.startswith(head))
+        out.append(replace(manager, executable="", name=controller.rsplit("/", 1)[-1],
+                           kind="controller", plugin=value, params=params))
+    return out

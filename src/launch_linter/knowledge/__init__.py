@@ -1,0 +1,328 @@
+"""The knowledge base of tf publishers and frame consumers: data (``tf_publishers.json``,
+each entry citing the source file it was read from) and the model that reads it.
+
+An entry says, for a node (ROS 1 ``pkg``/``type``, ROS 2 ``package``/``executable``, a
+composable node's plugin), a Gazebo plugin (``filename``) or a ros2_control controller
+(``type``), which tf edges it publishes as templates over its parameters (with the node's
+defaults), which parameters switch publishing off (``when``), and which frames it looks up.
+Users add entries of the same form in a JSON file named by the configuration's
+``knowledge`` key (docs/knowledge.md). Standard library only: the core reads it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+from dataclasses import dataclass
+from typing import Any, Mapping, Sequence
+
+FORMAT = 1
+DATA_FILE = "tf_publishers.json"
+KINDS = ("node", "gazebo_plugin", "controller")
+ROLES = ("localization", "odometry", "sensor", "robot")
+MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
+ANY = "*"
+_PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
+_COMMIT = re.compile(r"^[0-9a-f]{40}$")
+
+SCALARS = (str, bool, int, float)
+
+
+class KnowledgeError(ValueError):
+    """A knowledge file that does not follow the format; the message names the entry."""
+
+
+@dataclass(frozen=True)
+class Source:
+    """Where an entry's facts were read: the repository, package, file, branch or tag,
+    commit and lines."""
+
+    repository: str
+    package: str
+    file: str
+    ref: str
+    commit: str
+    lines: str
+
+
+@dataclass(frozen=True)
+class EdgeSpec:
+    """One edge a publisher sends: parent and child as templates (``{param}`` replaced by
+    the parameter's value), the conditions under which it does (``param`` true,
+    ``!param`` false, ``a|b`` either true, ``a==b`` equal values), and its REP 105 role."""
+
+    parent: str
+    child: str
+    when: tuple[str, ...]
+    role: str
+
+
+@dataclass(frozen=True)
+class Prefix:
+    """A parameter that prefixes every published frame (``tf_frame_prefix``); when
+    ``empty_means_namespace``, an empty prefix is the node's namespace."""
+
+    param: str
+    enabled_by: str | None
+    empty_means_namespace: bool
+
+
+@dataclass(frozen=True)
+class Entry:
+    """What the knowledge base knows of one program."""
+
+    id: str
+    kind: str
+    ros: tuple[int, ...]
+    packages: tuple[str, ...]
+    executables: tuple[str, ...]
+    plugins: tuple[str, ...]
+    filenames: tuple[str, ...]
+    types: tuple[str, ...]
+    parameters: tuple[tuple[str, object], ...]
+    """Each parameter the entry reads, with its default (None: no static default)."""
+    publishes: tuple[EdgeSpec, ...]
+    looks_up: tuple[str, ...]
+    camera_frames: tuple[str, ...]
+    strips_leading_slash: bool
+    publishes_joint_states: bool
+    publishes_description: bool
+    parameters_elsewhere: str | None
+    unsure_defaults: tuple[str, ...]
+    """Parameters whose default is not assumed when the node's parameter file is unread
+    (robot_localization's ``world_frame``: the dual-filter setup sets it there)."""
+    prefix: Prefix | None
+    sources: tuple[Source, ...]
+    origin: str
+
+    def default(self, name: str) -> object:
+        for key, value in self.parameters:
+            if key == name:
+                return value
+        return None
+
+    def names(self, program: str, executable: str) -> bool:
+        return program in self.packages and (ANY in self.executables
+                                              or executable in self.executables)
+
+
+class KnowledgeBase:
+    """Entries by what they match; a user's entry overrides a bundled one of its id."""
+
+    def __init__(self, entries: Sequence[Entry]) -> None:
+        self.entries = tuple(entries)
+
+    def node(self, package: str, executable: str, ros: int | None = None) -> Entry | None:
+        """The entry of a launched node, preferring the one of ``ros``."""
+        found = [e for e in self.entries if e.kind == "node" and e.names(package, executable)]
+        return _of_version(found, ros)
+
+    def plugin(self, kind: str, name: str, ros: int | None = None) -> Entry | None:
+        """The entry of a composable node's plugin (``node``), a Gazebo plugin's
+        filename (``gazebo_plugin``) or a controller's type (``controller``)."""
+        found: list[Entry] = []
+        for entry in self.entries:
+            names = (entry.plugins if kind == "node" else entry.filenames
+                     if kind == "gazebo_plugin" else entry.types)
+            if entry.kind in (kind, "node") and any(_glob(n, name) for n in names):
+                found.append(entry)
+        return _of_version(found, ros)
+
+    def extended(self, other: KnowledgeBase) -> KnowledgeBase:
+        """This base with ``other``'s entries first, replacing entries of the same id."""
+        ids = {e.id for e in other.entries}
+        return KnowledgeBase(other.entries + tuple(e for e in self.entries if e.id not in ids))
+
+
+def _glob(pattern: str, name: str) -> bool:
+    if pattern.endswith(ANY):
+        return name.startswith(pattern[:-1])
+    return pattern == name
+
+
+def _of_version(found: list[Entry], ros: int | None) -> Entry | None:
+    if not found:
+        return None
+    for entry in found:
+        if ros is None or ros in entry.ros:
+            return entry
+    return found[0]
+
+
+def _text(value: Any, where: str) -> str:
+    if not isinstance(value, str) or not value:
+        raise KnowledgeError(f"{where} must be a non-empty string")
+    return value
+
+
+def _texts(value: Any, where: str) -> tuple[str, ...]:
+    if value is None:
+        return ()
+    if not isinstance(value, list):
+        raise KnowledgeError(f"{where} must be a list of strings")
+    return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
+
+
+def _source(data: Any, where: str) -> Source:
+    if not isinstance(data, dict):
+        raise KnowledgeError(f"{where} must be an object")
+    fields = {key: _text(data.get(key), f"{where}.{key}")
+              for key in ("repository", "package", "file", "ref", "commit", "lines")}
+    if not _COMMIT.match(fields["commit"]):
+        raise KnowledgeError(f"{where}.commit must be a 40-digit commit hash")
+    return Source(**fields)
+
+
+def _placeholders(template: str) -> list[str]:
+    return _PLACEHOLDER.findall(template)
+
+
+def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:
+    if not isinstance(data, dict):
+        raise KnowledgeError(f"{where} must be an object")
+    role = _text(data.get("role"), f"{where}.role")
+    if role not in ROLES:
+        raise KnowledgeError(f"{where}.role must be one of {', '.join(ROLES)}")
+    edge = EdgeSpec(_text(data.get("parent"), f"{where}.parent"),
+                    _text(data.get("child"), f"{where}.child"),
+                    _texts(data.get("when"), f"{where}.when"), role)
+    named = _placeholders(edge.parent) + _placeholders(edge.child)
+    for condition in edge.when:
+        named.extend(re.split(r"==|\|", condition.lstrip("!")))
+    for name in named:
+        if name not in params:
+            raise KnowledgeError(f"{where} names parameter {name!r}, which the entry "
+                                 f"does not declare in 'parameters'")
+    return edge
+
+
+def parse_entry(data: Any, where: str, origin: str) -> Entry:
+    """One entry, checked against the format; :class:`KnowledgeError` names the fault."""
+    if not isinstance(data, dict):
+        raise KnowledgeError(f"{where} must be an object")
+    entry_id = _text(data.get("id"), f"{where}.id")
+    where = f"{where} ({entry_id})"
+    kind = _text(data.get("kind"), f"{where}.kind")
+    if kind not in KINDS:
+        raise KnowledgeError(f"{where}.kind must be one of {', '.join(KINDS)}")
+    ros = data.get("ros")
+    if not isinstance(ros, list) or not ros or any(v not in (1, 2) for v in ros):
+        raise KnowledgeError(f"{where}.ros must be a list of 1 and/or 2")
+    match = data.get("match")
+    if not isinstance(match, dict):
+        raise KnowledgeError(f"{where}.match must be an object")
+    package = match.get("package")
+    packages = (() if package is None else (_text(package, f"{where}.match.package"),)) + \
+        _texts(match.get("also_packages"), f"{where}.match.also_packages")
+    executables = _texts(match.get("executables"), f"{where}.match.executables")
+    plugins = _texts(match.get("plugins"), f"{where}.match.plugins")
+    filenames = _texts(match.get("filenames"), f"{where}.match.filenames")
+    types = _texts(match.get("types"), f"{where}.match.types")
+    if kind == "node" and not (packages and executables):
+        raise KnowledgeError(f"{where}.match needs package and executables for a node")
+    if kind == "gazebo_plugin" and not filenames:
+        raise KnowledgeError(f"{where}.match needs filenames for a Gazebo plugin")
+    if kind == "controller" and not types:
+        raise KnowledgeError(f"{where}.match needs types for a controller")
+    params = data.get("parameters", {})
+    if not isinstance(params, dict) or not all(
+            value is None or isinstance(value, SCALARS) for value in params.values()):
+        raise KnowledgeError(f"{where}.parameters must map names to defaults "
+                             f"(string, number, boolean or null)")
+    publishes = data.get("publishes", [])
+    if not isinstance(publishes, list):
+        raise KnowledgeError(f"{where}.publishes must be a list")
+    edges = tuple(_edge(item, f"{where}.publishes[{i}]", params)
+                  for i, item in enumerate(publishes))
+    looks_up = _texts(data.get("looks_up"), f"{where}.looks_up")
+    cameras = _texts(data.get("camera_frames"), f"{where}.camera_frames")
+    for template in looks_up + cameras:
+        for name in _placeholders(template):
+            if name not in params:
+                raise KnowledgeError(f"{where} names parameter {name!r}, which the entry "
+                                     f"does not declare in 'parameters'")
+    prefix_data = data.get("prefix")
+    prefix = None
+    if prefix_data is not None:
+        if not isinstance(prefix_data, dict):
+            raise KnowledgeError(f"{where}.prefix must be an object")
+        enabled = prefix_data.get("enabled_by")
+        prefix = Prefix(_text(prefix_data.get("param"), f"{where}.prefix.param"),
+                        None if enabled is None else _text(enabled, f"{where}.prefix.enabled_by"),
+                        bool(prefix_data.get("empty_means_namespace", False)))
+    sources = data.get("sources")
+    if not isinstance(sources, list) or not sources:
+        raise KnowledgeError(f"{where}.sources must list where the entry was read")
+    elsewhere = data.get("parameters_elsewhere")
+    return Entry(
+        id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
+        plugins=plugins, filenames=filenames, types=types,
+        parameters=tuple(params.items()), publishes=edges, looks_up=looks_up,
+        camera_frames=cameras,
+        strips_leading_slash=bool(data.get("strips_leading_slash", False)),
+        publishes_joint_states=bool(data.get("publishes_joint_states", False)),
+        publishes_description=bool(data.get("publishes_description", False)),
+        parameters_elsewhere=None if elsewhere is None else _text(
+            elsewhere, f"{where}.parameters_elsewhere"),
+        unsure_defaults=_texts(data.get("unsure_defaults"), f"{where}.unsure_defaults"),
+        prefix=prefix,
+        sources=tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources)),
+        origin=origin,
+    )
+
+
+def parse(data: Any, origin: str) -> KnowledgeBase:
+    """A knowledge base from a decoded JSON document (``{"format": 1, "entries": [...]}``)."""
+    if not isinstance(data, dict) or data.get("format") != FORMAT:
+        raise KnowledgeError(f"{origin}: not a knowledge file of format {FORMAT}")
+    entries = data.get("entries")
+    if not isinstance(entries, list):
+        raise KnowledgeError(f"{origin}: 'entries' must be a list")
+    parsed = [parse_entry(item, f"{origin}: entries[{i}]", origin)
+              for i, item in enumerate(entries)]
+    ids = [e.id for e in parsed]
+    duplicates = sorted({i for i in ids if ids.count(i) > 1})
+    if duplicates:
+        raise KnowledgeError(f"{origin}: entry ids used twice: {', '.join(duplicates)}")
+    return KnowledgeBase(parsed)
+
+
+def load(path: str) -> KnowledgeBase:
+    """A knowledge file (JSON, bounded in size)."""
+    try:
+        with open(path, "rb") as stream:
+            raw = stream.read(MAX_KNOWLEDGE_BYTES + 1)
+    except OSError as exc:
+        raise KnowledgeError(f"{path}: cannot be read: {exc.strerror}") from None
+    if len(raw) > MAX_KNOWLEDGE_BYTES:
+        raise KnowledgeError(f"{path}: larger than {MAX_KNOWLEDGE_BYTES} bytes")
+    try:
+        data = json.loads(raw.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError) as exc:
+        raise KnowledgeError(f"{path}: not JSON: {exc}") from None
+    return parse(data, path)
+
+
+_BUNDLED: list[KnowledgeBase] = []
+
+
+def bundled_path() -> str | None:
+    """The bundled data file, None where the modules run without their files (the
+    standalone linter, which installs its embedded copy with :func:`use_bundled`)."""
+    here = globals().get("__file__")
+    return None if here is None else os.path.join(os.path.dirname(os.path.abspath(here)),
+                                                  DATA_FILE)
+
+
+def use_bundled(text: str) -> None:
+    """Make ``text`` (the data file's JSON) the bundled knowledge base."""
+    _BUNDLED[:] = [parse(json.loads(text), "bundled")]
+
+
+def bundled() -> KnowledgeBase:
+    """The knowledge base shipped with the linter (read once per process)."""
+    if not _BUNDLED:
+        path = bundled_path()
+        _BUNDLED.append(load(path) if path is not None else KnowledgeBase(()))
+    return _BUNDLED[0]

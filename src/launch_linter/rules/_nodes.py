@@ -1,0 +1,159 @@
+"""The tf tree's node side, as the knowledge base tells it: the edges each launched node
+publishes (with the node and its launch line as source), the frames nodes look up, the
+nodes the knowledge base does not know (which make the tree *open*), and whether anything
+publishes ``/joint_states`` (without which robot_state_publisher sends no movable joint)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from launch_linter.knowledge import Entry, KnowledgeBase
+from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
+from launch_linter.model.diagnostic import Location
+from launch_linter.model.launch import LaunchTree
+from launch_linter.model.robot import NodeRecord
+from launch_linter.rules._api import Finding, RuleContext
+
+STATIC_PUBLISHERS = frozenset({"tf", "tf2_ros"})
+"""Packages whose static_transform_publisher the tree already reads as launch edges."""
+_PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
+JOINT_STATE_CONTROLLERS = ("joint_state_broadcaster/JointStateBroadcaster",
+                           "joint_state_controller/JointStateController")
+
+
+@dataclass(frozen=True)
+class NodeEdge:
+    """An edge a launched node publishes at run time."""
+
+    parent: str
+    child: str
+    role: str
+    node: NodeRecord
+    entry: Entry
+    assumed: bool = False
+    """The edge rests on defaults that an unread parameter file of the node may change:
+    enough for a warning measured on real files, never for an error."""
+
+    @property
+    def location(self) -> Location:
+        return Location(self.node.path, self.node.line, self.node.column)
+
+    def describe(self) -> str:
+        shown = self.node.plugin or f"{self.node.package}/{self.node.executable}"
+        return f"node {shown} ({self.node.path}:{self.node.line})"
+
+
+@dataclass(frozen=True)
+class Lookup:
+    """A frame a node looks up by a parameter."""
+
+    frame: str
+    param: str
+    node: NodeRecord
+    entry: Entry
+
+
+@dataclass(frozen=True)
+class NodeView:
+    edges: tuple[NodeEdge, ...]
+    lookups: tuple[Lookup, ...]
+    cameras: tuple[Lookup, ...]
+    unknown: tuple[NodeRecord, ...]
+    """Nodes the knowledge base does not know: each may publish tf."""
+    unsure: tuple[NodeRecord, ...]
+    """Known nodes whose edges the linter cannot work out (parameters not read)."""
+    joint_states: bool
+    """Whether a node the knowledge base knows publishes ``/joint_states``."""
+
+    @property
+    def open_because(self) -> NodeRecord | None:
+        """The first node that makes the tree open, None when it is closed."""
+        return (self.unknown + self.unsure)[0] if self.unknown or self.unsure else None
+
+
+def entry_of(context: RuleContext, node: NodeRecord) -> Entry | None:
+    base = context.knowledge
+    if node.kind == "controller":
+        return base.plugin("controller", node.plugin or "", node.ros)
+    if node.plugin is not None:
+        return base.plugin(node.kind, node.plugin, node.ros)
+    return base.node(node.package, node.executable, node.ros)
+
+
+def _view(context: RuleContext) -> NodeView:
+    edges: list[NodeEdge] = []
+    lookups: list[Lookup] = []
+    cameras: list[Lookup] = []
+    unknown: list[NodeRecord] = []
+    unsure: list[NodeRecord] = []
+    joint_states = False
+    for node in context.tree.nodes:
+        if node.package in STATIC_PUBLISHERS and node.kind == "node":
+            continue
+        if node.kind == "controller" and node.plugin in JOINT_STATE_CONTROLLERS:
+            joint_states = True
+            continue
+        entry = entry_of(context, node)
+        if entry is None:
+            unknown.append(node)
+            continue
+        joint_states = joint_states or entry.publishes_joint_states
+        sure, maybe = published(entry, node)
+        if maybe or any(e.signature is None for e in sure):
+            unsure.append(node)
+        proven = {e.signature for e in sure if e.signature is not None}
+        assumed = published(entry, node, assume=True)[0] if node.unread else sure
+        for edge in assumed:
+            if edge.signature is not None:
+                edges.append(NodeEdge(edge.signature[0], edge.signature[1], edge.role,
+                                      node, entry, edge.signature not in proven))
+        lookups.extend(Lookup(f, p, node, entry)
+                       for f, p in frames_named(entry, node, entry.looks_up))
+        cameras.extend(Lookup(f, p, node, entry)
+                       for f, p in frames_named(entry, node, entry.camera_frames))
+    return NodeView(tuple(edges), tuple(lookups), tuple(cameras), tuple(unknown),
+                    tuple(unsure), joint_states)
+
+
+def nodes_of(context: RuleContext) -> NodeView:
+    """The node side of the tree, worked out once for the rules run on one tree."""
+    return context.derived(_view)
+
+
+__all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of", "view_of"]
+
+
+def rivals(a: NodeEdge, b: NodeEdge) -> bool:
+    """Whether two node edges come from two publishers that run together: not one launch
+    element included twice (that is ``dup_name``'s), not under exclusive conditions, and
+    not one program under two different conditions (the usual alternatives, such as
+    nav2's composed and separate amcl, whose conditions the linter may not relate)."""
+    if a.location == b.location or a.node.condition.excludes(b.node.condition):
+        return False
+    return a.entry.id != b.entry.id or a.node.condition == b.node.condition
+
+
+def finding_at_node(node: NodeRecord, message: str,
+                    related: tuple[Location, ...] = ()) -> Finding:
+    """A finding at a launched node's element (or at the controller manager's, for a
+    controller; at the Gazebo plugin's, for a plugin)."""
+    return Finding(path=node.path, line=node.line, column=node.column, message=message,
+                   node=node.name, related=related)
+
+
+def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
+    """The node side of one tree, outside a rule run (``transforms``, ``graph``)."""
+    return nodes_of(RuleContext(tree, knowledge=knowledge))
+
+
+def frame_parameters(entry: Entry) -> list[str]:
+    """The parameters of ``entry`` that name frames: those in its published edges, its
+    lookups and its camera frames (a parameter used only as a switch is not one)."""
+    names: list[str] = []
+    templates = [t for spec in entry.publishes for t in (spec.parent, spec.child)]
+    for template in templates + list(entry.looks_up) + list(entry.camera_frames):
+        for name in _PLACEHOLDER.findall(template):
+            if name not in names:
+                names.append(name)
+    return names

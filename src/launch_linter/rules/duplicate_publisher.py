@@ -1,0 +1,102 @@
+"""An edge of the tf tree that a node publishes and something else publishes too.
+
+## What it does
+Reports a parent → child edge that a launched node publishes at run time (by the knowledge
+base, docs/knowledge.md: its parameters and defaults) when another source of the same tree
+publishes it as well: a second node (amcl and a robot_localization filter both sending
+`map → odom`; diff_drive_controller or Gazebo's diff-drive plugin and an EKF both sending
+`odom → base_link`), a joint of the robot description that robot_state_publisher sends (a
+camera driver with `publish_tf` on beside the URDF's camera joints), or a static transform
+for an edge that is not REP 105's localization or odometry edge (those are
+`frame_authority`'s). The finding is at the second publisher; sources under mutually
+exclusive conditions are not compared.
+
+## Why is this bad?
+tf2 keeps one transform per edge: two publishers overwrite each other and the frame jumps
+between their values (for odometry, between two estimates of the robot's pose). The usual
+fix is to switch one off (`publish_tf: false`, `enable_odom_tf: false`, the driver's
+`publish_tf:=false`) or to remove the duplicate joint.
+
+## Example
+```xml
+<launch>
+  <node pkg="amcl" type="amcl" name="amcl"/>
+  <node pkg="robot_localization" type="ekf_localization_node" name="ekf_map">
+    <param name="world_frame" value="map"/>
+  </node>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="amcl" type="amcl" name="amcl">
+    <param name="tf_broadcast" value="false"/>
+  </node>
+  <node pkg="robot_localization" type="ekf_localization_node" name="ekf_map">
+    <param name="world_frame" value="map"/>
+  </node>
+</launch>
+```
+
+## Known problems
+A node's parameter file that the linter cannot read leaves its defaults assumed (except
+where the knowledge base says they are not); a node the knowledge base does not know is
+not seen publishing anything.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import replace
+
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of, rivals
+from launch_linter.rules._tree import edges_of, finding_on
+
+ID = "duplicate_publisher"
+CATEGORY = Category.TF
+SEVERITY = Severity.WARNING
+
+AUTHORITIES = ("localization", "odometry")
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    view = nodes_of(context)
+    if not view.edges:
+        return
+    by_edge: dict[tuple[str, str], list[NodeEdge]] = {}
+    for node_edge in view.edges:
+        key = (node_edge.parent, node_edge.child)
+        earlier = by_edge.setdefault(key, [])
+        other = next((e for e in earlier if rivals(e, node_edge)), None)
+        earlier.append(node_edge)
+        if other is not None:
+            yield finding_at_node(
+                node_edge.node,
+                f"'{node_edge.parent}' -> '{node_edge.child}' is published by "
+                f"{node_edge.describe()} and by {other.describe()}; tf2 keeps whichever "
+                f"arrives last: switch one of them off",
+                (other.location,),
+            )
+    for edge in edges_of(context):
+        for node_edge in by_edge.get((edge.parent, edge.child), ()):
+            if node_edge.node.condition.excludes(edge.condition):
+                continue
+            if edge.joint is not None:
+                yield finding_at_node(
+                    node_edge.node,
+                    f"'{edge.parent}' -> '{edge.child}' is published by "
+                    f"{node_edge.describe()} and by the {edge.describe()} that "
+                    f"robot_state_publisher sends; tf2 keeps whichever arrives last",
+                    (edge.location,),
+                )
+            elif node_edge.role not in AUTHORITIES:
+                found = finding_on(
+                    edge,
+                    f"static '{edge.parent}' -> '{edge.child}' while {node_edge.describe()} "
+                    f"publishes it; tf2 keeps whichever arrives last",
+                )
+                yield replace(found, related=(node_edge.location,))
+            break

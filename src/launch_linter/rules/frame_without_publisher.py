@@ -1,0 +1,93 @@
+"""A frame a node looks up that nothing in the tree publishes.
+
+## What it does
+Reports a frame that a launched node looks up by a frame parameter (a costmap's
+`global_frame` and `robot_base_frame`, amcl's `base_frame_id`, a filter's `base_link_frame`,
+… as the knowledge base names them, docs/knowledge.md) when no edge of the tree has that
+frame at either end: no static transform, no URDF joint that robot_state_publisher sends,
+no edge a node publishes. The finding is at the node.
+
+This needs a *closed* tree: one where every launched node is in the knowledge base and its
+edges are known. When a node the knowledge base does not know is launched (it may publish
+tf), or a known node's edges cannot be worked out, the rule says so once per tree, naming
+that node and the frames it could not account for.
+
+## Why is this bad?
+A lookup of a frame that nobody publishes fails forever: the costmap waits for its
+transform, amcl drops every scan, the filter ignores its inputs. Usually the parameter
+names a frame the robot calls otherwise (`base_link` against `base_footprint`), or the
+node that publishes it was left out.
+
+## Example
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="base"
+        args="0 0 0 0 0 0 odom base_footprint"/>
+  <node pkg="gmapping" type="slam_gmapping" name="gmapping"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node pkg="tf2_ros" type="static_transform_publisher" name="base"
+        args="0 0 0 0 0 0 odom base_footprint"/>
+  <node pkg="gmapping" type="slam_gmapping" name="gmapping">
+    <param name="base_frame" value="base_footprint"/>
+  </node>
+</launch>
+```
+
+## Known problems
+Reported at info. A launch tree is not the whole running system: on the corpus, all 84
+findings (judged sample in docs/evaluation/tree_judged.jsonl) were mapping launch files
+(hector_mapping, gmapping, amcl) meant to run beside a robot bringup started on its own,
+which publishes the frame. Trees with a node the knowledge base does not know are open.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
+from launch_linter.rules._nodes import finding_at_node, nodes_of
+from launch_linter.rules._tree import edges_of
+
+ID = "frame_without_publisher"
+CATEGORY = Category.TF
+SEVERITY = Severity.INFO
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    view = nodes_of(context)
+    if not view.lookups:
+        return
+    frames: set[str] = set()
+    for edge in edges_of(context):
+        frames.update((edge.parent, edge.child))
+    for node_edge in view.edges:
+        frames.update((node_edge.parent, node_edge.child))
+    missing = [lookup for lookup in view.lookups if lookup.frame.lstrip("/") not in frames]
+    if not missing:
+        return
+    opener = view.open_because
+    if opener is not None:
+        shown = opener.plugin or f"{opener.package}/{opener.executable}"
+        names = sorted({lookup.frame for lookup in missing})
+        listed = ", ".join(summarised_lazily((f"'{n}'" for n in names), len(names)))
+        first = missing[0].node
+        yield finding_at_node(
+            first,
+            f"no publisher in this tree gives {listed}, which nodes look up; the tree is "
+            f"open: {shown} ({opener.path}:{opener.line}) may publish tf (the knowledge "
+            f"base does not tell its edges)",
+        )
+        return
+    for lookup in missing:
+        program = lookup.node.plugin or f"{lookup.node.package}/{lookup.node.executable}"
+        yield finding_at_node(
+            lookup.node,
+            f"{program} looks up '{lookup.frame}' (parameter '{lookup.param}'), which no "
+            f"static transform, URDF joint or node of this tree publishes",
+        )

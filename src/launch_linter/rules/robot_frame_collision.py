@@ -1,0 +1,111 @@
+"""Several robots in one tree whose robot_state_publishers publish the same frames.
+
+## What it does
+Reports a launch tree with two or more robot descriptions published by
+`robot_state_publisher`s of different namespaces (the same robot launch file included once
+per robot, or two robots' files) when the descriptions share frame names and no
+`frame_prefix` (ROS 2) or `tf_prefix` (ROS 1) separates them. The finding is at the
+second description's launch element and names the shared frames.
+
+## Why is this bad?
+A namespace renames topics, not tf frames: every robot_state_publisher sends
+`base_link → laser` under the same names, so the robots' frames overwrite each other in
+the one tf tree and every robot is drawn (and localized) wherever the last message put it.
+Give each robot its own frame prefix (`frame_prefix: robot1/`), or prefix the links in
+the description.
+
+## Example
+```xml
+<launch>
+  <group ns="robot1">
+    <param name="robot_description" value="&lt;robot name='r'&gt;
+      &lt;joint name='j' type='fixed'&gt;&lt;parent link='base_link'/&gt;
+      &lt;child link='laser'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  </group>
+  <group ns="robot2">
+    <param name="robot_description" value="&lt;robot name='r'&gt;
+      &lt;joint name='j' type='fixed'&gt;&lt;parent link='base_link'/&gt;
+      &lt;child link='laser'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  </group>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <group ns="robot1">
+    <param name="tf_prefix" value="robot1"/>
+    <param name="robot_description" value="&lt;robot name='r'&gt;
+      &lt;joint name='j' type='fixed'&gt;&lt;parent link='base_link'/&gt;
+      &lt;child link='laser'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  </group>
+  <group ns="robot2">
+    <param name="tf_prefix" value="robot2"/>
+    <param name="robot_description" value="&lt;robot name='r'&gt;
+      &lt;joint name='j' type='fixed'&gt;&lt;parent link='base_link'/&gt;
+      &lt;child link='laser'/&gt;&lt;/joint&gt;&lt;/robot&gt;"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  </group>
+</launch>
+```
+
+## Known problems
+Reported at info: judged on too few real findings to set a warning (one, in husky's
+multi-robot simulation, which runs each robot under its own master through
+multimaster_launch: not a collision; docs/evaluation/tree_judged.jsonl). A prefix whose
+value the linter cannot resolve counts as a prefix (the rule stays silent).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.robot import DescriptionSource, RobotJoint
+from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
+
+ID = "robot_frame_collision"
+CATEGORY = Category.TF
+SEVERITY = Severity.INFO
+PUBLISHER = "robot_state_publisher"
+PREFIXES = ("frame_prefix", "tf_prefix")
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    tree = context.tree
+    publishers = [n for n in tree.nodes if n.package == PUBLISHER]
+    namespaces = {n.namespace for n in publishers}
+    if len(publishers) < 2 or len(namespaces) < 2 or None in namespaces:
+        return
+    if any(n.given(p) not in (None, "") for n in publishers for p in PREFIXES):
+        return
+    by_source: dict[int, list[RobotJoint]] = {}
+    sources: list[DescriptionSource] = []
+    for joint in tree.joints:
+        # Joints come per description entry: the same entry (an include per robot) twice
+        # is two entries of equal value, told apart by position.
+        if not sources or sources[-1] is not joint.source:
+            sources.append(joint.source)
+        by_source.setdefault(len(sources) - 1, []).append(joint)
+    if len(by_source) < 2:
+        return
+    first = {j.child: j for j in by_source[0] if j.child is not None}
+    for index in range(1, len(by_source)):
+        shared = [j for j in by_source[index] if j.child in first
+                  and not j.condition.excludes(first[j.child].condition)]
+        if not shared:
+            continue
+        source = sources[index]
+        names = sorted({j.child for j in shared if j.child is not None})
+        listed = ", ".join(summarised_lazily((f"'{n}'" for n in names), len(names)))
+        yield Finding(
+            path=source.path, line=source.line, column=source.column,
+            message=(f"this robot description publishes {listed} under the same names as "
+                     f"the one at {sources[0].path}:{sources[0].line}, from "
+                     f"robot_state_publishers in different namespaces; tf frames are not "
+                     f"namespaced: give each robot a frame_prefix (ROS 2) or tf_prefix "
+                     f"(ROS 1)"),
+        )

@@ -1,0 +1,122 @@
+"""The bundled knowledge base: every entry well formed and citing its source; entries
+evaluated against a node's parameters."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from launch_linter.knowledge import KnowledgeError, bundled, bundled_path, load, parse
+from launch_linter.knowledge.publish import published
+from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
+
+REQUIRED = ("amcl", "nav2_amcl", "robot_localization_filter", "navsat_transform",
+            "slam_toolbox", "gmapping", "cartographer", "hector_mapping", "rtabmap",
+            "move_base", "nav2_costmap", "map_server", "nav2_map_server",
+            "diff_drive_controller", "diff_drive_controller_ros1", "gazebo_ros_diff_drive",
+            "gz_sim_diff_drive", "gazebo_ros_camera", "joint_state_publisher",
+            "robot_state_publisher", "realsense2_camera", "openni2_camera",
+            "freenect_camera", "mavros")
+
+
+def test_every_bundled_entry_is_well_formed_and_cites_a_read_source() -> None:
+    path = bundled_path()
+    assert path is not None
+    base = load(path)
+    ids = {entry.id for entry in base.entries}
+    assert set(REQUIRED) <= ids
+    for entry in base.entries:
+        assert entry.sources, entry.id
+        for source in entry.sources:
+            assert len(source.commit) == 40 and source.file and source.repository, entry.id
+
+
+@pytest.mark.parametrize("fault, message", [
+    ({"sources": []}, "sources"),
+    ({"sources": [{"repository": "a/b", "package": "p", "file": "f", "ref": "r",
+                   "commit": "abc", "lines": "1"}]}, "commit"),
+    ({"publishes": [{"parent": "{nope}", "child": "x", "role": "odometry"}]}, "nope"),
+    ({"kind": "robot"}, "kind"),
+])
+def test_a_malformed_entry_is_refused_with_its_fault(fault: dict[str, object],
+                                                      message: str) -> None:
+    data = json.loads(Path(str(bundled_path())).read_text())
+    entry = dict(data["entries"][0], **fault)
+    with pytest.raises(KnowledgeError, match=message):
+        parse({"format": 1, "entries": [entry]}, "user.json")
+
+
+def node(package: str, executable: str, *params: tuple[str, str], unread: tuple[str, ...] = (),
+         ros: int = 1) -> NodeRecord:
+    return NodeRecord("a.launch", 3, 1, package, executable, "n", params, unread=unread,
+                      ros=ros)
+
+
+def edges(record: NodeRecord) -> list[tuple[str | None, str | None]]:
+    entry = bundled().node(record.package, record.executable, record.ros)
+    assert entry is not None
+    return [(e.parent, e.child) for e in published(entry, record)[0]]
+
+
+def test_defaults_parameters_and_switches() -> None:
+    assert edges(node("amcl", "amcl")) == [("map", "odom")]
+    assert edges(node("amcl", "amcl", ("odom_frame_id", "odom_combined"))) == [
+        ("map", "odom_combined")]
+    assert edges(node("amcl", "amcl", ("tf_broadcast", "false"))) == []
+    assert edges(node("gmapping", "slam_gmapping", ("transform_publish_period", "0"))) == []
+
+
+def test_robot_localization_publishes_by_its_world_frame() -> None:
+    assert edges(node("robot_localization", "ekf_localization_node")) == [("odom", "base_link")]
+    assert edges(node("robot_localization", "ekf_localization_node",
+                      ("world_frame", "map"))) == [("map", "odom")]
+
+
+def test_unread_parameters_leave_defaults_unknown() -> None:
+    record = node("robot_localization", "ekf_node", unread=("file not read",), ros=2)
+    entry = bundled().node("robot_localization", "ekf_node", 2)
+    assert entry is not None
+    sure, maybe = published(entry, record)
+    assert sure == [] and len(maybe) == 2
+    unknown = node("amcl", "amcl", ("odom_frame_id", UNKNOWN_VALUE))
+    assert edges(unknown) == [("map", None)]
+
+
+def test_a_controller_prefixes_its_frames_with_its_namespace() -> None:
+    entry = bundled().plugin("controller", "diff_drive_controller/DiffDriveController", 2)
+    assert entry is not None and entry.id == "diff_drive_controller"
+    record = NodeRecord("a.py", 1, 1, "controller_manager", "", "ddc", (), kind="controller",
+                        plugin="diff_drive_controller/DiffDriveController",
+                        namespace="/robot1", ros=2)
+    assert [(e.parent, e.child) for e in published(entry, record)[0]] == [
+        ("robot1/odom", "robot1/base_link")]
+
+
+def test_a_user_file_extends_and_overrides_the_bundled_base(tmp_path: Path) -> None:
+    mine = {"format": 1, "entries": [{
+        "id": "my_odometry", "kind": "node", "ros": [1],
+        "match": {"package": "my_base", "executables": ["driver"]},
+        "parameters": {"odom_frame": "odom"},
+        "publishes": [{"parent": "{odom_frame}", "child": "base_link", "role": "odometry"}],
+        "sources": [{"repository": "me/my_base", "package": "my_base", "file": "src/d.cpp",
+                     "ref": "main", "commit": "0" * 40, "lines": "10"}]}]}
+    path = tmp_path / "k.json"
+    path.write_text(json.dumps(mine))
+    base = bundled().extended(load(str(path)))
+    entry = base.node("my_base", "driver", 1)
+    assert entry is not None and entry.origin == str(path)
+    assert base.node("amcl", "amcl", 1) is not None
+
+
+def test_the_configuration_names_knowledge_files(tmp_path: Path) -> None:
+    from launch_linter.commands.common import UsageError
+    from launch_linter.commands.options import load_knowledge
+    from launch_linter.workspace.config import parse_config
+
+    config = parse_config({"knowledge": "k.json"}, str(tmp_path / ".launch-linter.toml"))
+    assert config.knowledge == (str(tmp_path / "k.json"),)
+    (tmp_path / "k.json").write_text('{"format": 1, "entries": [{"id": "x"}]}')
+    with pytest.raises(UsageError, match="kind"):
+        load_knowledge(config.knowledge)

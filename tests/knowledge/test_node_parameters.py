@@ -1,0 +1,101 @@
+"""Node parameters read statically: ROS 1 <param>/<rosparam> (text, files, beside the
+node), ROS 2 dictionaries and parameter files, controllers in controller-manager files."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import yaml
+from hypothesis import given
+from hypothesis import strategies as st
+
+from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.frontends.params import flat_yaml, scalar_text
+from launch_linter.model.robot import NodeRecord
+
+
+def nodes(tmp_path: Path, files: dict[str, str], root: str) -> list[NodeRecord]:
+    for name, text in files.items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    result = lint_paths([str(tmp_path / root)], LintOptions(package_paths=()))
+    return [n for tree in result.trees for n in tree.nodes]
+
+
+def test_ros1_params_rosparam_text_files_and_names_beside_the_node(tmp_path: Path) -> None:
+    files = {
+        "amcl.yaml": "odom_frame_id: odom_a\nbase_frame_id: base_footprint\n",
+        "a.launch": (
+            '<launch><param name="amcl/global_frame_id" value="world"/>'
+            '<rosparam file="$(dirname)/amcl.yaml" command="load" ns="amcl"/>'
+            '<node pkg="amcl" type="amcl" name="amcl"><param name="tf_broadcast" value="true"/>'
+            '<rosparam>use_map_topic: true</rosparam></node>'
+            '<node pkg="move_base" type="move_base" name="move_base">'
+            '<rosparam file="$(dirname)/amcl.yaml" command="load" ns="local_costmap"/></node>'
+            '</launch>'),
+    }
+    found = {n.package: n for n in nodes(tmp_path, files, "a.launch")}
+    amcl = found["amcl"]
+    assert amcl.given("tf_broadcast") == "true"
+    assert amcl.given("use_map_topic") == "true"
+    assert amcl.given("global_frame_id") == "world"
+    assert amcl.given("odom_frame_id") == "odom_a"
+    assert found["move_base"].given("local_costmap/odom_frame_id") == "odom_a"
+    assert amcl.unread == ()
+
+
+def test_ros1_an_unresolved_parameter_file_leaves_the_node_unread(tmp_path: Path) -> None:
+    files = {"a.launch": ('<launch><arg name="f"/><node pkg="amcl" type="amcl" name="amcl">'
+                          '<rosparam file="$(arg f)" command="load"/></node></launch>')}
+    (amcl,) = nodes(tmp_path, files, "a.launch")
+    assert amcl.unread
+
+
+def test_ros2_dictionaries_and_parameter_files_by_node_key(tmp_path: Path) -> None:
+    files = {
+        "ekf.yaml": ("/**:\n  ros__parameters:\n    use_sim_time: true\n"
+                     "ekf_filter_node:\n  ros__parameters:\n    world_frame: map\n"
+                     "other:\n  ros__parameters:\n    world_frame: odom\n"),
+        "a.launch.py": (
+            "import os\nfrom launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+            "def generate_launch_description():\n"
+            "    here = os.path.dirname(__file__)\n"
+            "    return LaunchDescription([Node(package='robot_localization', "
+            "executable='ekf_node', name='ekf_filter_node', "
+            "parameters=[os.path.join(here, 'ekf.yaml'), {'publish_tf': False}])])\n"),
+    }
+    (ekf,) = nodes(tmp_path, files, "a.launch.py")
+    assert ekf.given("world_frame") == "map"
+    assert ekf.given("use_sim_time") == "true"
+    assert ekf.given("publish_tf") == "false"
+    assert ekf.unread == ()
+
+
+def test_ros2_controllers_of_a_controller_manager_file(tmp_path: Path) -> None:
+    files = {
+        "controllers.yaml": (
+            "controller_manager:\n  ros__parameters:\n    diff_cont:\n"
+            "      type: diff_drive_controller/DiffDriveController\n"
+            "diff_cont:\n  ros__parameters:\n    enable_odom_tf: false\n"),
+        "a.launch.xml": ('<launch><node pkg="controller_manager" exec="ros2_control_node" '
+                         'name="controller_manager">'
+                         '<param from="$(dirname)/controllers.yaml"/></node></launch>'),
+    }
+    found = nodes(tmp_path, files, "a.launch.xml")
+    (controller,) = [n for n in found if n.kind == "controller"]
+    assert controller.plugin == "diff_drive_controller/DiffDriveController"
+    assert controller.given("enable_odom_tf") == "false"
+
+
+@given(st.dictionaries(st.from_regex(r"[a-z_][a-z0-9_]{0,8}", fullmatch=True),
+                       st.from_regex(r"[a-z_/][a-z0-9_/]{0,10}", fullmatch=True),
+                       max_size=8))
+def test_flat_yaml_reads_flat_text_as_pyyaml_does(pairs: dict[str, str]) -> None:
+    text = "".join(f"{key}: {value}  # note\n" for key, value in pairs.items())
+    expected = {k: scalar_text(v) for k, v in (yaml.safe_load(text) or {}).items()}
+    assert flat_yaml(text) == expected
+
+
+def test_nested_yaml_is_not_flat() -> None:
+    assert flat_yaml("a:\n  b: 1\n") is None
+    assert flat_yaml("a: [1, 2]\n") is None
+    assert flat_yaml("a: &x 1\n") is None

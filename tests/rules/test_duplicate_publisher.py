@@ -1,0 +1,70 @@
+"""duplicate_publisher: an edge a node publishes and another source publishes too. The
+cases are small copies of faults users reported (each with its fixed version)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Callable, List, Tuple
+
+from launch_linter.engine import LintOptions, lint_paths
+
+RULE = "duplicate_publisher"
+Lint = Callable[..., List[Tuple[str, int]]]
+
+
+def test_amcl_and_a_map_frame_ekf_both_publish_map_odom(lint: Lint) -> None:
+    fault = ('<launch><node pkg="amcl" type="amcl" name="amcl"/>\n'
+             '<node pkg="robot_localization" type="ekf_localization_node" name="ekf_map">'
+             '<param name="world_frame" value="map"/></node></launch>')
+    assert lint(fault, RULE) == [(RULE, 2)]
+    fixed = fault.replace('name="amcl"/>', 'name="amcl"><param name="tf_broadcast" '
+                                           'value="false"/></node>')
+    assert lint(fixed, RULE) == []
+
+
+def test_an_odometry_ekf_beside_diff_drive_controller(tmp_path: Path) -> None:
+    """ROS 2: the controller's YAML keeps enable_odom_tf on while an EKF publishes
+    odom -> base_link too."""
+    (tmp_path / "controllers.yaml").write_text(
+        "controller_manager:\n  ros__parameters:\n    diff_cont:\n"
+        "      type: diff_drive_controller/DiffDriveController\n"
+        "diff_cont:\n  ros__parameters:\n    base_frame_id: base_link\n")
+    launch = tmp_path / "bringup.launch.xml"
+    launch.write_text(
+        '<launch>\n<node pkg="controller_manager" exec="ros2_control_node" '
+        'name="controller_manager"><param from="$(dirname)/controllers.yaml"/></node>\n'
+        '<node pkg="robot_localization" exec="ekf_node" name="ekf_filter_node">'
+        '<param name="world_frame" value="odom"/></node>\n</launch>\n')
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(launch)], options).diagnostics
+    assert [(d.rule, d.line) for d in found] == [(RULE, 3)]
+    (tmp_path / "controllers.yaml").write_text(
+        "controller_manager:\n  ros__parameters:\n    diff_cont:\n"
+        "      type: diff_drive_controller/DiffDriveController\n"
+        "diff_cont:\n  ros__parameters:\n    enable_odom_tf: false\n")
+    assert lint_paths([str(launch)], options).diagnostics == ()
+
+
+def test_a_camera_driver_publishing_the_urdf_camera_joints(lint: Lint) -> None:
+    urdf = ("&lt;robot name='r'&gt;&lt;joint name='cam' type='fixed'&gt;&lt;parent "
+            "link='camera_link'/&gt;&lt;child link='camera_depth_frame'/&gt;&lt;/joint&gt;"
+            "&lt;/robot&gt;")
+    fault = (f'<launch><param name="robot_description" value="{urdf}"/>'
+             '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>\n'
+             '<node pkg="realsense2_camera" type="realsense2_camera_node" name="camera"/>'
+             '</launch>')
+    assert lint(fault, RULE) == [(RULE, 2)]
+    fixed = fault.replace('name="camera"/>', 'name="camera"><param name="publish_tf" '
+                                             'value="false"/></node>')
+    assert lint(fixed, RULE) == []
+
+
+def test_exclusive_conditions_and_unknown_parameters_are_silent(lint: Lint) -> None:
+    xml = ('<launch><arg name="sim" default="true"/>'
+           '<node if="$(arg sim)" pkg="amcl" type="amcl" name="amcl"/>\n'
+           '<node unless="$(arg sim)" pkg="robot_localization" type="ekf_localization_node" '
+           'name="ekf_map"><param name="world_frame" value="map"/></node>'
+           '<arg name="f" default="$(env NOPE)"/>'
+           '<node pkg="slam_toolbox" type="async_slam_toolbox_node" name="slam">'
+           '<param name="odom_frame" value="$(arg f)"/></node></launch>')
+    assert lint(xml, RULE) == []
