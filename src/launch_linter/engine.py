@@ -6,11 +6,8 @@ import contextlib
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import List, Optional, Tuple
+from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
-from launch_linter.frontends.dispatch import load_tree
-from launch_linter.frontends.robot.describe import RobotCache
-from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
@@ -18,6 +15,8 @@ from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.resolve import reads
+from launch_linter.results_cache import Linted, ResultsCache, lint_with_cache
 from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
 from launch_linter.rules._profiles import STUDY_SEVERITY
@@ -42,6 +41,12 @@ from launch_linter.workspace.packages import (
     package_ros_version,
 )
 from launch_linter.workspace.paths import shown_path
+
+if TYPE_CHECKING:
+    # Imported where a file is linted (``_front_ends``): a run whose results are all in
+    # the results cache reads no launch file, and the front-ends are a fifth of start-up.
+    from launch_linter.frontends.robot.describe import RobotCache
+    from launch_linter.frontends.ros1 import LoadOptions
 
 __all__ = [
     "AUTO_JOBS",
@@ -134,7 +139,13 @@ PACKAGE_DECIDES_SUFFIXES = (".xml",)
 content: ROS 1 files left in migrated ament packages are common."""
 
 
-def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None]) -> int | None:
+Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
+"""Each ``package.xml``'s ROS version, with what reading it read (``reads.remembered``)."""
+Packages = Dict[Tuple[str, ...], Tuple[PackageIndex, reads.ReadLog]]
+"""Package indexes by roots, and by folder (see ``load_options_for``)."""
+
+
+def ros_version_for(path: str, options: LintOptions, cache: Versions) -> int | None:
     """``--ros`` if given; else, for ``*.xml`` files, the nearest package's build type."""
     if options.ros is not None:
         return options.ros
@@ -143,17 +154,16 @@ def ros_version_for(path: str, options: LintOptions, cache: dict[str, int | None
     manifest = nearest_package_xml(path)
     if manifest is None:
         return None
-    if manifest not in cache:
-        cache[manifest] = package_ros_version(manifest)
-    return cache[manifest]
+    return reads.remembered(cache, manifest, lambda: package_ros_version(manifest))
 
 
 def load_options_for(
-    item: InputFile, options: LintOptions, cache: dict[tuple[str, ...], PackageIndex],
-    robots: RobotCache | None = None, versions: dict[str, int | None] | None = None,
+    item: InputFile, options: LintOptions, cache: Packages,
+    robots: RobotCache | None = None, versions: Versions | None = None,
 ) -> LoadOptions:
     """How to load ``item``. ``cache``, ``robots`` and ``versions`` (each package.xml's ROS
-    version) are shared by the files of one run, so each is worked out once."""
+    version) are shared by the files of one run, so each is worked out once (and each
+    file depends on what working it out read: ``reads.remembered``)."""
     if options.package_paths is not None:
         index = _package_index(tuple(options.package_paths), cache, options.environment)
     else:
@@ -161,15 +171,14 @@ def load_options_for(
         # done once per folder (the real one, for a symbolic link), whose index the cache
         # keeps under ("", folder), a key that no tuple of roots (absolute paths) can equal.
         path = os.path.realpath(item.path) if os.path.islink(item.path) else item.path
-        folder = ("", os.path.dirname(path))
-        found = cache.get(folder)
-        if found is None:
-            found = _package_index(tuple(default_package_roots(path)), cache,
-                                   options.environment)
-            cache[folder] = found
-        index = found
+        index = reads.remembered(
+            cache, ("", os.path.dirname(path)),
+            lambda: _package_index(tuple(default_package_roots(path)), cache,
+                                   options.environment))
     # The target distribution is the ROS_DISTRO of the machine that runs the files.
     distro = {"ROS_DISTRO": options.ros_distro} if options.ros_distro else {}
+    from launch_linter.frontends.ros1 import LoadOptions
+
     return LoadOptions(
         args=options.args,
         env={**distro, **options.env},
@@ -181,17 +190,13 @@ def load_options_for(
     )
 
 
-def _package_index(
-    roots: tuple[str, ...], cache: dict[tuple[str, ...], PackageIndex],
-    environment: tuple[Place, ...] = (),
-) -> PackageIndex:
+def _package_index(roots: tuple[str, ...], cache: Packages,
+                   environment: tuple[Place, ...] = ()) -> PackageIndex:
     """The index of ``roots``, then their workspace's build output, then ``environment``
     (the order of ``workspace.environment``)."""
     places = (*built_beside(roots), *environment)
     key = (*roots, *(f"{kind}:{folder}" for kind, folder in places))
-    if key not in cache:
-        cache[key] = PackageIndex(list(roots), places)
-    return cache[key]
+    return reads.remembered(cache, key, lambda: PackageIndex(list(roots), places))
 
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
@@ -250,8 +255,9 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
-"""A file's tree (None when not kept and there is no directive), record and diagnostics."""
+Recorded = Tuple[Linted, Optional[reads.ReadLog]]
+"""A file linted (its tree, None when not kept and there is no directive; its record and
+diagnostics) and, when asked, the log of what linting it read."""
 
 
 def _directives_only(tree: LaunchTree) -> LaunchTree | None:
@@ -284,10 +290,11 @@ MAX_INTERNAL_MESSAGE = 500
 
 
 def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
-              cache: dict[tuple[str, ...], PackageIndex],
-              robots: RobotCache | None = None,
-              versions: dict[str, int | None] | None = None) -> Linted:
+              cache: Packages, robots: RobotCache | None = None,
+              versions: Versions | None = None) -> Linted:
     """One file, isolated: an unexpected exception costs this file only."""
+    from launch_linter.frontends.dispatch import load_tree
+
     try:
         tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
         return tree, _file_record(item, tree), check_tree(tree, rules, options)
@@ -311,29 +318,40 @@ def _line_of(exc: BaseException, path: str) -> int:
 def _lint_chunk(
     items: Sequence[InputFile],
     options: LintOptions,
-    cache: dict[tuple[str, ...], PackageIndex],
+    cache: Packages,
     keep_trees: bool = True,
-) -> list[Linted]:
+    record: bool = False,
+) -> list[Recorded]:
+    """Lint ``items``; with ``record``, each with the log of what linting it read."""
     rules = selected_rules(options)
     # One cache per chunk: a description included by many launch files is expanded once.
+    from launch_linter.frontends.robot.describe import RobotCache
+
     robots = RobotCache()
-    versions: dict[str, int | None] = {}
-    out: list[Linted] = []
+    versions: Versions = {}
+    out: list[Recorded] = []
     for item in items:
-        tree, record, found = _lint_one(item, options, rules, cache, robots, versions)
+        log = None
+        if record:
+            with reads.recording() as log:
+                tree, found_record, found = _lint_one(
+                    item, options, rules, cache, robots, versions)
+        else:
+            tree, found_record, found = _lint_one(item, options, rules, cache, robots, versions)
         # Without the trees a run's memory stays flat: each is dropped once its rules ran.
-        out.append((tree if keep_trees or tree is None else _directives_only(tree), record, found))
+        kept = tree if keep_trees or tree is None else _directives_only(tree)
+        out.append(((kept, found_record, found), log))
     return out
 
 
-_worker_packages: dict[tuple[str, ...], PackageIndex] = {}
+_worker_packages: Packages = {}
 """Package indexes of one worker process, so that its chunks share each ``$(find)`` crawl."""
 
 
 def _lint_chunk_in_worker(
-    items: Sequence[InputFile], options: LintOptions, keep_trees: bool
-) -> list[Linted]:
-    return _lint_chunk(items, options, _worker_packages, keep_trees)
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool, record: bool
+) -> list[Recorded]:
+    return _lint_chunk(items, options, _worker_packages, keep_trees, record)
 
 
 def auto_jobs(files: int) -> int:
@@ -352,8 +370,9 @@ def auto_jobs(files: int) -> int:
 
 
 def _lint_parallel(
-    inputs: Sequence[InputFile], options: LintOptions, jobs: int, keep_trees: bool
-) -> list[Linted]:
+    inputs: Sequence[InputFile], options: LintOptions, jobs: int, keep_trees: bool,
+    record: bool = False,
+) -> list[Recorded]:
     # Imported here: the process pool (with multiprocessing and logging) costs start-up
     # time that a serial run does not need.
     from concurrent.futures import ProcessPoolExecutor
@@ -363,9 +382,9 @@ def _lint_parallel(
     # so the result is the serial one.
     size = max(1, -(-len(inputs) // (jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
-    results: list[list[Linted] | None] = [None] * len(chunks)
+    results: list[list[Recorded] | None] = [None] * len(chunks)
     with ProcessPoolExecutor(max_workers=min(jobs, len(chunks))) as pool:
-        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees)
+        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees, record)
                    for chunk in chunks]
         for index, future in enumerate(futures):
             with contextlib.suppress(BrokenProcessPool):
@@ -374,8 +393,8 @@ def _lint_parallel(
     # takes the unfinished chunks with it: their files are tried again one by one.
     lost = [item for index, chunk in enumerate(chunks) if results[index] is None
             for item in chunk]
-    retried = _lint_alone(lost, options, keep_trees) if lost else {}
-    out: list[Linted] = []
+    retried = _lint_alone(lost, options, keep_trees, record) if lost else {}
+    out: list[Recorded] = []
     for index, chunk in enumerate(chunks):
         result = results[index]
         out.extend(result if result is not None else [retried[item.path] for item in chunk])
@@ -383,26 +402,27 @@ def _lint_parallel(
 
 
 def _lint_alone(
-    items: Sequence[InputFile], options: LintOptions, keep_trees: bool
-) -> dict[str, Linted]:
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool, record: bool
+) -> dict[str, Recorded]:
     """Each file in a one-worker pool, in order, so that the file being linted when the
     worker dies is the one that killed it: it is reported, the files after it go on."""
     from concurrent.futures import ProcessPoolExecutor
     from concurrent.futures.process import BrokenProcessPool
 
-    out: dict[str, Linted] = {}
+    out: dict[str, Recorded] = {}
     remaining = list(items)
     while remaining:
         again: list[InputFile] = []
         with ProcessPoolExecutor(max_workers=1) as pool:
-            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees)
+            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees, record)
                        for item in remaining]
             for position, item in enumerate(remaining):
                 future = futures[position]
                 try:
                     out[item.path] = future.result()[0]
                 except BrokenProcessPool:
-                    out[item.path] = _internal_error(item, "the worker process linting it died")
+                    out[item.path] = (
+                        _internal_error(item, "the worker process linting it died"), None)
                     again = remaining[position + 1:]
                     break
         remaining = again
@@ -423,15 +443,25 @@ def _with_located_fixes(
 
 
 def lint_files(
-    inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool = True
+    inputs: Sequence[InputFile], options: LintOptions, keep_trees: bool = True,
+    cache: ResultsCache | None = None,
 ) -> LintResult:
     """Lint ``inputs``; with ``keep_trees=False`` the result has no trees (``check`` needs
-    only the records and diagnostics, and memory then stays flat with the file count)."""
-    jobs = options.jobs if options.jobs != AUTO_JOBS else auto_jobs(len(inputs))
-    if jobs > 1 and len(inputs) > 1:
-        linted = _lint_parallel(inputs, options, jobs, keep_trees)
-    else:
-        linted = _lint_chunk(inputs, options, {}, keep_trees)
+    only the records and diagnostics, and memory then stays flat with the file count).
+
+    ``cache``: reuse the results it holds that still hold, and put the others in it (its
+    ``save`` is the caller's); used only with ``keep_trees=False``, as it keeps no trees.
+    The result is the same as without it."""
+    record = cache is not None and not keep_trees
+
+    def lint(items: list[InputFile]) -> list[Recorded]:
+        # Jobs are chosen for the files that are linted, not those the cache answers.
+        jobs = options.jobs if options.jobs != AUTO_JOBS else auto_jobs(len(items))
+        if jobs > 1 and len(items) > 1:
+            return _lint_parallel(items, options, jobs, keep_trees, record)
+        return _lint_chunk(items, options, {}, keep_trees, record)
+
+    linted = lint_with_cache(inputs, cache if record else None, lint)
     trees = tuple(tree for tree, _, _ in linted if tree is not None)
     records = tuple(record for _, record, _ in linted)
     unique = _deduplicated(found for _, _, found in linted)
@@ -469,15 +499,20 @@ def lint_paths(
     exclusions: Exclusions | None = None,
     ignored: Ignored | None = None,
     keep_trees: bool = True,
+    cache: ResultsCache | None = None,
 ) -> LintResult:
     """Lint files and folders; every input file appears once in ``files``.
 
     ``exclusions`` are the folder-walk exclusions (default: VCS and hidden folders) and
     ``ignored`` an extra predicate on paths found in folders (the CLI's ``.gitignore``);
-    ``keep_trees=False`` drops each file's tree once its rules ran (see ``lint_files``)."""
-    return lint_files(
-        discover(paths, exclusions, ignored), options or LintOptions(), keep_trees
-    )
+    ``keep_trees=False`` drops each file's tree once its rules ran, and ``cache`` reuses
+    results (see ``lint_files``)."""
+    if cache is None or keep_trees:
+        inputs = discover(paths, exclusions, ignored)
+    else:
+        inputs = cache.discovered([list(paths), exclusions or Exclusions(), ignored is not None],
+                                  lambda: discover(paths, exclusions, ignored))
+    return lint_files(inputs, options or LintOptions(), keep_trees, cache)
 
 
 def lint_text(
@@ -494,8 +529,9 @@ def lint_bytes(
     exist): read in the encoding they declare, fixes located in these very bytes."""
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
-    cache: dict[tuple[str, ...], PackageIndex] = {}
-    load = load_options_for(item, options, cache)
+    load = load_options_for(item, options, {})
+    from launch_linter.frontends.dispatch import load_tree
+
     tree = load_tree(item.path, load, data)
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(

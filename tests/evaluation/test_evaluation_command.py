@@ -4,10 +4,9 @@ import csv
 import importlib.util
 import shutil
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import pytest
-from conftest import MakeDb
 from evaluation_helpers import launch, node
 
 from launch_linter.cli import main
@@ -17,6 +16,9 @@ from launch_linter.evaluation.evaluate import EvaluationError, evaluate
 from launch_linter.evaluation.history import FIXED, PERSISTING
 from launch_linter.evaluation.table import CSV_COLUMNS, TOTAL_STUDY_RULES
 from launch_linter.evaluation.thresholds import render_thresholds
+
+if TYPE_CHECKING:  # the folder's conftest (tests/conftest.py is ``conftest`` too at run time)
+    from conftest import MakeDb
 
 MAP_ODOM = node("map_to_odom", "0 0 0 0 0 0 map odom 100")
 MAP_ODOM_ROTATED = node("map_to_odom", "0 0 0 0.5 0 0 map odom 100")

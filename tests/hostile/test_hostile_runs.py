@@ -15,6 +15,7 @@ from hostile_cases import GOOD
 
 from launch_linter import engine
 from launch_linter.cli import main
+from launch_linter.frontends import dispatch
 from launch_linter.mining.gitread import commit_count
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.launch import FileStatus
@@ -32,14 +33,14 @@ def _folder(tmp_path: Path, names: list[str]) -> Path:
 def test_an_exception_costs_its_file_only(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
                                           jobs: int) -> None:
     folder = _folder(tmp_path, [f"f{i}.launch" for i in range(6)] + ["boom.launch"])
-    real = engine.load_tree
+    real = dispatch.load_tree
 
     def failing(path: str, options: Any, data: bytes | None = None) -> Any:
         if path.endswith("boom.launch"):
             raise ZeroDivisionError("boom")
         return real(path, options, data)
 
-    monkeypatch.setattr(engine, "load_tree", failing)
+    monkeypatch.setattr(dispatch, "load_tree", failing)  # engine imports it per file
     result = engine.lint_paths([str(folder)], engine.LintOptions(jobs=jobs))
     statuses = {Path(f.path).name: f.status for f in result.files}
     assert statuses.pop("boom.launch") is FileStatus.INTERNAL_ERROR
@@ -53,14 +54,14 @@ def test_a_dead_worker_costs_its_file_only(tmp_path: Path,
                                            monkeypatch: pytest.MonkeyPatch) -> None:
     # Workers are forked: they inherit the patched loader, which kills the worker on one file.
     folder = _folder(tmp_path, [f"f{i}.launch" for i in range(8)] + ["kill.launch"])
-    real = engine.load_tree
+    real = dispatch.load_tree
 
     def killing(path: str, options: Any, data: bytes | None = None) -> Any:
         if path.endswith("kill.launch"):
             os._exit(9)
         return real(path, options, data)
 
-    monkeypatch.setattr(engine, "load_tree", killing)
+    monkeypatch.setattr(dispatch, "load_tree", killing)
     result = engine.lint_paths([str(folder)], engine.LintOptions(jobs=2))
     statuses = {Path(f.path).name: f.status for f in result.files}
     assert statuses.pop("kill.launch") is FileStatus.INTERNAL_ERROR

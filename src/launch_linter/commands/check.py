@@ -18,11 +18,13 @@ from launch_linter.commands.options import (
     lint_options,
     load_config,
     read_stdin,
+    results_cache,
 )
 from launch_linter.engine import LintOptions, LintResult, lint_bytes
 from launch_linter.model.diagnostic import Severity
 from launch_linter.report import json_report, text
 from launch_linter.report.escape import printable
+from launch_linter.results_cache import ResultsCache
 from launch_linter.workspace.config import Config
 from launch_linter.workspace.paths import shown_path
 
@@ -81,6 +83,14 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
     )
     check.add_argument(
         "--diff", action="store_true", help="print the fixes as a diff and change no file"
+    )
+    check.add_argument(
+        "--no-cache", action="store_true", help="neither read nor write the results cache"
+    )
+    check.add_argument(
+        "--cache-dir", metavar="DIR",
+        help="the results cache's folder (default: .launch-linter-cache beside the "
+        "configuration file, else in the current folder)",
     )
     check.set_defaults(handler=run)
 
@@ -177,15 +187,17 @@ def _write_bytes(ns: argparse.Namespace, data: bytes) -> None:
         raise UsageError(f"cannot write {ns.output_file}: {exc.strerror or exc}") from None
 
 
-def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config) -> LintResult:
-    """``--fix``: apply fixes, lint again until nothing changes; the last result."""
+def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config,
+               cache: ResultsCache | None) -> LintResult:
+    """``--fix``: apply fixes, lint again until nothing changes; the last result. A fixed
+    file changed, so the next pass lints it (and the roots that include it) again."""
     from launch_linter import fix as fixing
     from launch_linter.report import diff
 
     last: list[LintResult] = []
 
     def lint() -> tuple[object, ...]:
-        last.append(lint_command_paths(ns, options, config))
+        last.append(lint_command_paths(ns, options, config, keep_trees=False, cache=cache))
         return last[-1].diagnostics
 
     notes: list[tuple[str, str]] = []
@@ -280,19 +292,26 @@ def run(ns: argparse.Namespace) -> int:
         raise UsageError("--unsafe-fixes needs --fix or --diff")
     if "-" in ns.paths and (ns.fix or ns.diff):
         return _fix_stdin(ns, options)
-    if ns.diff:
-        return _print_diff(ns, lint_command_paths(ns, options, config))
-    fixing = ns.fix
-    result = (
-        _run_fixes(ns, options, config)
-        if fixing
-        else lint_command_paths(ns, options, config, keep_trees=False)
-    )
+    # The cache serves --fix and --diff too: it holds findings before their fixes are
+    # located, and locating reads each file as it is now, which the cache has just
+    # found unchanged since the findings were made.
+    cache = results_cache(ns, options, config)
+    try:
+        if ns.diff:
+            return _print_diff(ns, lint_command_paths(ns, options, config, False, cache))
+        result = (
+            _run_fixes(ns, options, config, cache)
+            if ns.fix
+            else lint_command_paths(ns, options, config, keep_trees=False, cache=cache)
+        )
+    finally:
+        if cache is not None:
+            cache.save()
     _refuse_output_over_input(ns, result)
     _write_output(ns, _report(ns, result, options, config))
     if (ns.format or "text") == "text" and not ns.quiet:
         sys.stderr.write(text.summary(result.diagnostics, len(result.files)) + "\n")
-        hint = text.fix_hint(result.diagnostics) if not fixing else None
+        hint = text.fix_hint(result.diagnostics) if not ns.fix else None
         if hint is not None:
             sys.stderr.write(hint + "\n")
     return _status(ns, result, config)

@@ -7,12 +7,14 @@ import argparse
 import os
 import sys
 
+from launch_linter import __version__
 from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
 from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_bytes, lint_paths
 from launch_linter.knowledge import KnowledgeBase, KnowledgeError, bundled, load
 from launch_linter.model.beliefs import BeliefSet
+from launch_linter.results_cache import ResultsCache, results_cache_folder
 from launch_linter.rules._profiles import PROFILES
 from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
 from launch_linter.workspace.discovery import Exclusions, Ignored
@@ -132,6 +134,8 @@ def load_beliefs(spec: str | None, min_z: float) -> BeliefSet:
 
 
 STDIN_NAME = "stdin.launch"
+NO_CACHE_VARIABLE = "LAUNCH_LINTER_NO_CACHE"
+"""An environment variable that turns the results cache off, as ``--no-cache`` does."""
 
 
 def given_paths(ns: argparse.Namespace) -> list[str]:
@@ -255,10 +259,12 @@ def read_stdin() -> bytes:
 
 
 def lint_command_paths(
-    ns: argparse.Namespace, options: LintOptions, config: Config, keep_trees: bool = True
+    ns: argparse.Namespace, options: LintOptions, config: Config, keep_trees: bool = True,
+    cache: ResultsCache | None = None,
 ) -> LintResult:
     """Lint the command's paths (none: the current folder; ``-``: the text on stdin);
-    ``keep_trees=False`` for a command that needs only the records and diagnostics."""
+    ``keep_trees=False`` for a command that needs only the records and diagnostics, which
+    may then come from ``cache`` (text read from stdin never does)."""
     given = given_paths(ns)
     if "-" in given:
         if len(given) > 1:
@@ -269,9 +275,21 @@ def lint_command_paths(
     if missing:
         raise UsageError(f"{missing[0]}: no such file or folder")
     exclusions, ignored = discovery_for(ns, config)
-    result = lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees)
+    result = lint_paths(given or [os.curdir], options, exclusions, ignored, keep_trees, cache)
     if not result.files:
         # ruff's wording: an empty run is a silent success otherwise.
         sys.stderr.write("warning: No files found under the given path(s) (launch files: "
                          "*.launch, *.launch.xml/.py/.yaml, *_launch.py, .test, ...)\n")
     return result
+
+
+def results_cache(
+    ns: argparse.Namespace, options: LintOptions, config: Config
+) -> ResultsCache | None:
+    """The results cache for this run: None with ``--no-cache`` (or ``NO_CACHE_VARIABLE``
+    set to anything but "") or for text on stdin."""
+    if getattr(ns, "no_cache", False) or os.environ.get(NO_CACHE_VARIABLE) \
+            or "-" in given_paths(ns):
+        return None
+    folder = results_cache_folder(getattr(ns, "cache_dir", None) or config.cache_dir, config.path)
+    return ResultsCache.open(folder, __version__, options, config)

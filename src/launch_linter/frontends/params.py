@@ -16,6 +16,7 @@ from dataclasses import replace
 from typing import Any
 
 from launch_linter.model.robot import NodeRecord
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 
 MAX_PARAM_FILE_BYTES = 512 * 1024
@@ -80,12 +81,19 @@ def parse_yaml(text: str) -> tuple[Any, str | None]:
 
 def read_yaml_file(path: str) -> tuple[Any, str | None]:
     """A parameter file's document, parsed once per version of the file (bounded)."""
+    status: os.stat_result | None
     try:
         status = os.stat(path)
         key = f"{path}\x00{status.st_mtime_ns}\x00{status.st_size}"
     except OSError:
-        key = path
-    if key in _cache:
+        status, key = None, path
+    # A document reused is a read of the file for the results cache (resolve.reads); one
+    # changed in the last moments is read again, since its time cannot vouch for it.
+    if key in _cache and (status is None or not reads.too_recent(status)):
+        if status is None:
+            reads.note_path(path)
+        else:
+            reads.note_status(path, status)
         return _cache[key]
     try:
         data = read_regular_file(path, MAX_PARAM_FILE_BYTES + 1)

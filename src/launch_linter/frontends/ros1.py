@@ -47,6 +47,7 @@ from launch_linter.frontends.tokens import split_args
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import ALWAYS, DECODED_FIELDS, ArgForm, Condition, Field
+from launch_linter.resolve import reads
 from launch_linter.resolve.value import (
     Value,
     holes,
@@ -289,11 +290,11 @@ class Ros1Loader(Ros1Tags):
             os.path.abspath(path), os.path.join(os.path.dirname(including_file), path)
         ]
         for candidate in candidates:
-            if os.path.isfile(candidate):
+            if reads.is_file(candidate):
                 return os.path.abspath(candidate)
         # A folder, device or FIFO of that name is found, so that reading it says what it is.
         for candidate in candidates:
-            if os.path.exists(candidate):
+            if reads.exists(candidate):
                 return os.path.abspath(candidate)
         return None
 

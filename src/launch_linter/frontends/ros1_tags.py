@@ -37,6 +37,7 @@ from launch_linter.frontends.ros1_names import (
 )
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
+from launch_linter.resolve import reads
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element
 
@@ -335,7 +336,7 @@ class Ros1Tags(Ros1Base):
         file_text = None if file is None else resolved_text(file)
         if file is not None and (command_text or "load") == "load" and file_text is not None and (
             file_text == "" or _checkable_path(element.attrib.get("file", ""), file_text)
-        ) and not os.path.isfile(file_text):
+        ) and not reads.is_file(file_text):
             self._error(context, element,
                         f"error loading <rosparam> tag: file does not exist [{file_text}]")
         body: Value | None = (element.text,) if element.text else ()

@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 
 from launch_linter.frontends.ros2_actions import Action, DeclareArg, Group
+from launch_linter.resolve import reads
 from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.workspace.packages import Located, PackageIndex
 
@@ -51,11 +52,11 @@ def _locate(path: str, including_file: str) -> str | None:
         os.path.join(os.path.dirname(including_file), path), os.path.abspath(path),
     ]
     for candidate in candidates:
-        if os.path.isfile(candidate):
+        if reads.is_file(candidate):
             return os.path.abspath(candidate)
     # A folder, device or FIFO of that name is found, so that reading it says what it is.
     for candidate in candidates:
-        if os.path.exists(candidate):
+        if reads.exists(candidate):
             return os.path.abspath(candidate)
     return None
 

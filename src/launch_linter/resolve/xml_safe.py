@@ -19,6 +19,8 @@ from contextlib import contextmanager
 from typing import BinaryIO
 from xml.parsers import expat
 
+from launch_linter.resolve import reads
+
 MAX_BYTES = 8 * 1024 * 1024
 MAX_DEPTH = 200
 MAX_ELEMENTS = 200_000
@@ -53,6 +55,7 @@ def read_launch_bytes(path: str) -> bytes:
     if _UNSAVED:
         held = _UNSAVED.get(os.path.realpath(path))
         if held is not None:
+            reads.note_unsaved()  # a result that rests on no file's content is not kept
             return held[: MAX_BYTES + 1]
     return read_regular_file(path, MAX_BYTES + 1)
 
@@ -88,9 +91,9 @@ def _on_pseudo_file_system(path: str, device: int) -> bool:
     return not on_disk and os.path.realpath(path).startswith(_PSEUDO_FILE_SYSTEMS)
 
 
-def _open_descriptor(path: str) -> tuple[int, int]:
+def _open_descriptor(path: str) -> tuple[int, os.stat_result]:
     """A descriptor of the regular file ``path`` (see :func:`open_regular_file`) and the
-    file's size."""
+    file's status."""
     if _on_pseudo_file_system(path, os.stat(path).st_dev):
         raise NotRegularFile(path, "a kernel pseudo-file")
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
@@ -105,7 +108,7 @@ def _open_descriptor(path: str) -> tuple[int, int]:
     except BaseException:
         os.close(descriptor)
         raise
-    return descriptor, status.st_size
+    return descriptor, status
 
 
 def open_regular_file(path: str) -> BinaryIO:
@@ -123,8 +126,14 @@ def read_regular_file(path: str, limit: int) -> bytes:
     """At most ``limit`` bytes of the regular file ``path`` (see :func:`open_regular_file`).
 
     Read from the descriptor without a buffered file object: a file is usually read in
-    one piece of its size and one byte more (so that the next read finds the end)."""
-    descriptor, size = _open_descriptor(path)
+    one piece of its size and one byte more (so that the next read finds the end).
+    Every read (or failure to read) is noted for the results cache (``resolve.reads``)."""
+    try:
+        descriptor, status = _open_descriptor(path)
+    except (OSError, ValueError):
+        reads.note_path(path)
+        raise
+    size = status.st_size
     try:
         pieces: list[bytes] = []
         total = 0
@@ -134,7 +143,9 @@ def read_regular_file(path: str, limit: int) -> bytes:
                 break
             pieces.append(piece)
             total += len(piece)
-        return pieces[0] if len(pieces) == 1 else b"".join(pieces)
+        data = pieces[0] if len(pieces) == 1 else b"".join(pieces)
+        reads.note_read(path, status, data)
+        return data
     finally:
         os.close(descriptor)
 

@@ -43,6 +43,7 @@ KEYS = (
     "respect-gitignore",
     "ros",
     "ros-distro",
+    "cache-dir",
     "knowledge",
 )
 BELIEF_KEYWORDS = ("bundled", "study", "none")
@@ -75,6 +76,8 @@ class Config:
     respect_gitignore: bool | None = None
     ros: int | None = None
     ros_distro: str | None = None
+    cache_dir: str | None = None
+    """The results cache's folder (absolute; relative in the file to its folder)."""
     knowledge: tuple[str, ...] = ()
     """Knowledge files (JSON, docs/knowledge.md) that extend the bundled knowledge base."""
 
@@ -213,6 +216,11 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
                 f"{path}: 'ros-distro' must be one of {', '.join((*ROS1_DISTROS, *ROS2_DISTROS))}"
             )
         values["ros_distro"] = name
+    if "cache-dir" in data:
+        folder = data["cache-dir"]
+        if not isinstance(folder, str) or not folder:
+            raise ConfigError(f"{path}: 'cache-dir' must be a folder name")
+        values["cache_dir"] = _relative_to(base, folder)
     return Config(**values)
 
 

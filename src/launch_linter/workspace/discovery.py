@@ -24,6 +24,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Callable
 
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.paths import shown_path
 
@@ -136,9 +137,9 @@ def is_workspace_folder(directory: str, name: str) -> bool:
     if name not in WORKSPACE_FOLDERS:
         return False
     full = os.path.join(directory, name)
-    if os.path.isdir(os.path.join(directory, "src")):
+    if reads.is_dir(os.path.join(directory, "src")):
         return True
-    return any(os.path.exists(os.path.join(full, marker)) for marker in WORKSPACE_MARKERS)
+    return any(reads.exists(os.path.join(full, marker)) for marker in WORKSPACE_MARKERS)
 
 
 @dataclass(frozen=True)
@@ -160,19 +161,35 @@ class Exclusions:
         return cls(chosen + tuple(extend_exclude), os.path.abspath(base))
 
     def excludes(self, absolute: str) -> bool:
-        name = os.path.basename(absolute)
+        names, anchored = _compiled(self.patterns)
+        if names is not None and names.match(os.path.basename(absolute)):
+            return True
+        if not anchored:
+            return False
         relative = os.path.relpath(absolute, self.base).replace(os.sep, "/")
-        for pattern in self.patterns:
-            cleaned = pattern.rstrip("/")
-            if fnmatch.fnmatchcase(name, cleaned):
-                return True
-            if "/" in cleaned:
-                anchored = cleaned[2:] if cleaned.startswith("./") else cleaned
-                if fnmatch.fnmatchcase(relative, anchored) or fnmatch.fnmatchcase(
-                    absolute.replace(os.sep, "/"), anchored
-                ):
-                    return True
-        return False
+        absolute = absolute.replace(os.sep, "/")
+        return any(pattern.match(relative) or pattern.match(absolute) for pattern in anchored)
+
+
+_COMPILED: dict[tuple[str, ...], tuple[re.Pattern[str] | None, tuple[re.Pattern[str], ...]]] = {}
+
+
+def _compiled(
+    patterns: tuple[str, ...]
+) -> tuple[re.Pattern[str] | None, tuple[re.Pattern[str], ...]]:
+    """The globs as one pattern for base names and one per glob with a ``/`` (matched
+    against the relative and the absolute path), made once: discovery asks for every path
+    of a walk."""
+    found = _COMPILED.get(patterns)
+    if found is None:
+        cleaned = [pattern.rstrip("/") for pattern in patterns]
+        names = "|".join(fnmatch.translate(p) for p in cleaned)  # a name has no "/"
+        anchored = tuple(
+            re.compile(fnmatch.translate(p[2:] if p.startswith("./") else p))
+            for p in cleaned if "/" in p
+        )
+        found = _COMPILED[patterns] = (re.compile(names) if names else None, anchored)
+    return found
 
 
 def walk(top: str, followlinks: bool = False) -> Iterator[tuple[str, list[str], list[str]]]:
@@ -236,7 +253,7 @@ def discover(
         return rules.excludes(absolute) or (ignored is not None and ignored(absolute, is_folder))
 
     for given in paths:
-        if not os.path.isdir(given):
+        if not reads.is_dir(given):
             add(given)
             continue
         visited: set[tuple[int, int]] = set()
@@ -251,18 +268,23 @@ def discover(
                 subdirs[:] = []
                 continue
             visited.add((info.st_dev, info.st_ino))
+            # A file or folder added or removed here changes what is found.
+            reads.note_folder(directory, info, subdirs, files, reads.EVERY_FILE)
+            # Entries are plain names: joined to the absolute folder, made once, they are
+            # the absolute paths os.path.abspath would make of each (a getcwd apiece).
+            absolute_dir = os.path.abspath(directory)
             subdirs[:] = sorted(
                 d
                 for d in subdirs
                 if not is_workspace_folder(directory, d)
-                and not skip(os.path.abspath(os.path.join(directory, d)), True)
+                and not skip(os.path.join(absolute_dir, d), True)
             )
             for name in sorted(files):
                 full = os.path.join(directory, name)
                 described = is_description_name(name)
                 if not (is_launch_name(name) or name.endswith(CONTENT_SUFFIXES) or described):
                     continue
-                if skip(os.path.abspath(full), False):
+                if skip(os.path.join(absolute_dir, name), False):
                     continue
                 if is_launch_name(name) or described or has_launch_content(full, name):
                     add(full)

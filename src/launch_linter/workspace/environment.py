@@ -22,6 +22,8 @@ import os
 from collections.abc import Mapping, Sequence
 from typing import Tuple
 
+from launch_linter.resolve import reads
+
 Place = Tuple[str, str]
 """(``prefix`` or ``source``, folder)."""
 
@@ -52,7 +54,7 @@ def built_beside(roots: Sequence[str]) -> tuple[Place, ...]:
         workspace = os.path.dirname(absolute)
         for name in BUILT_BESIDE_SOURCES:
             folder = os.path.join(workspace, name)
-            if os.path.isdir(folder):
+            if reads.is_dir(folder):
                 places.append((PREFIX, folder))
     return tuple(places)
 

@@ -17,6 +17,7 @@ import os
 import re
 import typing
 
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 
 if typing.TYPE_CHECKING:
@@ -40,6 +41,7 @@ class GitIgnore:
     def __init__(self) -> None:
         self._specs: dict[str, pathspec.GitIgnoreSpec | None] = {}
         self._tops: dict[str, str] = {}
+        self._chains: dict[str, list[tuple[str, pathspec.GitIgnoreSpec]]] = {}
 
     def _spec(self, directory: str) -> pathspec.GitIgnoreSpec | None:
         if directory not in self._specs:
@@ -67,41 +69,52 @@ class GitIgnore:
         top = ""  # no repository: every .gitignore up the folders applies
         passed: list[str] = []
         for _ in range(MAX_WALK_UP):
-            if current in self._tops:  # a folder above, already looked up
+            if current in self._tops:  # a folder further up answered already
                 top = self._tops[current]
                 break
             passed.append(current)
-            if os.path.exists(os.path.join(current, ".git")):
+            if reads.exists(os.path.join(current, ".git")):
                 top = current
                 break
             parent = os.path.dirname(current)
             if parent == current:
                 break
             current = parent
-        for folder in passed:
+        for folder in passed:  # each folder on the way has the same top
             self._tops[folder] = top
         return top
 
+    def _chain(self, directory: str) -> list[tuple[str, pathspec.GitIgnoreSpec]]:
+        """The folders from the top down to ``directory`` that hold a ``.gitignore``, with
+        its rules; worked out once per folder (a folder's files all share it)."""
+        found = self._chains.get(directory)
+        if found is None:
+            top = self._top(directory)
+            chain: list[str] = []
+            current = directory
+            for _ in range(MAX_WALK_UP):
+                chain.append(current)
+                if current == top:
+                    break
+                parent = os.path.dirname(current)
+                if parent == current:
+                    break
+                current = parent
+            found = []
+            for folder in reversed(chain):  # the top first: deeper files override
+                spec = self._spec(folder)
+                if spec is not None:
+                    found.append((folder, spec))
+            self._chains[directory] = found
+        return found
+
     def ignored(self, path: str, is_folder: bool) -> bool:
         path = os.path.abspath(path)
-        directory = os.path.dirname(path)
-        top = self._top(directory)
-        chain: list[str] = []
-        current = directory
-        for _ in range(MAX_WALK_UP):
-            chain.append(current)
-            if current == top:
-                break
-            parent = os.path.dirname(current)
-            if parent == current:
-                break
-            current = parent
         verdict = False
-        for folder in reversed(chain):  # the top first: deeper files override
-            spec = self._spec(folder)
-            if spec is None:
-                continue
-            relative = os.path.relpath(path, folder).replace(os.sep, "/")
+        for folder, spec in self._chain(os.path.dirname(path)):
+            # ``path`` is under ``folder`` and both are normal absolute paths: the path
+            # relative to it is what follows it (os.path.relpath costs ten times more).
+            relative = path[len(folder):].lstrip(os.sep).replace(os.sep, "/")
             if is_folder:
                 relative += "/"
             result = _check(spec, relative)

@@ -17,10 +17,12 @@ language server, sees an include written since), bounded in files and bytes.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import time
 
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.discovery import VCS_FOLDERS, WORKSPACE_FOLDERS, is_launch_name
 from launch_linter.workspace.packages import MAX_WALK_UP, default_package_roots, nearest_package_xml
@@ -42,9 +44,13 @@ from there (bounded), never with a pattern that starts at every letter of a long
 _NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 MAX_NAME = 255
 
-_names_by_folder: dict[str, tuple[float, dict[str, tuple[str, ...]]]] = {}
+_names_by_folder: dict[str, tuple[float, dict[str, tuple[str, ...]], reads.ReadLog]] = {}
 """For each folder read: when, and each file name written in it → the first two files
-writing it (a file may write its own name, in a usage comment)."""
+writing it (a file may write its own name, in a usage comment), and what reading them
+read: every file that asks depends on it (the results cache, ``resolve.reads``)."""
+_LISTING = reads.suffix_listing(READ_SUFFIXES)
+"""The files of a folder that count for the results cache: those that may be read (a
+launch file's name ends with one of these suffixes too)."""
 
 
 def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
@@ -57,6 +63,8 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
         folders += 1
         if folders > MAX_FOLDERS:
             break
+        with contextlib.suppress(OSError):  # a folder gone since it was listed
+            reads.note_folder(directory, os.stat(directory), subdirs, entries, _LISTING)
         subdirs[:] = sorted(
             d for d in subdirs
             if not d.startswith(".") and d not in VCS_FOLDERS and d not in WORKSPACE_FOLDERS
@@ -105,7 +113,7 @@ def _scope(absolute: str) -> str:
         return roots[0]
     directory = os.path.dirname(manifest)
     for _ in range(MAX_WALK_UP):
-        if os.path.exists(os.path.join(directory, ".git")):
+        if reads.exists(os.path.join(directory, ".git")):
             return directory
         parent = os.path.dirname(directory)
         if parent == directory:
@@ -124,7 +132,10 @@ def named_by_another_file(path: str) -> str | None:
     if read is None or now - read[0] > FRESH_SECONDS:
         if len(_names_by_folder) >= MAX_CACHED_FOLDERS:
             _names_by_folder.clear()
-        read = _names_by_folder[folder] = (now, _names_in(folder))
+        with reads.recording() as log:
+            names = _names_in(folder)
+        read = _names_by_folder[folder] = (now, names, log)
+    reads.depend_on(read[2])
     names = read[1]
     others = [w for w in names.get(os.path.basename(absolute), ()) if w != absolute]
     return others[0] if others else None

@@ -15,6 +15,7 @@ import typing
 from collections.abc import Sequence
 from typing import NamedTuple
 
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
 from launch_linter.workspace.discovery import walk
 from launch_linter.workspace.environment import PREFIX, Place
@@ -51,7 +52,9 @@ class PackageIndex:
         self.places = tuple((kind, os.path.abspath(folder)) for kind, folder in places)
         self._packages: dict[str, str] | None = None
         self._installed: set[str] = set()
-        self._layouts: dict[str, Layout | None] = {}
+        self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
+        self._read = reads.ReadLog()
+        """What the crawl read: every file that asks for a package depends on it."""
 
     @property
     def key(self) -> tuple[object, ...]:
@@ -63,20 +66,25 @@ class PackageIndex:
 
     def _all(self) -> dict[str, str]:
         if self._packages is None:
-            found: dict[str, str] = {}
-            crawl = _Crawl(found)
-            for root in self.roots:
-                crawl.source(root)
-            for kind, folder in self.places:
-                if kind != PREFIX:
-                    crawl.source(folder)
-                    continue
-                for name, share in installed_packages(folder).items():
-                    if name not in found:
-                        found[name] = share
-                        self._installed.add(share)
-            self._packages = found
+            with reads.recording() as self._read:
+                self._packages = self._crawl()
+        reads.depend_on(self._read)
         return self._packages
+
+    def _crawl(self) -> dict[str, str]:
+        found: dict[str, str] = {}
+        crawl = _Crawl(found)
+        for root in self.roots:
+            crawl.source(root)
+        for kind, folder in self.places:
+            if kind != PREFIX:
+                crawl.source(folder)
+                continue
+            for name, share in installed_packages(folder).items():
+                if name not in found:
+                    found[name] = share
+                    self._installed.add(share)
+        return found
 
     def locate(self, path: str, near: str | None = None) -> Located:
         """The file that ``path`` names, the way ROS finds it: the path itself if it
@@ -86,9 +94,9 @@ class PackageIndex:
         :class:`Located`), unknown otherwise. ``near`` is a folder of the linted tree
         (the including file's): a path under it or a source root can be proven absent."""
         path = os.path.normpath(os.path.abspath(path))
-        if os.path.isfile(path):
+        if reads.is_file(path):
             return Located(path, False)
-        if os.path.exists(path):
+        if reads.exists(path):
             # A folder, device or FIFO: found, so that reading it says what it is.
             return Located(path, False)
         owner = self._owner(path)
@@ -117,7 +125,7 @@ class PackageIndex:
         explained = layout.explain(relative)
         for source in explained.sources:
             candidate = os.path.normpath(os.path.join(directory, source))
-            if os.path.exists(candidate):
+            if reads.exists(candidate):
                 return Located(candidate, False)
         if explained.sources and explained.complete:
             sources = " or ".join(explained.sources[:3])
@@ -130,15 +138,17 @@ class PackageIndex:
     def _layout(self, name: str, directory: str) -> Layout | None:
         """The install layout of a ROS 2 package found in source; None for ROS 1 (catkin
         runs from the source folder: ``$(find)`` is it, in the devel space)."""
-        if directory not in self._layouts:
+        def read() -> Layout | None:
             manifest = os.path.join(directory, "package.xml")
-            ros2 = os.path.isfile(manifest) and package_ros_version(manifest) == 2
+            ros2 = reads.is_file(manifest) and package_ros_version(manifest) == 2
             # Imported here: install rules are read only when a file is not where the
             # source folder would have it.
             from launch_linter.workspace.install_layout import read_layout
 
-            self._layouts[directory] = read_layout(directory, name) if ros2 else None
-        return self._layouts[directory]
+            return read_layout(directory, name) if ros2 else None
+
+        # Every file that asks depends on the install rules read.
+        return reads.remembered(self._layouts, directory, read)
 
 
 
@@ -151,7 +161,7 @@ class _Crawl:
         self.seen: set[tuple[int, int]] = set()
 
     def source(self, root: str) -> None:
-        if not os.path.isdir(root):
+        if not reads.is_dir(root):
             return
         for directory, subdirs, files in walk(root, followlinks=True):
             self.budget -= 1
@@ -167,6 +177,8 @@ class _Crawl:
                 subdirs[:] = []
                 continue
             self.seen.add((info.st_dev, info.st_ino))
+            # What the crawl finds changes when an entry of a folder it listed does.
+            reads.note_folder(directory, info, subdirs, files)
             subdirs.sort()
             if "CATKIN_IGNORE" in files:
                 subdirs[:] = []
@@ -194,28 +206,28 @@ def installed_packages(prefix: str) -> dict[str, str]:
     for a colcon isolated install (``install/<pkg>/share/<pkg>``), each sub-prefix."""
     share = os.path.join(prefix, "share")
     found: dict[str, str] = {}
-    if not os.path.isdir(share):
+    if not reads.is_dir(share):
         try:
-            entries = sorted(os.listdir(prefix))[:MAX_PREFIX_ENTRIES]
+            entries = sorted(reads.list_folder(prefix))[:MAX_PREFIX_ENTRIES]
         except OSError:
             return found
         for entry in entries:
             isolated = os.path.join(prefix, entry, "share", entry)
-            if os.path.isdir(isolated):
+            if reads.is_dir(isolated):
                 found.setdefault(entry, isolated)
         return found
     index = os.path.join(share, "ament_index", "resource_index", "packages")
     names: list[str] = []
     for folder in (index, share):
         try:
-            names.extend(sorted(os.listdir(folder))[:MAX_PREFIX_ENTRIES])
+            names.extend(sorted(reads.list_folder(folder))[:MAX_PREFIX_ENTRIES])
         except OSError:
             continue
     for name in names:
         directory = os.path.join(share, name)
-        if name in found or not os.path.isdir(directory):
+        if name in found or not reads.is_dir(directory):
             continue
-        if os.path.isfile(os.path.join(index, name)) or os.path.isfile(
+        if reads.is_file(os.path.join(index, name)) or reads.is_file(
                 os.path.join(directory, "package.xml")):
             found[name] = directory
     return found
@@ -236,10 +248,14 @@ def _package_name(directory: str, files: list[str]) -> str | None:
         except OSError:
             return None
         key = (path, info.st_dev, info.st_ino, info.st_size, info.st_mtime_ns)
-        if key not in _MANIFEST_NAMES:
+        if key not in _MANIFEST_NAMES or reads.too_recent(info):
+            # (A file changed in the last moments is read again: its time cannot tell
+            # the results cache that it stays unchanged, its content can.)
             if len(_MANIFEST_NAMES) >= MAX_REMEMBERED_MANIFESTS:
                 _MANIFEST_NAMES.clear()
             _MANIFEST_NAMES[key] = _manifest_name(path)
+        else:
+            reads.note_status(path, info)  # the name read before, from this very file
         return _MANIFEST_NAMES[key]
     return os.path.basename(directory)
 
@@ -273,7 +289,7 @@ def default_package_roots(launch_file: str) -> list[str]:
     directory = os.path.dirname(os.path.realpath(launch_file))
     package: str | None = None
     for _ in range(MAX_WALK_UP):
-        if os.path.isfile(os.path.join(directory, "package.xml")):
+        if reads.is_file(os.path.join(directory, "package.xml")):
             package = directory
             break
         parent = os.path.dirname(directory)
@@ -287,7 +303,7 @@ def default_package_roots(launch_file: str) -> list[str]:
     directory = os.path.dirname(package)
     for _ in range(MAX_WALK_UP):
         source = os.path.join(directory, "src")
-        if package.startswith(source + os.sep) and os.path.isdir(source):
+        if package.startswith(source + os.sep) and reads.is_dir(source):
             return [source]
         parent = os.path.dirname(directory)
         if parent == directory:
@@ -301,7 +317,7 @@ def nearest_package_xml(launch_file: str) -> str | None:
     directory = os.path.dirname(os.path.abspath(launch_file))
     for _ in range(MAX_WALK_UP):
         candidate = os.path.join(directory, "package.xml")
-        if os.path.isfile(candidate):
+        if reads.is_file(candidate):
             return candidate
         parent = os.path.dirname(directory)
         if parent == directory:

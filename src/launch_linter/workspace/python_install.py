@@ -18,10 +18,12 @@ from __future__ import annotations
 
 import ast
 import configparser
+import contextlib
 import os
 import posixpath
 import re
 
+from launch_linter.resolve import reads
 from launch_linter.workspace.install_rules import InstallRule, Layout, share_relative
 
 MAX_SETUP_BYTES = 1024 * 1024
@@ -200,6 +202,8 @@ def package_files(package_dir: str) -> list[str]:
     """The files of a package, ``/``-separated and relative to it, sorted; bounded."""
     found: list[str] = []
     for directory, subdirs, files in os.walk(package_dir):
+        with contextlib.suppress(OSError):  # the results cache: a file added changes them
+            reads.note_folder(directory, os.stat(directory), subdirs, files, reads.EVERY_FILE)
         subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
         relative = os.path.relpath(directory, package_dir).replace(os.sep, "/")
         for name in sorted(files):

@@ -11,7 +11,7 @@ from __future__ import annotations
 import os
 import re
 import typing
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Hashable, Sequence
 from dataclasses import replace
 
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
@@ -26,6 +26,7 @@ from launch_linter.model.robot import (
     RobotJoint,
     RobotModel,
 )
+from launch_linter.resolve import reads
 from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
 from launch_linter.workspace.packages import PackageIndex
 
@@ -46,23 +47,25 @@ class RobotCache:
     """Expansions made in one run, keyed by (file, args, package roots)."""
 
     def __init__(self) -> None:
-        self._expansions: dict[tuple[object, ...], Expansion] = {}
-        self.included: dict[str, frozenset[str]] = {}
-        """Package folder -> the description file names its descriptions include."""
+        self._expansions: dict[Hashable, tuple[Expansion, reads.ReadLog]] = {}
+        self.included: dict[Hashable, tuple[frozenset[str], reads.ReadLog]] = {}
+        """Package folder -> the description file names its descriptions include (with
+        what scanning them read: ``reads.remembered``)."""
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str]) -> Expansion:
         key = (file, args, packages.key, tuple(sorted(env.items())))
-        found = self._expansions.get(key)
-        if found is None:
+
+        def expand_file() -> Expansion:
             # Imported when a description is first expanded: xacro (with its interpreter
             # of ${} expressions) is a third of the start-up of a run that meets none.
             from launch_linter.frontends.robot.xacro import expand
 
-            found = self._expansions[key] = expand(
-                file, dict(args), packages.find, env,
-                locate=lambda path: packages.locate(path).path)
-        return found
+            return expand(file, dict(args), packages.find, env,
+                          locate=lambda path: packages.locate(path).path)
+
+        # Every launch file that uses the expansion depends on the files it read.
+        return reads.remembered(self._expansions, key, expand_file)
 
     def __len__(self) -> int:
         return len(self._expansions)

@@ -9,6 +9,7 @@ gives, so it is checked only through its includer."""
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 from collections.abc import Callable, Mapping
@@ -17,6 +18,7 @@ from launch_linter.frontends.robot.describe import RobotCache, read_description
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import FileStatus, LaunchTree
 from launch_linter.model.robot import DescriptionKind, DescriptionSource
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import (
     XmlError,
     parse_xml,
@@ -56,12 +58,12 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
     if path.lower().endswith(".urdf") and b"<xacro:" not in text:
         # A URDF is read as it is, as check_urdf and a launch file's open().read() do (one
         # with xacro elements is xacro whatever its name).
-        source = DescriptionSource(path, 1, 1, DescriptionKind.LITERAL, None,
+        source = DescriptionSource(shown, 1, 1, DescriptionKind.LITERAL, None,
                                    text=text.decode("utf-8", "replace"))
     else:
         # Text linted as if it were the file (which need not exist) is expanded as it is.
         given = data.decode("utf-8", "replace") if data is not None else None
-        source = DescriptionSource(path, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
+        source = DescriptionSource(shown, 1, 1, DescriptionKind.XACRO, os.path.abspath(path),
                                    tuple(sorted(args.items())), text=given)
     robot, problems = read_description(source, packages, cache or RobotCache(), display,
                                        dict(env), standalone=True)
@@ -77,7 +79,7 @@ def _package_of(path: str) -> str:
     folder = os.path.dirname(os.path.abspath(path))
     candidate = folder
     for _ in range(MAX_PACKAGE_DEPTH):
-        if os.path.isfile(os.path.join(candidate, "package.xml")):
+        if reads.is_file(os.path.join(candidate, "package.xml")):
             return candidate
         parent = os.path.dirname(candidate)
         if parent == candidate:
@@ -87,13 +89,21 @@ def _package_of(path: str) -> str:
 
 
 def _included_names(package: str, cache: RobotCache | None) -> frozenset[str]:
-    """The file names that the descriptions of ``package`` include (bounded scan)."""
-    known = cache.included.get(package) if cache is not None else None
-    if known is not None:
-        return known
+    """The file names that the descriptions of ``package`` include (bounded scan); once
+    per run and package, and every file that asks depends on what the scan read."""
+    if cache is None:
+        return _scan_included_names(package)
+    return reads.remembered(cache.included, package, lambda: _scan_included_names(package))
+
+
+def _scan_included_names(package: str) -> frozenset[str]:
     names: set[str] = set()
     scanned = 0
     for directory, subdirs, files in os.walk(package):
+        with contextlib.suppress(OSError):  # a folder gone since it was listed
+            # A description added or removed here changes what is included.
+            reads.note_folder(directory, os.stat(directory), subdirs, files,
+                              reads.suffix_listing(DESCRIPTION_SUFFIXES))
         subdirs.sort()
         for name in sorted(files):
             if not name.lower().endswith(DESCRIPTION_SUFFIXES) or scanned >= MAX_SCANNED:
@@ -106,7 +116,4 @@ def _included_names(package: str, cache: RobotCache | None) -> frozenset[str]:
             for match in _INCLUDE.finditer(data):
                 target = match.group(1).decode("utf-8", "replace")
                 names.add(target.rstrip("/").rsplit("/", 1)[-1])
-    found = frozenset(names)
-    if cache is not None:
-        cache.included[package] = found
-    return found
+    return frozenset(names)

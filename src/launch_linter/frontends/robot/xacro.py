@@ -56,6 +56,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _Table,
     _Unknown,
 )
+from launch_linter.resolve import reads
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
@@ -461,7 +462,7 @@ class XacroExpander:
             raise _Abort(f"include cycle: {' -> '.join(chain)}", path, element.line)
         if len(self._include_stack) >= MAX_INCLUDE_DEPTH:
             raise _Abort(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", path, element.line)
-        if not os.path.exists(target):  # a FIFO or device is read, and said to be one
+        if not reads.exists(target):  # a FIFO or device is read, and said to be one
             installed = self.locate(target) if self.locate is not None else None
             if installed is not None:
                 target = installed
