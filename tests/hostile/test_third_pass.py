@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 from test_hostile_corpus import _survived, run
-from third_pass import THIRD_PASS
+from third_pass import THIRD_PASS, remove_nested_folders
 
 
 @pytest.fixture(scope="module")
@@ -28,7 +28,12 @@ def test_third_pass_case(name: str, good: str, tmp_path: Path) -> None:
     case = THIRD_PASS[name]
     target = case.build(tmp_path)
     if case.category == "discovery":
-        document: dict[str, Any] = json.loads(_survived(run("check", target, "--format", "json")))
+        try:
+            document: dict[str, Any] = json.loads(
+                _survived(run("check", target, "--format", "json")))
+        finally:
+            if name == "nested_folders":
+                remove_nested_folders(tmp_path)
         assert any(f["status"] == "ok" and f["transforms"] == 1 for f in document["files"]), \
             document["files"]
         return

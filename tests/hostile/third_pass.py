@@ -144,6 +144,19 @@ def _big_beliefs(folder: Path) -> str:
     return str(sub)
 
 
+def remove_nested_folders(folder: Path) -> None:
+    """Remove what ``_nested_folders`` made, deepest first: pytest's own clean-up of old
+    temporary folders recurses per level and fails on 1,500 of them (RecursionError)."""
+    chain = [folder / "nested"]
+    while (chain[-1] / "d").is_dir():
+        chain.append(chain[-1] / "d")
+    for path in reversed(chain):
+        for child in path.iterdir():
+            if not child.is_dir():
+                child.unlink()
+        path.rmdir()
+
+
 def _nested_folders(folder: Path) -> str:
     sub = folder / "nested"
     deep = sub
