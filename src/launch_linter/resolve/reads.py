@@ -266,31 +266,26 @@ def _kind_now(path: str) -> str:
         return ABSENT
 
 
-def is_file(path: str) -> bool:
-    """``os.path.isfile``, noted."""
-    if not _active:
-        return os.path.isfile(path)
+def _noted_kind(path: str) -> str:
+    """The kind of ``path`` now, noted by the innermost recording."""
     kind = _kind_now(path)
     _active[-1].add(path, (kind, -1, -1, None))
-    return kind == FILE
+    return kind
+
+
+def is_file(path: str) -> bool:
+    """``os.path.isfile``, noted."""
+    return _noted_kind(path) == FILE if _active else os.path.isfile(path)
 
 
 def is_dir(path: str) -> bool:
     """``os.path.isdir``, noted."""
-    if not _active:
-        return os.path.isdir(path)
-    kind = _kind_now(path)
-    _active[-1].add(path, (kind, -1, -1, None))
-    return kind == FOLDER
+    return _noted_kind(path) == FOLDER if _active else os.path.isdir(path)
 
 
 def exists(path: str) -> bool:
     """``os.path.exists``, noted."""
-    if not _active:
-        return os.path.exists(path)
-    kind = _kind_now(path)
-    _active[-1].add(path, (kind, -1, -1, None))
-    return kind != ABSENT
+    return _noted_kind(path) != ABSENT if _active else os.path.exists(path)
 
 
 def digest(data: bytes) -> str:
