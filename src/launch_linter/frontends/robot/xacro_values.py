@@ -118,6 +118,10 @@ class _Property:
     reason: str | None = None
     block: tuple[Element, str] | None = None
     """For a block property: the ``xacro:property`` element and its file."""
+    data: object = None
+    """A value that is not text (a dict or list from ``load_yaml``); ``value`` is None."""
+    namespace: _Table | None = None
+    """For the name of an ``xacro:include ns=``: the table of the included file."""
 
 
 @dataclass
@@ -191,3 +195,33 @@ def _literal(text: str) -> str:
         return text
     shown = repr(number)
     return shown if "." in shown else text
+
+
+_WHOLE_EXPRESSION = re.compile(r"\$\{[^}]*\}\Z")
+_PARAM = re.compile(
+    r"""([^\s:=]+)(?:\s*(:?=)\s*(\^\|?)?"""
+    r"""((?:\$\{[^}]*\}|\$\([^)]*\)|'[^']*'|"[^"]*"|[^\s'"])*))?""")
+"""One macro parameter: name, then optionally ``:=``/``=``, ``^``/``^|`` and a default
+that runs to the next space outside quotes, ``${}`` and ``$()`` (xacro's syntax)."""
+
+
+def _unquoted(default: str) -> str:
+    if len(default) >= 2 and default[0] == default[-1] and default[0] in "'\"":
+        return default[1:-1]
+    return default
+
+
+def _boolean(value: str) -> bool | None:
+    """xacro's ``get_boolean_value``; None when the text is not a boolean."""
+    if value in ("true", "True"):
+        return True
+    if value in ("false", "False"):
+        return False
+    try:
+        return bool(int(value))
+    except ValueError:
+        pass
+    try:
+        return bool(float(value))
+    except ValueError:
+        raise _Unknown(f"conditional value {value!r} is not a boolean") from None
