@@ -121,3 +121,19 @@ def test_namespaced_include_properties_read_as_ns_dot_name(tmp_path: Path) -> No
     node = first(expansion, "limit")
     assert node.attrib["upper"] == "0.2"
     assert "broken" in node.unknown["other"]
+
+
+def test_a_namespaced_macro_calls_its_own_files_macros(tmp_path: Path) -> None:
+    """xacro runs ``ns.macro``'s body in the namespace's scope, where the included file's
+    other macros are (rosbot_xl's ``gazebo.imu`` calls ``gauss_noise``)."""
+    (tmp_path / "urdf").mkdir()
+    (tmp_path / "urdf" / "gazebo.xacro").write_text(
+        HEAD + '<xacro:macro name="noise" params="s"><noise stddev="${s}"/></xacro:macro>'
+        '<xacro:macro name="imu" params="frame"><sensor frame="${frame}"><xacro:noise s="1"/>'
+        "</sensor></xacro:macro></robot>", encoding="utf-8")
+    expansion = run(tmp_path, '<xacro:include filename="gazebo.xacro" ns="gazebo"/>'
+                              '<xacro:gazebo.imu frame="imu_link"/>')
+    assert not expansion.problems
+    sensor = first(expansion, "sensor")
+    assert sensor.attrib == {"frame": "imu_link"}
+    assert sensor.children[0].attrib == {"stddev": "1"}

@@ -537,7 +537,8 @@ class XacroExpander:
             self._include_stack.pop()
         if namespace is not None:
             for name, macro in inner.macros.items():
-                table.macros[f"{namespace}.{name}"] = macro
+                table.macros[f"{namespace}.{name}"] = _Macro(
+                    macro.params, macro.defaults, macro.body, macro.path, macro.scope or inner)
             table.properties[namespace] = _Property(None, None, namespace=inner)
 
     def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
@@ -565,7 +566,7 @@ class XacroExpander:
         if self._macro_depth >= MAX_MACRO_DEPTH:
             raise _Abort(f"macros nested deeper than {MAX_MACRO_DEPTH} (recursive macro?)",
                          path, element.line)
-        scoped = _Table(table)
+        scoped = _Table(table if macro.scope is None else macro.scope)
         params = list(macro.params)
         for attribute, text in element.attrib.items():
             if attribute not in params:

@@ -131,6 +131,9 @@ class _Macro:
     """param -> (forwarded name, default text)."""
     body: Element
     path: str
+    scope: _Table | None = None
+    """For a macro of a namespaced include: the include's table, where its body runs
+    (xacro resolves ``ns.name`` to the namespace's own macros and properties)."""
 
 
 @dataclass

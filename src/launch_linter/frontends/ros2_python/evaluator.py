@@ -309,7 +309,10 @@ class Evaluator:
             a, b = then.get(name), otherwise.get(name)
             if a is b:
                 merged[name] = a
-            elif isinstance(a, list) and isinstance(b, list):
+            elif isinstance(a, list) and isinstance(b, list) and all(
+                    isinstance(item, ACTION_TYPES) for item in (*a, *b)):
+                # Lists of actions: each action runs under its branch. A list of values
+                # (arguments, say) is one or the other, never both: unknown below.
                 merged[name] = [
                     *self.under(a, True, text, node), *self.under(b, False, text, node)
                 ]
