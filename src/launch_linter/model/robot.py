@@ -44,6 +44,9 @@ class DescriptionSource:
     reason: str | None = None
     open_args: bool = False
     """True when a word of the xacro call is unresolved and may give more args."""
+    open_file: tuple[str, str, str] | None = None
+    """When ``file`` is unknown only because an environment variable in its name is not
+    given: (the path before it, the text after it, the variable's name)."""
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ import typing
 from collections.abc import Callable, Hashable, Sequence
 from dataclasses import replace
 
+from launch_linter.frontends.robot.alternatives import alternatives
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
@@ -165,17 +166,23 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         same = (source.kind, source.file, source.args, source.text, source.reason)
         first = same not in reported
         reported.add(same)
-        if source.file is None and source.kind is not DescriptionKind.LITERAL:
+        chosen = [source]
+        if source.file is None and source.open_file is not None:
+            chosen, said = alternatives(source, display)
+            if first:
+                problems_found.append(_unresolved(source, f"robot description: {said}"))
+        elif source.file is None and source.kind is not DescriptionKind.LITERAL:
             if first:
                 problems_found.append(_unresolved(source, f"robot description not read: "
                                                   f"{source.reason or 'unknown file'}"))
             continue
-        robot, unresolved = read_description(source, packages, cache, display, env)
-        if first:
-            problems_found.extend(unresolved)
-        if robot is not None:
-            joints.extend(robot.joints)
-            robots.append(robot)
+        for each in chosen:
+            robot, unresolved = read_description(each, packages, cache, display, env)
+            if first:
+                problems_found.extend(unresolved)
+            if robot is not None:
+                joints.extend(robot.joints)
+                robots.append(robot)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found))
 
