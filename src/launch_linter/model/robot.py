@@ -73,6 +73,9 @@ class RobotJoint:
     condition: Condition = field(default_factory=Condition)
     unresolved: tuple[str, ...] = ()
     reasons: tuple[str, ...] = ()
+    defined: tuple[str, int, int] | None = None
+    """For a joint a xacro macro made: where its ``<joint>`` is written in the macro
+    (``path``/``line`` are then the outermost call of the macro)."""
 
     @property
     def dynamic(self) -> bool:

@@ -133,6 +133,7 @@ class XacroExpander:
         self._defines_macros = False
         self._yaml_files: dict[str, object] = {}
         self._load_yaml: object | None = None
+        self._call_site: tuple[str, int, int] | None = None
 
     # -- entry -------------------------------------------------------------------------
     def expand(self, path: str, data: bytes | None = None) -> Expansion:
@@ -340,7 +341,9 @@ class XacroExpander:
         if self._made > MAX_OUTPUT_ELEMENTS:
             raise _Abort(f"expansion makes more than {MAX_OUTPUT_ELEMENTS:,} elements", path,
                          element.line)
-        return ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
+        made = ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
+        made.call = self._call_site
+        return made
 
     def _attributes(self, element: Element, node: ExpandedNode, table: _Table) -> None:
         for name, text in element.attrib.items():
@@ -604,10 +607,15 @@ class XacroExpander:
         if params:
             raise _Refused(f"undefined parameters [{','.join(params)}] of macro '{name}'")
         self._macro_depth += 1
+        outermost = self._call_site is None
+        if outermost:
+            self._call_site = (path, element.line, element.column)
         try:
             self._children(macro.body.children, macro.path, scoped, out, conditions)
         finally:
             self._macro_depth -= 1
+            if outermost:
+                self._call_site = None
 
     def _evaluated(self, text: str, table: _Table) -> _Property:
         try:

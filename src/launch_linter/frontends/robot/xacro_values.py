@@ -80,7 +80,7 @@ class XacroProblem:
 class ExpandedNode:
     """An element of the expanded document, with where it was written."""
 
-    __slots__ = ("attrib", "children", "column", "conditions", "line", "path", "tag",
+    __slots__ = ("attrib", "call", "children", "column", "conditions", "line", "path", "tag",
                  "unknown")
 
     def __init__(self, tag: str, path: str, line: int, column: int,
@@ -94,6 +94,9 @@ class ExpandedNode:
         """Attribute name -> why its value is unknown."""
         self.children: list[ExpandedNode] = []
         self.conditions = conditions
+        self.call: tuple[str, int, int] | None = None
+        """For an element a macro made: the outermost ``<xacro:macro_name .../>`` call
+        that made it (file, line, column): what a user edits to change that instance."""
         """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
         (``unless`` texts start with ``!``)."""
 
