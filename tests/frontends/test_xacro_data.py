@@ -137,3 +137,17 @@ def test_a_namespaced_macro_calls_its_own_files_macros(tmp_path: Path) -> None:
     sensor = first(expansion, "sensor")
     assert sensor.attrib == {"frame": "imu_link"}
     assert sensor.children[0].attrib == {"stddev": "1"}
+
+
+def test_xacros_angle_tags_are_read_as_numbers(tmp_path: Path) -> None:
+    # UR's joint_limits.yaml: ``max_position: !degrees 360.0``.
+    (tmp_path / "limits.yaml").write_text(
+        "a: !degrees 180.0\nb: !radians pi/2\nc: !degrees open('x')\n", encoding="utf-8")
+    body = ('<xacro:property name="p" value="${load_yaml(\'$(find pkg)/limits.yaml\')}"/>'
+            '<limit a="${p.a}"/>')
+    node = first(run(tmp_path, body), "limit")
+    assert "not readable YAML" in node.unknown["a"]  # c's call is refused: all unknown
+    (tmp_path / "limits.yaml").write_text("a: !degrees 180.0\nb: !radians pi/2\n",
+                                          encoding="utf-8")
+    node = first(run(tmp_path / ".", body.replace("p.a}", "p.a} ${p.b}")), "limit")
+    assert node.attrib == {"a": "3.141592653589793 1.5707963267948966"}

@@ -3,8 +3,10 @@
 xacro's ``${load_yaml('$(find pkg)/config/x.yaml')}`` (also ``xacro.load_yaml``) gives a
 property whose value is the YAML document, read as ``${props['key']}``,
 ``${props.key}`` (xacro's YAML dicts read keys as attributes) and nested indexing. The
-file is parsed with PyYAML's safe loader, imported on first use (the core is stdlib
-only): without PyYAML, or for a document with tags, the value is unknown, never guessed.
+file is parsed with PyYAML's safe loader (and xacro's ``!radians``/``!degrees`` angle
+tags, their expressions evaluated by our own interpreter), imported on first use (the
+core is stdlib only): without PyYAML, or for a document with other tags, the value is
+unknown, never guessed.
 The document is copied into the evaluator's values by a bounded walk (items and depth;
 an alias is counted each time it is reached, so a "billion laughs" document stops at the
 bound), and its size is charged to the expansion's work.
@@ -12,12 +14,14 @@ bound), and its size is charged to the expansion's work.
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Callable
 from typing import Any
 
 from launch_linter.frontends.robot.xacro_values import _Unknown
 from launch_linter.resolve.eval_values import AttributeDict, EvalError, Machine, function
+from launch_linter.resolve.safe_eval import EvalScope, evaluate_value
 from launch_linter.resolve.xml_safe import read_regular_file
 
 MAX_YAML_BYTES = 512 * 1024
@@ -41,12 +45,42 @@ def read_yaml_data(path: str) -> object:
     if len(data) > MAX_YAML_BYTES:
         raise _Unknown(f"load_yaml({path!r}): larger than {MAX_YAML_BYTES:,} bytes")
     try:
-        document: Any = yaml.load(data.decode("utf-8", "replace"),
-                                  Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+        document: Any = yaml.load(data.decode("utf-8", "replace"), Loader=_loader(yaml))
     except (yaml.YAMLError, RecursionError, ValueError) as exc:
         raise _Unknown(f"load_yaml({path!r}): not readable YAML "
                        f"({str(exc).splitlines()[0][:120] if str(exc) else 'error'})") from None
     return as_values(document, path)
+
+
+_LOADERS: dict[int, Any] = {}
+
+
+def _loader(yaml: Any) -> Any:
+    """PyYAML's safe loader with xacro's two unit tags, ``!radians EXPR`` and
+    ``!degrees EXPR`` (the expression evaluated by our own interpreter, as a number)."""
+    made = _LOADERS.get(id(yaml))
+    if made is not None:
+        return made
+
+    def angle(loader: Any, node: Any, degrees: bool) -> float:
+        text = str(loader.construct_scalar(node))
+        scope = EvalScope(args={}, env={}, find=lambda _: None, anon=lambda n: n,
+                          dirname=None)
+        try:
+            value = evaluate_value(text, scope)
+        except EvalError as exc:
+            raise yaml.constructor.ConstructorError(None, None, exc.reason) from None
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            raise yaml.constructor.ConstructorError(None, None, f"{text!r} is not a number")
+        return math.radians(value) if degrees else float(value)
+
+    class XacroLoader(yaml.SafeLoader):  # type: ignore[misc]
+        """Only the safe loader's types, and the two angles."""
+
+    XacroLoader.add_constructor("!radians", lambda loader, node: angle(loader, node, False))
+    XacroLoader.add_constructor("!degrees", lambda loader, node: angle(loader, node, True))
+    _LOADERS[id(yaml)] = XacroLoader
+    return XacroLoader
 
 
 def as_values(document: object, path: str) -> object:
