@@ -45,3 +45,18 @@ def test_the_joint_points_at_the_outermost_call_and_the_macro(tmp_path: Path) ->
     (found,) = [d for d in result.diagnostics if d.rule == "multiple_parents"]
     places = {(Path(r.path).name, r.line) for r in (found, *found.related)}
     assert ("robot.xacro", 4) in places and ("parts.xacro", 4) in places
+
+
+def test_an_angle_typed_in_the_macro_is_shown_where_it_is_typed(tmp_path: Path) -> None:
+    """``rounded_pi`` is about the written number: it points at the macro's ``<joint>``
+    (once, however many robots call it), with the call as the related place."""
+    parts = PARTS.replace('<child link="${name}"/>',
+                          '<child link="${name}"/><origin xyz="0.1 0 0" rpy="-1.57 0 -1.57"/>')
+    (tmp_path / "parts.xacro").write_text(parts, encoding="utf-8")
+    (tmp_path / "robot.xacro").write_text(ROBOT.replace("laser", "camera_link"),
+                                          encoding="utf-8")
+    (tmp_path / "a.launch").write_text(LAUNCH.replace(" laser", " other"), encoding="utf-8")
+    result = lint_paths([str(tmp_path / "a.launch")], LintOptions())
+    (found,) = [d for d in result.diagnostics if d.rule == "rounded_pi"]
+    assert (Path(found.path).name, found.line) == ("parts.xacro", 4)
+    assert [(Path(r.path).name, r.line) for r in found.related] == [("robot.xacro", 4)]
