@@ -75,3 +75,22 @@ def test_too_many_or_no_candidates_leave_it_unread(tmp_path: Path) -> None:
         result = lint_paths([str(launch)], LintOptions())
         assert not result.trees[0].joints
         assert [d for d in result.diagnostics if said in d.message]
+
+
+def test_ros1_env_in_a_xacro_command(tmp_path: Path) -> None:
+    package = tmp_path / "src" / "bot"
+    (package / "urdf").mkdir(parents=True)
+    (package / "launch").mkdir()
+    (package / "package.xml").write_text(PACKAGE.replace("desc", "bot").replace(
+        "ament_cmake", "catkin"), encoding="utf-8")
+    for name in ("small", "big"):
+        (package / "urdf" / f"bot_{name}.urdf.xacro").write_text(urdf(f"l_{name}"),
+                                                                   encoding="utf-8")
+    launch = package / "launch" / "a.launch"
+    launch.write_text(
+        '<launch><param name="robot_description" command="$(find xacro)/xacro '
+        '$(find bot)/urdf/bot_$(env BOT_MODEL).urdf.xacro"/>\n'
+        '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+        "</launch>", encoding="utf-8")
+    result = lint_paths([str(launch)], LintOptions())
+    assert sorted(j.child for j in result.trees[0].joints) == ["l_big", "l_small"]

@@ -197,11 +197,14 @@ def from_file_value(value: Value, path: str, line: int, column: int, condition: 
 
 
 def _open_word(words: Sequence[Word], command: Value) -> tuple[str, str, str] | None:
-    """:func:`_open_file` for the file word of a xacro call (its first unresolved word
-    that is neither an option nor an argument)."""
+    """:func:`_open_file` for the file word of a xacro call: an unresolved word that is
+    neither an option nor an argument (the words before it name xacro, and may be
+    unresolved too: ``$(find xacro)/xacro`` without the xacro package)."""
     for text, resolved in words:
         if not resolved and ":=" not in text and not text.startswith("-"):
-            return _open_file(command, text)
+            found = _open_file(command, text)
+            if found is not None:
+                return found
     return None
 
 
