@@ -264,7 +264,7 @@ class Ros2Runner:
         if absolute.endswith(".py"):
             # __file__ is where the launch file runs from: its installed place.
             read = read_python(absolute, data, self.work, self.options.env,
-                               self.options.packages.installed(absolute))
+                               lambda: self.options.packages.installed(absolute))
         elif absolute.endswith((".yaml", ".yml")):
             read = read_yaml(absolute, data)
         else:

@@ -28,9 +28,10 @@ _FILL = re.compile(r"[A-Za-z0-9_][\w.+-]*\Z")
 
 
 def alternatives(source: DescriptionSource, display: Callable[[str], str]
-                 ) -> tuple[list[DescriptionSource], str]:
-    """The alternative sources for ``source`` (whose ``open_file`` is set), and the
-    sentence that says what was done (or why nothing was); ``display`` shows a path."""
+                 ) -> tuple[list[DescriptionSource], str | None]:
+    """The alternative sources for ``source`` (whose ``open_file`` is set) and the sentence
+    that says what was done; without any, what was found instead (None when the folder
+    is not there). ``display`` shows a path."""
     assert source.open_file is not None
     before, after, variable = source.open_file
     folder, start = os.path.split(before)
@@ -39,9 +40,7 @@ def alternatives(source: DescriptionSource, display: Callable[[str], str]
     try:
         names = sorted(reads.list_folder(folder)[:MAX_LISTED])
     except OSError:
-        return [], (f"the description file {display(before)}${variable}{after} depends on the "
-                    f"environment variable '{variable}' (not given; use --env), and its "
-                    "folder is not there to choose from")
+        return [], None
     fills = [name[len(start):len(name) - len(after)] for name in names
              if name.startswith(start) and name.endswith(after)
              and len(name) > len(start) + len(after)]
@@ -49,9 +48,7 @@ def alternatives(source: DescriptionSource, display: Callable[[str], str]
              and reads.is_file(os.path.join(folder, start + fill + after))]
     if not fills or len(fills) > MAX_ALTERNATIVES:
         count = "no file" if not fills else f"{len(fills)} files (more than {MAX_ALTERNATIVES})"
-        return [], (f"the description file depends on the environment variable "
-                    f"'{variable}' (not given; use --env): {count} in {shown} match "
-                    f"{pattern}; not read")
+        return [], f"{count} in {shown} match {pattern}"
     made = [replace(source, file=os.path.join(folder, start + fill + after), reason=None,
                     open_file=None,
                     condition=source.condition & Condition((ConditionLiteral(

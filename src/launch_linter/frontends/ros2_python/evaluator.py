@@ -70,9 +70,10 @@ class Evaluator:
     """The environment the run is told of (``--env``, and ``ROS_DISTRO`` from
     ``--ros-distro``): a Python comparison of one of its variables is decided, so that a
     branch for another distribution is not taken."""
-    installed: str | None = None
+    installed: Callable[[], str | None] | None = None
     """Where the file is installed (``share/<pkg>/launch/...``, spelled through the
-    package's source folder), which ``__file__`` names; None: where it is read from."""
+    package's source folder), which ``__file__`` names; None: where it is read from.
+    Asked only when ``__file__`` is read (the install rules are read for that file)."""
 
     # -- helpers -------------------------------------------------------------------------
     def scope(self, parent: Env | None) -> Env:

@@ -77,7 +77,7 @@ class Expressions(Evaluator):
             if found:
                 return value
             if name == "__file__":
-                return self.installed or self.path
+                return (self.installed() if self.installed else None) or self.path
             if name == "__name__":
                 return "__launch__"
             if name in BUILTINS:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import ast
 import os
 import tokenize
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from io import BytesIO
 
 from launch_linter.frontends.ros2_actions import Action, FileRead, Problem, Unfollowed, Where
@@ -52,10 +52,10 @@ def _directive_comments(data: bytes) -> tuple[tuple[int, str], ...]:
 
 def read_python(path: str, data: bytes, budget: Budget | None = None,
                 environ: Mapping[str, str] | None = None,
-                installed: str | None = None) -> FileRead:
+                installed: Callable[[], str | None] | None = None) -> FileRead:
     """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes; ``environ``
-    the environment variables the run is told of; ``installed`` where the file is
-    installed, which ``__file__`` names, when that differs from ``path``)."""
+    the environment variables the run is told of; ``installed`` tells, when asked, where
+    the file is installed, which ``__file__`` names, if that differs from ``path``)."""
     if len(data) > MAX_BYTES:
         message = f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
