@@ -24,9 +24,9 @@ from __future__ import annotations
 
 import os
 import typing
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Mapping
 
-from launch_linter.frontends.robot.xacro_data import yaml_loader
+from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
 from launch_linter.frontends.robot.xacro_values import (
     _GLOB,
     _IDENTIFIER,
@@ -64,40 +64,6 @@ from launch_linter.resolve import reads
 from launch_linter.resolve.eval_values import AttributeDict, _auto_convert
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate, evaluate_value
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
-
-
-class _Symbols(typing.Mapping[str, object]):
-    """The properties visible from a table, evaluated on demand, as the evaluator's args."""
-
-    def __init__(self, expander: XacroExpander, table: _Table) -> None:
-        self._expander = expander
-        self._table = table
-
-    def __contains__(self, name: object) -> bool:
-        return isinstance(name, str) and (self._table.find_property(name) is not None
-                                          or name in ("load_yaml", "xacro"))
-
-    def __getitem__(self, name: str) -> object:
-        found = self._table.find_property(name)
-        if found is None:
-            loader = self._expander.yaml_loader()
-            if name == "xacro":  # xacro's own namespace: xacro.load_yaml(...)
-                return AttributeDict(load_yaml=loader)
-            if name == "load_yaml":
-                return loader
-            raise KeyError(name)
-        value = self._expander.property_value(name, found[0], found[1])
-        if found[1].namespace is not None:
-            return self._expander.namespace_values(found[1].namespace)
-        if found[1].data is not None:
-            return found[1].data
-        return None if value is None else _literal(value)
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(())
-
-    def __len__(self) -> int:
-        return 0
 
 
 class XacroExpander:
@@ -239,7 +205,7 @@ class XacroExpander:
 
     def _expression(self, source: str, table: _Table, as_text: bool = True) -> typing.Any:
         source = _MATH_PREFIX.sub("", source.strip())
-        scope = EvalScope(args=_Symbols(self, table), env={}, find=lambda _: None,
+        scope = EvalScope(args=Symbols(self, table), env={}, find=lambda _: None,
                           anon=lambda name: name, dirname=None)
         self._charge(len(source) + 1)
         try:

@@ -16,10 +16,11 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Callable
+import typing
+from collections.abc import Callable, Iterator
 from typing import Any
 
-from launch_linter.frontends.robot.xacro_values import _Unknown
+from launch_linter.frontends.robot.xacro_values import _literal, _Property, _Table, _Unknown
 from launch_linter.resolve.eval_values import AttributeDict, EvalError, Machine, function
 from launch_linter.resolve.safe_eval import EvalScope, evaluate_value
 from launch_linter.resolve.xml_safe import read_regular_file
@@ -144,3 +145,46 @@ def _size(value: object) -> int:
         return 1 + sum(_size(v) for v in value)
     return 1
 
+
+class _Expander(typing.Protocol):
+    """What :class:`Symbols` asks of the expander."""
+
+    def property_value(self, name: str, table: _Table, prop: _Property) -> str | None: ...
+
+    def yaml_loader(self) -> object: ...
+
+    def namespace_values(self, table: _Table) -> AttributeDict: ...
+
+
+class Symbols(typing.Mapping[str, object]):
+    """The properties visible from a table, evaluated on demand, as the evaluator's args."""
+
+    def __init__(self, expander: _Expander, table: _Table) -> None:
+        self._expander = expander
+        self._table = table
+
+    def __contains__(self, name: object) -> bool:
+        return isinstance(name, str) and (self._table.find_property(name) is not None
+                                          or name in ("load_yaml", "xacro"))
+
+    def __getitem__(self, name: str) -> object:
+        found = self._table.find_property(name)
+        if found is None:
+            loader = self._expander.yaml_loader()
+            if name == "xacro":  # xacro's own namespace: xacro.load_yaml(...)
+                return AttributeDict(load_yaml=loader)
+            if name == "load_yaml":
+                return loader
+            raise KeyError(name)
+        value = self._expander.property_value(name, found[0], found[1])
+        if found[1].namespace is not None:
+            return self._expander.namespace_values(found[1].namespace)
+        if found[1].data is not None:
+            return found[1].data
+        return None if value is None else _literal(value)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(())
+
+    def __len__(self) -> int:
+        return 0
