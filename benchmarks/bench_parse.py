@@ -225,7 +225,7 @@ def main() -> int:
     groups = groups_of(latest_files(ns.corpus)[:: ns.every])
     tune_collector()  # the collector as the ``launch-linter`` command sets it
     passes = {"read": make_read_pass(), "check": make_check_pass()}
-    for name, paths in groups.items():  # warm-up: imports, regular expressions, page cache
+    for paths in groups.values():  # warm-up: imports, regular expressions, page cache
         for function in passes.values():
             function(paths)
     if ns.profile:
