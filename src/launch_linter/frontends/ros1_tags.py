@@ -189,9 +189,11 @@ class Ros1Tags(Ros1Base):
                          f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
             return
         for key in ("value", "default"):
-            source = self._env_in_text(attrib.get(key, ""))
-            if source is not None:
-                self._env_args[name] = source
+            text = attrib.get(key)
+            if text is not None and "$(" in text:
+                source = self._env_in_text(text)
+                if source is not None:
+                    self._env_args[name] = source
         self._declare(context, element, name, value, default, condition)
 
     def _param(self, element: Element, context: _Context,
