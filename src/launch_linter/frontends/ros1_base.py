@@ -194,6 +194,9 @@ class Ros1Base:
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
         self._env_args: dict[str, str] = {}
+        self._child_values: dict[Element, Value] = {}
+        """The resolved ``value`` of each ``<param>`` inside a node whose text names no
+        anonymous name: the node's record reads it again (see ``_frame_node``)."""
         """Args whose value comes from the environment -> the substitution it comes from."""
         """The element whose attribute is being resolved (for errors found meanwhile)."""
         self.budget = Budget()
