@@ -206,6 +206,27 @@ def _gitignore_backtracking(folder: Path) -> str:
     return str(sub)
 
 
+def _gitignore_folder_stars(folder: Path) -> str:
+    """``**`` segments and single stars together: ``pathspec``'s regular expression took
+    minutes on a path of long folder names."""
+    sub = folder / "folder_stars_repo"
+    (sub / ".git").mkdir(parents=True, exist_ok=True)
+    _write(sub, ".gitignore", "**/*a*a/**/*a*a*b\n**/a/**/a/**/a/**/a/**/a/**/a/**/b\n")
+    _write(sub, "/".join(["a" * 200] * 6) + "/x.launch", GOOD)
+    _write(sub, "a/" * 60 + "x.launch", GOOD)
+    return str(sub)
+
+
+def _exclude_backtracking(folder: Path) -> str:
+    """A configuration's ``exclude`` glob that ``fnmatch``'s regular expression matches
+    by backtracking (exponential on Python 3.8)."""
+    sub = folder / "exclude_repo"
+    _write(sub, ".launch-linter.toml",
+           'extend-exclude = ["' + "*a" * 12 + '*b", "' + "*a" * 12 + '*/b"]\n')
+    _write(sub, f"{'a' * 200}/{'a' * 200}.launch", GOOD)
+    return str(sub)
+
+
 THIRD_PASS: dict[str, Case] = {
     "xacro_doubling": Case("work", _xacro_doubling, "steps; stopped"),
     "xacro_big_include": Case("work", _xacro_big_include),
@@ -226,4 +247,6 @@ THIRD_PASS: dict[str, Case] = {
     "nested_folders": Case("discovery", _nested_folders),
     "gitignore_fifo": Case("discovery", _gitignore_fifo),
     "gitignore_backtracking": Case("discovery", _gitignore_backtracking),
+    "gitignore_folder_stars": Case("discovery", _gitignore_folder_stars),
+    "exclude_backtracking": Case("discovery", _exclude_backtracking),
 }
