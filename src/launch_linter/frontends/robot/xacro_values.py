@@ -107,6 +107,14 @@ class Expansion:
     files: list[str]
     defines_macros: bool = False
     """Whether a ``xacro:macro`` was defined (an empty robot made of a macros-only file)."""
+    args_read: frozenset[str] = frozenset()
+    """The xacro args the expansion looked up (given or not): the result depends on the
+    given args only through these names, so a call differing elsewhere may reuse it."""
+    env_read: frozenset[str] = frozenset()
+    """The environment variables ``$(env)``/``$(optenv)`` looked up."""
+    cut_by_budget: bool = False
+    """Stopped by the work budget of the launch tree it was expanded for (not by a bound
+    of its own): another tree, with budget left, must expand it again."""
 
 
 @dataclass
