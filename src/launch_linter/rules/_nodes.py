@@ -126,12 +126,10 @@ __all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of", "view_of"]
 
 def rivals(a: NodeEdge, b: NodeEdge) -> bool:
     """Whether two node edges come from two publishers that run together: not one launch
-    element included twice (that is ``dup_name``'s), not under exclusive conditions, and
-    not one program under two different conditions (the usual alternatives, such as
-    nav2's composed and separate amcl, whose conditions the linter may not relate)."""
-    if a.location == b.location or a.node.condition.excludes(b.node.condition):
-        return False
-    return a.entry.id != b.entry.id or a.node.condition == b.node.condition
+    element included twice (that is ``dup_name``'s), not under exclusive conditions
+    (nav2's composed and separate amcl: ``IfCondition(x)`` and ``IfCondition(
+    PythonExpression(['not ', x]))``)."""
+    return a.location != b.location and not a.node.condition.excludes(b.node.condition)
 
 
 def finding_at_node(node: NodeRecord, message: str,
