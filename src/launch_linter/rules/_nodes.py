@@ -88,9 +88,16 @@ def _view(context: RuleContext) -> NodeView:
     unknown: list[NodeRecord] = []
     unsure: list[NodeRecord] = []
     joint_states = False
+    controllers: set[tuple[str | None, str | None]] = set()
     for node in context.tree.nodes:
         if node.package in STATIC_PUBLISHERS and node.kind == "node":
             continue
+        if node.kind == "controller":
+            # One controller given both in the manager's file and by a spawner's
+            # --param-file is one controller.
+            if (node.name, node.namespace) in controllers:
+                continue
+            controllers.add((node.name, node.namespace))
         if node.kind == "controller" and node.plugin in JOINT_STATE_CONTROLLERS:
             joint_states = True
             continue
