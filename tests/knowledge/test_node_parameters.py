@@ -88,7 +88,10 @@ def test_ros2_controllers_of_a_controller_manager_file(tmp_path: Path) -> None:
     assert controller.given("enable_odom_tf") == "false"
 
 
-@given(st.dictionaries(st.from_regex(r"[a-z_][a-z0-9_]{0,8}", fullmatch=True),
+# Keys that YAML 1.1 reads as booleans or nulls ("no", "on", "null") are not parameter
+# names: left out.
+@given(st.dictionaries(st.from_regex(r"[a-z_][a-z0-9_]{0,8}", fullmatch=True).filter(
+                           lambda key: isinstance(yaml.safe_load(key), str)),
                        st.from_regex(r"[a-z_/][a-z0-9_/]{0,10}", fullmatch=True),
                        max_size=8))
 def test_flat_yaml_reads_flat_text_as_pyyaml_does(pairs: dict[str, str]) -> None:

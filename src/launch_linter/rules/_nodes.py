@@ -41,7 +41,8 @@ class NodeEdge:
 
     def describe(self) -> str:
         shown = self.node.plugin or f"{self.node.package}/{self.node.executable}"
-        return f"node {shown} ({self.node.path}:{self.node.line})"
+        what = "Gazebo plugin" if self.node.kind == "gazebo_plugin" else "node"
+        return f"{what} {shown} ({self.node.path}:{self.node.line})"
 
 
 @dataclass(frozen=True)

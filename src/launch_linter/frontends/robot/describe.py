@@ -14,10 +14,17 @@ import typing
 from collections.abc import Callable, Hashable, Sequence
 from dataclasses import replace
 
+from launch_linter.frontends.params import (
+    CONTROLLER_MANAGER_NAME,
+    controllers_of,
+    read_yaml_file,
+    ros2_file_params,
+)
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import (
+    UNKNOWN_VALUE,
     DescriptionFault,
     DescriptionKind,
     DescriptionSource,
@@ -25,6 +32,7 @@ from launch_linter.model.robot import (
     NodeRecord,
     RobotJoint,
     RobotModel,
+    spawns_into_simulator,
 )
 from launch_linter.resolve import reads
 from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
@@ -177,7 +185,54 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
             joints.extend(robot.joints)
             robots.append(robot)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
-                   problems=tree.problems + tuple(problems_found))
+                   problems=tree.problems + tuple(problems_found),
+                   nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))
+
+
+def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]
+                      ) -> list[NodeRecord]:
+    """The Gazebo plugins of the descriptions, when the tree spawns a description into a
+    simulator (a description only published by robot_state_publisher, as on the real
+    robot, runs no plugin). Each runs under its description's condition and, when every
+    spawner is conditional, the first spawner's; a ros2_control plugin's controller
+    parameter file gives its controllers."""
+    spawners = [n for n in nodes if spawns_into_simulator(n)]
+    if not spawners:
+        return []
+    ros = next((n.ros for n in nodes if n.ros is not None), None)
+    condition = (spawners[0].condition if all(not s.condition.always for s in spawners)
+                 else None)
+    out: list[NodeRecord] = []
+    for robot in robots:
+        for plugin in robot.plugins:
+            plugin = replace(plugin, ros=ros, condition=plugin.condition if condition is None
+                             else plugin.condition & condition)
+            out.append(plugin)
+            out.extend(_simulated_controllers(plugin))
+    return out
+
+
+_ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
+                         "libgz_ros2_control-system.so", "ign_ros2_control-system",
+                         "libign_ros2_control-system.so")
+
+
+def _simulated_controllers(plugin: NodeRecord) -> list[NodeRecord]:
+    """The controllers a simulated ros2_control plugin's ``<parameters>`` file gives
+    (its controller manager is named ``controller_manager``)."""
+    if plugin.plugin not in _ROS2_CONTROL_PLUGINS:
+        return []
+    documents: list[object] = []
+    for key, path in plugin.params:
+        if key == "parameters" and path != UNKNOWN_VALUE:
+            document, why = read_yaml_file(path)
+            if why is None:
+                documents.append(document)
+    params: list[tuple[str, str]] = []
+    for document in documents:
+        params.extend(ros2_file_params(document, CONTROLLER_MANAGER_NAME, plugin.namespace))
+    manager = replace(plugin, params=tuple(params))
+    return controllers_of(manager, documents)
 
 
 def read_description(source: DescriptionSource, packages: PackageIndex, cache: RobotCache,
@@ -186,7 +241,12 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     """The expanded description ``source`` gives (None when it cannot be read), and an
     ``unresolved`` diagnostic per problem of the expansion that is not a fault of its own."""
     # Imported here, as xacro is in RobotCache: only trees that publish a robot need it.
-    from launch_linter.frontends.robot.urdf import elements_of, joints_of, literal_root
+    from launch_linter.frontends.robot.urdf import (
+        elements_of,
+        joints_of,
+        literal_root,
+        plugins_of,
+    )
 
     problems_found: list[Problem] = []
     defines_macros = False
@@ -228,6 +288,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     if root is None:
         return None, problems_found
     found = joints_of(root, source, display, source.condition)
+    plugins = plugins_of(root, display, source.condition, None)
     unknown = [j for j in found if j.reasons]
     for joint in unknown[:20]:
         problems_found.append(Problem(
@@ -239,7 +300,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     elements, names_known = elements_of(root, display, source.condition)
     followed = all(p.kind in (KEPT, DROPPED) for p in problems)
     robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
-                       faults, defines_macros, standalone)
+                       faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found
 
 
