@@ -219,7 +219,8 @@ _ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
 
 def _simulated_controllers(plugin: NodeRecord) -> list[NodeRecord]:
     """The controllers a simulated ros2_control plugin's ``<parameters>`` file gives
-    (its controller manager is named ``controller_manager``)."""
+    (its controller manager is named by ``controller_manager_name``, by default
+    ``controller_manager``)."""
     if plugin.plugin not in _ROS2_CONTROL_PLUGINS:
         return []
     documents: list[object] = []
@@ -228,9 +229,10 @@ def _simulated_controllers(plugin: NodeRecord) -> list[NodeRecord]:
             document, why = read_yaml_file(path)
             if why is None:
                 documents.append(document)
+    name = plugin.given("controller_manager_name") or CONTROLLER_MANAGER_NAME
     params: list[tuple[str, str]] = []
     for document in documents:
-        params.extend(ros2_file_params(document, CONTROLLER_MANAGER_NAME, plugin.namespace))
+        params.extend(ros2_file_params(document, name, plugin.namespace))
     manager = replace(plugin, params=tuple(params))
     return controllers_of(manager, documents)
 

@@ -80,13 +80,13 @@ class XacroProblem:
 PLUGIN_TEXT_TAGS = frozenset({
     # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
     "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",
-    "robotBaseFrame", "frameName", "bodyName", "publishOdom",
+    "robotBaseFrame", "frameName", "bodyName", "publishOdom", "broadcastTF",
     # gazebo_ros (ROS 2): parameters, and <ros><namespace>/<remapping>.
     "namespace", "remapping", "publish_odom_tf", "publish_wheel_tf", "odometry_frame",
     "robot_base_frame", "frame_name", "body_name", "publish_odom",
     # gz-sim systems (diff drive, odometry publisher) and gz_ros2_control.
     "frame_id", "child_frame_id", "tf_topic", "odom_frame", "odom_publish_frequency",
-    "parameters",
+    "parameters", "controller_manager_name",
 })
 """The elements whose text the expander keeps: the parameters of the Gazebo plugins the
 knowledge base knows (tests/knowledge checks that every plugin entry's parameter is one)."""
