@@ -134,9 +134,10 @@ class Ros2Loader(Ros2Runner):
                 for key, subs in group.items:
                     if is_description_name(key.rsplit(".", 1)[-1]):
                         self._ros2_description(subs, scope, frame, where, name)
+        # SetParameter's parameters first: the node's own win over them.
         node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
-            executable or "", name, params, frame.condition,
+            executable or "", name, tuple(scope.parameters) + params, frame.condition,
             unread=unread, namespace=known_namespace, ros=2,
         )
         self.nodes.append(node)
@@ -233,7 +234,8 @@ class Ros2Loader(Ros2Runner):
                 None if pending else namespace)
             self.nodes.append(NodeRecord(
                 self._display(here.filename), component.where.line, component.where.column,
-                package_text, "", name, node_params, here.condition, plugin=plugin_text,
+                package_text, "", name, tuple(scope.parameters) + node_params, here.condition,
+                plugin=plugin_text,
                 unread=unread, namespace=None if pending else namespace, ros=2))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
