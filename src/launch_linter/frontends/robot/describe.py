@@ -205,7 +205,8 @@ def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]
     out: list[NodeRecord] = []
     for robot in robots:
         for plugin in robot.plugins:
-            plugin = replace(plugin, ros=ros, condition=plugin.condition if condition is None
+            plugin = replace(plugin, ros=ros if ros is not None else plugin.ros,
+                             condition=plugin.condition if condition is None
                              else plugin.condition & condition)
             out.append(plugin)
             out.extend(_simulated_controllers(plugin))

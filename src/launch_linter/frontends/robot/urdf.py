@@ -126,25 +126,59 @@ def elements_of(root: ExpandedNode, display: Display,
 
 SIMULATOR_PACKAGE = "gazebo"
 """The package a Gazebo plugin's record names (it runs inside the simulator)."""
+SENSOR_LINK_PARAM = "gazebo_reference"
+"""The parameter a plugin's record gives the link of its ``<gazebo reference=...>``: a
+sensor plugin's default frame (gazebo_ros's SensorFrameID) and the body its sensor looks
+out of."""
 MAX_PLUGINS = 200
+
+
+ROS1_PLUGIN_TAGS = frozenset({"robotNamespace", "frameName", "publishOdomTF",
+                              "odometryFrame", "robotBaseFrame", "bodyName", "broadcastTF"})
+ROS2_PLUGIN_TAGS = frozenset({"ros", "frame_name", "publish_odom_tf", "odometry_frame",
+                              "robot_base_frame", "body_name"})
+
+
+def _ros_of(plugin: ExpandedNode) -> int | None:
+    """The ROS version a gazebo_ros plugin is written for, by its parameters' spelling
+    (ROS 1 camelCase, ROS 2 snake_case and ``<ros>``); None when they do not say."""
+    tags = {child.tag for child in plugin.children}
+    if tags & ROS2_PLUGIN_TAGS:
+        return 2
+    return 1 if tags & ROS1_PLUGIN_TAGS else None
+
+
+def _plugin_elements(gazebo: ExpandedNode) -> list[ExpandedNode]:
+    """The plugins of a ``<gazebo>`` block: its own and its sensors'."""
+    found: list[ExpandedNode] = []
+    for child in gazebo.children:
+        if child.tag == "plugin":
+            found.append(child)
+        elif child.tag == "sensor":
+            found.extend(p for p in child.children if p.tag == "plugin")
+    return found
 
 
 def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                ros: int | None) -> list[NodeRecord]:
     """The ``<gazebo><plugin>`` blocks of a description, each as the record of a plugin
     (``filename``, its parameter elements as parameters, ``<ros><namespace>`` or
-    ``<robotNamespace>`` as its namespace), at the plugin element."""
+    ``<robotNamespace>`` as its namespace), at the plugin element; ``ros`` None leaves the
+    ROS version to the plugin's own spelling."""
     out: list[NodeRecord] = []
     if root.tag != "robot":
         return out
     for gazebo in root.children:
         if gazebo.tag != "gazebo":
             continue
-        for plugin in gazebo.children:
+        reference = gazebo.attrib.get("reference")
+        for plugin in _plugin_elements(gazebo):
             filename = plugin.attrib.get("filename")
-            if plugin.tag != "plugin" or not filename or "filename" in plugin.unknown:
+            if not filename or "filename" in plugin.unknown:
                 continue
             params: list[tuple[str, str]] = []
+            if reference and "reference" not in gazebo.unknown:
+                params.append((SENSOR_LINK_PARAM, reference))
             namespace: str | None = "/"
             for child in plugin.children:
                 inner = child.children if child.tag == "ros" else [child]
@@ -159,7 +193,8 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                 display(plugin.path), plugin.line, plugin.column, SIMULATOR_PACKAGE, "",
                 plugin.attrib.get("name"), tuple(params),
                 outer & _condition(plugin.conditions), kind="gazebo_plugin",
-                plugin=filename, namespace=namespace, ros=ros))
+                plugin=filename, namespace=namespace,
+                ros=ros if ros is not None else _ros_of(plugin)))
             if len(out) >= MAX_PLUGINS:
                 return out
     return out
@@ -182,7 +217,7 @@ def literal_root(text: str, path: str, line: int, own_lines: bool = False
         node.text = element.text.strip()
         # Only joints and Gazebo plugins, with their children, matter; the rest of the
         # tree is not copied.
-        if element.tag in ("robot", "joint", "gazebo", "plugin", "ros"):
+        if element.tag in ("robot", "joint", "gazebo", "sensor", "plugin", "ros"):
             node.children = [convert(child) for child in element.children]
         return node
 
