@@ -159,3 +159,25 @@ def test_ros2_spawner_param_file_gives_the_controller_and_its_parameters(
     assert [n.kind for n in tree.nodes].count("controller") == 2
     edges = view_of(tree, bundled()).edges
     assert [(e.parent, e.child) for e in edges] == [("odom", "base_footprint")]
+
+
+def test_nav2_servers_run_their_costmap_nodes_with_their_sections(tmp_path: Path) -> None:
+    found = nodes(tmp_path, {
+        "nav2.yaml": (
+            "controller_server:\n  ros__parameters:\n    odom_topic: odom\n"
+            "local_costmap:\n  local_costmap:\n    ros__parameters:\n"
+            "      global_frame: odom\n      robot_base_frame: base_footprint\n"
+            "global_costmap:\n  global_costmap:\n    ros__parameters:\n"
+            "      global_frame: /map\n"),
+        "a.launch.xml": (
+            '<launch><node pkg="nav2_controller" exec="controller_server" '
+            'name="controller_server"><param from="$(dirname)/nav2.yaml"/></node>\n'
+            '<node pkg="nav2_planner" exec="planner_server" name="planner_server">'
+            '<param from="$(dirname)/nav2.yaml"/></node></launch>')}, "a.launch.xml")
+    costmaps = {n.name: n for n in found if n.plugin == "nav2_costmap_2d::Costmap2DROS"}
+    assert costmaps["local_costmap"].namespace == "/local_costmap"
+    assert costmaps["local_costmap"].given("robot_base_frame") == "base_footprint"
+    assert costmaps["global_costmap"].given("global_frame") == "/map"
+    options = LintOptions(package_paths=(), select=frozenset({"frame_param_slash"}))
+    found_slash = lint_paths([str(tmp_path / "a.launch.xml")], options).diagnostics
+    assert [d.line for d in found_slash] == [2]

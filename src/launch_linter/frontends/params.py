@@ -202,6 +202,32 @@ def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[Nod
     return out
 
 
+EMBEDDED_COSTMAPS = {
+    ("nav2_controller", "controller_server"): "local_costmap",
+    ("nav2_planner", "planner_server"): "global_costmap",
+}
+"""nav2 servers that run a costmap node of their own in their process
+(``Costmap2DROS(NAME, namespace, NAME)``: the node ``NAMESPACE/NAME/NAME``, navigation2
+controller_server.cpp and planner_server.cpp, humble 3c3db59 and main a3a9704)."""
+COSTMAP_PLUGIN = "nav2_costmap_2d::Costmap2DROS"
+
+
+def embedded_costmap(server: NodeRecord, documents: Sequence[object],
+                     scope_params: Sequence[tuple[str, str]] = ()) -> NodeRecord | None:
+    """The costmap node a nav2 server runs, with the section of the server's parameter
+    files that names it (and what ``SetParameter`` gives every node)."""
+    name = EMBEDDED_COSTMAPS.get((server.package, server.executable))
+    if name is None:
+        return None
+    namespace = (None if server.namespace is None
+                 else "/" + "/".join(p for p in (server.namespace.strip("/"), name) if p))
+    params = list(scope_params)
+    for document in documents:
+        params.extend(ros2_file_params(document, name, namespace))
+    return replace(server, package="nav2_costmap_2d", executable="", name=name,
+                   plugin=COSTMAP_PLUGIN, params=tuple(params), namespace=namespace)
+
+
 CONTROLLER_MANAGER_NAME = "controller_manager"
 """The node name ros2_control_node takes when the launch file gives none."""
 SPAWNERS = ("spawner", "spawner.py")

@@ -26,6 +26,7 @@ from launch_linter.frontends.params import (
     MAX_PARAMS,
     SPAWNERS,
     controllers_of,
+    embedded_costmap,
     read_yaml_file,
     ros2_file_params,
     spawned_controllers,
@@ -141,6 +142,9 @@ class Ros2Loader(Ros2Runner):
             unread=unread, namespace=known_namespace, ros=2,
         )
         self.nodes.append(node)
+        costmap = embedded_costmap(node, documents, scope.parameters)
+        if costmap is not None:
+            self.nodes.append(costmap)
         if package == "controller_manager" and documents:
             self.nodes.extend(controllers_of(node, documents))
         if package == "controller_manager" and executable in SPAWNERS \
