@@ -131,14 +131,19 @@ def _down_to(chain: list[tuple[str, Edge | None]], ancestor: str) -> Quaternion 
     return None
 
 
-def relative_rotation(body: str, frame: str, edges: tuple[Edge, ...]) -> Quaternion | None:
-    """The rotation of ``frame`` in ``body`` over the tree's fixed edges; None when no
-    fixed, known path joins them."""
-    if body == frame:
-        return IDENTITY
+def parents_of(edges: tuple[Edge, ...]) -> dict[str, Edge]:
+    """Each frame's (first) edge to its parent."""
     parents: dict[str, Edge] = {}
     for edge in edges:
         parents.setdefault(edge.child, edge)
+    return parents
+
+
+def relative_rotation(body: str, frame: str, parents: dict[str, Edge]) -> Quaternion | None:
+    """The rotation of ``frame`` in ``body`` over the tree's fixed edges (``parents``:
+    :func:`parents_of`); None when no fixed, known path joins them."""
+    if body == frame:
+        return IDENTITY
     body_chain, frame_chain = _ancestors(body, parents), _ancestors(frame, parents)
     body_names = {name for name, _ in body_chain}
     common = next((name for name, _ in frame_chain if name in body_names), None)
@@ -176,12 +181,12 @@ def check(context: RuleContext) -> Iterator[Finding]:
     plugins = _plugins(context)
     if not plugins:
         return
-    edges = edges_of(context)
+    parents = parents_of(edges_of(context))
     for node in plugins:
         body = node.given(SENSOR_LINK)
         for frame, param in _camera_frames(context, node):
             frame = frame.lstrip("/")
-            rotation = None if body is None else relative_rotation(body, frame, edges)
+            rotation = None if body is None else relative_rotation(body, frame, parents)
             if rotation is not None:
                 if same_rotation(rotation, OPTICAL, 1e-3):
                     continue
