@@ -132,3 +132,26 @@ def test_every_plugin_parameter_of_the_knowledge_base_is_read() -> None:
             for name in entry.get("parameters", {}):
                 assert name in PLUGIN_TEXT_TAGS or name == SENSOR_LINK_PARAM, (
                     entry["id"], name)
+
+
+def test_plugins_and_frame_chains_are_bounded(tmp_path: Path) -> None:
+    """20,000 camera plugins on a 20,000-joint chain: at most MAX_PLUGINS records per
+    description, and the rotation walk stops at its depth cap (the frame is then judged
+    by name)."""
+    from launch_linter.frontends.robot.urdf import MAX_PLUGINS
+
+    count = 20000
+    links = "".join(f'<link name="l{i}"/>' for i in range(count + 1))
+    joints = "".join(f'<joint name="j{i}" type="fixed"><parent link="l{i}"/>'
+                     f'<child link="l{i + 1}"/></joint>' for i in range(count))
+    plugins = "".join(
+        f'<gazebo reference="l{i}"><sensor type="camera" name="c{i}"><plugin name="p{i}" '
+        f'filename="libgazebo_ros_camera.so"><frame_name>l{count}</frame_name></plugin>'
+        f'</sensor></gazebo>' for i in range(count))
+    path = tmp_path / "big.urdf"
+    path.write_text(f'<robot name="r">{links}{joints}{plugins}</robot>')
+    options = LintOptions(package_paths=(), select=frozenset({"camera_frame_not_optical"}))
+    result = lint_paths([str(path)], options)
+    (robot,) = result.trees[0].robots
+    assert len(robot.plugins) == MAX_PLUGINS
+    assert [d.rule for d in result.diagnostics] == ["camera_frame_not_optical"]
