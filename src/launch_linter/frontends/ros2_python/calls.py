@@ -396,9 +396,9 @@ class Calls(Expressions):
             elif isinstance(item, ACTION_TYPES):
                 found.append(item)
             elif isinstance(item, LaunchObject) and item.where is not None and (
-                item.uses or item.condition is not None
+                item.uses or item.condition is not None or item.parameter is not None
             ):
-                found.append(Uses(item.where, item.condition, item.uses))
+                found.append(Uses(item.where, item.condition, item.uses, item.parameter))
         return tuple(found)
 
     # -- defined by a subclass, further on ---------------------------------------------------

@@ -109,7 +109,14 @@ class Interpreter(Calls):
         """A launch class the linter does not model (``SetParameter``, ``LogInfo``, an
         ``ExecuteProcess``): as an action it performs the substitutions it was given."""
         uses = performed([*args, *(v for k, v in kwargs.items() if k != "condition")])
-        return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses)
+        parameter = None
+        if name == "SetParameter":
+            key, value = self.arg(args, kwargs, 0, "name"), self.arg(args, kwargs, 1, "value")
+            if key is not None and value is not None:
+                parameter = (self.subs(key, node, "parameter name"),
+                             self.subs(_parameter_text(value), node, "parameter value"))
+        return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses,
+                            parameter)
 
     def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
                                  node: ast.Call) -> object:
@@ -552,3 +559,12 @@ HANDLERS: Mapping[
 }
 """Every launch class the linter models, by its name: the handler builds the action,
 substitution or condition it stands for from the call's arguments."""
+
+
+def _parameter_text(value: object) -> object:
+    """A ``SetParameter`` value as the text a node is given (``True`` as ``true``)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    return value

@@ -121,6 +121,8 @@ class LaunchObject:
     where: Where | None = None
     condition: Predicate | None = None
     uses: tuple[Subs, ...] = ()
+    parameter: tuple[Subs, Subs] | None = None
+    """``SetParameter``'s name and value."""
 
 
 @dataclass(frozen=True)
