@@ -29,7 +29,7 @@ ROS1_NODE = """<launch>
 """
 
 
-def load(tmp_path: Path, included: str) -> tuple[list[str], list[str], list[str]]:
+def load(tmp_path: Path, included: str) -> tuple[list[str], list[str], list[str | None]]:
     (tmp_path / "test.launch").write_text(ROS1_TEST)
     (tmp_path / "node.launch").write_text(included)
     tree = load_tree(str(tmp_path / "test.launch"), LoadOptions())
