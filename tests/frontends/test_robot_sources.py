@@ -120,3 +120,24 @@ def test_ros2_xml_file_content(tmp_path: Path) -> None:
             'demo_description)/urdf/plain.urdf)"/></node></launch>')
     found = tree(tmp_path, "a.launch.xml", text)
     assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]
+
+
+SDF = ('<sdf version="1.6"><model name="vehicle"><link name="chassis"/><link name="wheel"/>'
+       '<joint name="axle" type="revolute"><parent>chassis</parent><child>wheel</child>'
+       '</joint></model></sdf>')
+
+
+@pytest.mark.parametrize(("model", "sdf"), [("model.sdf", True), ("model.urdf", False)])
+def test_an_sdf_description_is_said_unread(tmp_path: Path, model: str, sdf: bool) -> None:
+    # precision trial, gazebosim/ros_gz: sdf_parser.launch.py gives robot_state_publisher
+    # an SDF model (read through sdformat_urdf); its joints were silently none.
+    (tmp_path / model).write_text(
+        SDF if sdf else '<robot name="r"><link name="a"/><link name="b"/><joint name="j" '
+                        'type="fixed"><parent link="a"/><child link="b"/></joint></robot>')
+    text = ('<launch><node pkg="robot_state_publisher" exec="robot_state_publisher">'
+            f'<param name="robot_description" value="$(file-content $(dirname)/{model})"/>'
+            '</node></launch>')
+    found = tree(tmp_path, "a.launch.xml", text)
+    said = [p.message for p in found.problems if "is SDF" in p.message]
+    assert len(said) == int(sdf)
+    assert [(j.parent, j.child) for j in found.joints] == ([] if sdf else [("a", "b")])
