@@ -33,6 +33,7 @@ from launch_linter.frontends.ros2_python.values import (
     LazyStr,
     ModuleVal,
     OpenFile,
+    PartlyKnownList,
     SubsVal,
     Unknown,
     _as_subs,
@@ -390,6 +391,9 @@ class Calls(Expressions):
                 pending[:0] = item.items
             elif isinstance(item, (list, tuple)):
                 pending[:0] = list(item)
+            elif isinstance(item, PartlyKnownList):
+                # Its known lists are flattened below; each unknown part is said once.
+                pending[:0] = item.parts
             elif isinstance(item, Unknown):
                 found.append(Unfollowed(Where(self.path, item.line, 1),
                                         f"launch entity not followed: {item.describe()}"))

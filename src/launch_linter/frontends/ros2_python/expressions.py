@@ -22,6 +22,7 @@ from launch_linter.frontends.ros2_python.values import (
     LazyStr,
     ModuleVal,
     OpenFile,
+    PartlyKnownList,
     SubsVal,
     Unknown,
     _as_subs,
@@ -52,6 +53,22 @@ def _why_unknown(value: object) -> str | None:
                     "only known when the launch runs")
         return f"{call.written}: only known when the launch runs"
     return None
+
+
+def _partly_known(left: object, right: object) -> Unknown:
+    """``left + right`` where one side is unknown and the other a list (or unknown): the
+    first unknown operand, keeping the parts in order for reading launch entities."""
+    parts: list[object] = []
+    for side in (left, right):
+        if isinstance(side, PartlyKnownList):
+            parts.extend(side.parts)
+        else:
+            parts.append(side)
+    first = next(part for part in parts if isinstance(part, Unknown))
+    assert isinstance(first, Unknown)
+    if len(parts) > MAX_ITEMS:
+        return first
+    return PartlyKnownList(first.reason, first.text, first.line, tuple(parts))
 
 
 class Expressions(Evaluator):
@@ -190,6 +207,10 @@ class Expressions(Evaluator):
         return self.text_value(tuple(parts), node)
 
     def binary(self, op: ast.operator, left: object, right: object, node: ast.AST) -> object:
+        if isinstance(op, ast.Add) and (isinstance(left, Unknown) or isinstance(
+                right, Unknown)) and isinstance(left, (list, tuple, Unknown)) and isinstance(
+                right, (list, tuple, Unknown)):
+            return _partly_known(left, right)
         if isinstance(left, Unknown):
             return left
         if isinstance(right, Unknown):

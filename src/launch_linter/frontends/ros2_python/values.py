@@ -54,6 +54,15 @@ class Unknown:
 
 
 @dataclass(frozen=True)
+class PartlyKnownList(Unknown):
+    """``unknown + [known, ...]`` (or the reverse): unknown as a value, but as launch
+    entities the known operands' items are there for certain (``+`` of a list needs a list
+    on the other side), so they are read and only the unknown part is not followed."""
+
+    parts: tuple[object, ...] = ()
+
+
+@dataclass(frozen=True)
 class SubsVal:
     """A launch substitution object (or a list of them): evaluated only when it runs."""
 
