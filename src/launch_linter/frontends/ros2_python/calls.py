@@ -17,6 +17,7 @@ from launch_linter.frontends.ros2_actions import (
     Uses,
     Where,
 )
+from launch_linter.frontends.ros2_python import moveit
 from launch_linter.frontends.ros2_python.evaluator import _performed
 from launch_linter.frontends.ros2_python.expressions import Expressions
 from launch_linter.frontends.ros2_python.values import (
@@ -32,6 +33,7 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchObject,
     LazyStr,
     ModuleVal,
+    MoveItBuilderVal,
     OpenFile,
     PartlyKnownList,
     SubsVal,
@@ -191,6 +193,8 @@ class Calls(Expressions):
     def method(self, method: BoundMethod, args: list[object], kwargs: dict[str, object],
                node: ast.Call) -> object:
         target, name = method.target, method.name
+        if isinstance(target, MoveItBuilderVal):
+            return moveit.builder_method(self, target, name, args, kwargs, node)
         if isinstance(target, OpenFile) and name == "read" and not args:
             return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, list):

@@ -7,6 +7,7 @@ import ast
 from collections.abc import Callable
 from typing import Any
 
+from launch_linter.frontends.ros2_python import moveit
 from launch_linter.frontends.ros2_python.evaluator import Evaluator, _performed
 from launch_linter.frontends.ros2_python.values import (
     _COMPARE,
@@ -21,6 +22,8 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchObject,
     LazyStr,
     ModuleVal,
+    MoveItBuilderVal,
+    MoveItConfigsVal,
     OpenFile,
     PartlyKnownList,
     SubsVal,
@@ -176,8 +179,10 @@ class Expressions(Evaluator):
             return base
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
+        if isinstance(base, MoveItConfigsVal):
+            return moveit.configs_attribute(self, base, name, node)
         if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,
-                             OpenFile)):
+                             OpenFile, MoveItBuilderVal)):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"
