@@ -141,3 +141,27 @@ def test_an_sdf_description_is_said_unread(tmp_path: Path, model: str, sdf: bool
     said = [p.message for p in found.problems if "is SDF" in p.message]
     assert len(said) == int(sdf)
     assert [(j.parent, j.child) for j in found.joints] == ([] if sdf else [("a", "b")])
+
+
+def test_an_unknown_description_value_is_said_once(tmp_path: Path) -> None:
+    # A robot_state_publisher given a value only launch knows has a robot the linter does
+    # not read: said, so that the tree does not look like one without a description.
+    text = '''from launch import LaunchDescription
+from launch_ros.actions import Node
+import helpers
+
+
+def generate_launch_description():
+    description = helpers.urdf()
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{"robot_description": description}]),
+        Node(package="controller_manager", executable="ros2_control_node",
+             parameters=[{"robot_description": description}]),
+    ])
+'''
+    found = tree(tmp_path, "a.launch.py", text)
+    said = [p.message for p in found.problems if p.message.startswith("robot description")]
+    assert said == ["robot description not read: line 7: calls 'helpers.urdf', which the "
+                    "linter does not model"]
+    assert found.joints == ()

@@ -70,6 +70,7 @@ def test_the_default_description_is_unknown_not_absent(tmp_path: Path) -> None:
     tree = lint(tmp_path, '"arm"', "")
     assert tree.joints == ()
     assert not [p for p in tree.problems if p.rule != "unresolved"]
+    assert any(".setup_assistant" in p.message for p in tree.problems)
 
 
 def test_a_missing_file_in_a_found_package_is_not_a_joint(tmp_path: Path) -> None:
