@@ -165,3 +165,32 @@ def generate_launch_description():
     assert said == ["robot description not read: line 7: calls 'helpers.urdf', which the "
                     "linter does not model"]
     assert found.joints == ()
+
+
+@pytest.mark.parametrize("text", ["toxml()", "toprettyxml(indent='  ')"])
+def test_ros2_python_xacro_process_file(tmp_path: Path, text: str) -> None:
+    # precision trial, gazebosim/ros_gz joint_states.launch.py: xacro.process_file(path)
+    # .toxml() (45 calls in the corpus) was an unknown description.
+    launch = f'''import os
+import xacro
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    path = os.path.join(get_package_share_directory("demo_description"), "urdf",
+                        "robot.urdf.xacro")
+    document = xacro.process_file(path, mappings={{"use_lidar": "false"}})
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{{"robot_description": document.{text}}}]),
+    ])
+'''
+    found = tree(tmp_path, "a.launch.py", launch)
+    (source,) = found.descriptions
+    assert source.kind is DescriptionKind.XACRO and source.args == (("use_lidar", "false"),)
+    assert "sonar" in {j.child for j in found.joints}
+    unknown = launch.replace('mappings={"use_lidar": "false"}', "mappings=helpers.m()")
+    found = tree(tmp_path, "b.launch.py", unknown)
+    assert found.joints == ()

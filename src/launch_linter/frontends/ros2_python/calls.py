@@ -38,11 +38,13 @@ from launch_linter.frontends.ros2_python.values import (
     PartlyKnownList,
     SubsVal,
     Unknown,
+    XacroDocVal,
     _as_subs,
     _Break,
     _Continue,
     _Return,
 )
+from launch_linter.frontends.ros2_python.xacro_call import DOCUMENT_TEXT
 from launch_linter.resolve.bounded import PYTHON_MAX_CALL_DEPTH as MAX_CALL_DEPTH
 from launch_linter.resolve.bounded import PYTHON_MAX_ITEMS as MAX_ITEMS
 from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
@@ -195,6 +197,8 @@ class Calls(Expressions):
         target, name = method.target, method.name
         if isinstance(target, MoveItBuilderVal):
             return moveit.builder_method(self, target, name, args, kwargs, node)
+        if isinstance(target, XacroDocVal) and name in DOCUMENT_TEXT:
+            return target.text
         if isinstance(target, OpenFile) and name == "read" and not args:
             return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, list):

@@ -28,6 +28,7 @@ from launch_linter.frontends.ros2_python.values import (
     PartlyKnownList,
     SubsVal,
     Unknown,
+    XacroDocVal,
     _as_subs,
     _OutOfSteps,
     _plain,
@@ -182,7 +183,7 @@ class Expressions(Evaluator):
         if isinstance(base, MoveItConfigsVal):
             return moveit.configs_attribute(self, base, name, node)
         if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,
-                             OpenFile, MoveItBuilderVal)):
+                             OpenFile, MoveItBuilderVal, XacroDocVal)):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"

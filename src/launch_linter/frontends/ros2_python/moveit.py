@@ -17,33 +17,15 @@ parameter too, which the linter does not read: it stays unknown.
 from __future__ import annotations
 
 import ast
-from typing import Protocol
 
 from launch_linter.frontends.ros2_python.values import (
     LazyStr,
     MoveItBuilderVal,
     MoveItConfigsVal,
     SubsVal,
-    Unknown,
 )
-from launch_linter.resolve.ros2_substitution import Call, Sub, Subs, Text
-
-
-class Unknowns(Protocol):
-    """What the evaluator gives :func:`configs_attribute`."""
-
-    def unknown(self, node: ast.AST, reason: str) -> Unknown: ...
-
-
-class Calls(Unknowns, Protocol):
-    """What the interpreter (``calls.Calls``) gives the builder's functions."""
-
-    def arg(self, args: list[object], kwargs: dict[str, object], position: int,
-            name: str) -> object: ...
-
-    def subs(self, value: object, node: ast.AST, what: str) -> Subs: ...
-
-    def segment(self, node: ast.AST) -> str: ...
+from launch_linter.frontends.ros2_python.xacro_call import Calls, Unknowns, xacro_command
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text
 
 BUILDER_LOADERS = frozenset({
     "robot_description_semantic", "robot_description_kinematics", "joint_limits",
@@ -108,17 +90,7 @@ def _xacro(interp: Calls, target: MoveItBuilderVal, file_path: object, mappings:
     if not _absolute(path):
         share = (Call("find-pkg-share", (target.package,), interp.segment(node)),)
         path = (Call("path-join", (share, path), interp.segment(node)),)
-    words: list[Sub] = [Text("xacro "), *path]
-    if mappings is not None:
-        if not isinstance(mappings, dict) or not all(
-                isinstance(key, str) for key in mappings):
-            return interp.unknown(node, "xacro mappings not known")
-        for key, value in mappings.items():
-            if isinstance(value, Unknown):
-                return value
-            words.extend((Text(f" {key}:="), *interp.subs(value, node, "mapping")))
-    return SubsVal((Call("command", (tuple(words),), interp.segment(node)),))
-
+    return xacro_command(interp, path, mappings, node)
 
 
 _ABSOLUTE_CALLS = ("find-pkg-share", "find-pkg-prefix", "dirname", "filename")

@@ -85,6 +85,14 @@ class MoveItConfigsVal:
 
 
 @dataclass(frozen=True)
+class XacroDocVal:
+    """``xacro.process_file(...)``: the document whose ``toxml()`` is ``text`` (the xacro
+    command's output, :mod:`.xacro_call`)."""
+
+    text: SubsVal
+
+
+@dataclass(frozen=True)
 class SubsVal:
     """A launch substitution object (or a list of them): evaluated only when it runs."""
 
