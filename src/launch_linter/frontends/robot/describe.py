@@ -325,6 +325,14 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             ))
     if root is None:
         return None, problems_found
+    if root.tag == "sdf":
+        # ROS 2's robot_state_publisher reads SDF through the sdformat_urdf parser plugin
+        # (gz-sim demos do); the linter reads URDF only, so the joints are unknown, not none.
+        where = display(source.file) if source.file is not None else "(text)"
+        problems_found.append(_unresolved(
+            source, f"robot description {where} is SDF (<sdf> root, which "
+                    f"robot_state_publisher reads through the sdformat_urdf plugin); "
+                    f"its joints are not read"))
     found = joints_of(root, source, display, source.condition)
     plugins = plugins_of(root, display, source.condition, None)
     unknown = [j for j in found if j.reasons]

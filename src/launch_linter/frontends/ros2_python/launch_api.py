@@ -33,6 +33,7 @@ from launch_linter.frontends.ros2_actions import (
     ros2_run,
     shell_reads_as_words,
 )
+from launch_linter.frontends.ros2_python import moveit, xacro_call
 from launch_linter.frontends.ros2_python.calls import Calls
 from launch_linter.frontends.ros2_python.values import (
     _LEGACY_NODE_KEYWORDS,
@@ -90,6 +91,10 @@ class Interpreter(Calls):
             return self.os_call(dotted, args, node)
         if root == "ament_index_python":
             return self.ament(name, args, node)
+        if dotted == "xacro.process_file":
+            return xacro_call.process_file(self, args, kwargs, node)
+        if root == "moveit_configs_utils" and name == "MoveItConfigsBuilder":
+            return moveit.builder(self, args, kwargs, node)
         if root not in LAUNCH_ROOTS:
             return self.unknown(node, f"calls '{dotted}', which the linter does not model")
         if name == "Parameter" and ".substitutions" in dotted:
