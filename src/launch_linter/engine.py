@@ -5,7 +5,6 @@ from __future__ import annotations
 import contextlib
 import os
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
 from launch_linter.knowledge import KnowledgeBase, bundled
@@ -13,6 +12,7 @@ from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve import reads
@@ -69,42 +69,89 @@ FILES_PER_JOB = 300
 millisecond, a worker's start and the results it sends back tens of milliseconds."""
 
 
-@dataclass(frozen=True)
-class LintOptions:
+class LintOptions(Record):
     """How to resolve launch files and which rules to run."""
 
-    args: dict[str, str] = field(default_factory=dict)
-    env: dict[str, str] = field(default_factory=dict)
-    package_paths: tuple[str, ...] | None = None
+    args: dict[str, str]
+    env: dict[str, str]
+    package_paths: tuple[str, ...] | None
     """``$(find)`` roots; None means the enclosing workspace of each linted file."""
-    environment: tuple[Place, ...] = ()
+    environment: tuple[Place, ...]
     """Package places of a sourced environment (``workspace.environment``), searched
     after the roots and the workspace's own ``install/``/``devel/``."""
-    select: frozenset[str] | None = None
-    ignore: frozenset[str] = frozenset()
-    severity: dict[str, Severity] = field(default_factory=dict)
-    beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
-    jobs: int = 1
+    select: frozenset[str] | None
+    ignore: frozenset[str]
+    severity: dict[str, Severity]
+    beliefs: BeliefSet
+    jobs: int
     """Worker processes; ``AUTO_JOBS`` (0) lets ``auto_jobs`` choose from the file count."""
-    per_path_ignores: tuple[PathIgnore, ...] = ()
-    profile: str = "default"
+    per_path_ignores: tuple[PathIgnore, ...]
+    profile: str
     """``default`` or ``study`` (the study's checks and severities, for ``evaluate``)."""
-    ros: int | None = None
+    ros: int | None
     """1 or 2: read every XML launch file as that ROS's (``--ros``); None: the nearest
     ``package.xml`` decides for ``*.xml`` files, else their content."""
-    ros_distro: str | None = None
+    ros_distro: str | None
     """Target ROS distribution (lower case), for the rules and fixes that depend on it;
     None: from evidence in the files, else unknown."""
-    knowledge: KnowledgeBase | None = None
+    knowledge: KnowledgeBase | None
     """The knowledge base of tf publishers; None: the bundled one."""
 
+    __slots__ = (
+        "args", "env", "package_paths", "environment", "select", "ignore", "severity", "beliefs",
+        "jobs", "per_path_ignores", "profile", "ros", "ros_distro", "knowledge",
+    )
 
-@dataclass(frozen=True)
-class LintResult:
+    def __init__(
+        self,
+        args: dict[str, str] | None = None,
+        env: dict[str, str] | None = None,
+        package_paths: tuple[str, ...] | None = None,
+        environment: tuple[Place, ...] = (),
+        select: frozenset[str] | None = None,
+        ignore: frozenset[str] = frozenset(),
+        severity: dict[str, Severity] | None = None,
+        beliefs: BeliefSet | None = None,
+        jobs: int = 1,
+        per_path_ignores: tuple[PathIgnore, ...] = (),
+        profile: str = "default",
+        ros: int | None = None,
+        ros_distro: str | None = None,
+        knowledge: KnowledgeBase | None = None,
+    ) -> None:
+        _set(self, "args", {} if args is None else args)
+        _set(self, "env", {} if env is None else env)
+        _set(self, "package_paths", package_paths)
+        _set(self, "environment", environment)
+        _set(self, "select", select)
+        _set(self, "ignore", ignore)
+        _set(self, "severity", {} if severity is None else severity)
+        _set(self, "beliefs", BeliefSet.empty() if beliefs is None else beliefs)
+        _set(self, "jobs", jobs)
+        _set(self, "per_path_ignores", per_path_ignores)
+        _set(self, "profile", profile)
+        _set(self, "ros", ros)
+        _set(self, "ros_distro", ros_distro)
+        _set(self, "knowledge", knowledge)
+
+
+class LintResult(Record):
     files: tuple[FileRecord, ...]
     trees: tuple[LaunchTree, ...]
     """Empty when the run was asked not to keep them (``keep_trees=False``)."""
     diagnostics: tuple[Diagnostic, ...]
+
+    __slots__ = ("files", "trees", "diagnostics")
+
+    def __init__(
+        self,
+        files: tuple[FileRecord, ...],
+        trees: tuple[LaunchTree, ...],
+        diagnostics: tuple[Diagnostic, ...],
+    ) -> None:
+        _set(self, "files", files)
+        _set(self, "trees", trees)
+        _set(self, "diagnostics", diagnostics)
 
     @property
     def transforms(self) -> tuple[StaticTransform, ...]:

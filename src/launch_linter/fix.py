@@ -18,10 +18,10 @@ import codecs
 import collections
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import replace
 from typing import Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
+from launch_linter.model.record import replace
 from launch_linter.resolve.xml_safe import declared_encoding, read_regular_file
 from launch_linter.rules._fixes import distro_at_least
 

@@ -114,8 +114,7 @@ def rules_for_profile(profile: str) -> tuple[Rule, ...]:
     leaves out the rules that cannot fire without a target distribution."""
     if profile != "study":
         return RULES
-    from dataclasses import replace
-
+    from launch_linter.model.record import replace
     from launch_linter.rules._profiles import STUDY_EXCLUDED, study_severity
 
     return tuple(

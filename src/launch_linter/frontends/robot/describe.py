@@ -12,11 +12,11 @@ import os
 import re
 import typing
 from collections.abc import Callable, Hashable, Sequence
-from dataclasses import replace
 
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.robot import (
     DescriptionFault,
     DescriptionKind,
