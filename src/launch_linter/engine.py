@@ -45,6 +45,7 @@ from launch_linter.workspace.paths import shown_path
 if TYPE_CHECKING:
     # Imported where a file is linted (``_front_ends``): a run whose results are all in
     # the results cache reads no launch file, and the front-ends are a fifth of start-up.
+    from launch_linter.frontends import python_trees
     from launch_linter.frontends.robot.describe import RobotCache
     from launch_linter.frontends.ros1 import LoadOptions
 
@@ -340,11 +341,17 @@ def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
               cache: Packages, robots: RobotCache | None = None,
               versions: Versions | None = None) -> Linted:
     """One file, isolated: an unexpected exception costs this file only."""
+    from launch_linter.frontends import python_trees
     from launch_linter.frontends.dispatch import load_tree
 
     try:
-        tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
-        return tree, _file_record(item, tree), check_tree(tree, rules, options)
+        # The fixes are located while the front-end's Python syntax trees are at hand, so
+        # that no file is parsed twice (and the results cache keeps them located).
+        with python_trees.keeping() as trees:
+            tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
+            found = check_tree(tree, rules, options)
+        located = _with_located_fixes(found, options.ros_distro, trees=trees)
+        return tree, _file_record(item, tree), list(located)
     except (KeyboardInterrupt, SystemExit):
         raise
     except BaseException as exc:  # one bad file never loses a run
@@ -478,15 +485,15 @@ def _lint_alone(
 
 def _with_located_fixes(
     diagnostics: Sequence[Diagnostic], distro: str | None,
-    sources: dict[str, bytes] | None = None,
+    sources: dict[str, bytes] | None = None, trees: python_trees.Trees | None = None,
 ) -> tuple[Diagnostic, ...]:
-    """``fix.with_located_fixes``, imported only when a finding carries a fix: locating
-    edits (with ``ast`` and ``difflib``) is start-up time a run without one never needs."""
-    if all(d.fix is None for d in diagnostics):
+    """``fix.with_located_fixes``, imported only when a finding carries a fix not located
+    yet: locating edits is start-up time a run without one never needs."""
+    if all(d.fix is None or d.fix.edits for d in diagnostics):
         return tuple(diagnostics)
     from launch_linter.fix import with_located_fixes
 
-    return with_located_fixes(diagnostics, distro, sources)
+    return with_located_fixes(diagnostics, distro, sources, trees)
 
 
 def lint_files(
@@ -577,12 +584,14 @@ def lint_bytes(
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
     load = load_options_for(item, options, {})
+    from launch_linter.frontends import python_trees
     from launch_linter.frontends.dispatch import load_tree
 
-    tree = load_tree(item.path, load, data)
+    with python_trees.keeping() as trees:
+        tree = load_tree(item.path, load, data)
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(
-        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data},
+        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data}, trees,
     )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 
