@@ -11,6 +11,7 @@ import importlib
 import inspect
 import json
 import pickle
+import re
 from pathlib import Path
 from typing import Any
 
@@ -37,7 +38,7 @@ def reference(cls: type, contract: dict[str, Any]) -> type:
         if spec.get("init", True):
             options = {"compare": spec.get("compare", True), "repr": spec.get("repr", True)}
             specs.append((spec["name"], object, dataclasses.field(**options)))
-    made = dataclasses.make_dataclass(cls.__name__, specs, frozen=True,
+    made = dataclasses.make_dataclass(cls.__name__, specs, frozen=contract["frozen"],
                                       order=contract["order"])
     made.__qualname__ = cls.__qualname__
     return made
@@ -47,6 +48,14 @@ def sample_values(contract: dict[str, Any], tag: str) -> dict[str, Any]:
     """A value for every field of ``__init__``: distinct, hashable, comparable, picklable."""
     return {spec["name"]: f"{tag}{index}"
             for index, spec in enumerate(contract["fields"]) if spec.get("init", True)}
+
+
+def shown(value: object) -> str:
+    """``repr(value)`` without an address; an object without its own ``repr`` by type."""
+    text = repr(value)
+    if " object at 0x" in text:
+        return f"<{type(value).__module__}.{type(value).__qualname__}>"
+    return re.sub(r" at 0x[0-9a-f]+>", ">", text)
 
 
 def violations(cls: type, contract: dict[str, Any]) -> list[str]:
@@ -67,7 +76,7 @@ def violations(cls: type, contract: dict[str, Any]) -> list[str]:
     required = {}
     for parameter, spec in zip(parameters, (s for s in contract["fields"]
                                             if s.get("init", True))):
-        if "default" in spec and repr(parameter.default) != spec["default"]:
+        if "default" in spec and shown(parameter.default) != spec["default"]:
             found.append(f"{spec['name']} defaults to {parameter.default!r}, not "
                          f"{spec['default']}")
         elif "default" not in spec and "factory" not in spec:
@@ -78,17 +87,19 @@ def violations(cls: type, contract: dict[str, Any]) -> list[str]:
     for spec in contract["fields"]:
         if "factory" in spec and spec.get("init", True):
             made = getattr(defaults, spec["name"])
-            shown = repr(made) if " object at 0x" not in repr(made) else (
-                f"<{type(made).__module__}.{type(made).__qualname__}>")
-            if shown != spec["factory"]:
-                found.append(f"{spec['name']} is made as {shown}, not {spec['factory']}")
+            if shown(made) != spec["factory"]:
+                found.append(f"{spec['name']} is made as {made!r}, not {spec['factory']}")
     values, others = sample_values(contract, "a"), sample_values(contract, "b")
     made = reference(cls, contract)
     ours, theirs = cls(**values), made(**values)
     if repr(ours) != repr(theirs):
         found.append(f"repr {ours!r} != {theirs!r}")
-    if ours != cls(**values) or hash(ours) != hash(theirs):
-        found.append("equal values: not equal, or a hash other than the dataclass's")
+    if ours != cls(**values):
+        found.append("equal values: not equal")
+    if contract["frozen"] and hash(ours) != hash(theirs):
+        found.append("a hash other than the dataclass's")
+    if not contract["frozen"] and getattr(cls, "__hash__", None) is not None:
+        found.append("hashable, as a mutable dataclass is not")
     for name in init_fields:
         changed = cls(**dict(values, **{name: others[name]}))
         their_changed = made(**dict(values, **{name: others[name]}))
@@ -98,13 +109,21 @@ def violations(cls: type, contract: dict[str, Any]) -> list[str]:
             found.append(f"ordering over {name} is not the dataclass's")
     if ours.__eq__(theirs) is not NotImplemented:
         found.append("compares equal to another class")
-    for attempt in (lambda: setattr(ours, init_fields[0], "x"),
-                    lambda: delattr(ours, init_fields[0]), lambda: setattr(ours, "new", 1)):
+    attempts = [lambda: setattr(ours, "new", 1)]
+    if contract["frozen"]:
+        attempts += [lambda: setattr(ours, init_fields[0], "x"),
+                     lambda: delattr(ours, init_fields[0])]
+    for attempt in attempts:
         try:
             attempt()
-            found.append("assignment or deletion allowed: not frozen")
+            found.append("assignment or deletion allowed: not frozen, or a new attribute")
         except AttributeError:
             pass
+    if not contract["frozen"]:
+        changed = cls(**values)
+        setattr(changed, init_fields[0], others[init_fields[0]])
+        if getattr(changed, init_fields[0]) != others[init_fields[0]]:
+            found.append("a field of a mutable record cannot be assigned")
     for protocol in range(2, pickle.HIGHEST_PROTOCOL + 1):
         again = pickle.loads(pickle.dumps(ours, protocol))
         if type(again) is not cls or again != ours or repr(again) != repr(ours):
@@ -141,7 +160,7 @@ class Grown(Record):
 
 
 def test_the_check_finds_a_record_that_breaks_its_contract() -> None:
-    contract = {"class": "Swapped", "order": False,
+    contract = {"class": "Swapped", "frozen": True, "order": False,
                 "fields": [{"name": "path"}, {"name": "line", "default": "0"}]}
     found = violations(Swapped, contract)
     assert any("fields" in v for v in found)
@@ -149,7 +168,7 @@ def test_the_check_finds_a_record_that_breaks_its_contract() -> None:
 
 
 def test_a_field_annotated_but_not_slotted_is_caught() -> None:
-    contract = {"class": "Grown", "order": False, "fields": [{"name": "path"}]}
+    contract = {"class": "Grown", "frozen": True, "order": False, "fields": [{"name": "path"}]}
     assert any("annotated fields" in v for v in violations(Grown, contract))
 
 
@@ -162,7 +181,8 @@ def test_every_record_of_the_source_is_under_contract() -> None:
         if path.name == "record.py":
             continue
         for line in path.read_text(encoding="utf-8").splitlines():
-            if line.startswith("class ") and line.endswith(("(Record):", "(OrderedRecord):")):
+            if line.startswith("class ") and line.endswith(
+                    ("(Record):", "(OrderedRecord):", "(MutableRecord):")):
                 declared.add(line[len("class "):].split("(")[0])
     assert declared == named
 

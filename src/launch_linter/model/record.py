@@ -85,6 +85,17 @@ class Record:
         return (type(self), self._values(self))
 
 
+class MutableRecord(Record):
+    """A record whose fields may be assigned (a dataclass without ``frozen``): equal by
+    value, so unhashable, as such a dataclass is."""
+
+    __slots__ = ()
+    __hash__ = None  # type: ignore[assignment]
+    # object's own (in C): a record's refusals undone.
+    __setattr__ = object.__setattr__  # type: ignore[assignment]
+    __delattr__ = object.__delattr__
+
+
 class OrderedRecord(Record):
     """A record that also sorts, by its compared fields in order (``order=True``)."""
 
