@@ -100,6 +100,7 @@ def test_check_of_one_ros1_file_imports_nothing_heavy(tmp_path: Path) -> None:
                                 cache=True)
     assert status == 0
     assert "launch_linter.frontends.ros1" not in modules
+    assert "launch_linter.rules.self_transform" not in modules  # no rule runs: none loaded
     assert _heavy(modules) == []
 
 

@@ -48,10 +48,27 @@ def _edge_commands() -> list[ModuleType]:
 def _core_commands(only: str | None = None) -> list[ModuleType]:
     """The core commands' modules in help order (``only``: that command's alone, the
     others' modules are start-up time for nothing)."""
-    import importlib
+    return [_core_command(name) for name in CORE_COMMANDS if only is None or name == only]
 
-    return [importlib.import_module(f"launch_linter.commands.{name}")
-            for name in CORE_COMMANDS if only is None or name == only]
+
+def _core_command(name: str) -> ModuleType:
+    # Each import written out (not importlib): the standalone linter's embedding follows
+    # the imports it reads (generate/embed.py).
+    if name == "check":
+        from launch_linter.commands import check
+
+        return check
+    if name == "transforms":
+        from launch_linter.commands import transforms
+
+        return transforms
+    if name == "rules":
+        from launch_linter.commands import rules
+
+        return rules
+    from launch_linter.commands import explain
+
+    return explain
 
 
 def _named_command(argv: Sequence[str]) -> str | None:

@@ -7,6 +7,7 @@ import os
 from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
+from launch_linter import rules as registry
 from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
@@ -17,8 +18,9 @@ from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve import reads
 from launch_linter.results_cache import Linted, ResultsCache, lint_with_cache
-from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+from launch_linter.rules import Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
+from launch_linter.rules._catalog import CATALOG, CATEGORY_OF, RULE_IDS
 from launch_linter.rules._profiles import STUDY_SEVERITY
 from launch_linter.suppressions import (
     UNUSED_ID,
@@ -172,12 +174,19 @@ def _display_function(item: InputFile) -> object:
 
 
 def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
-    return tuple(
-        r
-        for r in RULES
-        if (options.select is None or r.id in options.select or r.category.value in options.select)
-        and r.id not in options.ignore
-        and r.category.value not in options.ignore
+    selected = selected_ids(options)
+    return tuple(r for r in registry.RULES if r.id in selected)
+
+
+def selected_ids(options: LintOptions) -> frozenset[str]:
+    """The ids of the rules ``options`` select (no rule module needed)."""
+    return frozenset(
+        rule_id
+        for rule_id, category in CATALOG
+        if (options.select is None or rule_id in options.select
+            or category.value in options.select)
+        and rule_id not in options.ignore
+        and category.value not in options.ignore
     )
 
 
@@ -286,18 +295,19 @@ def finish_diagnostics(
     trees: Sequence[LaunchTree], diagnostics: Iterable[Diagnostic], options: LintOptions
 ) -> tuple[Diagnostic, ...]:
     """Apply inline suppressions and per-path ignores to the rules' diagnostics, and sort."""
-    ran = {r.id for r in selected_rules(options)}
-    unused_rule = RULES_BY_ID[UNUSED_ID]
+    ran = selected_ids(options)
     kept, unused = apply_suppressions(
         trees,
         diagnostics,
-        known={r.id: r.category.value for r in RULES},
+        known={rule_id: category.value for rule_id, category in CATEGORY_OF.items()},
         ran=ran,
         report_unused=UNUSED_ID in ran,
     )
+    # The rules themselves (their modules) only when a directive went unused.
+    stamped = [_stamp(registry.RULES_BY_ID[UNUSED_ID], finding_of(u), options) for u in unused]
     out = [
         d
-        for d in (*kept, *(_stamp(unused_rule, finding_of(u), options) for u in unused))
+        for d in (*kept, *stamped)
         if not ignored_by_path(d, options.per_path_ignores)
     ]
     return tuple(sorted(out, key=lambda d: d.sort_key))
@@ -329,7 +339,7 @@ def internal_error_tree(item: InputFile, what: str, line: int = 1) -> LaunchTree
 def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
     """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
     tree = internal_error_tree(item, what, line)
-    rule = RULES_BY_ID["parse_error"]
+    rule = registry.RULES_BY_ID["parse_error"]
     found = [rule.diagnostic(finding_of(p)) for p in tree.problems]
     return tree, _file_record(item, tree), found
 
@@ -597,4 +607,4 @@ def lint_bytes(
 
 
 def rule_ids() -> tuple[str, ...]:
-    return tuple(RULES_BY_ID)
+    return RULE_IDS

@@ -19,7 +19,7 @@ from typing import Any
 from launch_linter.model.diagnostic import Severity
 from launch_linter.model.record import Record, _set
 from launch_linter.resolve.xml_safe import read_regular_file
-from launch_linter.rules import RULES, RULES_BY_ID
+from launch_linter.rules._catalog import CATALOG, CATEGORY_NAMES, CATEGORY_OF
 from launch_linter.suppressions import PathIgnore
 from launch_linter.workspace.toml_fallback import NoTomlParser, loads_without_parser
 
@@ -129,14 +129,14 @@ class Config(Record):
         _set(self, "knowledge", knowledge)
 
 
-def _categories() -> set[str]:
-    return {r.category.value for r in RULES}
+def _categories() -> frozenset[str]:
+    return CATEGORY_NAMES
 
 
 def check_rule_ids(ids: Iterable[str], where: str) -> None:
     """Raise :class:`ConfigError` naming every id that is neither a rule nor a category."""
-    known = sorted({*RULES_BY_ID, *_categories()})
-    unknown = [i for i in ids if i not in RULES_BY_ID and i not in _categories()]
+    known = sorted({*CATEGORY_OF, *_categories()})
+    unknown = [i for i in ids if i not in CATEGORY_OF and i not in _categories()]
     if unknown:
         import difflib  # only for the message of a mistake: not at start-up
 
@@ -281,10 +281,11 @@ def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
                 f"{path}: 'severity.{name}' must be error, warning or info, not {level!r}"
             )
     for name, level in table.items():
-        if name not in RULES_BY_ID:
-            levels.update({r.id: Severity(level) for r in RULES if r.category.value == name})
+        if name not in CATEGORY_OF:
+            levels.update({rule_id: Severity(level) for rule_id, category in CATALOG
+                           if category.value == name})
     for name, level in table.items():
-        if name in RULES_BY_ID:
+        if name in CATEGORY_OF:
             levels[name] = Severity(level)
     return levels
 
