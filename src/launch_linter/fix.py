@@ -351,7 +351,8 @@ def _source(path: str, given: Mapping[str, bytes], trees: Trees | None) -> Sourc
     """``path``'s source: the bytes and tree the front-end parsed, the bytes given, or
     the file read now (None when it cannot be)."""
     parsed = trees.get(os.path.abspath(path)) if trees else None
-    if parsed is not None and (path not in given or given[path] == parsed[0]):
+    if parsed is not None and len(parsed[0]) <= MAX_FIX_BYTES and (
+            path not in given or given[path] == parsed[0]):
         return Source(path, parsed[0], parsed[1])
     data = given[path] if path in given else read_bytes(path)
     return None if data is None else Source(path, data)
