@@ -12,6 +12,18 @@ UNKNOWN_VALUE = "\x00unknown"
 MOVABLE_JOINTS = ("revolute", "continuous", "prismatic", "floating", "planar")
 
 
+SIMULATOR_SPAWNERS = frozenset({
+    ("gazebo_ros", "spawn_model"), ("gazebo_ros", "spawn_entity.py"),
+    ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),
+})
+"""Nodes that give a robot description to a simulator, which then runs its plugins."""
+
+
+def spawns_into_simulator(node: NodeRecord) -> bool:
+    """Whether ``node`` spawns a robot description into Gazebo (classic or gz-sim)."""
+    return node.kind == "node" and (node.package, node.executable) in SIMULATOR_SPAWNERS
+
+
 class DescriptionKind(str, Enum):
     """How a launch file gives ``robot_description``."""
 
@@ -317,9 +329,13 @@ class RobotModel(Record):
     """Whether the description's files define xacro macros (an empty robot made of a
     macros-only file)."""
     standalone: bool
+    plugins: tuple[NodeRecord, ...]
+    """Its ``<gazebo><plugin>`` blocks, as records of kind ``gazebo_plugin``: they run
+    only when a simulator is given the description (see :func:`spawns_into_simulator`)."""
 
     __slots__ = (
         "source", "elements", "joints", "complete", "faults", "defines_macros", "standalone",
+        "plugins",
     )
 
     def __init__(
@@ -331,6 +347,7 @@ class RobotModel(Record):
         faults: tuple[DescriptionFault, ...] = (),
         defines_macros: bool = False,
         standalone: bool = False,
+        plugins: tuple[NodeRecord, ...] = (),
     ) -> None:
         _set(self, "source", source)
         _set(self, "elements", elements)
@@ -339,6 +356,7 @@ class RobotModel(Record):
         _set(self, "faults", faults)
         _set(self, "defines_macros", defines_macros)
         _set(self, "standalone", standalone)
+        _set(self, "plugins", plugins)
 
     @property
     def links(self) -> tuple[RobotElement, ...]:

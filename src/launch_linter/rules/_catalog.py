@@ -46,6 +46,8 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("frame_param_slash", Category.TF),
     ("frame_without_publisher", Category.TF),
     ("robot_frame_collision", Category.TF),
+    ("sim_time_mismatch", Category.TF),
+    ("camera_frame_not_optical", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),
     ("ros2_schema", Category.LAUNCH),
