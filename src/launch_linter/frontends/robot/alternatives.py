@@ -14,8 +14,8 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable
-from dataclasses import replace
 
+from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionSource
 from launch_linter.model.transform import Condition, ConditionLiteral
 from launch_linter.resolve import reads
