@@ -349,9 +349,15 @@ _worker_packages: Packages = {}
 
 
 def _lint_chunk_in_worker(
-    items: Sequence[InputFile], options: LintOptions, keep_trees: bool, record: bool
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool, record: bool,
+    unsaved: dict[str, bytes] | None = None,
 ) -> list[Recorded]:
-    return _lint_chunk(items, options, _worker_packages, keep_trees, record)
+    if not unsaved:
+        return _lint_chunk(items, options, _worker_packages, keep_trees, record)
+    from launch_linter.resolve.xml_safe import unsaved_texts
+
+    with unsaved_texts(unsaved):
+        return _lint_chunk(items, options, _worker_packages, keep_trees, record)
 
 
 def auto_jobs(files: int) -> int:
@@ -378,13 +384,17 @@ def _lint_parallel(
     from concurrent.futures import ProcessPoolExecutor
     from concurrent.futures.process import BrokenProcessPool
 
+    from launch_linter.resolve.xml_safe import held_unsaved
+
+    unsaved = held_unsaved()  # the texts --diff has fixed, not on disk
     # Several chunks per worker balance uneven files; results are put back in input order,
     # so the result is the serial one.
     size = max(1, -(-len(inputs) // (jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
     results: list[list[Recorded] | None] = [None] * len(chunks)
     with ProcessPoolExecutor(max_workers=min(jobs, len(chunks))) as pool:
-        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees, record)
+        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees, record,
+                               unsaved)
                    for chunk in chunks]
         for index, future in enumerate(futures):
             with contextlib.suppress(BrokenProcessPool):
@@ -409,12 +419,16 @@ def _lint_alone(
     from concurrent.futures import ProcessPoolExecutor
     from concurrent.futures.process import BrokenProcessPool
 
+    from launch_linter.resolve.xml_safe import held_unsaved
+
+    unsaved = held_unsaved()
     out: dict[str, Recorded] = {}
     remaining = list(items)
     while remaining:
         again: list[InputFile] = []
         with ProcessPoolExecutor(max_workers=1) as pool:
-            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees, record)
+            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees,
+                                       record, unsaved)
                        for item in remaining]
             for position, item in enumerate(remaining):
                 future = futures[position]
