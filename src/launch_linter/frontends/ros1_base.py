@@ -15,6 +15,7 @@ from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.included import through_include
 from launch_linter.model.launch import (
     Comment,
     FileStatus,
@@ -164,8 +165,8 @@ class Ros1Base:
         # A file included many times reports each of its problems once: the same element
         # gives the same problem every time, and a hostile tree can repeat one 100,000 times.
         self._reported: set[tuple[object, ...]] = set()
-        self._included_at: dict[str, tuple[str, int]] = {}
-        """The include being walked for each included file (its file and line)."""
+        self._included_at: dict[str, Location] = {}
+        """The include being walked for each included file (its place)."""
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -207,12 +208,7 @@ class Ros1Base:
             return
         self._reported.add(key)
         site = self._included_at.get(path) if rule == "unresolved" else None
-        if site is not None:
-            # Which include gave the text its values: a file included with other
-            # arguments elsewhere can say something else at the same line.
-            problem = Problem(rule, problem.path, line, column,
-                              f"{message} (included from {site[0]}:{site[1]})", node, related)
-        self.problems.append(problem)
+        self.problems.append(problem if site is None else through_include(problem, site))
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         source = (

@@ -40,7 +40,8 @@ from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.budget import Budget, BudgetExceeded
-from launch_linter.model.diagnostic import Problem
+from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.included import through_include
 from launch_linter.model.launch import (
     Comment,
     FileStatus,
@@ -188,6 +189,9 @@ class Ros2Runner:
         self.declarations = Declarations()
         self._reading: tuple[Where, _Frame] | None = None
         """Where the value being resolved is read (for the launch configurations it reads)."""
+        self._included_at: dict[str, Location] = {}
+        """The include being run for each included file (its place)."""
+        self._reported_included: set[tuple[str, str, int, int, str]] = set()
 
     # -- diagnostics -------------------------------------------------------------------
     def _display(self, path: str) -> str:
@@ -198,9 +202,17 @@ class Ros2Runner:
         return shown
 
     def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
-        self.problems.append(Problem(
-            rule, self._display(where.path), where.line, where.column, message, node
-        ))
+        problem = Problem(rule, self._display(where.path), where.line, where.column, message,
+                          node)
+        site = self._included_at.get(where.path) if rule == "unresolved" else None
+        if site is not None:
+            # Once per cause and place in a tree, naming the first include that reached it.
+            key = (rule, where.path, where.line, where.column, message)
+            if key in self._reported_included:
+                return
+            self._reported_included.add(key)
+            problem = through_include(problem, site)
+        self.problems.append(problem)
 
     # -- files -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
@@ -530,6 +542,8 @@ class Ros2Runner:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         self.work.produce(len(data))
+        self._included_at[absolute] = Location(self._display(frame.filename), action.where.line,
+                                               action.where.column)
         read = self._read_file(absolute, data)
         if read.actions is None:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
