@@ -61,7 +61,7 @@ def main() -> int:
         patched.mkdir()
         _copy(files, patched)
         shutil.copytree(patched, fixed)
-        options = ("--unsafe-fixes", "--ros-distro", ns.distro, "--exit-zero")
+        options = ("--unsafe-fixes", "--ros-distro", ns.distro, "--exit-zero", "--no-cache")
         done = _linter(patched, "--diff", *options)
         patch = done.stdout
         headers = patch.count(b"\n+++ ") + patch.startswith(b"+++ ")

@@ -22,7 +22,12 @@ from dataclasses import replace
 from typing import Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
-from launch_linter.resolve.xml_safe import declared_encoding, read_regular_file, unsaved_text
+from launch_linter.resolve.xml_safe import (
+    declared_encoding,
+    read_regular_file,
+    unsaved_text,
+    unsaved_texts,
+)
 from launch_linter.rules._fixes import distro_at_least
 
 MAX_FIX_BYTES = 8 * 1024 * 1024
@@ -541,6 +546,7 @@ __all__ = [
     "locate",
     "locate_in",
     "read_bytes",
+    "unsaved_texts",
     "wanted",
     "with_located_fixes",
 ]

@@ -218,7 +218,6 @@ def _print_diff(ns: argparse.Namespace, options: LintOptions, config: Config,
     the texts fixed so far in place of the files. Exit 1 when there is any."""
     from launch_linter import fix as fixing
     from launch_linter.report import diff
-    from launch_linter.resolve.xml_safe import unsaved_texts
 
     guard = _write_guard(ns)
     before: dict[str, bytes] = {}
@@ -230,7 +229,7 @@ def _print_diff(ns: argparse.Namespace, options: LintOptions, config: Config,
             last.append(lint_command_paths(ns, options, config, False, cache))
         else:
             # Fixed texts are not on disk: no cached result holds for them.
-            with unsaved_texts(after):
+            with fixing.unsaved_texts(after):
                 last.append(lint_command_paths(ns, options, config, False, None))
         return last[-1].diagnostics
 
