@@ -53,6 +53,7 @@ from launch_linter.resolve.value import (
     holes,
     is_resolved,
     resolved_text,
+    shown_value,
     text_of,
     why_unresolved,
 )
@@ -221,7 +222,7 @@ class Ros1Loader(Ros1Tags):
         if path is None:
             reasons = why_unresolved(file_value)
             self._report("unresolved", context.filename, element,
-                         f"include file {text_of(file_value)!r} not followed: {reasons}")
+                         f"include file {shown_value(file_value)!r} not followed: {reasons}")
             return
         absolute = self._locate(path, context.filename)
         if absolute is None:
@@ -231,10 +232,12 @@ class Ros1Loader(Ros1Tags):
                 near=os.path.dirname(context.filename))
             if located.path is None and not located.absent and not self.options.study_errors:
                 self._report("unresolved", context.filename, element,
-                             f"include file {path!r} not followed: {located.reason}")
+                             f"include file {self._quoted(path)!r} not followed: "
+                             f"{located.reason}")
                 return
             if located.path is None:
-                self._error(context, element, f"included file not found: {path}")
+                self._error(context, element,
+                            f"included file not found: {self._quoted(path)}")
                 return
             absolute = located.path
         call = include_call(absolute, child.args)
@@ -260,7 +263,8 @@ class Ros1Loader(Ros1Tags):
             data = read_launch_bytes(absolute)
         except OSError as exc:
             self._error(context, element,
-                        f"cannot read included file {path}: {exc.strerror or exc}")
+                        f"cannot read included file {self._quoted(path)}: "
+                        f"{exc.strerror or exc}")
             return
         self.budget.produce(len(data))
         root = self._parse(absolute, data)
@@ -281,7 +285,8 @@ class Ros1Loader(Ros1Tags):
             unused = [name for name in args_passed if name not in child.arg_names]
             if unused:
                 self._error(context, element,
-                            f"unused args [{', '.join(unused)}] for include of [{path}]")
+                            f"unused args [{', '.join(unused)}] for include of "
+                            f"[{self._quoted(path)}]")
 
     @staticmethod
     def _locate(path: str, including_file: str) -> str | None:

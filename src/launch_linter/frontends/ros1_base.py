@@ -23,6 +23,7 @@ from launch_linter.model.launch import (
     holds_directive,
     may_hold_directive,
 )
+from launch_linter.model.paths import shown_path
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.substitution import (
@@ -53,11 +54,12 @@ _MACHINE_ATTRS = ("env-loader", "ssh-port", "user", "password", "default", "time
 
 
 def relative_to_cwd(path: str) -> str:
-    """``os.path.relpath(path)``, quicker for the usual case of a path below the cwd."""
+    """``shown_path(path)`` (relative under the cwd, absolute elsewhere), quicker for the
+    usual case of a path below the cwd."""
     folder = os.getcwd()
     if path.startswith(folder) and path[len(folder):len(folder) + 1] == os.sep:
         return os.path.normpath(path[len(folder) + 1:])
-    return os.path.relpath(path)
+    return shown_path(path)
 
 
 _VALUE_ERRORS = ("Invalid <param> tag", "included file not found", "<group> tag has an empty",
@@ -250,6 +252,11 @@ class Ros1Base:
         if shown is None:
             shown = self._displays[path] = self.options.display_path(path)
         return shown
+
+    def _quoted(self, path: str) -> str:
+        """A path a message quotes, shown as the report shows file paths (an empty
+        one as it is)."""
+        return self._display(path) if path else path
 
     # -- entry -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:

@@ -71,6 +71,7 @@ from launch_linter.resolve.value import (
     holes,
     is_resolved,
     resolved_text,
+    shown_value,
     text_of,
     why_unresolved,
 )
@@ -200,6 +201,11 @@ class Ros2Runner:
         if shown is None:
             shown = self._displayed[path] = self.options.display_path(path)
         return shown
+
+    def _quoted(self, path: str) -> str:
+        """A path a message quotes, shown as the report shows file paths (an empty
+        one as it is)."""
+        return self._display(path) if path else path
 
     def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
         problem = Problem(rule, self._display(where.path), where.line, where.column, message,
@@ -488,31 +494,32 @@ class Ros2Runner:
         if path is None:
             reasons = why_unresolved(path_value)
             self._report("unresolved", action.where,
-                         f"include file {text_of(path_value)!r} not followed: {reasons}")
+                         f"include file {shown_value(path_value)!r} not followed: {reasons}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         absolute, located = find_included(path, frame.filename, self.options.packages)
         if absolute is None:
+            shown = path if path.startswith("~") else self._quoted(path)
             if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
-                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                self._report("unresolved", action.where, f"include file {shown!r} not followed: "
                              f"it is under the user's home directory, which depends on the machine")
                 self.declarations.opened(f"line {action.where.line}: an include is not followed")
                 return
             variables = [v for v in environment_names(action.path) if v not in scope.env]
             if variables and not self.options.study_errors:
                 # os.getenv('TEST_LAUNCH_DIR', '') is set by whoever runs the file.
-                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                self._report("unresolved", action.where, f"include file {shown!r} not followed: "
                              f"it depends on the environment ({', '.join(variables)}; give "
                              f"them with --env)")
                 self.declarations.opened(f"line {action.where.line}: an include is not followed")
                 return
             if located is not None and not located.absent and not self.options.study_errors:
                 self._report("unresolved", action.where,
-                             f"include file {path!r} not followed: {located.reason}")
+                             f"include file {shown!r} not followed: {located.reason}")
                 self.declarations.opened(f"line {action.where.line}: an include is not followed")
                 return
-            self._report("roslaunch_error", action.where, f"included file not found: {path}")
+            self._report("roslaunch_error", action.where, f"included file not found: {shown}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         call = (absolute, given)
@@ -538,7 +545,8 @@ class Ros2Runner:
             data = read_launch_bytes(absolute)
         except OSError as exc:
             self._report("roslaunch_error", action.where,
-                         f"cannot read included file {path}: {exc.strerror or exc}")
+                         f"cannot read included file {self._display(absolute)}: "
+                         f"{exc.strerror or exc}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         self.work.produce(len(data))

@@ -5,6 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Tuple, Union
 
+from launch_linter.model.paths import shown_in_text
+
 MAX_REASON = 300
 """Longest reason kept in a hole."""
 
@@ -60,6 +62,13 @@ def text_of(value: Value) -> str:
     if len(value) == 1 and type(value[0]) is str:
         return value[0]
     return "".join(p if isinstance(p, str) else p.text for p in value)
+
+
+def shown_value(value: Value) -> str:
+    """``text_of(value)`` as a message quotes a path: the absolute folder its resolved
+    start names shown relative to the current folder when under it (``shown_in_text``)."""
+    known = len(value[0]) if value and type(value[0]) is str else 0
+    return shown_in_text(text_of(value), known)
 
 
 def resolved_text(value: Value) -> str | None:

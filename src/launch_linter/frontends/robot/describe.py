@@ -17,6 +17,7 @@ from dataclasses import replace
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.paths import shown_in_text
 from launch_linter.model.robot import (
     DescriptionFault,
     DescriptionKind,
@@ -53,7 +54,9 @@ class RobotCache:
         what scanning them read: ``reads.remembered``)."""
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
-                  packages: PackageIndex, env: dict[str, str]) -> Expansion:
+                  packages: PackageIndex, env: dict[str, str],
+                  display: Callable[[str], str] | None = None) -> Expansion:
+        # ``display`` is the run's (relative under the cwd), the same for every use.
         key = (file, args, packages.key, tuple(sorted(env.items())))
 
         def expand_file() -> Expansion:
@@ -62,7 +65,7 @@ class RobotCache:
             from launch_linter.frontends.robot.xacro import expand
 
             return expand(file, dict(args), packages.find, env,
-                          locate=lambda path: packages.locate(path).path)
+                          locate=lambda path: packages.locate(path).path, display=display)
 
         # Every launch file that uses the expansion depends on the files it read.
         return reads.remembered(self._expansions, key, expand_file)
@@ -134,8 +137,9 @@ def _unresolved_file(text: str, command: Value) -> str:
     inside = tuple(hole for hole in holes(command) if hole.text in text)
     if not inside:
         return f"the description file {text!r} is not resolved"
+    shown = shown_in_text(text, min(text.find(hole.text) for hole in inside))
     if all(blocker(hole)[0] == hole.text for hole in inside):
-        return f"the description file {text!r} is not resolved: {why_unresolved(inside)}"
+        return f"the description file {shown!r} is not resolved: {why_unresolved(inside)}"
     return f"the description file depends on {why_unresolved(inside)}"
 
 
@@ -199,7 +203,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
 
         expansion = expand(source.file, dict(source.args), packages.find, env,
                            source.text.encode("utf-8"),
-                           lambda path: packages.locate(path).path)
+                           lambda path: packages.locate(path).path, display)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     else:
@@ -211,7 +215,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                                               f"not read: {located.reason}")]
         args = source.args if source.kind is DescriptionKind.XACRO else ()
         expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
-                                    packages, env)
+                                    packages, env, display)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     faults = _faults(problems, source, display)

@@ -94,8 +94,11 @@ class XacroExpander:
         find: Callable[[str], str | None],
         env: Mapping[str, str] | None = None,
         locate: Callable[[str], str | None] | None = None,
+        display: Callable[[str], str] | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
+        self.display = display or _as_given
+        """How a message shows a path it quotes (the run's: relative under the cwd)."""
         """xacro args; None is an arg given with a value the linter does not know."""
         self.find = find
         self.locate = locate
@@ -172,14 +175,15 @@ class XacroExpander:
             data = read_launch_bytes(absolute) if data is None else data
         except OSError as exc:
             if at is None:
-                raise _Abort(f"cannot read {absolute}: {exc.strerror or exc}", *where) from None
-            self._problem(where[0], where[1], f"cannot read included file {absolute}: "
-                          f"{exc.strerror or exc}")
+                # The message is placed at the file itself: it names it already.
+                raise _Abort(f"cannot read the file: {exc.strerror or exc}", *where) from None
+            self._problem(where[0], where[1], f"cannot read included file "
+                          f"{self.display(absolute)}: {exc.strerror or exc}")
             return None
         try:
             return parse_xml(data).root
         except XmlError as exc:
-            message = f"{absolute}:{exc.line}: not well-formed XML: {exc.message}"
+            message = f"{self.display(absolute)}:{exc.line}: not well-formed XML: {exc.message}"
             if at is None:
                 raise _Abort(message, absolute, exc.line) from None
             self._problem(where[0], where[1], message)
@@ -469,7 +473,7 @@ class XacroExpander:
             elif element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
             else:
-                raise _Unknown(f"included file {filename} not found")
+                raise _Unknown(f"included file {self.display(target)} not found")
         included = self._read(target, (path, element.line))
         if included is None:
             return
@@ -592,11 +596,17 @@ def _boolean(value: str) -> bool | None:
 def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
            env: Mapping[str, str] | None = None, data: bytes | None = None,
-           locate: Callable[[str], str | None] | None = None) -> Expansion:
+           locate: Callable[[str], str | None] | None = None,
+           display: Callable[[str], str] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
     ``data`` is expanded as if it were that file (text linted by ``lint_text``);
-    ``locate`` maps an included path that is not there to the file installed there."""
-    return XacroExpander(args, find, env, locate).expand(path, data)
+    ``locate`` maps an included path that is not there to the file installed there;
+    ``display`` shows a path a message quotes."""
+    return XacroExpander(args, find, env, locate, display).expand(path, data)
+
+
+def _as_given(path: str) -> str:
+    return path
 
 
 __all__ = [
