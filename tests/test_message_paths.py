@@ -167,3 +167,16 @@ def test_shown_in_text_keeps_the_unresolved_rest_as_written(
     assert shown_in_text(written, len(f"{tmp_path}/pkg/launch/")) == "pkg/launch/$(arg a/b).launch"
     assert shown_in_text("$(find x)/a.launch", 0) == "$(find x)/a.launch"
     assert shown_in_text("/elsewhere/$(arg a)", len("/elsewhere/")) == "/elsewhere/$(arg a)"
+
+
+def test_a_configuration_error_names_the_file_as_paths_are_shown(
+    tree: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (tree / "pkg" / "pyproject.toml").write_text("[tool.launch-linter]\nbogus = 1\n")
+    monkeypatch.chdir(tree / "pkg")
+    assert main(["check", "."]) == 2
+    assert capsys.readouterr().err.startswith(
+        "launch-linter: error: pyproject.toml: unknown key(s) 'bogus'")
+    monkeypatch.chdir(tree / "pkg" / "launch")  # the file is above: absolute
+    assert main(["check", "."]) == 2
+    assert f"error: {tree / 'pkg' / 'pyproject.toml'}: unknown" in capsys.readouterr().err
