@@ -164,3 +164,44 @@ def test_text_of_the_file_linted_itself_names_no_include(
     document = json.loads(_run(capsys, "part.launch.py", "--format", "json"))
     (found,) = document["diagnostics"]
     assert found["included_from"] is None and "included from" not in found["message"]
+
+
+SPAWN = """<launch>
+  <arg name="model" default="base"/>
+  <param name="robot_description" command="xacro $(dirname)/$(arg model).urdf.xacro"/>
+  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+</launch>
+"""
+
+VARIANT = """<?xml version="1.0"?>
+<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:include filename="$(find missing_sensors)/urdf/sonar.urdf.xacro"/>
+  <link name="base_link"/>
+  <xacro:sonar_sensor parent="base_link"/>
+</robot>
+"""
+
+WITH_CAMERA = """<launch>
+  <include file="$(dirname)/spawn.launch"><arg name="model" value="camera"/></include>
+</launch>
+"""
+
+
+def test_a_description_an_include_gives_names_the_include_once_per_variant(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A multi-robot ROS 1 stack: spawn.launch is linted alone (its default model) and
+    included for another model; a description whose sensor include is not read names
+    that include, not the macro it would have defined."""
+    _project(tmp_path, {"spawn.launch": SPAWN, "base.urdf.xacro": VARIANT,
+                        "camera.urdf.xacro": VARIANT, "with_camera.launch": WITH_CAMERA,
+                        "also_camera.launch": WITH_CAMERA})
+    monkeypatch.chdir(tmp_path / "pkg")
+    lines = [line for line in _run(capsys, ".").splitlines() if "spawn.launch:3:" in line]
+    assert all("unknown macro" not in line for line in lines), lines
+    base = [line for line in lines if "base.urdf.xacro:3:" in line]
+    camera = [line for line in lines if "camera.urdf.xacro:3:" in line]
+    assert len(base) == 1 and "included from" not in base[0]
+    # Included by two roots: once, naming the first include.
+    assert len(camera) == 1, lines
+    assert camera[0].endswith("(included from also_camera.launch:2) [unresolved]")

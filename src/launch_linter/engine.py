@@ -12,6 +12,7 @@ from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
+from launch_linter.model.included import cause
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -492,7 +493,9 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
     """The findings of every file, each once: a file linted on its own and also included
     by another input is reported once (the same place, rule and message found from two
     roots, or under two spellings of its path, is one finding, at the highest level any
-    root gives it: a xacro file linted alone and loaded by a launch file)."""
+    root gives it: a xacro file linted alone and loaded by a launch file). The include a
+    message about included text names does not make another cause: the finding of the
+    file linted alone is kept, else the first include's."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
     for diagnostics_of_file in found:
@@ -500,9 +503,12 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
             where = real.get(diagnostic.path)
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
-            key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
+            text = cause(diagnostic.message, diagnostic.related)
+            key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, text)
             known = diagnostics.setdefault(key, diagnostic)
-            if diagnostic.severity.rank > known.severity.rank:
+            rank, known_rank = diagnostic.severity.rank, known.severity.rank
+            if rank > known_rank or (rank == known_rank and text == diagnostic.message
+                                     and known.message != text):
                 diagnostics[key] = diagnostic
     return list(diagnostics.values())
 

@@ -276,8 +276,9 @@ class Ros1Loader(Ros1Tags):
         child.chain = (*context.chain, absolute)
         child.calls = (*context.calls, call)
         child.included_from = (self._display(context.filename), element.line)
-        self._included_at[absolute] = Location(child.included_from[0], element.line,
-                                               element.column)
+        site = self._included_at[absolute] = Location(child.included_from[0], element.line,
+                                                      element.column)
+        self.include_sites.setdefault(self._display(absolute), site)
         self._launch_conditions(root, child)
         self._walk(root.children, child)
         self._path = context.filename

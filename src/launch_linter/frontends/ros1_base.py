@@ -169,6 +169,8 @@ class Ros1Base:
         self._reported: set[tuple[object, ...]] = set()
         self._included_at: dict[str, Location] = {}
         """The include being walked for each included file (its place)."""
+        self.include_sites: dict[str, Location] = {}
+        """Each included file's first include, by the file's shown path."""
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []

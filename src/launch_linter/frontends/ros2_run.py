@@ -192,6 +192,8 @@ class Ros2Runner:
         """Where the value being resolved is read (for the launch configurations it reads)."""
         self._included_at: dict[str, Location] = {}
         """The include being run for each included file (its place)."""
+        self.include_sites: dict[str, Location] = {}
+        """Each included file's first include, by the file's shown path."""
         self._reported_included: set[tuple[str, str, int, int, str]] = set()
 
     # -- diagnostics -------------------------------------------------------------------
@@ -550,8 +552,9 @@ class Ros2Runner:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         self.work.produce(len(data))
-        self._included_at[absolute] = Location(self._display(frame.filename), action.where.line,
-                                               action.where.column)
+        site = self._included_at[absolute] = Location(
+            self._display(frame.filename), action.where.line, action.where.column)
+        self.include_sites.setdefault(self._display(absolute), site)
         read = self._read_file(absolute, data)
         if read.actions is None:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")

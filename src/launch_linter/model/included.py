@@ -30,3 +30,10 @@ def included_from(message: str, related: tuple[Location, ...]) -> Location | Non
     if not related or not message.endswith(note(related[-1])):
         return None
     return related[-1]
+
+
+def cause(message: str, related: tuple[Location, ...]) -> str:
+    """The message without the include it names: the same cause reached from two roots
+    (a file linted alone and included, or included by two roots) is one finding."""
+    site = included_from(message, related)
+    return message if site is None else message[: -len(note(site))]

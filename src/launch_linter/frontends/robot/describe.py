@@ -11,11 +11,12 @@ from __future__ import annotations
 import os
 import re
 import typing
-from collections.abc import Callable, Hashable, Sequence
+from collections.abc import Callable, Hashable, Mapping, Sequence
 from dataclasses import replace
 
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
-from launch_linter.model.diagnostic import Problem
+from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.included import through_include
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.paths import shown_in_text
 from launch_linter.model.robot import (
@@ -149,10 +150,13 @@ def literal_kind(text: str) -> bool:
 
 
 def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | None,
-                 display: Callable[[str], str], env: dict[str, str]) -> LaunchTree:
+                 display: Callable[[str], str], env: dict[str, str],
+                 sites: Mapping[str, Location] | None = None) -> LaunchTree:
     """The tree with the joints of the descriptions that a robot_state_publisher of the
     tree publishes (in ROS 1 a ``robot_description`` parameter without one is not
-    published by this tree), and an ``unresolved`` diagnostic per problem."""
+    published by this tree), and an ``unresolved`` diagnostic per problem; one about a
+    description an included file gives names that file's include (``sites``: each
+    included file's first include, by the file's shown path)."""
     if not tree.descriptions:
         return tree
     publishes = any(node.package == RSP_PACKAGE for node in tree.nodes)
@@ -180,6 +184,10 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         if robot is not None:
             joints.extend(robot.joints)
             robots.append(robot)
+    if sites:
+        problems_found = [problem if problem.path not in sites
+                          else through_include(problem, sites[problem.path])
+                          for problem in problems_found]
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found))
 
@@ -220,7 +228,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         defines_macros = expansion.defines_macros
     faults = _faults(problems, source, display)
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
-    followed_up = [p for p in problems
+    followed_up = [p for p in _causes(problems)
                    if (display(p.path), p.line, p.message) not in proven]
     for problem in followed_up[:20]:
             where = display(problem.path)
@@ -268,6 +276,19 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
         # A refusal stops the real xacro; what comes after it is checked as if it did not.
         followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
     return tuple(out)
+
+
+def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
+    """The problems that are causes of their own: after an include not read (or another
+    thing not followed) a refusal such as "unknown macro" may only follow from it, so it
+    is not a cause of its own (nor a fault: see :func:`_faults`)."""
+    out: list[XacroProblem] = []
+    followed = True
+    for problem in problems:
+        if followed or problem.kind != REFUSED:
+            out.append(problem)
+        followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
+    return out
 
 
 def _unresolved(source: DescriptionSource, message: str) -> Problem:
