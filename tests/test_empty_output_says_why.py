@@ -65,3 +65,32 @@ def test_the_caption_gives_the_cause_in_full_once(folder: Path) -> None:
         "<xacro:include>: $(find hector_sensors_description): package not found under the "
         "package path")
     assert "robot description" not in reason and "unknown macro" not in reason
+
+
+ARM_VARIANT = """<?xml version="1.0"?>
+<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="arm" default="gen3"/>
+  <xacro:include filename="$(find kortex_description)/arms/$(arg arm)/macro.xacro"/>
+  <xacro:include filename="$(find kortex_description)/grippers/macro.xacro"/>
+  <link name="world"/>
+  <joint name="tool_frame_joint" type="fixed">
+    <parent link="${last_arm_link}"/><child link="tool_frame"/>
+  </joint>
+  <link name="tool_frame"/>
+</robot>
+"""
+
+
+def test_a_description_says_each_cause_once_and_not_its_consequences(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A xacro-heavy arm (ros2_kortex): the package its includes need is not found; that
+    is said once, not once per include, and the joint whose parent the arm macro would
+    have defined is not another cause."""
+    (tmp_path / "spawn.launch").write_text(SPAWN)
+    (tmp_path / "robot.urdf.xacro").write_text(ARM_VARIANT)
+    monkeypatch.chdir(tmp_path)
+    result = lint_paths(["spawn.launch"], LintOptions())
+    messages = [d.message for d in result.diagnostics if d.rule == "unresolved"]
+    assert len(messages) == 1, messages
+    assert "$(find kortex_description)" in messages[0]

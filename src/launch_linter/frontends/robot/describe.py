@@ -240,7 +240,9 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     if root is None:
         return None, problems_found
     found = joints_of(root, source, display, source.condition)
-    unknown = [j for j in found if j.reasons]
+    # After something not followed (an include not read, an unknown xacro arg), a joint's
+    # unknown parent or origin may only follow from it: that is the cause already said.
+    unknown = [j for j in found if j.reasons] if _all_followed(problems) else []
     for joint in unknown[:20]:
         problems_found.append(Problem(
             "unresolved", joint.path, joint.line, joint.column,
@@ -278,17 +280,30 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
     return tuple(out)
 
 
+_TAG = re.compile(r"^<[^>]*>: ")
+"""The element a xacro problem names first (``<xacro:include>: ``)."""
+
+
 def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
     """The problems that are causes of their own: after an include not read (or another
     thing not followed) a refusal such as "unknown macro" may only follow from it, so it
     is not a cause of its own (nor a fault: see :func:`_faults`)."""
     out: list[XacroProblem] = []
+    said: set[str] = set()
     followed = True
     for problem in problems:
-        if followed or problem.kind != REFUSED:
+        # One cause written in several places (the same package not found by two
+        # includes) is said at the first.
+        said_as = _TAG.sub("", problem.message, count=1)
+        if (followed or problem.kind != REFUSED) and said_as not in said:
             out.append(problem)
+            said.add(said_as)
         followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
     return out
+
+
+def _all_followed(problems: Sequence[XacroProblem]) -> bool:
+    return all(problem.kind in (KEPT, DROPPED, REFUSED) for problem in problems)
 
 
 def _unresolved(source: DescriptionSource, message: str) -> Problem:
