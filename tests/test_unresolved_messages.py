@@ -217,3 +217,29 @@ def test_a_branch_for_another_distribution_is_silent_when_the_target_decides_it(
     # --ros-distro decides it: no message about the Dashing-only branch, no refused keyword.
     assert rules(ros_distro="humble") == []
     assert "ros2_removed_keyword" not in rules(ros_distro="jazzy")
+
+
+NAV_INCLUDE = """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    nav2_launch_dir = os.path.join(get_package_share_directory('nav2_bringup'), 'launch')
+    return LaunchDescription([
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource([nav2_launch_dir, '/navigation_launch.py'])),
+    ])
+"""
+
+
+def test_an_include_message_prints_the_written_expression_once(tmp_path: Path) -> None:
+    """rosrider: the include's path, quoted whole, holds the expression the blocker is
+    in; ``(in EXPRESSION)`` after the reason said it a second time."""
+    (message,) = _messages(tmp_path, "nav.launch.py", NAV_INCLUDE)
+    assert message.count("os.path.join(") == 1, message
+    assert message.endswith("get_package_share_directory('nav2_bringup'): package "
+                            "'nav2_bringup' not found under the package path")

@@ -220,7 +220,7 @@ class Ros1Loader(Ros1Tags):
                         file_value: Value, args_passed: list[str], pass_all: bool) -> None:
         path = resolved_text(file_value)
         if path is None:
-            reasons = why_unresolved(file_value)
+            reasons = why_unresolved(file_value, quoted=True)
             self._report("unresolved", context.filename, element,
                          f"include file {shown_value(file_value)!r} not followed: {reasons}")
             return

@@ -494,7 +494,7 @@ class Ros2Runner:
         known = all(is_resolved(value) for _, value in given_values)
         path = resolved_text(path_value)
         if path is None:
-            reasons = why_unresolved(path_value)
+            reasons = why_unresolved(path_value, quoted=True)
             self._report("unresolved", action.where,
                          f"include file {shown_value(path_value)!r} not followed: {reasons}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")

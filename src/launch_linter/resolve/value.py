@@ -134,10 +134,11 @@ def blocker(hole: Hole) -> tuple[str, str]:
     return what, why[position:]
 
 
-def why_unresolved(value: Value) -> str:
+def why_unresolved(value: Value, quoted: bool = False) -> str:
     """Why ``value`` is unknown, each cause once: ``WHAT: WHY`` (the unknowns with one
     cause named together), with ``(in TEXT)`` when the one blocker sits inside a
-    substitution written otherwise; the written text is left out where it is the whole
+    substitution written otherwise, unless the caller ``quoted`` the value's text (which
+    holds every such substitution); the written text is left out where it is the whole
     value (the caller shows it already)."""
     whole = text_of(value)
     causes: dict[str, list[str]] = {}
@@ -152,6 +153,6 @@ def why_unresolved(value: Value) -> str:
     said = []
     for why, names in causes.items():
         within = inside.get(why, [])
-        tail = f" (in {within[0]})" if len(within) == 1 else ""
+        tail = f" (in {within[0]})" if len(within) == 1 and not quoted else ""
         said.append(f"{', '.join(names)}: {why}{tail}" if names else why)
     return "; ".join(said) or "unresolved"

@@ -140,7 +140,8 @@ def _unresolved_file(text: str, command: Value) -> str:
         return f"the description file {text!r} is not resolved"
     shown = shown_in_text(text, min(text.find(hole.text) for hole in inside))
     if all(blocker(hole)[0] == hole.text for hole in inside):
-        return f"the description file {shown!r} is not resolved: {why_unresolved(inside)}"
+        return (f"the description file {shown!r} is not resolved: "
+                f"{why_unresolved(inside, quoted=True)}")
     return f"the description file depends on {why_unresolved(inside)}"
 
 
