@@ -169,7 +169,7 @@ def _row_links(graph: TfGraph, direction: str, ids: dict[str, str]) -> list[str]
     for above, below in zip(rows, rows[1:]):
         deepest = max(above, key=lambda i: shapes[i].depth)
         for index in below:
-            lines.extend(f"  {ids[shapes[deepest].deepest]} -> {ids[root]} [style=invis];"
+            lines.extend(f"  {ids[shapes[deepest].deepest]} -> {ids[root]} [style=invis, weight=0];"
                          for root in shapes[index].roots if shapes[deepest].deepest)
     return lines
 
