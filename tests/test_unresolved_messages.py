@@ -243,3 +243,27 @@ def test_an_include_message_prints_the_written_expression_once(tmp_path: Path) -
     assert message.count("os.path.join(") == 1, message
     assert message.endswith("get_package_share_directory('nav2_bringup'): package "
                             "'nav2_bringup' not found under the package path")
+
+
+SPLIT_CALL = """from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    pkg_nav2_bringup = FindPackageShare('nav2_bringup')
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution(
+            [pkg_nav2_bringup, 'launch', 'navigation_launch.py']))),
+    ])
+"""
+
+
+def test_an_expression_written_over_lines_is_quoted_as_one_line(tmp_path: Path) -> None:
+    """turtlebot4: ``PathJoinSubstitution(`` then the list on the next line was quoted
+    ``PathJoinSubstitution( [pkg_nav2_bringup, ...])``."""
+    (message,) = _messages(tmp_path, "nav2.launch.py", SPLIT_CALL)
+    assert ('include file "PathJoinSubstitution([pkg_nav2_bringup, \'launch\', '
+            '\'navigation_launch.py\'])" not followed') in message
