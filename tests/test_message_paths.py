@@ -180,3 +180,17 @@ def test_a_configuration_error_names_the_file_as_paths_are_shown(
     monkeypatch.chdir(tree / "pkg" / "launch")  # the file is above: absolute
     assert main(["check", "."]) == 2
     assert f"error: {tree / 'pkg' / 'pyproject.toml'}: unknown" in capsys.readouterr().err
+
+
+def test_an_unparsable_description_is_named_once(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """navigation2_tutorials: ``robot description X.urdf:4: X.urdf:4: not well-formed``."""
+    (tmp_path / "robot.urdf").write_text('\n\n\n<?xml version="1.0"?>\n<robot name="r"/>\n')
+    (tmp_path / "rsp.launch").write_text(
+        '<launch>\n  <param name="robot_description" textfile="$(dirname)/robot.urdf"/>\n'
+        '  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>\n'
+        '</launch>\n')
+    monkeypatch.chdir(tmp_path)
+    (found,) = [m for m in _messages(capsys, "rsp.launch") if "well-formed" in m]
+    assert found.startswith("robot description robot.urdf:4: not well-formed XML: ")

@@ -129,7 +129,7 @@ def test_variables_set_under_an_unknown_condition_are_named_by_themselves(
     # Both unknowns have one cause, said once, with what really blocks the condition.
     assert include.startswith("include file 'lidar_pkg_dirLDS_LAUNCH_FILE' not followed: "
                               "lidar_pkg_dir, LDS_LAUNCH_FILE: line 11: set under the "
-                              "condition 'LDS_MODEL == 'LDS-01'' (os.environ['LDS_MODEL']:")
+                              "condition \"LDS_MODEL == 'LDS-01'\" (os.environ['LDS_MODEL']:")
     assert include.count("set under") == 1
     # "the loop over robots_list", not "the loop over len(robots) == 0".
     assert loop.startswith("the loop over robots_list (set under the condition "
@@ -267,3 +267,28 @@ def test_an_expression_written_over_lines_is_quoted_as_one_line(tmp_path: Path) 
     (message,) = _messages(tmp_path, "nav2.launch.py", SPLIT_CALL)
     assert ('include file "PathJoinSubstitution([pkg_nav2_bringup, \'launch\', '
             '\'navigation_launch.py\'])" not followed') in message
+
+
+QUOTED_CONDITION = """import os
+
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    if 'GAZEBO_MODEL_PATH' in os.environ:
+        frame = 'a'
+    else:
+        frame = 'b'
+    return LaunchDescription([
+        Node(package='tf2_ros', executable='static_transform_publisher',
+             arguments=['--frame-id', 'map', '--child-frame-id', frame]),
+    ])
+"""
+
+
+def test_a_condition_holding_quotes_is_quoted_readably(tmp_path: Path) -> None:
+    """navigation2_tutorials: ``'GAZEBO_MODEL_PATH' in os.environ`` was quoted in single
+    quotes, ``''GAZEBO_MODEL_PATH' in os.environ'``."""
+    (message,) = _messages(tmp_path, "gps.launch.py", QUOTED_CONDITION)
+    assert "set under the condition \"'GAZEBO_MODEL_PATH' in os.environ\"" in message

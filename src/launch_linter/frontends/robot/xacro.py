@@ -183,9 +183,10 @@ class XacroExpander:
         try:
             return parse_xml(data).root
         except XmlError as exc:
+            if at is None:  # placed at the file and line: no need to name them
+                raise _Abort(f"not well-formed XML: {exc.message}", absolute,
+                             exc.line) from None
             message = f"{self.display(absolute)}:{exc.line}: not well-formed XML: {exc.message}"
-            if at is None:
-                raise _Abort(message, absolute, exc.line) from None
             self._problem(where[0], where[1], message)
             return None
 

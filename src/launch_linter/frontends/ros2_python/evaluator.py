@@ -316,7 +316,7 @@ class Evaluator:
             else:
                 # Named by the variable (what the reader sees where it is used), not by
                 # the condition's text.
-                merged[name] = Unknown(f"set under the condition '{text}'{cause}", name,
+                merged[name] = Unknown(f"set under the condition {text!r}{cause}", name,
                                        node.lineno)
         return merged
 
