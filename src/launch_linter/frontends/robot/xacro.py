@@ -42,6 +42,7 @@ from launch_linter.frontends.robot.xacro_values import (
     MAX_OUTPUT_ELEMENTS,
     MAX_TEXT,
     MAX_WORK,
+    PLUGIN_TEXT_TAGS,
     REFUSED,
     UNKNOWN,
     ExpandedNode,
@@ -56,6 +57,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _Table,
     _Unknown,
 )
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
@@ -94,16 +96,23 @@ class XacroExpander:
         find: Callable[[str], str | None],
         env: Mapping[str, str] | None = None,
         locate: Callable[[str], str | None] | None = None,
+        budget: Budget | None = None,
         display: Callable[[str], str] | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
-        self.display = display or _as_given
-        """How a message shows a path it quotes (the run's: relative under the cwd)."""
         """xacro args; None is an arg given with a value the linter does not know."""
+        self.display: Callable[[str], str] = display or str
+        """How a message shows a path it quotes (the run's: relative under the cwd; by
+        default as it is)."""
         self.find = find
         self.locate = locate
         """Where a missing file is installed from (a share path to its source file)."""
         self.env = dict(env or {})
+        self.budget = budget
+        """The launch tree's budget, charged with every unit of work besides MAX_WORK."""
+        self._args_read: set[str] = set()
+        self._env_read: set[str] = set()
+        self._cut_by_budget = False
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
         self._include_stack: list[str] = []
@@ -142,7 +151,9 @@ class XacroExpander:
             self.problems.append(XacroProblem(
                 self._path or absolute, self._line, "description nested too deeply", True))
             root = None
-        return Expansion(root, self.problems, self.files, self._defines_macros)
+        return Expansion(root, self.problems, self.files, self._defines_macros,
+                         frozenset(self._args_read), frozenset(self._env_read),
+                         self._cut_by_budget)
 
     # -- bounds and problems -------------------------------------------------------------
     def _charge(self, units: int = 1) -> None:
@@ -150,6 +161,12 @@ class XacroExpander:
         if self._work > MAX_WORK:
             raise _Abort(f"expansion needs more than {MAX_WORK:,} steps; stopped",
                          self._path, self._line)
+        if self.budget is not None:
+            try:
+                self.budget.step(units)
+            except BudgetExceeded as exc:
+                self._cut_by_budget = True
+                raise _Abort(exc.message, self._path, self._line) from None
 
     def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
                  conditions: tuple[str, ...] = ()) -> None:
@@ -181,7 +198,7 @@ class XacroExpander:
                           f"{self.display(absolute)}: {exc.strerror or exc}")
             return None
         try:
-            return parse_xml(data).root
+            return parse_xml(data, PLUGIN_TEXT_TAGS).root
         except XmlError as exc:
             if at is None:  # placed at the file and line: no need to name them
                 raise _Abort(f"not well-formed XML: {exc.message}", absolute,
@@ -238,6 +255,7 @@ class XacroExpander:
         command, rest = words[0], words[1:]
         if command == "arg" and len(rest) == 1:
             name = rest[0]
+            self._args_read.add(name)
             if name not in self.args:
                 raise _Refused(f"$(arg {name}): the arg is not declared and not given")
             value = self.args[name]
@@ -249,6 +267,8 @@ class XacroExpander:
             if found is None:
                 raise _Unknown(f"$(find {rest[0]}): package not found under the package path")
             return found
+        if command in ("env", "optenv") and rest:
+            self._env_read.add(rest[0])
         if command == "env" and len(rest) == 1:
             if rest[0] not in self.env:
                 raise _Unknown(f"$(env {rest[0]}): not given with --env")
@@ -316,6 +336,11 @@ class XacroExpander:
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
+                if element.text.strip():
+                    try:
+                        node.text = self.evaluate_text(element.text.strip(), table)
+                    except _Unknown:
+                        node.text = None
                 out.children.append(node)
                 self._children(element.children, path, table, node, conditions)
                 continue
@@ -333,6 +358,7 @@ class XacroExpander:
             self._property(element, path, table)
         elif what == "arg":
             name = attrib.get("name", "")
+            self._args_read.add(name)
             if name not in self.args:
                 default = attrib.get("default")
                 try:
@@ -598,16 +624,14 @@ def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
            env: Mapping[str, str] | None = None, data: bytes | None = None,
            locate: Callable[[str], str | None] | None = None,
+           budget: Budget | None = None,
            display: Callable[[str], str] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
     ``data`` is expanded as if it were that file (text linted by ``lint_text``);
     ``locate`` maps an included path that is not there to the file installed there;
+    ``budget``: the launch tree's, charged besides the expansion's own bounds;
     ``display`` shows a path a message quotes."""
-    return XacroExpander(args, find, env, locate, display).expand(path, data)
-
-
-def _as_given(path: str) -> str:
-    return path
+    return XacroExpander(args, find, env, locate, budget, display).expand(path, data)
 
 
 __all__ = [
