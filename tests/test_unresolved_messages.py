@@ -292,3 +292,36 @@ def test_a_condition_holding_quotes_is_quoted_readably(tmp_path: Path) -> None:
     quotes, ``''GAZEBO_MODEL_PATH' in os.environ'``."""
     (message,) = _messages(tmp_path, "gps.launch.py", QUOTED_CONDITION)
     assert "set under the condition \"'GAZEBO_MODEL_PATH' in os.environ\"" in message
+
+
+LONG_COMMAND = """from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch.substitutions import Command, FindExecutable, PathJoinSubstitution
+from launch_ros.actions import Node
+
+
+def launch_setup(context):
+    content = Command(
+        [
+            PathJoinSubstitution([FindExecutable(name="xacro")]),
+            " ",
+            "robot.urdf.xacro",
+        ]
+    )
+    description = {"robot_description": content.perform(context)}
+    return [Node(package="robot_state_publisher", executable="robot_state_publisher",
+                 parameters=[description])]
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=launch_setup)])
+"""
+
+
+def test_an_expression_cut_after_three_lines_says_it_is_cut(tmp_path: Path) -> None:
+    """ros2_kortex: ``Command([PathJoinSubstitution([FindExecutable(name="xacro")]),:
+    $(command) runs a program`` read as if the expression ended at the comma."""
+    messages = _messages(tmp_path, "sim.launch.py", LONG_COMMAND)
+    quoted = [m for m in messages if "Command([" in m]
+    assert quoted and all('Command([PathJoinSubstitution([FindExecutable(name="xacro")]), ...'
+                          in m for m in quoted), messages

@@ -114,6 +114,8 @@ class Evaluator:
                 chunk[-1] = chunk[-1][:getattr(node, "end_col_offset", None)]
             chunk[0] = chunk[0][getattr(node, "col_offset", 0):]
             text = _one_line(b"".join(chunk).decode("utf-8", "replace").splitlines())
+        if last - 1 >= first + 3:  # cut after three lines: say so, as after 120 characters
+            text += " ..."
         return text if len(text) <= 120 else text[:117] + "..."
 
     def text_value(self, subs: Subs, node: ast.AST) -> object:
