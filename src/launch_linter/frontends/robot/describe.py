@@ -12,7 +12,6 @@ import os
 import re
 import typing
 from collections.abc import Callable, Hashable, Mapping, Sequence
-from dataclasses import replace
 
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
@@ -26,6 +25,7 @@ from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.paths import shown_in_text
+from launch_linter.model.record import replace
 from launch_linter.model.robot import (
     UNKNOWN_VALUE,
     DescriptionFault,
