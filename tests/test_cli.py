@@ -98,7 +98,7 @@ def test_json_contract(workdir: Path, capsys: pytest.CaptureFixture[str]) -> Non
         {"path": "broken.launch", "status": "parse_error", "transforms": 0},
     ]
     fields = {"rule", "category", "severity", "path", "line", "column", "message", "node",
-              "related", "belief", "fix"}
+              "related", "belief", "fix", "included_from"}
     for diagnostic in document["diagnostics"]:
         assert set(diagnostic) == fields
         assert diagnostic["category"] in ("must", "may_semantic", "may_implied", "tf", "launch")
@@ -107,6 +107,7 @@ def test_json_contract(workdir: Path, capsys: pytest.CaptureFixture[str]) -> Non
         "rule": "bad_arity", "category": "tf", "severity": "error", "path": "mixed.launch",
         "line": 2, "column": 3, "message": by_rule["bad_arity"]["message"], "node": "a",
         "related": [], "belief": None, "fix": by_rule["bad_arity"]["fix"],
+        "included_from": None,
     }
     assert by_rule["parse_error"]["path"] == "broken.launch"
     assert by_rule["parse_error"]["fix"] is None

@@ -129,7 +129,7 @@ def test_variables_set_under_an_unknown_condition_are_named_by_themselves(
     # Both unknowns have one cause, said once, with what really blocks the condition.
     assert include.startswith("include file 'lidar_pkg_dirLDS_LAUNCH_FILE' not followed: "
                               "lidar_pkg_dir, LDS_LAUNCH_FILE: line 11: set under the "
-                              "condition 'LDS_MODEL == 'LDS-01'' (os.environ['LDS_MODEL']:")
+                              "condition \"LDS_MODEL == 'LDS-01'\" (os.environ['LDS_MODEL']:")
     assert include.count("set under") == 1
     # "the loop over robots_list", not "the loop over len(robots) == 0".
     assert loop.startswith("the loop over robots_list (set under the condition "
@@ -217,3 +217,111 @@ def test_a_branch_for_another_distribution_is_silent_when_the_target_decides_it(
     # --ros-distro decides it: no message about the Dashing-only branch, no refused keyword.
     assert rules(ros_distro="humble") == []
     assert "ros2_removed_keyword" not in rules(ros_distro="jazzy")
+
+
+NAV_INCLUDE = """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    nav2_launch_dir = os.path.join(get_package_share_directory('nav2_bringup'), 'launch')
+    return LaunchDescription([
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource([nav2_launch_dir, '/navigation_launch.py'])),
+    ])
+"""
+
+
+def test_an_include_message_prints_the_written_expression_once(tmp_path: Path) -> None:
+    """rosrider: the include's path, quoted whole, holds the expression the blocker is
+    in; ``(in EXPRESSION)`` after the reason said it a second time."""
+    (message,) = _messages(tmp_path, "nav.launch.py", NAV_INCLUDE)
+    assert message.count("os.path.join(") == 1, message
+    assert message.endswith("get_package_share_directory('nav2_bringup'): package "
+                            "'nav2_bringup' not found under the package path")
+
+
+SPLIT_CALL = """from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    pkg_nav2_bringup = FindPackageShare('nav2_bringup')
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution(
+            [pkg_nav2_bringup, 'launch', 'navigation_launch.py']))),
+    ])
+"""
+
+
+def test_an_expression_written_over_lines_is_quoted_as_one_line(tmp_path: Path) -> None:
+    """turtlebot4: ``PathJoinSubstitution(`` then the list on the next line was quoted
+    ``PathJoinSubstitution( [pkg_nav2_bringup, ...])``."""
+    (message,) = _messages(tmp_path, "nav2.launch.py", SPLIT_CALL)
+    assert ('include file "PathJoinSubstitution([pkg_nav2_bringup, \'launch\', '
+            '\'navigation_launch.py\'])" not followed') in message
+
+
+QUOTED_CONDITION = """import os
+
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    if 'GAZEBO_MODEL_PATH' in os.environ:
+        frame = 'a'
+    else:
+        frame = 'b'
+    return LaunchDescription([
+        Node(package='tf2_ros', executable='static_transform_publisher',
+             arguments=['--frame-id', 'map', '--child-frame-id', frame]),
+    ])
+"""
+
+
+def test_a_condition_holding_quotes_is_quoted_readably(tmp_path: Path) -> None:
+    """navigation2_tutorials: ``'GAZEBO_MODEL_PATH' in os.environ`` was quoted in single
+    quotes, ``''GAZEBO_MODEL_PATH' in os.environ'``."""
+    (message,) = _messages(tmp_path, "gps.launch.py", QUOTED_CONDITION)
+    assert "set under the condition \"'GAZEBO_MODEL_PATH' in os.environ\"" in message
+
+
+LONG_COMMAND = """from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch.substitutions import Command, FindExecutable, PathJoinSubstitution
+from launch_ros.actions import Node
+
+
+def launch_setup(context):
+    content = Command(
+        [
+            PathJoinSubstitution([FindExecutable(name="xacro")]),
+            " ",
+            "robot.urdf.xacro",
+        ]
+    )
+    description = {"robot_description": content.perform(context)}
+    return [Node(package="robot_state_publisher", executable="robot_state_publisher",
+                 parameters=[description])]
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=launch_setup)])
+"""
+
+
+def test_an_expression_cut_after_three_lines_says_it_is_cut(tmp_path: Path) -> None:
+    """ros2_kortex: ``Command([PathJoinSubstitution([FindExecutable(name="xacro")]),:
+    $(command) runs a program`` read as if the expression ended at the comma."""
+    messages = _messages(tmp_path, "sim.launch.py", LONG_COMMAND)
+    quoted = [m for m in messages if "Command([" in m]
+    assert quoted and all('Command([PathJoinSubstitution([FindExecutable(name="xacro")]), ...'
+                          in m for m in quoted), messages

@@ -12,6 +12,7 @@ from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
+from launch_linter.model.included import cause
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
 from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
@@ -415,9 +416,15 @@ _worker_packages: Packages = {}
 
 
 def _lint_chunk_in_worker(
-    items: Sequence[InputFile], options: LintOptions, keep_trees: bool, record: bool
+    items: Sequence[InputFile], options: LintOptions, keep_trees: bool, record: bool,
+    unsaved: dict[str, bytes] | None = None,
 ) -> list[Recorded]:
-    return _lint_chunk(items, options, _worker_packages, keep_trees, record)
+    if not unsaved:
+        return _lint_chunk(items, options, _worker_packages, keep_trees, record)
+    from launch_linter.resolve.xml_safe import unsaved_texts
+
+    with unsaved_texts(unsaved):
+        return _lint_chunk(items, options, _worker_packages, keep_trees, record)
 
 
 def auto_jobs(files: int) -> int:
@@ -444,13 +451,17 @@ def _lint_parallel(
     from concurrent.futures import ProcessPoolExecutor
     from concurrent.futures.process import BrokenProcessPool
 
+    from launch_linter.resolve.xml_safe import held_unsaved
+
+    unsaved = held_unsaved()  # the texts --diff has fixed, not on disk
     # Several chunks per worker balance uneven files; results are put back in input order,
     # so the result is the serial one.
     size = max(1, -(-len(inputs) // (jobs * 4)))
     chunks = [inputs[i : i + size] for i in range(0, len(inputs), size)]
     results: list[list[Recorded] | None] = [None] * len(chunks)
     with ProcessPoolExecutor(max_workers=min(jobs, len(chunks))) as pool:
-        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees, record)
+        futures = [pool.submit(_lint_chunk_in_worker, chunk, options, keep_trees, record,
+                               unsaved)
                    for chunk in chunks]
         for index, future in enumerate(futures):
             with contextlib.suppress(BrokenProcessPool):
@@ -475,12 +486,16 @@ def _lint_alone(
     from concurrent.futures import ProcessPoolExecutor
     from concurrent.futures.process import BrokenProcessPool
 
+    from launch_linter.resolve.xml_safe import held_unsaved
+
+    unsaved = held_unsaved()
     out: dict[str, Recorded] = {}
     remaining = list(items)
     while remaining:
         again: list[InputFile] = []
         with ProcessPoolExecutor(max_workers=1) as pool:
-            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees, record)
+            futures = [pool.submit(_lint_chunk_in_worker, [item], options, keep_trees,
+                                       record, unsaved)
                        for item in remaining]
             for position, item in enumerate(remaining):
                 future = futures[position]
@@ -544,7 +559,9 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
     """The findings of every file, each once: a file linted on its own and also included
     by another input is reported once (the same place, rule and message found from two
     roots, or under two spellings of its path, is one finding, at the highest level any
-    root gives it: a xacro file linted alone and loaded by a launch file)."""
+    root gives it: a xacro file linted alone and loaded by a launch file). The include a
+    message about included text names does not make another cause: the finding of the
+    file linted alone is kept, else the first include's."""
     diagnostics: dict[tuple[object, ...], Diagnostic] = {}
     real: dict[str, str] = {}
     for diagnostics_of_file in found:
@@ -552,9 +569,12 @@ def _deduplicated(found: Iterable[list[Diagnostic]]) -> list[Diagnostic]:
             where = real.get(diagnostic.path)
             if where is None:
                 where = real[diagnostic.path] = os.path.realpath(diagnostic.path)
-            key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, diagnostic.message)
+            text = cause(diagnostic.message, diagnostic.related)
+            key = (where, diagnostic.line, diagnostic.column, diagnostic.rule, text)
             known = diagnostics.setdefault(key, diagnostic)
-            if diagnostic.severity.rank > known.severity.rank:
+            rank, known_rank = diagnostic.severity.rank, known.severity.rank
+            if rank > known_rank or (rank == known_rank and text == diagnostic.message
+                                     and known.message != text):
                 diagnostics[key] = diagnostic
     return list(diagnostics.values())
 

@@ -22,7 +22,12 @@ from typing import TYPE_CHECKING, Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
 from launch_linter.model.record import replace
-from launch_linter.resolve.xml_safe import declared_encoding, read_regular_file
+from launch_linter.resolve.xml_safe import (
+    declared_encoding,
+    read_regular_file,
+    unsaved_text,
+    unsaved_texts,
+)
 from launch_linter.rules._fixes import distro_at_least
 
 if TYPE_CHECKING:
@@ -293,9 +298,11 @@ def locate_in(fix: Fix, source: Source, line: int, column: int) -> tuple[Edit, .
 
 
 def read_bytes(path: str) -> bytes | None:
-    """The file's bytes, or None when it is no regular file, unreadable or too large."""
+    """The file's bytes (the text ``--diff`` has fixed, while it lints it again), or None
+    when it is no regular file, unreadable or too large."""
+    data = unsaved_text(path)
     try:
-        data = read_regular_file(path, MAX_FIX_BYTES + 1)
+        data = read_regular_file(path, MAX_FIX_BYTES + 1) if data is None else data
     except OSError:  # NotRegularFile included
         return None
     return data if len(data) <= MAX_FIX_BYTES else None
@@ -497,6 +504,7 @@ __all__ = [
     "locate",
     "locate_in",
     "read_bytes",
+    "unsaved_texts",
     "wanted",
     "with_located_fixes",
 ]

@@ -21,7 +21,7 @@ from launch_linter.commands.options import (
     results_cache,
 )
 from launch_linter.engine import LintOptions, LintResult, lint_bytes
-from launch_linter.model.diagnostic import Severity
+from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.report import json_report, text
 from launch_linter.report.escape import printable
 from launch_linter.results_cache import ResultsCache
@@ -211,25 +211,48 @@ def _run_fixes(ns: argparse.Namespace, options: LintOptions, config: Config,
     return last[-1]
 
 
-def _print_diff(ns: argparse.Namespace, result: LintResult) -> int:
-    """``--diff``: the fixes as a unified diff; no file changes. Exit 1 when there is any."""
+def _print_diff(ns: argparse.Namespace, options: LintOptions, config: Config,
+                cache: ResultsCache | None) -> int:
+    """``--diff``: what ``--fix`` would write, as a unified diff; no file changes. The
+    same passes as ``--fix`` (fix, lint again, until nothing changes), each pass linting
+    the texts fixed so far in place of the files. Exit 1 when there is any."""
     from launch_linter import fix as fixing
     from launch_linter.report import diff
 
-    _refuse_output_over_input(ns, result)
-    out: list[bytes] = []
-    fixed = 0
-    for path, fixes in fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).items():
-        before = fixing.read_bytes(path)
-        if before is None:
-            continue
-        after, applied = fixing.apply_edits(before, fixes)
-        fixed += len(applied) if after != before else 0
-        out.append(diff.unified_diff(shown_path(path), before, after))
+    guard = _write_guard(ns)
+    before: dict[str, bytes] = {}
+    after: dict[str, bytes] = {}
+    last: list[LintResult] = []
+
+    def lint() -> tuple[Diagnostic, ...]:
+        if not after:
+            last.append(lint_command_paths(ns, options, config, False, cache))
+        else:
+            # Fixed texts are not on disk: no cached result holds for them.
+            with fixing.unsaved_texts(after):
+                last.append(lint_command_paths(ns, options, config, False, None))
+        return last[-1].diagnostics
+
+    def read(path: str) -> bytes | None:
+        return after[path] if path in after else fixing.read_bytes(path)
+
+    def keep(path: str, old: bytes, new: bytes) -> str | None:
+        refused = guard.refusal(path)
+        if refused is not None:
+            return f"fixes not shown: --fix would not write it ({refused})"
+        before.setdefault(path, old)
+        after[path] = new
+        return None
+
+    notes: list[tuple[str, str]] = []
+    counts, _ = fixing.fix_until_stable(lint, ns.unsafe_fixes, keep, read, notes)
+    _refuse_output_over_input(ns, last[0])
+    _print_notes(notes)
+    out = [diff.unified_diff(shown_path(path), before[path], after[path]) for path in before]
     _write_bytes(ns, b"".join(out))
     if not ns.quiet:
-        hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
-        sys.stderr.write(diff.diff_summary(fixed, hidden) + "\n")
+        hidden = text.hidden_fixes(last[-1].diagnostics, ns.unsafe_fixes)
+        sys.stderr.write(diff.diff_summary(sum(counts.values()), hidden) + "\n")
     return EXIT_FINDINGS if any(out) and not ns.exit_zero else EXIT_OK
 
 
@@ -298,7 +321,7 @@ def run(ns: argparse.Namespace) -> int:
     cache = results_cache(ns, options, config)
     try:
         if ns.diff:
-            return _print_diff(ns, lint_command_paths(ns, options, config, False, cache))
+            return _print_diff(ns, options, config, cache)
         result = (
             _run_fixes(ns, options, config, cache)
             if ns.fix

@@ -15,7 +15,7 @@ from launch_linter.commands.options import (
 )
 from launch_linter.model.robot import RobotJoint
 from launch_linter.report import json_report, node_edges, text
-from launch_linter.report.published import published
+from launch_linter.report.published import nothing_published, published
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -45,6 +45,10 @@ def run(ns: argparse.Namespace) -> int:
             sys.stdout.write(text.format_joint(item.edge, roots) + "\n")
         else:
             sys.stdout.write(text.format_transform(item.edge, roots) + "\n")
-    for line in node_edges.text_lines(result, options.knowledge):
+    lines = list(node_edges.text_lines(result, options.knowledge))
+    for line in lines:
         sys.stdout.write(line + "\n")
+    if not edges and not lines:
+        # Empty output would not say whether anything was read.
+        sys.stderr.write(nothing_published(result) + "\n")
     return EXIT_OK

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.robot.standalone import load_description
-from launch_linter.frontends.ros1 import LoadOptions, load_ros1
+from launch_linter.frontends.ros1 import LoadOptions, Ros1Loader, load_ros1
 from launch_linter.frontends.xml_dialect import is_ros2_xml
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.xml_safe import read_launch_bytes
@@ -44,12 +44,13 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
     if front_end(path, data, options.ros_version) == "ros2":
         # Imported when first needed: the ROS 2 front-ends are most of the start-up time
         # of a run over ROS 1 files only.
-        from launch_linter.frontends.ros2_launch import load_ros2
+        from launch_linter.frontends.ros2_launch import Ros2Loader
 
-        tree = load_ros2(path, options, data)
+        loader: Ros1Loader | Ros2Loader = Ros2Loader(options)
     else:
-        tree = load_ros1(path, options, data)
+        loader = Ros1Loader(options)
+    tree = loader.load(path, data)
     if tree.descriptions:
         tree = attach_robot(tree, options.packages, options.robots, options.display_path,
-                            dict(options.env))
+                            dict(options.env), loader.include_sites)
     return tree

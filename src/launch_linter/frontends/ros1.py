@@ -54,6 +54,7 @@ from launch_linter.resolve.value import (
     holes,
     is_resolved,
     resolved_text,
+    shown_value,
     text_of,
     why_unresolved,
 )
@@ -220,9 +221,9 @@ class Ros1Loader(Ros1Tags):
                         file_value: Value, args_passed: list[str], pass_all: bool) -> None:
         path = resolved_text(file_value)
         if path is None:
-            reasons = why_unresolved(file_value)
+            reasons = why_unresolved(file_value, quoted=True)
             self._report("unresolved", context.filename, element,
-                         f"include file {text_of(file_value)!r} not followed: {reasons}")
+                         f"include file {shown_value(file_value)!r} not followed: {reasons}")
             return
         absolute = self._locate(path, context.filename)
         if absolute is None:
@@ -232,10 +233,12 @@ class Ros1Loader(Ros1Tags):
                 near=os.path.dirname(context.filename))
             if located.path is None and not located.absent and not self.options.study_errors:
                 self._report("unresolved", context.filename, element,
-                             f"include file {path!r} not followed: {located.reason}")
+                             f"include file {self._quoted(path)!r} not followed: "
+                             f"{located.reason}")
                 return
             if located.path is None:
-                self._error(context, element, f"included file not found: {path}")
+                self._error(context, element,
+                            f"included file not found: {self._quoted(path)}")
                 return
             absolute = located.path
         call = include_call(absolute, child.args)
@@ -261,7 +264,8 @@ class Ros1Loader(Ros1Tags):
             data = read_launch_bytes(absolute)
         except OSError as exc:
             self._error(context, element,
-                        f"cannot read included file {path}: {exc.strerror or exc}")
+                        f"cannot read included file {self._quoted(path)}: "
+                        f"{exc.strerror or exc}")
             return
         self.budget.produce(len(data))
         if is_ros2_xml(data):
@@ -282,7 +286,9 @@ class Ros1Loader(Ros1Tags):
         child.chain = (*context.chain, absolute)
         child.calls = (*context.calls, call)
         child.included_from = (self._display(context.filename), element.line)
-        self._included_at[absolute] = child.included_from
+        site = self._included_at[absolute] = Location(child.included_from[0], element.line,
+                                                      element.column)
+        self.include_sites.setdefault(self._display(absolute), site)
         self._launch_conditions(root, child)
         self._walk(root.children, child)
         self._path = context.filename
@@ -290,7 +296,8 @@ class Ros1Loader(Ros1Tags):
             unused = [name for name in args_passed if name not in child.arg_names]
             if unused:
                 self._error(context, element,
-                            f"unused args [{', '.join(unused)}] for include of [{path}]")
+                            f"unused args [{', '.join(unused)}] for include of "
+                            f"[{self._quoted(path)}]")
 
     @staticmethod
     def _locate(path: str, including_file: str) -> str | None:

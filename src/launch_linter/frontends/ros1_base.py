@@ -14,6 +14,7 @@ from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.included import through_include
 from launch_linter.model.launch import (
     Comment,
     FileStatus,
@@ -21,6 +22,7 @@ from launch_linter.model.launch import (
     holds_directive,
     may_hold_directive,
 )
+from launch_linter.model.paths import shown_path
 from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
@@ -52,11 +54,12 @@ _MACHINE_ATTRS = ("env-loader", "ssh-port", "user", "password", "default", "time
 
 
 def relative_to_cwd(path: str) -> str:
-    """``os.path.relpath(path)``, quicker for the usual case of a path below the cwd."""
+    """``shown_path(path)`` (relative under the cwd, absolute elsewhere), quicker for the
+    usual case of a path below the cwd."""
     folder = os.getcwd()
     if path.startswith(folder) and path[len(folder):len(folder) + 1] == os.sep:
         return os.path.normpath(path[len(folder) + 1:])
-    return os.path.relpath(path)
+    return shown_path(path)
 
 
 _VALUE_ERRORS = ("Invalid <param> tag", "included file not found", "<group> tag has an empty",
@@ -191,8 +194,10 @@ class Ros1Base:
         # A file included many times reports each of its problems once: the same element
         # gives the same problem every time, and a hostile tree can repeat one 100,000 times.
         self._reported: set[tuple[object, ...]] = set()
-        self._included_at: dict[str, tuple[str, int]] = {}
-        """The include being walked for each included file (its file and line)."""
+        self._included_at: dict[str, Location] = {}
+        """The include being walked for each included file (its place)."""
+        self.include_sites: dict[str, Location] = {}
+        """Each included file's first include, by the file's shown path."""
         self.files: list[str] = []
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
@@ -237,12 +242,7 @@ class Ros1Base:
             return
         self._reported.add(key)
         site = self._included_at.get(path) if rule == "unresolved" else None
-        if site is not None:
-            # Which include gave the text its values: a file included with other
-            # arguments elsewhere can say something else at the same line.
-            problem = Problem(rule, problem.path, line, column,
-                              f"{message} (included from {site[0]}:{site[1]})", node, related)
-        self.problems.append(problem)
+        self.problems.append(problem if site is None else through_include(problem, site))
 
     def _error(self, context: _Context, element: Element | None, message: str) -> None:
         source = (
@@ -284,6 +284,11 @@ class Ros1Base:
         if shown is None:
             shown = self._displays[path] = self.options.display_path(path)
         return shown
+
+    def _quoted(self, path: str) -> str:
+        """A path a message quotes, shown as the report shows file paths (an empty
+        one as it is)."""
+        return self._display(path) if path else path
 
     # -- entry -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:

@@ -346,7 +346,8 @@ class Ros1Tags(Ros1Base):
             file_text == "" or _checkable_path(element.attrib.get("file", ""), file_text)
         ) and not reads.is_file(file_text):
             self._error(context, element,
-                        f"error loading <rosparam> tag: file does not exist [{file_text}]")
+                        f"error loading <rosparam> tag: file does not exist "
+                        f"[{self._quoted(file_text)}]")
         body: Value | None = (element.text,) if element.text else ()
         if substitute:
             body = self._resolve_text(element.text, element, "text", context, anon)

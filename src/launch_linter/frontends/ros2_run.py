@@ -40,7 +40,8 @@ from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
 from launch_linter.model.budget import Budget, BudgetExceeded
-from launch_linter.model.diagnostic import Problem
+from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.included import through_include
 from launch_linter.model.launch import (
     Comment,
     FileStatus,
@@ -71,6 +72,7 @@ from launch_linter.resolve.value import (
     holes,
     is_resolved,
     resolved_text,
+    shown_value,
     text_of,
     why_unresolved,
 )
@@ -193,6 +195,11 @@ class Ros2Runner:
         self.declarations = Declarations()
         self._reading: tuple[Where, _Frame] | None = None
         """Where the value being resolved is read (for the launch configurations it reads)."""
+        self._included_at: dict[str, Location] = {}
+        """The include being run for each included file (its place)."""
+        self.include_sites: dict[str, Location] = {}
+        """Each included file's first include, by the file's shown path."""
+        self._reported_included: set[tuple[str, str, int, int, str]] = set()
 
     # -- diagnostics -------------------------------------------------------------------
     def _display(self, path: str) -> str:
@@ -202,10 +209,23 @@ class Ros2Runner:
             shown = self._displayed[path] = self.options.display_path(path)
         return shown
 
+    def _quoted(self, path: str) -> str:
+        """A path a message quotes, shown as the report shows file paths (an empty
+        one as it is)."""
+        return self._display(path) if path else path
+
     def _report(self, rule: str, where: Where, message: str, node: str | None = None) -> None:
-        self.problems.append(Problem(
-            rule, self._display(where.path), where.line, where.column, message, node
-        ))
+        problem = Problem(rule, self._display(where.path), where.line, where.column, message,
+                          node)
+        site = self._included_at.get(where.path) if rule == "unresolved" else None
+        if site is not None:
+            # Once per cause and place in a tree, naming the first include that reached it.
+            key = (rule, where.path, where.line, where.column, message)
+            if key in self._reported_included:
+                return
+            self._reported_included.add(key)
+            problem = through_include(problem, site)
+        self.problems.append(problem)
 
     # -- files -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
@@ -491,33 +511,34 @@ class Ros2Runner:
         known = all(is_resolved(value) for _, value in given_values)
         path = resolved_text(path_value)
         if path is None:
-            reasons = why_unresolved(path_value)
+            reasons = why_unresolved(path_value, quoted=True)
             self._report("unresolved", action.where,
-                         f"include file {text_of(path_value)!r} not followed: {reasons}")
+                         f"include file {shown_value(path_value)!r} not followed: {reasons}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         absolute, located = find_included(path, frame.filename, self.options.packages)
         if absolute is None:
+            shown = path if path.startswith("~") else self._quoted(path)
             if path.startswith("~") and not self.options.study_errors:
                 # os.path.expanduser('~') is the launching user's home: not knowable here.
-                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                self._report("unresolved", action.where, f"include file {shown!r} not followed: "
                              f"it is under the user's home directory, which depends on the machine")
                 self.declarations.opened(f"line {action.where.line}: an include is not followed")
                 return
             variables = [v for v in environment_names(action.path) if v not in scope.env]
             if variables and not self.options.study_errors:
                 # os.getenv('TEST_LAUNCH_DIR', '') is set by whoever runs the file.
-                self._report("unresolved", action.where, f"include file {path!r} not followed: "
+                self._report("unresolved", action.where, f"include file {shown!r} not followed: "
                              f"it depends on the environment ({', '.join(variables)}; give "
                              f"them with --env)")
                 self.declarations.opened(f"line {action.where.line}: an include is not followed")
                 return
             if located is not None and not located.absent and not self.options.study_errors:
                 self._report("unresolved", action.where,
-                             f"include file {path!r} not followed: {located.reason}")
+                             f"include file {shown!r} not followed: {located.reason}")
                 self.declarations.opened(f"line {action.where.line}: an include is not followed")
                 return
-            self._report("roslaunch_error", action.where, f"included file not found: {path}")
+            self._report("roslaunch_error", action.where, f"included file not found: {shown}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         call = (absolute, given)
@@ -543,10 +564,14 @@ class Ros2Runner:
             data = read_launch_bytes(absolute)
         except OSError as exc:
             self._report("roslaunch_error", action.where,
-                         f"cannot read included file {path}: {exc.strerror or exc}")
+                         f"cannot read included file {self._display(absolute)}: "
+                         f"{exc.strerror or exc}")
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
         self.work.produce(len(data))
+        site = self._included_at[absolute] = Location(
+            self._display(frame.filename), action.where.line, action.where.column)
+        self.include_sites.setdefault(self._display(absolute), site)
         read = self._read_file(absolute, data)
         if read.actions is None:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from launch_linter.engine import LintResult
 from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.included import cause
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Field, RotationKind, StaticTransform
@@ -43,10 +44,10 @@ MAX_TITLE_NAMES = 8
 """Entry points named in a cluster's title (then "... and N more")."""
 MAX_LINE_NAMES = 3
 """Entry points named on one line of the caption."""
-MAX_REASON = 160
+MAX_REASON = 320
+"""Characters of a reason why an entry point publishes nothing (at most four lines)."""
 MAX_REASONS = 6
-"""Characters of a reason why an entry point publishes nothing (a line or two)."""
-"""Entry points named in a cluster's title (then "... and N more")."""
+"""Distinct reasons listed in the caption (then "... and N more reasons")."""
 MAX_DRAWN_EDGES = 300
 """Edges given to Graphviz: more is no longer readable at screen size, and its layout of
 labelled edges grows faster than linearly (a 30,000-joint chain took 111 s)."""
@@ -264,18 +265,34 @@ def why_nothing(tree: LaunchTree, result: LintResult) -> str:
         if source.file is None:
             reasons.append(f"{where} not read: {source.reason or 'its file is not known'}")
             continue
-        failed = [d.message for d in result.diagnostics if d.rule == "unresolved"
+        failed = [_description_cause(d) for d in result.diagnostics if d.rule == "unresolved"
                   and (d.path, d.line) == (source.path, source.line)]
         reasons.append(f"{where} gave no joint" + (f": {failed[0]}" if failed else
                                                    " (no robot_state_publisher publishes it)"))
     if reasons:
-        return "; ".join(reasons[:2]) + (f"; and {len(reasons) - 2} more" if len(reasons) > 2
-                                         else "")
+        # The first in full (a cause cut short says nothing), the others counted.
+        return reasons[0] + (f"; and {len(reasons) - 1} more" if len(reasons) > 1 else "")
     files = set(tree.files)
     unresolved = [d for d in result.diagnostics if d.rule == "unresolved" and d.path in files]
     tail = (f"; {len(unresolved)} value(s) unresolved, first {unresolved[0].path}:"
             f"{unresolved[0].line}: {unresolved[0].message}" if unresolved else "")
     return "no static_transform_publisher and no robot_description" + tail
+
+
+_DESCRIPTION_PREFIX = "robot description "
+_NOT_READ_SUFFIX = "; its joints are not read"
+
+
+def _description_cause(diagnostic: Diagnostic) -> str:
+    """A description's unresolved message as a reason: the place and the cause, without
+    the words the reason already says (which description, that joints are not read, the
+    include the caption's entry points name)."""
+    text = cause(diagnostic.message, diagnostic.related)
+    if text.startswith(_DESCRIPTION_PREFIX):
+        text = text[len(_DESCRIPTION_PREFIX):]
+    if text.endswith(_NOT_READ_SUFFIX):
+        text = text[: -len(_NOT_READ_SUFFIX)]
+    return text
 
 
 def _why_nothing_notes(trees: list[LaunchTree], result: LintResult) -> list[str]:
@@ -399,7 +416,7 @@ def _cluster_title(roots: list[str], edges: list[TfEdge]) -> str:
 def _title(result: LintResult, edges: list[Edge], frames: int) -> str:
     roots = ", ".join(f.path for f in result.files)
     if len(result.files) > 3:
-        roots = f"{len(result.files)} launch files, {len(entry_points(result))} entry point(s)"
+        roots = f"{len(result.files)} file(s), {len(entry_points(result))} entry point(s)"
     errors = sum(1 for d in result.diagnostics if d.severity is Severity.ERROR)
     warnings = sum(1 for d in result.diagnostics if d.severity is Severity.WARNING)
     urdf = sum(1 for e in edges if e.source == "urdf")

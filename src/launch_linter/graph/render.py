@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import textwrap
+from dataclasses import dataclass, field
 
 from launch_linter.graph.model import TfGraph
 from launch_linter.report.escape import printable
@@ -102,10 +103,85 @@ def _shape(graph: TfGraph) -> tuple[int, int]:
     return depth, sum(max(per_depth.values()) for per_depth in widths.values())
 
 
+@dataclass
+class _Cluster:
+    """What placing one cluster needs: its frames per rank, its roots, a deepest frame."""
+
+    depth: int = 0
+    width: int = 0
+    roots: list[str] = field(default_factory=list)
+    deepest: str = ""
+
+
+def _clusters(graph: TfGraph) -> list[_Cluster]:
+    """Each cluster's depth and widest rank (in frames), roots and a deepest frame."""
+    shapes = [_Cluster() for _ in range(max(len(graph.clusters), 1))]
+    children: dict[str, list[str]] = {}
+    for edge in graph.edges:
+        children.setdefault(edge.parent, []).append(edge.child)
+    is_child = {edge.child for edge in graph.edges}
+    for frame in graph.frames:
+        if frame.key not in is_child and frame.cluster < len(shapes):
+            shapes[frame.cluster].roots.append(frame.key)
+    for shape in shapes:
+        level, seen = list(shape.roots), set(shape.roots)
+        while level:  # breadth-first, as in _shape
+            shape.depth += 1
+            shape.width = max(shape.width, len(level))
+            shape.deepest = level[0]
+            level = [c for key in level for c in children.get(key, ()) if c not in seen]
+            seen.update(level)
+    return shapes
+
+
+def _grid(shapes: list[_Cluster], direction: str) -> tuple[float, list[list[int]]]:
+    """The clusters dealt into rows (``TB``; columns for ``LR``), the deepest together, the
+    number per row the one that needs the picture shrunk least to fit a screen; with that
+    shrink factor."""
+    across, along = CELL[direction]
+    screen_across, screen_along = SCREEN if direction == "TB" else SCREEN[::-1]
+    # The deepest together: a row is as long as its deepest cluster.
+    order = sorted(range(len(shapes)), key=lambda i: -shapes[i].depth)
+    best: tuple[float, list[list[int]]] = (float("inf"), [order])
+    for per_row in range(1, len(shapes) + 1):
+        rows = [order[start:start + per_row] for start in range(0, len(shapes), per_row)]
+        wide = max(sum(shapes[i].width for i in row) for row in rows) * across
+        long = sum(max(shapes[i].depth for i in row) for row in rows) * along
+        scale = max(wide / screen_across, long / screen_along)
+        if scale < best[0]:
+            best = (scale, rows)
+    return best
+
+
+def cluster_rows(graph: TfGraph, direction: str) -> list[list[int]]:
+    """The clusters in rows so that the picture is as close to a screen's shape as it can
+    be: side by side, ten arms of a manipulator with many variants made a picture 9,675
+    pixels wide."""
+    return _grid(_clusters(graph), direction)[1]
+
+
+def _row_links(graph: TfGraph, direction: str, ids: dict[str, str]) -> list[str]:
+    """Invisible edges from the deepest frame of each row of clusters to the roots of the
+    next row: Graphviz then lays the rows one after the other."""
+    shapes = _clusters(graph)
+    rows = cluster_rows(graph, direction)
+    lines: list[str] = []
+    for above, below in zip(rows, rows[1:]):
+        deepest = max(above, key=lambda i: shapes[i].depth)
+        for index in below:
+            lines.extend(f"  {ids[shapes[deepest].deepest]} -> {ids[root]} [style=invis, weight=0];"
+                         for root in shapes[index].roots if shapes[deepest].deepest)
+    return lines
+
+
 def rankdir(graph: TfGraph) -> str:
     """``TB`` or ``LR``, whichever needs the picture shrunk least to fit a screen:
     ``LR`` for a tree wider than deep, as robot descriptions are (a base with a dozen
-    parts, then one above the other), ``TB`` for deep narrow ones (arms, chains)."""
+    parts, then one above the other), ``TB`` for deep narrow ones (arms, chains). Several
+    trees are dealt into rows (:func:`cluster_rows`) either way."""
+    if len(graph.clusters) > 1:
+        shapes = _clusters(graph)
+        return "LR" if _grid(shapes, "LR")[0] < _grid(shapes, "TB")[0] else "TB"
     depth, width = _shape(graph)
 
     def scale(direction: str) -> float:
@@ -166,6 +242,8 @@ def to_dot(graph: TfGraph) -> str:
         if edge.tooltip:
             attributes.append(f"tooltip={_dot_string(edge.tooltip)}")
         lines.append(f"  {ids[edge.parent]} -> {ids[edge.child]} [{', '.join(attributes)}];")
+    if clustered:
+        lines.extend(_row_links(graph, direction, ids))
     lines.append("}")
     return "\n".join(lines) + "\n"
 

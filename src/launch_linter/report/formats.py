@@ -10,6 +10,7 @@ from urllib.parse import quote
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Fix, Location, Severity
+from launch_linter.model.included import included_from
 from launch_linter.report.escape import json_safe, printable
 from launch_linter.rules import RULES, Rule
 
@@ -77,11 +78,11 @@ def _physical(path: str, line: int, column: int) -> dict[str, Any]:
     }
 
 
-def _related(index: int, location: Location) -> dict[str, Any]:
+def _related(index: int, location: Location, site: Location | None) -> dict[str, Any]:
     return {
         "id": index,
         "physicalLocation": _physical(location.path, location.line, location.column),
-        "message": {"text": "related location"},
+        "message": {"text": "included from here" if location is site else "related location"},
     }
 
 
@@ -97,7 +98,9 @@ def _result(diagnostic: Diagnostic, rule_index: dict[str, int]) -> dict[str, Any
     if diagnostic.rule in rule_index:
         out["ruleIndex"] = rule_index[diagnostic.rule]
     if diagnostic.related:
-        out["relatedLocations"] = [_related(i, r) for i, r in enumerate(diagnostic.related)]
+        site = included_from(diagnostic.message, diagnostic.related)
+        out["relatedLocations"] = [_related(i, r, site)
+                                   for i, r in enumerate(diagnostic.related)]
     properties: dict[str, Any] = {"category": diagnostic.category.value}
     if diagnostic.node is not None:
         properties["node"] = diagnostic.node

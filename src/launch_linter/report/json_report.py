@@ -10,6 +10,7 @@ from typing import Any, TextIO
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic
+from launch_linter.model.included import included_from
 from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -39,11 +40,19 @@ def _check_head(beliefs: BeliefSet, version: str) -> dict[str, Any]:
     }
 
 
+def diagnostic_json(diagnostic: Diagnostic) -> dict[str, Any]:
+    """A finding in JSON; ``included_from``: the include its text was reached through
+    (``{"path", "line", "column"}``), null for text of the file linted itself."""
+    site = included_from(diagnostic.message, diagnostic.related)
+    return {**diagnostic.to_json(), "included_from": None if site is None else {
+        "path": site.path, "line": site.line, "column": site.column}}
+
+
 def check_document(result: LintResult, beliefs: BeliefSet, version: str) -> dict[str, Any]:
     return {
         **_check_head(beliefs, version),
         "files": _files(result),
-        "diagnostics": [d.to_json() for d in result.diagnostics],
+        "diagnostics": [diagnostic_json(d) for d in result.diagnostics],
     }
 
 
@@ -53,7 +62,7 @@ def check_pieces(result: LintResult, beliefs: BeliefSet, version: str) -> Iterat
     copy) at once, only the findings themselves."""
     lists: dict[str, tuple[Iterable[Any], Callable[[Any], Any]]] = {
         "files": (result.files, _file_json),
-        "diagnostics": (result.diagnostics, Diagnostic.to_json),
+        "diagnostics": (result.diagnostics, diagnostic_json),
     }
     return _batched(_streamed(_check_head(beliefs, version), lists))
 

@@ -97,12 +97,25 @@ def named(roots: Sequence[str], limit: int) -> str:
     return shown + (f" and {len(roots) - limit} more" if len(roots) > limit else "")
 
 
+def nothing_published(result: LintResult) -> str:
+    """What ``transforms`` says when no tree publishes an edge: how many files were read
+    and how many robot descriptions gave no joint (``check`` says why for each)."""
+    descriptions = sum(len(tree.descriptions) for tree in result.trees)
+    read = sum(1 for tree in result.trees for robot in tree.robots if robot.joints)
+    line = f"No transforms found in {len(result.files)} file(s)"
+    if descriptions > read:
+        line += (f"; {descriptions - read} robot description(s) gave no joint "
+                 f"(`launch-linter check` says why)")
+    return line + "."
+
+
 __all__ = [
     "Published",
     "TfEdge",
     "edge_identity",
     "entry_points",
     "named",
+    "nothing_published",
     "published",
     "tree_edges",
 ]

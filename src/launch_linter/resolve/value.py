@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from typing import Tuple, Union
 
+from launch_linter.model.paths import shown_in_text
 from launch_linter.model.record import Record, _set
 
 MAX_REASON = 300
@@ -65,6 +66,13 @@ def text_of(value: Value) -> str:
     if len(value) == 1 and type(value[0]) is str:
         return value[0]
     return "".join(p if isinstance(p, str) else p.text for p in value)
+
+
+def shown_value(value: Value) -> str:
+    """``text_of(value)`` as a message quotes a path: the absolute folder its resolved
+    start names shown relative to the current folder when under it (``shown_in_text``)."""
+    known = len(value[0]) if value and type(value[0]) is str else 0
+    return shown_in_text(text_of(value), known)
 
 
 def resolved_text(value: Value) -> str | None:
@@ -153,10 +161,11 @@ def blocker(hole: Hole) -> tuple[str, str]:
     return what, why[position:]
 
 
-def why_unresolved(value: Value) -> str:
+def why_unresolved(value: Value, quoted: bool = False) -> str:
     """Why ``value`` is unknown, each cause once: ``WHAT: WHY`` (the unknowns with one
     cause named together), with ``(in TEXT)`` when the one blocker sits inside a
-    substitution written otherwise; the written text is left out where it is the whole
+    substitution written otherwise, unless the caller ``quoted`` the value's text (which
+    holds every such substitution); the written text is left out where it is the whole
     value (the caller shows it already)."""
     whole = text_of(value)
     causes: dict[str, list[str]] = {}
@@ -171,6 +180,6 @@ def why_unresolved(value: Value) -> str:
     said = []
     for why, names in causes.items():
         within = inside.get(why, [])
-        tail = f" (in {within[0]})" if len(within) == 1 else ""
+        tail = f" (in {within[0]})" if len(within) == 1 and not quoted else ""
         said.append(f"{', '.join(names)}: {why}{tail}" if names else why)
     return "; ".join(said) or "unresolved"

@@ -49,15 +49,29 @@ def unsaved_texts(texts: Mapping[str, bytes]) -> Iterator[None]:
         _UNSAVED.clear()
 
 
+def held_unsaved() -> dict[str, bytes]:
+    """The texts :func:`unsaved_texts` holds now: a worker process is given them, since
+    one that is not forked from this process does not share them."""
+    return dict(_UNSAVED)
+
+
 def read_launch_bytes(path: str) -> bytes:
     """A launch file's bytes, one byte past the size limit at most (so that an oversized
     file is reported as such without being read whole)."""
-    if _UNSAVED:
-        held = _UNSAVED.get(os.path.realpath(path))
-        if held is not None:
-            reads.note_unsaved()  # a result that rests on no file's content is not kept
-            return held[: MAX_BYTES + 1]
+    held = unsaved_text(path)
+    if held is not None:
+        return held[: MAX_BYTES + 1]
     return read_regular_file(path, MAX_BYTES + 1)
+
+
+def unsaved_text(path: str) -> bytes | None:
+    """The text held for ``path`` by :func:`unsaved_texts`, None when there is none."""
+    if not _UNSAVED:
+        return None
+    held = _UNSAVED.get(os.path.realpath(path))
+    if held is not None:
+        reads.note_unsaved()  # a result that rests on no file's content is not kept
+    return held
 
 
 class NotRegularFile(OSError):

@@ -33,6 +33,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.paths import shown_path
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._robot import refused, robots_of
 
@@ -46,7 +47,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if robot.standalone or not robot.complete or robot.links:
             continue
         source = robot.source
-        what = f"'{source.file}'" if source.file else "the literal robot description"
+        what = f"'{shown_path(source.file)}'" if source.file else "the literal robot description"
         macros = " (it only defines macros: nothing calls them)" if robot.defines_macros else ""
         yield Finding(
             source.path, source.line, source.column,

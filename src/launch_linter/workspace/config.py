@@ -17,6 +17,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 from launch_linter.model.diagnostic import Severity
+from launch_linter.model.paths import shown_path
 from launch_linter.model.record import Record, _set
 from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules._catalog import CATALOG, CATEGORY_NAMES, CATEGORY_OF
@@ -179,6 +180,7 @@ def _relative_to(base: str, path: str) -> str:
 
 def parse_config(data: Mapping[str, Any], path: str) -> Config:
     """Check and convert the launch-linter table ``data`` read from ``path``."""
+    shown = shown_path(path)  # as messages quote paths
     unknown = [k for k in data if k not in KEYS]
     if unknown:
         import difflib  # only for the message of a mistake: not at start-up
@@ -188,46 +190,46 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
             close = difflib.get_close_matches(key, KEYS, n=1)
             hints.append(f"{key!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         raise ConfigError(
-            f"{path}: unknown key(s) {', '.join(hints)}; known keys: {', '.join(KEYS)}"
+            f"{shown}: unknown key(s) {', '.join(hints)}; known keys: {', '.join(KEYS)}"
         )
     base = os.path.dirname(os.path.abspath(path))
     values: dict[str, Any] = {"path": path}
     for key in ("select", "ignore"):
         if key in data:
-            ids = _string_list(data[key], f"{path}: '{key}'")
-            check_rule_ids(ids, f"{path}: '{key}'")
+            ids = _string_list(data[key], f"{shown}: '{key}'")
+            check_rule_ids(ids, f"{shown}: '{key}'")
             values[key] = ids
     if "severity" in data:
-        values["severity"] = _severities(_table(data["severity"], f"{path}: 'severity'"), path)
+        values["severity"] = _severities(_table(data["severity"], f"{shown}: 'severity'"), shown)
     if "min-z" in data:
         z = data["min-z"]
         if isinstance(z, bool) or not isinstance(z, (int, float)) or not math.isfinite(z) \
                 or abs(z) > 1e6:
-            raise ConfigError(f"{path}: 'min-z' must be a number, finite, not {z!r}")
+            raise ConfigError(f"{shown}: 'min-z' must be a number, finite, not {z!r}")
         values["min_z"] = float(z)
     if "beliefs" in data:
         beliefs = data["beliefs"]
         if not isinstance(beliefs, str) or not beliefs:
-            raise ConfigError(f"{path}: 'beliefs' must be bundled, study, none or a file name")
+            raise ConfigError(f"{shown}: 'beliefs' must be bundled, study, none or a file name")
         values["beliefs"] = beliefs if beliefs in BELIEF_KEYWORDS else _relative_to(base, beliefs)
     for key in ("args", "env"):
         if key in data:
-            table = _table(data[key], f"{path}: '{key}'")
+            table = _table(data[key], f"{shown}: '{key}'")
             values[key] = {
-                str(name): _scalar_text(v, f"{path}: '{key}.{name}'") for name, v in table.items()
+                str(name): _scalar_text(v, f"{shown}: '{key}.{name}'") for name, v in table.items()
             }
     if "knowledge" in data:
         files = data["knowledge"]
-        names = (files,) if isinstance(files, str) else _string_list(files, f"{path}: 'knowledge'")
+        names = (files,) if isinstance(files, str) else _string_list(files, f"{shown}: 'knowledge'")
         values["knowledge"] = tuple(_relative_to(base, name) for name in names)
     if "package-path" in data:
-        roots = _string_list(data["package-path"], f"{path}: 'package-path'")
+        roots = _string_list(data["package-path"], f"{shown}: 'package-path'")
         values["package_path"] = tuple(_relative_to(base, r) for r in roots)
     if "per-path-ignores" in data:
-        table = _table(data["per-path-ignores"], f"{path}: 'per-path-ignores'")
+        table = _table(data["per-path-ignores"], f"{shown}: 'per-path-ignores'")
         ignores = []
         for pattern, ids in table.items():
-            where = f"{path}: 'per-path-ignores' entry {pattern!r}"
+            where = f"{shown}: 'per-path-ignores' entry {pattern!r}"
             rule_ids = _string_list(ids, where)
             check_rule_ids(rule_ids, where)
             ignores.append(PathIgnore(base, pattern, frozenset(rule_ids)))
@@ -235,24 +237,24 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
     if "fail-on" in data:
         fail_on = data["fail-on"]
         if fail_on not in ("error", "warning", "info"):
-            raise ConfigError(f"{path}: 'fail-on' must be error, warning or info")
+            raise ConfigError(f"{shown}: 'fail-on' must be error, warning or info")
         values["fail_on"] = fail_on
     if "profile" in data:
         from launch_linter.rules._profiles import PROFILES
 
         if data["profile"] not in PROFILES:
-            raise ConfigError(f"{path}: 'profile' must be one of {', '.join(PROFILES)}")
+            raise ConfigError(f"{shown}: 'profile' must be one of {', '.join(PROFILES)}")
         values["profile"] = data["profile"]
     for key in ("exclude", "extend-exclude"):
         if key in data:
-            values[key.replace("-", "_")] = _string_list(data[key], f"{path}: '{key}'")
+            values[key.replace("-", "_")] = _string_list(data[key], f"{shown}: '{key}'")
     if "respect-gitignore" in data:
         if not isinstance(data["respect-gitignore"], bool):
-            raise ConfigError(f"{path}: 'respect-gitignore' must be true or false")
+            raise ConfigError(f"{shown}: 'respect-gitignore' must be true or false")
         values["respect_gitignore"] = data["respect-gitignore"]
     if "ros" in data:
         if data["ros"] not in (1, 2) or isinstance(data["ros"], bool):
-            raise ConfigError(f"{path}: 'ros' must be 1 or 2")
+            raise ConfigError(f"{shown}: 'ros' must be 1 or 2")
         values["ros"] = int(data["ros"])
     if "ros-distro" in data:
         from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS, is_known, normalise
@@ -260,25 +262,25 @@ def parse_config(data: Mapping[str, Any], path: str) -> Config:
         name = normalise(data["ros-distro"]) if isinstance(data["ros-distro"], str) else None
         if name is None or not is_known(name):
             raise ConfigError(
-                f"{path}: 'ros-distro' must be one of {', '.join((*ROS1_DISTROS, *ROS2_DISTROS))}"
+                f"{shown}: 'ros-distro' must be one of {', '.join((*ROS1_DISTROS, *ROS2_DISTROS))}"
             )
         values["ros_distro"] = name
     if "cache-dir" in data:
         folder = data["cache-dir"]
         if not isinstance(folder, str) or not folder:
-            raise ConfigError(f"{path}: 'cache-dir' must be a folder name")
+            raise ConfigError(f"{shown}: 'cache-dir' must be a folder name")
         values["cache_dir"] = _relative_to(base, folder)
     return Config(**values)
 
 
-def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
+def _severities(table: Mapping[str, Any], shown: str) -> dict[str, Severity]:
     """Severity by rule id; a category sets its rules, and a rule named itself wins."""
-    check_rule_ids(table, f"{path}: 'severity'")
+    check_rule_ids(table, f"{shown}: 'severity'")
     levels: dict[str, Severity] = {}
     for name, level in table.items():
         if level not in ("error", "warning", "info"):
             raise ConfigError(
-                f"{path}: 'severity.{name}' must be error, warning or info, not {level!r}"
+                f"{shown}: 'severity.{name}' must be error, warning or info, not {level!r}"
             )
     for name, level in table.items():
         if name not in CATEGORY_OF:
@@ -291,29 +293,31 @@ def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
 
 
 def _read_toml(path: str) -> dict[str, Any]:
+    shown = shown_path(path)  # as messages quote paths
     try:
         data = read_regular_file(path, MAX_CONFIG_BYTES + 1)
     except OSError as exc:
-        raise ConfigError(f"cannot read configuration file {path}: {exc.strerror or exc}") from None
+        raise ConfigError(
+            f"cannot read configuration file {shown}: {exc.strerror or exc}") from None
     if len(data) > MAX_CONFIG_BYTES:
-        raise ConfigError(f"{path}: larger than {MAX_CONFIG_BYTES} bytes")
+        raise ConfigError(f"{shown}: larger than {MAX_CONFIG_BYTES} bytes")
 
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+        raise ConfigError(f"{shown}: not valid TOML: {exc}") from None
     parser = _toml_parser()
     if parser is None:
         try:
             return loads_without_parser(text)
         except NoTomlParser as exc:
-            raise ConfigError(f"{path}: {exc}") from None
+            raise ConfigError(f"{shown}: {exc}") from None
     try:
         document: dict[str, Any] = parser.loads(text)
     except parser.TOMLDecodeError as exc:
-        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+        raise ConfigError(f"{shown}: not valid TOML: {exc}") from None
     except RecursionError:
-        raise ConfigError(f"{path}: nested too deeply") from None
+        raise ConfigError(f"{shown}: nested too deeply") from None
     return document
 
 
@@ -337,12 +341,13 @@ def _pyproject_table(document: Mapping[str, Any]) -> Any:
 def load_config(path: str) -> Config:
     """Read ``path``: the ``[tool.launch-linter]`` table of a ``pyproject.toml``, or the
     top level of any other TOML file."""
+    shown = shown_path(path)  # as messages quote paths
     document = _read_toml(path)
     if os.path.basename(path) == PYPROJECT:
         table = _pyproject_table(document)
         if table is None:
-            raise ConfigError(f"{path}: no [tool.{TABLE}] table")
-        return parse_config(_table(table, f"{path}: [tool.{TABLE}]"), path)
+            raise ConfigError(f"{shown}: no [tool.{TABLE}] table")
+        return parse_config(_table(table, f"{shown}: [tool.{TABLE}]"), path)
     return parse_config(document, path)
 
 

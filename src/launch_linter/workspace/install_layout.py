@@ -31,7 +31,7 @@ def read_layout(directory: str, package: str) -> Layout:
         try:
             data = read_regular_file(path, limit)
         except (OSError, NotRegularFile) as exc:
-            layout.unread(f"{name} not read: {exc}")
+            layout.unread(f"{name} not read: {exc.strerror or exc}")
             continue
         if name == "CMakeLists.txt":
             layout.extend(read_cmake_layout(data.decode("utf-8", "replace"), package, name))

@@ -22,8 +22,10 @@ from launch_linter.frontends.params import (
 from launch_linter.frontends.robot.alternatives import alternatives
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.budget import Budget
-from launch_linter.model.diagnostic import Problem
+from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.included import through_include
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.paths import shown_in_text
 from launch_linter.model.record import replace
 from launch_linter.model.robot import (
     UNKNOWN_VALUE,
@@ -86,10 +88,12 @@ class RobotCache:
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
                   packages: PackageIndex, env: dict[str, str],
-                  budget: Budget | None = None) -> Expansion:
+                  budget: Budget | None = None,
+                  display: Callable[[str], str] | None = None) -> Expansion:
         """The expansion of ``file`` with ``args``: computed under ``budget`` (the launch
         tree's) unless an earlier one read the same values; one stopped by a tree's budget
-        is not kept (a tree with budget left expands it again)."""
+        is not kept (a tree with budget left expands it again). ``display`` (how messages
+        show paths) is the run's, the same for every use."""
         given = dict(args)
         found = self._expansions.setdefault((file, packages.key), [])
         for args_read, env_read, expansion, log in found:
@@ -104,7 +108,8 @@ class RobotCache:
 
         with reads.recording() as log:
             expansion = expand(file, given, packages.find, env,
-                               locate=lambda path: packages.locate(path).path, budget=budget)
+                               locate=lambda path: packages.locate(path).path, budget=budget,
+                               display=display)
         if not expansion.cut_by_budget and len(found) < MAX_EXPANSIONS_PER_FILE:
             found.append((_relevant(given, expansion.args_read),
                           _relevant(env, expansion.env_read), expansion, log))
@@ -183,8 +188,10 @@ def _unresolved_file(text: str, command: Value) -> str:
         # Known text around environment variables: the variables are what blocks it.
         return "the description file depends on " + "; ".join(
             f"{hole.text}: {hole.reason}" for hole in inside)
+    shown = shown_in_text(text, min(text.find(hole.text) for hole in inside))
     if all(blocker(hole)[0] == hole.text for hole in inside):
-        return f"the description file {text!r} is not resolved: {why_unresolved(inside)}"
+        return (f"the description file {shown!r} is not resolved: "
+                f"{why_unresolved(inside, quoted=True)}")
     return f"the description file depends on {why_unresolved(inside)}"
 
 
@@ -194,10 +201,13 @@ def literal_kind(text: str) -> bool:
 
 
 def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | None,
-                 display: Callable[[str], str], env: dict[str, str]) -> LaunchTree:
+                 display: Callable[[str], str], env: dict[str, str],
+                 sites: Mapping[str, Location] | None = None) -> LaunchTree:
     """The tree with the joints of the descriptions that a robot_state_publisher of the
     tree publishes (in ROS 1 a ``robot_description`` parameter without one is not
-    published by this tree), and an ``unresolved`` diagnostic per problem."""
+    published by this tree), and an ``unresolved`` diagnostic per problem; one about a
+    description an included file gives names that file's include (``sites``: each
+    included file's first include, by the file's shown path)."""
     if not tree.descriptions:
         return tree
     publishes = any(node.package == RSP_PACKAGE for node in tree.nodes)
@@ -236,6 +246,10 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
             if robot is not None:
                 joints.extend(robot.joints)
                 robots.append(robot)
+    if sites:
+        problems_found = [problem if problem.path not in sites
+                          else through_include(problem, sites[problem.path])
+                          for problem in problems_found]
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found),
                    nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))
@@ -317,7 +331,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
 
         expansion = expand(source.file, dict(source.args), packages.find, env,
                            source.text.encode("utf-8"),
-                           lambda path: packages.locate(path).path, budget)
+                           lambda path: packages.locate(path).path, budget, display)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     else:
@@ -329,12 +343,12 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                                               f"not read: {located.reason}")]
         args = source.args if source.kind is DescriptionKind.XACRO else ()
         expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
-                                    packages, env, budget)
+                                    packages, env, budget, display)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     faults = _faults(problems, source, display)
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
-    followed_up = [p for p in problems
+    followed_up = [p for p in _causes(problems)
                    if (display(p.path), p.line, p.message) not in proven]
     for problem in followed_up[:20]:
             where = display(problem.path)
@@ -355,7 +369,9 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                     f"its joints are not read"))
     found = joints_of(root, source, display, source.condition)
     plugins = plugins_of(root, display, source.condition, None)
-    unknown = [j for j in found if j.reasons]
+    # After something not followed (an include not read, an unknown xacro arg), a joint's
+    # unknown parent or origin may only follow from it: that is the cause already said.
+    unknown = [j for j in found if j.reasons] if _all_followed(problems) else []
     for joint in unknown[:20]:
         problems_found.append(Problem(
             "unresolved", joint.path, joint.line, joint.column,
@@ -391,6 +407,32 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
         # A refusal stops the real xacro; what comes after it is checked as if it did not.
         followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
     return tuple(out)
+
+
+_TAG = re.compile(r"^<[^>]*>: ")
+"""The element a xacro problem names first (``<xacro:include>: ``)."""
+
+
+def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
+    """The problems that are causes of their own: after an include not read (or another
+    thing not followed) a refusal such as "unknown macro" may only follow from it, so it
+    is not a cause of its own (nor a fault: see :func:`_faults`)."""
+    out: list[XacroProblem] = []
+    said: set[str] = set()
+    followed = True
+    for problem in problems:
+        # One cause written in several places (the same package not found by two
+        # includes) is said at the first.
+        said_as = _TAG.sub("", problem.message, count=1)
+        if (followed or problem.kind != REFUSED) and said_as not in said:
+            out.append(problem)
+            said.add(said_as)
+        followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
+    return out
+
+
+def _all_followed(problems: Sequence[XacroProblem]) -> bool:
+    return all(problem.kind in (KEPT, DROPPED, REFUSED) for problem in problems)
 
 
 def _unresolved(source: DescriptionSource, message: str) -> Problem:

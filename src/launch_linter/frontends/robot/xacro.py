@@ -78,9 +78,12 @@ class XacroExpander:
         env: Mapping[str, str] | None = None,
         locate: Callable[[str], str | None] | None = None,
         budget: Budget | None = None,
+        display: Callable[[str], str] | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
         """xacro args; None is an arg given with a value the linter does not know."""
+        self.display: Callable[[str], str] = display or str
+        """How a message shows a path it quotes (the run's; by default as it is)."""
         self.find = find
         self.locate = locate
         """Where a missing file is installed from (a share path to its source file)."""
@@ -172,16 +175,17 @@ class XacroExpander:
             data = read_launch_bytes(absolute) if data is None else data
         except OSError as exc:
             if at is None:
-                raise _Abort(f"cannot read {absolute}: {exc.strerror or exc}", *where) from None
-            self._problem(where[0], where[1], f"cannot read included file {absolute}: "
-                          f"{exc.strerror or exc}")
+                raise _Abort(f"cannot read the file: {exc.strerror or exc}", *where) from None
+            self._problem(where[0], where[1], f"cannot read included file "
+                          f"{self.display(absolute)}: {exc.strerror or exc}")
             return None
         try:
             return parse_xml(data, PLUGIN_TEXT_TAGS).root
         except XmlError as exc:
-            message = f"{absolute}:{exc.line}: not well-formed XML: {exc.message}"
-            if at is None:
-                raise _Abort(message, absolute, exc.line) from None
+            if at is None:  # placed at the file and line: no need to name them
+                raise _Abort(f"not well-formed XML: {exc.message}", absolute,
+                             exc.line) from None
+            message = f"{self.display(absolute)}:{exc.line}: not well-formed XML: {exc.message}"
             self._problem(where[0], where[1], message)
             return None
 
@@ -517,7 +521,7 @@ class XacroExpander:
             elif element.attrib.get("optional", "").lower() in ("true", "1"):
                 return
             else:
-                raise _Unknown(f"included file {filename} not found")
+                raise _Unknown(f"included file {self.display(target)} not found")
         included = self._read(target, (path, element.line))
         if included is None:
             return
@@ -620,12 +624,14 @@ def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
            env: Mapping[str, str] | None = None, data: bytes | None = None,
            locate: Callable[[str], str | None] | None = None,
-           budget: Budget | None = None) -> Expansion:
+           budget: Budget | None = None,
+           display: Callable[[str], str] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
     ``data`` is expanded as if it were that file (text linted by ``lint_text``);
     ``locate`` maps an included path that is not there to the file installed there;
-    ``budget``: the launch tree's, charged besides the expansion's own bounds."""
-    return XacroExpander(args, find, env, locate, budget).expand(path, data)
+    ``budget``: the launch tree's, charged besides the expansion's own bounds;
+    ``display`` shows a path a message quotes."""
+    return XacroExpander(args, find, env, locate, budget, display).expand(path, data)
 
 
 __all__ = [

@@ -111,13 +111,15 @@ class Evaluator:
             if last - 1 < first + 3:
                 lines[-1] = lines[-1][:getattr(node, "end_col_offset", None)]
             lines[0] = lines[0][getattr(node, "col_offset", 0):]
-            text = " ".join("".join(lines).split())
+            text = _one_line(lines)
         else:
             chunk = [line.encode("utf-8") for line in self.lines[first:min(last, first + 3)]]
             if last - 1 < first + 3:
                 chunk[-1] = chunk[-1][:getattr(node, "end_col_offset", None)]
             chunk[0] = chunk[0][getattr(node, "col_offset", 0):]
-            text = " ".join(b"".join(chunk).decode("utf-8", "replace").split())
+            text = _one_line(b"".join(chunk).decode("utf-8", "replace").splitlines())
+        if last - 1 >= first + 3:  # cut after three lines: say so, as after 120 characters
+            text += " ..."
         return text if len(text) <= 120 else text[:117] + "..."
 
     def text_value(self, subs: Subs, node: ast.AST) -> object:
@@ -323,7 +325,7 @@ class Evaluator:
             else:
                 # Named by the variable (what the reader sees where it is used), not by
                 # the condition's text.
-                merged[name] = Unknown(f"set under the condition '{text}'{cause}", name,
+                merged[name] = Unknown(f"set under the condition {text!r}{cause}", name,
                                        node.lineno)
         return merged
 
@@ -405,3 +407,17 @@ def _performed(resolver: Callable[[Subs], Value], subs: Subs, node: ast.AST,
     if text is not None:
         return text
     return interpreter.unknown(node, "; ".join(f"{h.text}: {h.reason}" for h in holes(value)))
+
+
+def _one_line(lines: list[str]) -> str:
+    """Source lines as one line: blanks collapsed, and none where a line break followed an
+    opening bracket or came before a closing one (``f( [a, b])`` read ``f([a, b])``)."""
+    out = ""
+    for line in lines:
+        piece = " ".join(line.split())
+        if not piece:
+            continue
+        if out and out[-1] not in "([{" and piece[0] not in ")]}":
+            out += " "
+        out += piece
+    return out
