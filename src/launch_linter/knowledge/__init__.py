@@ -21,6 +21,8 @@ FORMAT = 1
 DATA_FILE = "tf_publishers.json"
 KINDS = ("node", "gazebo_plugin", "controller")
 ROLES = ("localization", "odometry", "sensor", "robot")
+ROS1_DISTROS = ("kinetic", "lunar", "melodic", "noetic")
+"""ROS 1 distributions in release order (``ros1_tf2_from`` names one)."""
 MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
 ANY = "*"
 _PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
@@ -95,6 +97,12 @@ class Entry:
     prefix: Prefix | None
     sources: tuple[Source, ...]
     origin: str
+    header_frames: tuple[str, ...] = ()
+    """Frames the node stamps on the data it publishes (a map's ``frame_id``): its
+    consumers look them up in tf."""
+    ros1_tf2_from: str | None = None
+    """ROS 1: the first distribution whose release hands the entry's frames to tf2 as
+    written (a leading ``/`` then fails); None when not known to."""
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -237,7 +245,8 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
                   for i, item in enumerate(publishes))
     looks_up = _texts(data.get("looks_up"), f"{where}.looks_up")
     cameras = _texts(data.get("camera_frames"), f"{where}.camera_frames")
-    for template in looks_up + cameras:
+    headers = _texts(data.get("header_frames"), f"{where}.header_frames")
+    for template in looks_up + cameras + headers:
         for name in _placeholders(template):
             if name not in params:
                 raise KnowledgeError(f"{where} names parameter {name!r}, which the entry "
@@ -255,6 +264,9 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
     if not isinstance(sources, list) or not sources:
         raise KnowledgeError(f"{where}.sources must list where the entry was read")
     elsewhere = data.get("parameters_elsewhere")
+    tf2_from = data.get("ros1_tf2_from")
+    if tf2_from is not None and tf2_from not in ROS1_DISTROS:
+        raise KnowledgeError(f"{where}.ros1_tf2_from must be one of {', '.join(ROS1_DISTROS)}")
     return Entry(
         id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
         plugins=plugins, filenames=filenames, types=types,
@@ -269,6 +281,8 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         prefix=prefix,
         sources=tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources)),
         origin=origin,
+        header_frames=headers,
+        ros1_tf2_from=tf2_from,
     )
 
 

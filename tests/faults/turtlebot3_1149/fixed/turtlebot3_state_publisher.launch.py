@@ -26,5 +26,6 @@ def generate_launch_description():
             output='screen',
             parameters=[
                     {'use_sim_time': use_sim_time},
-                    {'frame_prefix': PythonExpression(['"', namespace, '/"'])}])
+                    {'frame_prefix': PythonExpression(
+                        ['"', namespace, '/" if "', namespace, '" else ""'])}])
     ])
