@@ -62,6 +62,16 @@ def test_header_frames_and_the_release_whose_frames_reach_tf2() -> None:
     assert gmapping is not None and gmapping.ros1_tf2_from is None
 
 
+def test_robot_pose_ekf_always_broadcasts_its_output_frame() -> None:
+    """robot_pose_ekf sends output_frame -> base_footprint_frame with no switch
+    (gazebo_ros_pkgs#692: it and the Gazebo diff-drive plugin both sent odom ->
+    base_footprint)."""
+    assert edges(node("robot_pose_ekf", "robot_pose_ekf")) == [("odom_combined",
+                                                                "base_footprint")]
+    assert edges(node("robot_pose_ekf", "robot_pose_ekf", ("output_frame", "odom"))) == [
+        ("odom", "base_footprint")]
+
+
 def node(package: str, executable: str, *params: tuple[str, str], unread: tuple[str, ...] = (),
          ros: int = 1) -> NodeRecord:
     return NodeRecord("a.launch", 3, 1, package, executable, "n", params, unread=unread,
