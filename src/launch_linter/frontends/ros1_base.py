@@ -140,7 +140,15 @@ class _Context:
 
     def copy(self) -> _Context:
         """A child context: roslaunch deep-copies args and anonymous names."""
-        child = _Context(self.ns, self.filename, dict(self.args), self.open_args)
+        # Not through ``__init__``: the include call it would work out (sorting and joining
+        # every arg) is the parent's, copied below.
+        child = _Context.__new__(_Context)
+        child.ns = self.ns
+        child.filename = self.filename
+        child.args = dict(self.args)
+        child.open_args = self.open_args
+        child.scope = None
+        child.side_scope = None
         child.ns_unresolved = self.ns_unresolved
         child.arg_names = dict(self.arg_names)
         child.anon = dict(self.anon)
@@ -186,6 +194,9 @@ class Ros1Base:
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
         self._env_args: dict[str, str] = {}
+        self._child_values: dict[Element, Value] = {}
+        """The resolved ``value`` of each ``<param>`` inside a node whose text names no
+        anonymous name: the node's record reads it again (see ``_frame_node``)."""
         """Args whose value comes from the environment -> the substitution it comes from."""
         """The element whose attribute is being resolved (for errors found meanwhile)."""
         self.budget = Budget()

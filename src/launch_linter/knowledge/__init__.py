@@ -120,10 +120,17 @@ class KnowledgeBase:
 
     def __init__(self, entries: Sequence[Entry]) -> None:
         self.entries = tuple(entries)
+        # Every launched node is looked up (several times per node, by several rules): the
+        # node entries by package, in the base's order, so a lookup reads only those.
+        self._nodes: dict[str, list[Entry]] = {}
+        for entry in self.entries:
+            if entry.kind == "node":
+                for package in dict.fromkeys(entry.packages):
+                    self._nodes.setdefault(package, []).append(entry)
 
     def node(self, package: str, executable: str, ros: int | None = None) -> Entry | None:
         """The entry of a launched node, preferring the one of ``ros``."""
-        found = [e for e in self.entries if e.kind == "node" and e.names(package, executable)]
+        found = [e for e in self._nodes.get(package, ()) if e.names(package, executable)]
         return _of_version(found, ros)
 
     def plugin(self, kind: str, name: str, ros: int | None = None) -> Entry | None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Tuple, Union
 
@@ -77,6 +78,10 @@ def holes(value: Value) -> tuple[Hole, ...]:
 
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
+_MARK = re.compile(r"""[\\'"()\[\]{}:;,]""")
+"""The characters :func:`_expression_end` acts on; it jumps over the rest."""
+_QUOTED_MARK = re.compile(r"""[\\'"]""")
+"""The same inside quotes."""
 
 
 def _expression_end(text: str, start: int) -> int:
@@ -87,7 +92,11 @@ def _expression_end(text: str, start: int) -> int:
     quote = ""
     bracketed = False
     index = start
-    while index < len(text):
+    while True:
+        found = (_QUOTED_MARK if quote else _MARK).search(text, index)
+        if found is None:
+            return -1
+        index = found.start()
         char = text[index]
         if quote:
             if char == "\\":
@@ -106,7 +115,6 @@ def _expression_end(text: str, start: int) -> int:
         elif not closing and char in ";,":
             return -1  # several reasons, or words
         index += 1
-    return -1
 
 
 def blocker(hole: Hole) -> tuple[str, str]:
