@@ -34,6 +34,8 @@ class Outcome:
     source: str
     found: bool
     rules_at_fault: tuple[str, ...]
+    quiet_at_fault: tuple[str, ...]
+    """Rules that report at the fault's line at info only."""
     fixed_loud: tuple[str, ...]
     expected_miss: str | None
 
@@ -65,11 +67,13 @@ def run_case(folder: Path) -> Outcome:
     fault = _lint(folder / "fault", entry, case)
     at_fault = tuple(sorted({rule for name, line, rule, level in fault
                              if level in LOUD and (name, line) in wanted}))
+    quiet = tuple(sorted({rule for name, line, rule, level in fault
+                          if level not in LOUD and (name, line) in wanted} - set(at_fault)))
     fixed = _lint(folder / "fixed", case.get("fixed_entry", entry), case)
     fixed_loud = tuple(sorted(f"{name}:{line} {rule}" for name, line, rule, level in fixed
                               if level in LOUD))
     return Outcome(folder.name, case["class"], case["source"], bool(at_fault), at_fault,
-                   fixed_loud, case.get("expected_miss"))
+                   quiet, fixed_loud, case.get("expected_miss"))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -81,6 +85,7 @@ def main(argv: list[str] | None = None) -> int:
         for o in outcomes:
             print(json.dumps({"case": o.case, "class": o.klass, "source": o.source,
                               "found": o.found, "rules": list(o.rules_at_fault),
+                              "info_rules": list(o.quiet_at_fault),
                               "fixed_loud": list(o.fixed_loud),
                               "expected_miss": o.expected_miss}))
         return 0
@@ -98,11 +103,15 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{'all':32} {sum(o.found for o in outcomes):2}/{total:<2}  "
           f"{sum(not o.fixed_loud for o in outcomes):2}/{total:<2}        {passed:2}/{total}"
           f"  ({100.0 * passed / max(total, 1):.0f}%)")
+    quiet = sum(1 for o in outcomes if not o.found and o.quiet_at_fault)
+    print(f"not found at warning/error but reported at the fault's line at info: {quiet}")
     print()
     for o in outcomes:
         mark = "ok  " if o.passed else "MISS"
         why = f"  [{o.expected_miss}]" if o.expected_miss and not o.passed else ""
         loud = f"  fixed still reports {', '.join(o.fixed_loud)}" if o.fixed_loud else ""
+        if not o.found and o.quiet_at_fault:
+            loud += f"  (info: {', '.join(o.quiet_at_fault)})"
         print(f"{mark} {o.case:34} {','.join(o.rules_at_fault) or '-':24}{loud}{why}")
         print(f"     {o.source}")
     return 0
