@@ -127,10 +127,10 @@ class Entry(Record):
     prefix: Prefix | None
     sources: tuple[Source, ...]
     origin: str
-    header_frames: tuple[str, ...] = ()
+    header_frames: tuple[str, ...]
     """Frames the node stamps on the data it publishes (a map's ``frame_id``): its
     consumers look them up in tf."""
-    ros1_tf2_from: str | None = None
+    ros1_tf2_from: str | None
     """ROS 1: the first distribution whose release hands the entry's frames to tf2 as
     written (a leading ``/`` then fails); None when not known to."""
 
@@ -138,7 +138,7 @@ class Entry(Record):
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
         "parameters", "publishes", "looks_up", "camera_frames", "strips_leading_slash",
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
-        "unsure_defaults", "prefix", "sources", "origin",
+        "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
     )
 
     def __init__(
@@ -163,6 +163,8 @@ class Entry(Record):
         prefix: Prefix | None,
         sources: tuple[Source, ...],
         origin: str,
+        header_frames: tuple[str, ...] = (),
+        ros1_tf2_from: str | None = None,
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -184,6 +186,8 @@ class Entry(Record):
         _set(self, "prefix", prefix)
         _set(self, "sources", sources)
         _set(self, "origin", origin)
+        _set(self, "header_frames", header_frames)
+        _set(self, "ros1_tf2_from", ros1_tf2_from)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
