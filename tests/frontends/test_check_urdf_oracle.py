@@ -91,6 +91,14 @@ def test_generated_descriptions(tmp_path: Path, text: str) -> None:
     assert linter(path) == urdfdom(path), text
 
 
+def test_a_link_without_a_name(tmp_path: Path) -> None:
+    """urdfdom keeps a nameless link as '' and refuses the second root (ROSOnWindows#50)."""
+    path = tmp_path / "nameless.urdf"
+    path.write_text('<robot name="sample"><link name="camera_frame"/><link nmae="foo"/>'
+                    "</robot>", encoding="utf-8")
+    assert linter(path) == urdfdom(path) == (False, None)
+
+
 def test_real_urdf() -> None:
     path = FIXTURES / "robot_ws" / "src" / "demo_description" / "urdf" / "plain.urdf"
     assert linter(path) == urdfdom(path)

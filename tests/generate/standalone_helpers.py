@@ -208,6 +208,16 @@ def json_pair(
     return json.loads(out), json.loads(done.stdout)
 
 
+def _names_yaml(path: str) -> bool:
+    """Whether a launch file names a YAML parameter file (``<rosparam file=>``,
+    ``parameters=[...yaml]``): its tree then reads YAML that ``tree.files`` does not list."""
+    try:
+        text = (REPO / path).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return False
+    return ".yaml" in text or ".yml" in text
+
+
 def launch_fixtures(yaml: bool = True) -> list[str]:
     """Every launch file under tests/ and examples/ as the linter discovers them, relative
     to the repository; with ``yaml=False`` only those whose tree includes no YAML file."""
@@ -218,6 +228,7 @@ def launch_fixtures(yaml: bool = True) -> list[str]:
     with _chdir(REPO):
         result = lint_paths(paths, LintOptions(select=frozenset({"parse_error"})))
     with_yaml = {
-        tree.root for tree in result.trees if any(f.endswith((".yaml", ".yml")) for f in tree.files)
+        tree.root for tree in result.trees
+        if any(f.endswith((".yaml", ".yml")) or _names_yaml(f) for f in tree.files)
     }
     return [p for p in paths if p not in with_yaml]

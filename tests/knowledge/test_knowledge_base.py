@@ -39,6 +39,8 @@ def test_every_bundled_entry_is_well_formed_and_cites_a_read_source() -> None:
                    "commit": "abc", "lines": "1"}]}, "commit"),
     ({"publishes": [{"parent": "{nope}", "child": "x", "role": "odometry"}]}, "nope"),
     ({"kind": "robot"}, "kind"),
+    ({"ros1_tf2_from": "hydro"}, "ros1_tf2_from"),
+    ({"header_frames": ["{nope}"]}, "nope"),
 ])
 def test_a_malformed_entry_is_refused_with_its_fault(fault: dict[str, object],
                                                       message: str) -> None:
@@ -46,6 +48,28 @@ def test_a_malformed_entry_is_refused_with_its_fault(fault: dict[str, object],
     entry = dict(data["entries"][0], **fault)
     with pytest.raises(KnowledgeError, match=message):
         parse({"format": 1, "entries": [entry]}, "user.json")
+
+
+def test_header_frames_and_the_release_whose_frames_reach_tf2() -> None:
+    """map_server stamps its frame_id on the map; costmap_2d reads frames in tf2 from
+    Melodic on (both read in ros-planning/navigation and cited)."""
+    base = bundled()
+    map_server = base.node("map_server", "map_server", 1)
+    move_base = base.node("move_base", "move_base", 1)
+    assert map_server is not None and map_server.header_frames == ("{frame_id}",)
+    assert move_base is not None and move_base.ros1_tf2_from == "melodic"
+    gmapping = base.node("gmapping", "slam_gmapping", 1)
+    assert gmapping is not None and gmapping.ros1_tf2_from is None
+
+
+def test_robot_pose_ekf_always_broadcasts_its_output_frame() -> None:
+    """robot_pose_ekf sends output_frame -> base_footprint_frame with no switch
+    (gazebo_ros_pkgs#692: it and the Gazebo diff-drive plugin both sent odom ->
+    base_footprint)."""
+    assert edges(node("robot_pose_ekf", "robot_pose_ekf")) == [("odom_combined",
+                                                                "base_footprint")]
+    assert edges(node("robot_pose_ekf", "robot_pose_ekf", ("output_frame", "odom"))) == [
+        ("odom", "base_footprint")]
 
 
 def node(package: str, executable: str, *params: tuple[str, str], unread: tuple[str, ...] = (),

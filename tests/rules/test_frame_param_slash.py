@@ -1,4 +1,5 @@
-"""frame_param_slash: a ROS 2 node's frame parameter starting with '/' (fault, then fixed)."""
+"""frame_param_slash: a frame parameter starting with '/' where the node hands it to tf2
+(fault, then fixed)."""
 
 from __future__ import annotations
 
@@ -10,10 +11,16 @@ RULE = "frame_param_slash"
 
 
 def run(tmp_path: Path, name: str, text: str) -> list[tuple[str, int]]:
+    return [(rule, line) for rule, line, _ in levels(tmp_path, name, text)]
+
+
+def levels(tmp_path: Path, name: str, text: str,
+           distro: str | None = None) -> list[tuple[str, int, str]]:
     path = tmp_path / name
     path.write_text(text)
-    options = LintOptions(package_paths=(), select=frozenset({RULE}))
-    return [(d.rule, d.line) for d in lint_paths([str(path)], options).diagnostics]
+    options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro=distro)
+    return [(d.rule, d.line, d.severity.value)
+            for d in lint_paths([str(path)], options).diagnostics]
 
 
 def test_a_costmap_global_frame_with_a_slash_in_a_ros2_parameter_file(tmp_path: Path) -> None:
@@ -34,9 +41,54 @@ def test_a_costmap_global_frame_with_a_slash_in_a_ros2_parameter_file(tmp_path: 
     assert run(tmp_path, "nav.launch.py", launch) == []
 
 
-def test_ros1_nodes_and_defaults_are_left_out(tmp_path: Path) -> None:
+def test_ros1_nodes_on_tf_1_and_defaults_are_left_out(tmp_path: Path) -> None:
+    """amcl strips the slash; gmapping looks frames up through tf 1, which strips it; a
+    move_base without parameters keeps its own defaults."""
     ros1 = ('<launch><node pkg="amcl" type="amcl" name="amcl">'
             '<param name="global_frame_id" value="/map"/></node>'
             '<node pkg="gmapping" type="slam_gmapping" name="g">'
-            '<param name="odom_frame" value="/odom"/></node></launch>')
-    assert run(tmp_path, "a.launch", ros1) == []
+            '<param name="odom_frame" value="/odom"/></node>'
+            '<node pkg="move_base" type="move_base" name="move_base"/></launch>')
+    assert levels(tmp_path, "a.launch", ros1, "noetic") == []
+
+
+MOVE_BASE = ('<launch>\n<node pkg="move_base" type="move_base" name="move_base">'
+             '<rosparam>global_costmap:\n  global_frame: /map\n</rosparam></node>\n'
+             '</launch>\n')
+
+
+def test_a_melodic_costmap_hands_its_frames_to_tf2(tmp_path: Path) -> None:
+    """navigation_tutorials#17: costmap_2d on tf2 from Melodic; Kinetic's resolved the
+    slash with tf 1; with no target distribution the finding is a notice."""
+    assert levels(tmp_path, "mb.launch", MOVE_BASE, "melodic") == [(RULE, 2, "warning")]
+    assert levels(tmp_path, "mb.launch", MOVE_BASE, "kinetic") == []
+    assert levels(tmp_path, "mb.launch", MOVE_BASE) == [(RULE, 2, "info")]
+    fixed = MOVE_BASE.replace("/map", "map")
+    assert levels(tmp_path, "mb.launch", fixed, "noetic") == []
+
+
+def test_the_frame_a_map_server_stamps_on_its_map(tmp_path: Path) -> None:
+    """teb_local_planner_tutorials#3: the costmaps look up the map's frame_id."""
+    text = ('<launch>\n<node pkg="map_server" type="map_server" name="map_server" args="m.yaml">'
+            '<param name="frame_id" value="/map"/></node>\n</launch>\n')
+    assert levels(tmp_path, "m.launch", text, "melodic") == [(RULE, 2, "warning")]
+    assert levels(tmp_path, "m.launch", text.replace("/map", "map"), "melodic") == []
+
+
+def test_a_frame_prefix_that_is_a_slash(tmp_path: Path) -> None:
+    """turtlebot3#1136: frame_prefix '"' + namespace + '/"' is '/' without a namespace, so
+    robot_state_publisher publishes '/base_link'."""
+    launch = ("from launch import LaunchDescription\n"
+              "from launch.substitutions import LaunchConfiguration, PythonExpression\n"
+              "from launch_ros.actions import Node\n"
+              "def generate_launch_description():\n"
+              "    ns = LaunchConfiguration('namespace', default='')\n"
+              "    return LaunchDescription([\n"
+              "        Node(package='robot_state_publisher', executable='robot_state_publisher',\n"
+              "             parameters=[{'frame_prefix':\n"
+              "                 PythonExpression(['\"', ns, '/\"'])}])])\n")
+    assert levels(tmp_path, "rsp.launch.py", launch) == [(RULE, 7, "warning")]
+    fixed = launch.replace("['\"', ns, '/\"']", "['\"', ns, '/\" if \"', ns, '\" else \"\"']")
+    assert levels(tmp_path, "rsp.launch.py", fixed) == []
+    prefixed = launch.replace("default=''", "default='robot1'")
+    assert levels(tmp_path, "rsp.launch.py", prefixed) == []

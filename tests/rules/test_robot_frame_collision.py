@@ -33,3 +33,23 @@ def test_two_namespaced_robots_without_a_prefix(tmp_path: Path) -> None:
 
 def test_one_robot_is_silent(tmp_path: Path) -> None:
     assert run(tmp_path, '<launch><include file="$(dirname)/robot.launch"/></launch>') == []
+
+
+def test_a_ros2_frame_prefix_given_to_ros1_publishers_is_no_prefix(tmp_path: Path) -> None:
+    """ROS 1 robot_state_publisher reads tf_prefix, not frame_prefix
+    (ros/robot_state_publisher#192): the robots' frames still collide."""
+    robot = ROBOT.replace('name="rsp"/>', 'name="rsp"><param name="frame_prefix" '
+                                          'value="$(arg p)"/></node>')
+    (tmp_path / "robot.launch").write_text(robot.replace("<launch>\n", '<launch>\n<arg name="p"/>'))
+    fleet = ('<launch><group ns="r1"><include file="$(dirname)/robot.launch">'
+             '<arg name="p" value="r1"/></include></group>'
+             '<group ns="r2"><include file="$(dirname)/robot.launch">'
+             '<arg name="p" value="r2"/></include></group></launch>')
+    (tmp_path / "fleet.launch").write_text(fleet)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(tmp_path / "fleet.launch")], options).diagnostics
+    assert [(d.rule, Path(d.path).name) for d in found] == [(RULE, "robot.launch")]
+    (tmp_path / "robot.launch").write_text(
+        robot.replace("<launch>\n", '<launch>\n<arg name="p"/>').replace("frame_prefix",
+                                                                         "tf_prefix"))
+    assert lint_paths([str(tmp_path / "fleet.launch")], options).diagnostics == ()

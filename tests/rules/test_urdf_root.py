@@ -76,3 +76,19 @@ def test_a_wrapper_macro_that_does_not_forward_the_parent(tmp_path: Path) -> Non
     fixed = text.replace('<xacro:arm arm_id="${arm_id}"/>',
                          '<xacro:arm arm_id="${arm_id}" connected_to="${parent}"/>')
     assert lint_loaded(tmp_path, fixed, RULE) == ()
+
+
+def test_a_link_without_a_name_is_a_root_of_its_own() -> None:
+    """urdfdom reads ``<link nmae="foo"/>`` as a link named '' ("No name given for the
+    link.") and refuses two roots, [] and the robot's (ms-iot/ROSOnWindows#50)."""
+    (found,) = lint_urdf(robot(link("camera_frame") + '\n<link nmae="foo"/>'), RULE)
+    assert found.line == 3 and "Two root links found: [] and [camera_frame]" in found.message
+    assert "without a name" in found.message and found.related[0].line == 2
+
+
+def test_a_named_link_attached_to_the_tree_is_no_root_even_beside_an_unresolved_name(
+        tmp_path: Path) -> None:
+    text = robot(link("a") + link("b") + joint("j", "a", "b"))
+    assert lint_urdf(text, RULE) == ()
+    unknown = robot(link("a") + '<link name="${undefined_name}"/>')
+    assert lint_loaded(tmp_path, unknown, RULE) == ()

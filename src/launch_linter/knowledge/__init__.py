@@ -22,6 +22,8 @@ FORMAT = 1
 DATA_FILE = "tf_publishers.json"
 KINDS = ("node", "gazebo_plugin", "controller")
 ROLES = ("localization", "odometry", "sensor", "robot")
+ROS1_DISTROS = ("kinetic", "lunar", "melodic", "noetic")
+"""ROS 1 distributions in release order (``ros1_tf2_from`` names one)."""
 MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
 ANY = "*"
 _PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
@@ -125,12 +127,18 @@ class Entry(Record):
     prefix: Prefix | None
     sources: tuple[Source, ...]
     origin: str
+    header_frames: tuple[str, ...]
+    """Frames the node stamps on the data it publishes (a map's ``frame_id``): its
+    consumers look them up in tf."""
+    ros1_tf2_from: str | None
+    """ROS 1: the first distribution whose release hands the entry's frames to tf2 as
+    written (a leading ``/`` then fails); None when not known to."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
         "parameters", "publishes", "looks_up", "camera_frames", "strips_leading_slash",
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
-        "unsure_defaults", "prefix", "sources", "origin",
+        "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
     )
 
     def __init__(
@@ -155,6 +163,8 @@ class Entry(Record):
         prefix: Prefix | None,
         sources: tuple[Source, ...],
         origin: str,
+        header_frames: tuple[str, ...] = (),
+        ros1_tf2_from: str | None = None,
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -176,6 +186,8 @@ class Entry(Record):
         _set(self, "prefix", prefix)
         _set(self, "sources", sources)
         _set(self, "origin", origin)
+        _set(self, "header_frames", header_frames)
+        _set(self, "ros1_tf2_from", ros1_tf2_from)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -325,7 +337,8 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
                   for i, item in enumerate(publishes))
     looks_up = _texts(data.get("looks_up"), f"{where}.looks_up")
     cameras = _texts(data.get("camera_frames"), f"{where}.camera_frames")
-    for template in looks_up + cameras:
+    headers = _texts(data.get("header_frames"), f"{where}.header_frames")
+    for template in looks_up + cameras + headers:
         for name in _placeholders(template):
             if name not in params:
                 raise KnowledgeError(f"{where} names parameter {name!r}, which the entry "
@@ -343,6 +356,9 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
     if not isinstance(sources, list) or not sources:
         raise KnowledgeError(f"{where}.sources must list where the entry was read")
     elsewhere = data.get("parameters_elsewhere")
+    tf2_from = data.get("ros1_tf2_from")
+    if tf2_from is not None and tf2_from not in ROS1_DISTROS:
+        raise KnowledgeError(f"{where}.ros1_tf2_from must be one of {', '.join(ROS1_DISTROS)}")
     return Entry(
         id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
         plugins=plugins, filenames=filenames, types=types,
@@ -357,6 +373,8 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         prefix=prefix,
         sources=tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources)),
         origin=origin,
+        header_frames=headers,
+        ros1_tf2_from=tf2_from,
     )
 
 

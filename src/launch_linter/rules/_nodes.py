@@ -196,10 +196,12 @@ def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
 
 def frame_parameters(entry: Entry) -> list[str]:
     """The parameters of ``entry`` that name frames: those in its published edges, its
-    lookups and its camera frames (a parameter used only as a switch is not one)."""
+    lookups, its camera frames and the frames it stamps on its data (a parameter used only
+    as a switch is not one)."""
     names: list[str] = []
     templates = [t for spec in entry.publishes for t in (spec.parent, spec.child)]
-    for template in templates + list(entry.looks_up) + list(entry.camera_frames):
+    for template in (templates + list(entry.looks_up) + list(entry.camera_frames)
+                     + list(entry.header_frames)):
         for name in _PLACEHOLDER.findall(template):
             if name not in names:
                 names.append(name)

@@ -42,7 +42,9 @@ fix is to switch one off (`publish_tf: false`, `enable_odom_tf: false`, the driv
 ## Known problems
 A node's parameter file that the linter cannot read leaves its defaults assumed (except
 where the knowledge base says they are not); a node the knowledge base does not know is
-not seen publishing anything.
+not seen publishing anything. Reported at info: the corpus (all 6,724 file versions) and
+122 whole repositories fetched for it gave 2 findings, both true
+(docs/evaluation/tree_judged.jsonl): too few to say it is 90% precise, so not a warning.
 """
 
 from __future__ import annotations
@@ -57,7 +59,7 @@ from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "duplicate_publisher"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 AUTHORITIES = ("localization", "odometry")
 

@@ -1,18 +1,24 @@
-"""A node's frame parameter with a leading slash, where the node looks the frame up in tf2.
+"""A node's frame parameter with a leading slash, where the node hands the frame to tf2.
 
 ## What it does
-Reports a frame parameter given to a ROS 2 node (`global_frame`, `odom_frame_id`,
-`base_link_frame`, … as the knowledge base names them, docs/knowledge.md) whose value
-starts with `/`: the node passes it to tf2 as it is, and tf2 frame ids cannot start with
-`/`. ROS 1 nodes are left out (tf 1, and ROS 1 amcl, strip the slash), as are nodes whose
-source strips it and the nodes' own defaults.
+Reports a frame parameter given to a node (`global_frame`, `odom_frame_id`,
+`base_link_frame`, a map's `frame_id`, … as the knowledge base names them,
+docs/knowledge.md) whose value starts with `/`, and a frame prefix that does
+(robot_state_publisher's `frame_prefix`: every frame it publishes then starts with `/`).
+ROS 2 nodes are checked unless their source strips the slash. A ROS 1 node is checked
+only where the knowledge base says from which release its frames reach tf2 as written
+(move_base's costmaps and map_server from Melodic; Kinetic's costmaps resolved the slash
+with tf 1): a warning when the target distribution (`--ros-distro`) is that release or
+later, info when it is not known. The nodes' own defaults are not reported.
 
 ## Why is this bad?
-tf2 refuses a frame id that starts with `/` ("frame_ids cannot start with a '/'"): every
-lookup of that frame fails, and a transform the node publishes under it is not the frame
-the rest of the tree calls by its name without the slash. The slash is a habit from tf 1,
-whose `tf_prefix` resolution accepted it; costmaps, map_server, slam_toolbox and
-robot_localization on tf2 do not.
+tf2 refuses a frame id that starts with `/` ("Invalid argument "/map" passed to
+canTransform argument target_frame in tf2 frame_ids cannot start with a '/'"): every
+lookup of that frame fails, and a transform published under it is not the frame the rest
+of the tree calls by its name without the slash (two trees that never join). The slash is
+a habit from tf 1, whose `tf_prefix` resolution accepted it; costmaps, map_server's map,
+slam_toolbox and robot_localization on tf2 do not, nor a `frame_prefix` built as
+`namespace + '/'` with an empty namespace.
 
 ## Example
 ```xml
@@ -33,15 +39,15 @@ robot_localization on tf2 do not.
 ```
 
 ## Known problems
-Reported at info until measured: it gave no finding on the corpus (mostly ROS 1, whose
-nodes it leaves out) nor on 17 whole repositories (docs/evaluation/tree_judged.jsonl).
+The finding is at the node's launch element even when the value comes from a parameter
+file (the linter does not keep where in the file each parameter was written).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.knowledge import Entry
+from launch_linter.knowledge import ROS1_DISTROS, Entry
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
@@ -49,26 +55,60 @@ from launch_linter.rules._nodes import entry_of, finding_at_node, frame_paramete
 
 ID = "frame_param_slash"
 CATEGORY = Category.TF
-SEVERITY = Severity.INFO
+SEVERITY = Severity.WARNING
 EXAMPLE_PATH = "example.launch.xml"
 
 
 def _slashed(entry: Entry, node: NodeRecord) -> Iterator[tuple[str, str]]:
-    for name in frame_parameters(entry):
+    names = frame_parameters(entry)
+    if entry.prefix is not None and entry.prefix.param not in names:
+        names.append(entry.prefix.param)
+    for name in names:
         value = node.given(name)
         if value is not None and value != UNKNOWN_VALUE and value.startswith("/"):
             yield name, value
 
 
+def _ros1_level(entry: Entry, distro: str | None) -> Severity | None:
+    """The level for a ROS 1 node: None when its frames are not known to reach tf2 as
+    written on the target distribution."""
+    first = entry.ros1_tf2_from
+    if first is None:
+        return None
+    if distro not in ROS1_DISTROS:
+        return Severity.INFO
+    return Severity.WARNING if ROS1_DISTROS.index(distro) >= ROS1_DISTROS.index(first) else None
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     for node in context.tree.nodes:
         entry = entry_of(context, node)
-        if node.ros != 2 or entry is None or entry.strips_leading_slash:
+        if entry is None or node.ros not in (1, 2):
+            continue
+        level: Severity | None = None
+        if node.ros == 1:
+            level = _ros1_level(entry, context.distro)
+            if level is None:
+                continue
+        elif entry.strips_leading_slash:
             continue
         for name, value in _slashed(entry, node):
-            program = node.plugin or f"{node.package}/{node.executable}"
-            yield finding_at_node(
-                node,
-                f"{program} parameter '{name}' is '{value}': tf2 frame ids cannot start "
-                f"with '/', so the node's lookups of it fail; write '{value.lstrip('/')}'",
-            )
+            yield _finding(entry, node, name, value, level)
+
+
+def _finding(entry: Entry, node: NodeRecord, name: str, value: str,
+             level: Severity | None) -> Finding:
+    program = node.plugin or f"{node.package}/{node.executable}"
+    when = (f" (from {str(entry.ros1_tf2_from).capitalize()} on; set --ros-distro to know)"
+            if level is Severity.INFO else "")
+    if entry.prefix is not None and name == entry.prefix.param:
+        what = (f"{program} parameter '{name}' is '{value}': every frame it publishes "
+                f"starts with '/', which tf2 frame ids cannot{when}; the tree splits from "
+                f"the frames others publish without it")
+    else:
+        what = (f"{program} parameter '{name}' is '{value}': tf2 frame ids cannot start "
+                f"with '/', so lookups of it fail{when}; write '{value.lstrip('/')}'")
+    found = finding_at_node(node, what)
+    return found if level is None else Finding(
+        found.path, found.line, found.column, found.message, found.node, found.related,
+        severity=level)

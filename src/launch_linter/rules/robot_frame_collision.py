@@ -56,7 +56,9 @@ the description.
 Reported at info: judged on too few real findings to set a warning (one, in husky's
 multi-robot simulation, which runs each robot under its own master through
 multimaster_launch: not a collision; docs/evaluation/tree_judged.jsonl). A prefix whose
-value the linter cannot resolve counts as a prefix (the rule stays silent).
+value the linter cannot resolve counts as a prefix (the rule stays silent). Only the
+parameter the node's ROS version reads counts: ROS 1 robot_state_publisher ignores a
+`frame_prefix` (ros/robot_state_publisher#192), ROS 2's has no `tf_prefix`.
 """
 
 from __future__ import annotations
@@ -64,14 +66,21 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.robot import DescriptionSource, RobotJoint
+from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
 
 ID = "robot_frame_collision"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
 PUBLISHER = "robot_state_publisher"
-PREFIXES = ("frame_prefix", "tf_prefix")
+PREFIXES = {1: ("tf_prefix",), 2: ("frame_prefix",)}
+"""The parameter that prefixes robot_state_publisher's frames, by ROS version: ROS 1 reads
+tf_prefix (found by searchParam), ROS 2 frame_prefix; each ignores the other's."""
+
+
+def _prefixed(node: NodeRecord) -> bool:
+    names = PREFIXES.get(node.ros or 0, ("tf_prefix", "frame_prefix"))
+    return any(node.given(p) not in (None, "") for p in names)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -80,7 +89,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
     namespaces = {n.namespace for n in publishers}
     if len(publishers) < 2 or len(namespaces) < 2 or None in namespaces:
         return
-    if any(n.given(p) not in (None, "") for n in publishers for p in PREFIXES):
+    if any(_prefixed(n) for n in publishers):
         return
     by_source: dict[int, list[RobotJoint]] = {}
     sources: list[DescriptionSource] = []
