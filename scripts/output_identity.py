@@ -5,9 +5,9 @@
     python scripts/output_identity.py [--jobs 1,2] [--baseline DIR] [PATH ...]
 
 Runs this checkout's ``launch-linter check`` and ``launch-linter transforms``, each with
-``--format json`` and ``--format text`` (``PYTHONPATH`` set to its ``src``) over each PATH (default: the corpus
-files, ``../shared/corpus/files``, and the examples), from the repository root so that
-every path in the output is the same in every run. ``--save`` stores the outputs in DIR
+``--format json`` and ``--format text`` (``PYTHONPATH`` set to its ``src``) over each PATH
+(default: the corpus files, ``../shared/corpus/files``, and the examples), from the repository
+root so that every path in the output is the same in every run. ``--save`` stores the outputs in DIR
 (default ``build/output-baseline``, which git ignores): run it on the code *before* a
 change. Without ``--save`` it runs the same commands, once per ``--jobs`` count, and
 compares each output byte for byte with the baseline; it prints the first differing

@@ -21,7 +21,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 TREES = ("src", "tests", "scripts", "benchmarks")
-EDGES = ("evaluation", "generate", "gitignore", "graph", "mining", "server")
+EDGES = ("evaluation", "generate", "graph", "mining", "server")
 """Packages and modules that may import third-party ones; the rest is the stdlib-only core."""
 
 GENERIC_BUILTINS = {"list", "tuple", "dict", "set", "frozenset", "type"}

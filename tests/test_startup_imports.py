@@ -21,7 +21,6 @@ SRC = str(Path(launch_linter.__file__).resolve().parents[1])
 
 # Imports a run over ROS 1 XML files without fixes, robots or ignore files never needs.
 HEAVY = (
-    "pathspec",  # .gitignore: only when a folder walk meets one
     "launch_linter.fix",  # only when a finding carries a fix, or --fix/--diff
     "launch_linter.frontends.ros2_launch",
     "launch_linter.frontends.ros2_python",
@@ -97,16 +96,6 @@ def test_check_of_a_folder_without_ignore_files_imports_nothing_heavy(tmp_path: 
     status, modules = _imported(["check", "--format", "json", "launch"], tmp_path)
     assert status == 0
     assert _heavy(modules) == []
-
-
-def test_a_gitignore_brings_pathspec_in(tmp_path: Path) -> None:
-    # The other side of the lazy import: a folder walk that meets a .gitignore reads it.
-    pytest.importorskip("pathspec")
-    (tmp_path / "launch").mkdir()
-    (tmp_path / "launch" / "a.launch").write_text(LAUNCH, encoding="utf-8")
-    (tmp_path / ".gitignore").write_text("scratch/\n", encoding="utf-8")
-    _, modules = _imported(["check", "--format", "json", "launch"], tmp_path)
-    assert "pathspec" in modules
 
 
 def test_version_imports_no_command(tmp_path: Path) -> None:

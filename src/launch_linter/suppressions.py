@@ -23,9 +23,9 @@ import os
 import re
 from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from functools import lru_cache
 
 from launch_linter.model.diagnostic import Diagnostic, Problem
+from launch_linter.model.globs import path_glob
 from launch_linter.model.launch import DIRECTIVE_MARKER, LaunchTree
 
 UNUSED_ID = "unused_suppression"
@@ -86,82 +86,15 @@ def _without_dot_slash(pattern: str) -> str:
     return pattern[2:] if pattern.startswith("./") else pattern
 
 
-@lru_cache(maxsize=256)
-def _glob_tokens(pattern: str) -> tuple[tuple[str, str], ...]:
-    """The pattern as tokens: ``lit`` (one character), ``one`` (``?``), ``star`` (``*``),
-    ``any`` (``**``) and ``dirs`` (``**/``: nothing, or anything that ends with ``/``)."""
-    tokens: list[tuple[str, str]] = []
-    i = 0
-    while i < len(pattern):
-        if pattern.startswith("**/", i):
-            tokens.append(("dirs", ""))
-            i += 3
-        elif pattern.startswith("**", i):
-            tokens.append(("any", ""))
-            i += 2
-        elif pattern[i] == "*":
-            tokens.append(("star", ""))
-            i += 1
-        elif pattern[i] == "?":
-            tokens.append(("one", ""))
-            i += 1
-        else:
-            tokens.append(("lit", pattern[i]))
-            i += 1
-    return tuple(tokens)
-
-
-_SKIPPABLE = ("star", "any", "dirs")
-
-
-def _closure(tokens: tuple[tuple[str, str], ...], states: set[int]) -> set[int]:
-    out: set[int] = set()
-    stack = list(states)
-    while stack:
-        state = stack.pop()
-        if state in out:
-            continue
-        out.add(state)
-        if state < len(tokens) and tokens[state][0] in _SKIPPABLE:
-            stack.append(state + 1)
-    return out
-
-
 def glob_match(pattern: str, text: str) -> bool:
     """Whether ``text`` matches the glob ``pattern`` (see :class:`PathIgnore`).
 
     The pattern comes from a repository's configuration, so it is matched by simulating
-    all its positions at once (time proportional to pattern length times text length), not
-    by a backtracking regular expression, which ``*a*a*a*a*b`` would make exponential.
+    all its positions at once (``model.globs``: time proportional to pattern length times
+    text length), not by a backtracking regular expression, which ``*a*a*a*a*b`` would
+    make exponential.
     """
-    tokens = _glob_tokens(pattern)
-    end = len(tokens)
-    states = _closure(tokens, {0})
-    for char in text:
-        following: set[int] = set()
-        for state in states:
-            if state == end:
-                continue
-            kind, literal = tokens[state]
-            if kind == "lit":
-                if char == literal:
-                    following.add(state + 1)
-            elif kind == "one":
-                if char != "/":
-                    following.add(state + 1)
-            elif kind == "star":
-                if char != "/":
-                    following.add(state)
-            elif kind == "any":
-                following.add(state)
-            else:
-                following.add(state)
-                if char == "/":
-                    following.add(state + 1)
-        if not following:
-            return False
-        states = _closure(tokens, following)
-    return end in states
+    return path_glob(pattern).match(text)
 
 
 def _directive_text(comment: str) -> str:

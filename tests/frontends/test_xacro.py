@@ -145,6 +145,20 @@ def test_one_expansion_per_file_and_args() -> None:
     assert len(cache) == 2
 
 
+def test_an_expansion_is_reused_for_args_and_variables_it_never_reads(tmp_path: Path) -> None:
+    path = tmp_path / "r.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                    '<xacro:arg name="a" default="x"/><link name="$(arg a)$(optenv V)"/>'
+                    '</robot>')
+    cache = RobotCache()
+    index = PackageIndex([str(tmp_path)])
+    first = cache.expansion(str(path), (("unused", "1"),), index, {"W": "1"})
+    assert cache.expansion(str(path), (("unused", "2"),), index, {"W": "2"}) is first
+    assert cache.expansion(str(path), (("a", "x"),), index, {}) is not first
+    assert cache.expansion(str(path), (), index, {"V": "1"}) is not first
+    assert len(cache) == 3
+
+
 def test_quoted_defaults_call_and_namespaced_includes(tmp_path: Path) -> None:
     (tmp_path / "parts.xacro").write_text("""<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
   <xacro:macro name="mount" params="parent child xyz:='0.1 0 0.2' prefix:=''">

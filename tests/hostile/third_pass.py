@@ -21,16 +21,19 @@ def _package(folder: Path, name: str) -> Path:
     return package
 
 
-def _described(folder: Path, name: str, files: dict[str, str], count: int = 1) -> str:
-    """A launch file describing the robot ``files['robot.xacro']`` ``count`` times."""
+def _described(folder: Path, name: str, files: dict[str, str], count: int = 1,
+               arg: str = "", launch: str = "robot", first: int = 0) -> str:
+    """A launch file describing the robot ``files['robot.xacro']`` ``count`` times, the
+    ``i``-th with the xacro arg ``{arg}:=r{i}`` when ``arg`` is given."""
     package = _package(folder, name)
     for file_name, content in files.items():
         _write(package, f"urdf/{file_name}", content)
     params = "".join(
         f'<group ns="r{i}"><param name="robot_description" command="$(find xacro)/xacro '
-        f'$(find {name})/urdf/robot.xacro"/><node pkg="robot_state_publisher" '
-        f'type="robot_state_publisher" name="rsp"/></group>' for i in range(count))
-    return _write(package, "launch/robot.launch", f"<launch>{params}{node('n')}</launch>")
+        f'$(find {name})/urdf/robot.xacro{f" {arg}:=r{i}" if arg else ""}"/>'
+        f'<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+        f'</group>' for i in range(first, first + count))
+    return _write(package, f"launch/{launch}.launch", f"<launch>{params}{node('n')}</launch>")
 
 
 def _doubling_macros(name: str) -> str:
@@ -58,6 +61,24 @@ def _xacro_big_include(folder: Path) -> str:
 
 def _xacro_many_descriptions(folder: Path) -> str:
     return _described(folder, "manydesc", {"robot.xacro": _doubling_macros("m")}, count=12)
+
+
+def _xacro_unread_args(folder: Path) -> str:
+    """Twelve launch files, each describing one costly xacro with an arg it never reads
+    (``prefix:=rI``): one expansion for the run, not twelve (36 s before)."""
+    for index in range(12):
+        _described(folder, "unread", {"robot.xacro": _doubling_macros("u")}, arg="prefix",
+                   launch=f"r{index}", first=index)
+    return str(folder / "unread" / "launch")
+
+
+def _xacro_read_args(folder: Path) -> str:
+    """Twelve descriptions of one costly xacro that reads its arg: twelve expansions,
+    which together meet the launch tree's budget (36 s before)."""
+    body = _doubling_macros("p").replace("<xacro:m40/>",
+                                         '<xacro:arg name="prefix" default=""/>'
+                                         '<link name="$(arg prefix)base"/><xacro:m40/>')
+    return _described(folder, "readargs", {"robot.xacro": body}, count=12, arg="prefix")
 
 
 def _xacro_copied_property(folder: Path) -> str:
@@ -185,10 +206,33 @@ def _gitignore_backtracking(folder: Path) -> str:
     return str(sub)
 
 
+def _gitignore_folder_stars(folder: Path) -> str:
+    """``**`` segments and single stars together: ``pathspec``'s regular expression took
+    minutes on a path of long folder names."""
+    sub = folder / "folder_stars_repo"
+    (sub / ".git").mkdir(parents=True, exist_ok=True)
+    _write(sub, ".gitignore", "**/*a*a/**/*a*a*b\n**/a/**/a/**/a/**/a/**/a/**/a/**/b\n")
+    _write(sub, "/".join(["a" * 200] * 6) + "/x.launch", GOOD)
+    _write(sub, "a/" * 60 + "x.launch", GOOD)
+    return str(sub)
+
+
+def _exclude_backtracking(folder: Path) -> str:
+    """A configuration's ``exclude`` glob that ``fnmatch``'s regular expression matches
+    by backtracking (exponential on Python 3.8)."""
+    sub = folder / "exclude_repo"
+    _write(sub, ".launch-linter.toml",
+           'extend-exclude = ["' + "*a" * 12 + '*b", "' + "*a" * 12 + '*/b"]\n')
+    _write(sub, f"{'a' * 200}/{'a' * 200}.launch", GOOD)
+    return str(sub)
+
+
 THIRD_PASS: dict[str, Case] = {
     "xacro_doubling": Case("work", _xacro_doubling, "steps; stopped"),
     "xacro_big_include": Case("work", _xacro_big_include),
     "xacro_many_descriptions": Case("work", _xacro_many_descriptions),
+    "xacro_unread_args": Case("discovery", _xacro_unread_args),
+    "xacro_read_args": Case("work", _xacro_read_args, "work budget of this launch tree"),
     "xacro_copied_property": Case("work", _xacro_copied_property, "characters of attribute text"),
     "xacro_escapes": Case("work", _xacro_escapes),
     "xacro_special_include": Case("special", _xacro_special_include, "not a regular file"),
@@ -203,4 +247,6 @@ THIRD_PASS: dict[str, Case] = {
     "nested_folders": Case("discovery", _nested_folders),
     "gitignore_fifo": Case("discovery", _gitignore_fifo),
     "gitignore_backtracking": Case("discovery", _gitignore_backtracking),
+    "gitignore_folder_stars": Case("discovery", _gitignore_folder_stars),
+    "exclude_backtracking": Case("discovery", _exclude_backtracking),
 }

@@ -246,10 +246,8 @@ def discovery_for(ns: argparse.Namespace, config: Config) -> tuple[Exclusions, I
         respect = config.respect_gitignore if config.respect_gitignore is not None else True
     if not respect:
         return exclusions, None
-    try:
-        from launch_linter.workspace.gitignore import gitignore_predicate
-    except ImportError:  # the standalone linter carries no pathspec: .gitignore not read
-        return exclusions, None
+    from launch_linter.workspace.gitignore import gitignore_predicate  # folder walks only
+
     return exclusions, gitignore_predicate().ignored
 
 

@@ -8,6 +8,14 @@ runs in a throw-away repository of our own whose only link to the corpus one is 
 ``objects/info/alternates`` entry (object files are data, never code). Every other config
 source is neutralised too: no system or global config, no pager, no prompts, an empty
 HOME, a fixed PATH lookup of ``git`` itself.
+
+What git does follow of the corpus repository is its object store: the object and pack
+files, ``objects/info/alternates`` (recursively) and the commit-graph files. Before git
+runs, the store is walked (bounded): every entry must be a folder or a regular file (a
+FIFO would block git until its timeout, a device would be read for ever), alternates must
+be small regular files naming folders, and the store's size is capped. Files read here
+(``.git`` files, ``commondir``, ``HEAD``, refs, ``packed-refs``, ``shallow``) are opened as
+regular files only, without blocking, size-capped.
 """
 
 from __future__ import annotations
@@ -15,12 +23,20 @@ from __future__ import annotations
 import os
 import re
 import shutil
+import stat
 import subprocess
 import tempfile
+
+from launch_linter.resolve.xml_safe import read_regular_file
 
 GIT_TIMEOUT_S = 120
 MAX_REF_BYTES = 4096
 MAX_PACKED_REFS_BYTES = 64 * 1024 * 1024
+MAX_OBJECT_ENTRIES = 2_000_000
+"""Entries of an object store (loose objects, packs, folders, alternates' too) walked
+before git is trusted with it: far above a real repository's, linear to check."""
+MAX_ALTERNATES = 5
+"""git's own depth limit for alternates of alternates."""
 _SHA = re.compile(r"[0-9a-f]{40}(?:[0-9a-f]{24})?\Z")
 _REF = re.compile(r"refs/[A-Za-z0-9._/+-]{1,400}\Z")
 # Command-line settings win over every file git reads: these switch off what could run.
@@ -32,17 +48,70 @@ _SAFE_CONFIG = (
 
 
 def _read_small(path: str, limit: int = MAX_REF_BYTES) -> str | None:
-    """A small regular file's text, or None (a FIFO or device is never opened)."""
+    """A small regular file's text, or None (a FIFO or device is never waited on: it is
+    opened without blocking and its type checked on the open descriptor)."""
     try:
-        if not os.path.isfile(path):
-            return None
-        with open(path, "rb") as handle:
-            data = handle.read(limit + 1)
-    except OSError:
+        data = read_regular_file(path, limit + 1)
+    except (OSError, ValueError):
         return None
     if len(data) > limit:
         return None
     return data.decode("utf-8", "replace")
+
+
+def object_store_problem(objects: str) -> str | None:
+    """Why git must not be pointed at the object folder ``objects`` (None when it may):
+    an entry that is neither a folder nor a regular file, an alternates file that is not
+    a small regular file or names something other than a folder, alternates deeper than
+    git follows them, or more than ``MAX_OBJECT_ENTRIES`` entries. Walked iteratively,
+    each folder once by identity (a loop of links cannot keep it going)."""
+    pending = [(objects, 0)]
+    seen: set[tuple[int, int]] = set()
+    entries = 0
+    while pending:
+        store, depth = pending.pop()
+        try:
+            status = os.stat(store)
+        except OSError:
+            return f"{store}: cannot be read"
+        if not stat.S_ISDIR(status.st_mode):
+            return f"{store}: not a folder"
+        folders = [(store, status)]
+        while folders:
+            folder, status = folders.pop()
+            if (status.st_dev, status.st_ino) in seen:
+                continue
+            seen.add((status.st_dev, status.st_ino))
+            try:
+                listing = list(os.scandir(folder))
+            except OSError:
+                return f"{folder}: cannot be listed"
+            entries += len(listing)
+            if entries > MAX_OBJECT_ENTRIES:
+                return f"{objects}: more than {MAX_OBJECT_ENTRIES:,} entries"
+            for entry in listing:
+                try:
+                    found = entry.stat(follow_symlinks=True)
+                except OSError:
+                    return f"{entry.path}: a link that leads nowhere"
+                if stat.S_ISDIR(found.st_mode):
+                    folders.append((entry.path, found))
+                elif not stat.S_ISREG(found.st_mode):
+                    return f"{entry.path}: not a regular file"
+        alternates = os.path.join(store, "info", "alternates")
+        if not os.path.lexists(alternates):
+            continue
+        text = _read_small(alternates)
+        if text is None:
+            return f"{alternates}: not a small regular file"
+        for line in text.splitlines():
+            line = line.strip()
+            if not line or line.startswith("#"):
+                continue
+            if depth + 1 > MAX_ALTERNATES:
+                return f"{alternates}: alternates nested more than {MAX_ALTERNATES} deep"
+            pending.append((os.path.join(store, line.strip('"')), depth + 1))
+    return None
 
 
 def git_dir(folder: str) -> str | None:
@@ -124,7 +193,7 @@ def commit_count(folder: str) -> tuple[int | None, str]:
         return None, ""
     head = head_sha(gitdir)
     objects = os.path.join(_common_dir(gitdir), "objects")
-    if head is None or not os.path.isdir(objects):
+    if head is None or not os.path.isdir(objects) or object_store_problem(objects):
         return None, ""
     git = shutil.which("git")
     if git is None:

@@ -12,6 +12,18 @@ UNKNOWN_VALUE = "\x00unknown"
 MOVABLE_JOINTS = ("revolute", "continuous", "prismatic", "floating", "planar")
 
 
+SIMULATOR_SPAWNERS = frozenset({
+    ("gazebo_ros", "spawn_model"), ("gazebo_ros", "spawn_entity.py"),
+    ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),
+})
+"""Nodes that give a robot description to a simulator, which then runs its plugins."""
+
+
+def spawns_into_simulator(node: NodeRecord) -> bool:
+    """Whether ``node`` spawns a robot description into Gazebo (classic or gz-sim)."""
+    return node.kind == "node" and (node.package, node.executable) in SIMULATOR_SPAWNERS
+
+
 class DescriptionKind(str, Enum):
     """How a launch file gives ``robot_description``."""
 
@@ -186,6 +198,9 @@ class RobotModel:
     """Whether the description's files define xacro macros (an empty robot made of a
     macros-only file)."""
     standalone: bool = False
+    plugins: tuple[NodeRecord, ...] = ()
+    """Its ``<gazebo><plugin>`` blocks, as records of kind ``gazebo_plugin``: they run
+    only when a simulator is given the description (see :func:`spawns_into_simulator`)."""
 
     @property
     def links(self) -> tuple[RobotElement, ...]:

@@ -9,7 +9,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import Enum
 
-from launch_linter.model.equality import Test, equality_test, exclusive
+from launch_linter.model.equality import Test, equality_test, exclusive, truth_test
 
 NULL_TOLERANCE = 1e-9
 
@@ -139,7 +139,8 @@ class Condition:
     def excludes(self, other: Condition) -> bool:
         """True when the two conditions can never hold together: one requires a test the
         other negates, or both compare one value with constants that cannot both hold
-        (``== 'a'`` and ``== 'b'``; ``== 'a'`` and ``!= 'a'``)."""
+        (``== 'a'`` and ``== 'b'``; ``== 'a'`` and ``!= 'a'``), or one value's truth
+        both ways (``IfCondition(x)`` and ``IfCondition(PythonExpression(['not ', x]))``)."""
         if any(lit.negated() in other.literals for lit in self.literals):
             return True
         tests = [t for t in map(_test, other.literals) if t is not None]
@@ -164,7 +165,7 @@ ALWAYS = Condition()
 @functools.lru_cache(maxsize=4096)
 def _test(literal: ConditionLiteral) -> Test | None:
     """The comparison a literal requires (an ``unless`` negates it)."""
-    found = equality_test(literal.text)
+    found = equality_test(literal.text) or truth_test(literal.text)
     return None if found is None else (found[0], found[1], found[2] == literal.positive)
 
 

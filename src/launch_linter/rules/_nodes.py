@@ -41,7 +41,8 @@ class NodeEdge:
 
     def describe(self) -> str:
         shown = self.node.plugin or f"{self.node.package}/{self.node.executable}"
-        return f"node {shown} ({self.node.path}:{self.node.line})"
+        what = "Gazebo plugin" if self.node.kind == "gazebo_plugin" else "node"
+        return f"{what} {shown} ({self.node.path}:{self.node.line})"
 
 
 @dataclass(frozen=True)
@@ -88,9 +89,16 @@ def _view(context: RuleContext) -> NodeView:
     unknown: list[NodeRecord] = []
     unsure: list[NodeRecord] = []
     joint_states = False
+    controllers: set[tuple[str | None, str | None]] = set()
     for node in context.tree.nodes:
         if node.package in STATIC_PUBLISHERS and node.kind == "node":
             continue
+        if node.kind == "controller":
+            # One controller given both in the manager's file and by a spawner's
+            # --param-file is one controller.
+            if (node.name, node.namespace) in controllers:
+                continue
+            controllers.add((node.name, node.namespace))
         if node.kind == "controller" and node.plugin in JOINT_STATE_CONTROLLERS:
             joint_states = True
             continue
@@ -126,12 +134,10 @@ __all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of", "view_of"]
 
 def rivals(a: NodeEdge, b: NodeEdge) -> bool:
     """Whether two node edges come from two publishers that run together: not one launch
-    element included twice (that is ``dup_name``'s), not under exclusive conditions, and
-    not one program under two different conditions (the usual alternatives, such as
-    nav2's composed and separate amcl, whose conditions the linter may not relate)."""
-    if a.location == b.location or a.node.condition.excludes(b.node.condition):
-        return False
-    return a.entry.id != b.entry.id or a.node.condition == b.node.condition
+    element included twice (that is ``dup_name``'s), not under exclusive conditions
+    (nav2's composed and separate amcl: ``IfCondition(x)`` and ``IfCondition(
+    PythonExpression(['not ', x]))``)."""
+    return a.location != b.location and not a.node.condition.excludes(b.node.condition)
 
 
 def finding_at_node(node: NodeRecord, message: str,

@@ -17,13 +17,13 @@ file is taken once, by its real path, under the first name it was found by.
 
 from __future__ import annotations
 
-import fnmatch
 import os
 import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Callable
 
+from launch_linter.model.globs import Glob, fnmatch_glob
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.paths import shown_path
@@ -162,33 +162,33 @@ class Exclusions:
 
     def excludes(self, absolute: str) -> bool:
         names, anchored = _compiled(self.patterns)
-        if names is not None and names.match(os.path.basename(absolute)):
+        name = os.path.basename(absolute)
+        if any(glob.match(name) for glob in names):
             return True
         if not anchored:
             return False
         relative = os.path.relpath(absolute, self.base).replace(os.sep, "/")
         absolute = absolute.replace(os.sep, "/")
-        return any(pattern.match(relative) or pattern.match(absolute) for pattern in anchored)
+        return any(glob.match(relative) or glob.match(absolute) for glob in anchored)
 
 
-_COMPILED: dict[tuple[str, ...], tuple[re.Pattern[str] | None, tuple[re.Pattern[str], ...]]] = {}
+_COMPILED: dict[tuple[str, ...], tuple[tuple[Glob, ...], tuple[Glob, ...]]] = {}
 
 
-def _compiled(
-    patterns: tuple[str, ...]
-) -> tuple[re.Pattern[str] | None, tuple[re.Pattern[str], ...]]:
-    """The globs as one pattern for base names and one per glob with a ``/`` (matched
-    against the relative and the absolute path), made once: discovery asks for every path
-    of a walk."""
+def _compiled(patterns: tuple[str, ...]) -> tuple[tuple[Glob, ...], tuple[Glob, ...]]:
+    """The globs for base names, and those with a ``/`` (matched against the relative and
+    the absolute path), made once: discovery asks for every path of a walk. A
+    configuration's globs are matched in linear time (``model.globs``), never by
+    ``fnmatch``'s backtracking regular expressions (``*a*a*a*a*a*b``: minutes on Python
+    3.8)."""
     found = _COMPILED.get(patterns)
     if found is None:
         cleaned = [pattern.rstrip("/") for pattern in patterns]
-        names = "|".join(fnmatch.translate(p) for p in cleaned)  # a name has no "/"
-        anchored = tuple(
-            re.compile(fnmatch.translate(p[2:] if p.startswith("./") else p))
-            for p in cleaned if "/" in p
-        )
-        found = _COMPILED[patterns] = (re.compile(names) if names else None, anchored)
+        # A name has no "/": a glob with one cannot match it.
+        names = tuple(fnmatch_glob(p) for p in cleaned if "/" not in p)
+        anchored = tuple(fnmatch_glob(p[2:] if p.startswith("./") else p)
+                         for p in cleaned if "/" in p)
+        found = _COMPILED[patterns] = (names, anchored)
     return found
 
 

@@ -1,4 +1,4 @@
-"""``.gitignore`` rules for folder discovery (an edge module: it uses ``pathspec``).
+"""``.gitignore`` rules for folder discovery.
 
 :func:`gitignore_predicate` gives the ``ignored(path, is_folder)`` predicate that
 :func:`launch_linter.workspace.discovery.discover` accepts. Every ``.gitignore`` from the
@@ -6,58 +6,88 @@ repository's top (the nearest folder up holding ``.git``; without one, every fol
 down to the path's folder applies, a deeper file overriding a shallower one, as
 git does. A folder that is ignored is not entered.
 
-``pathspec`` is imported when the first ``.gitignore`` is read: a run over files, or over
-folders without one, does not pay for it at start-up. Without ``pathspec`` (the standalone
-linter carries none) no ``.gitignore`` is read and nothing is ignored.
+A ``.gitignore`` comes with the repository, so its patterns are matched in linear time
+(``model.globs``, git's wildmatch dialect), never by backtracking regular expressions
+(``pathspec`` compiles ``**/*a*a/**/*a*a*b`` to one that takes minutes on a deep path).
 """
 
 from __future__ import annotations
 
 import os
-import re
-import typing
+from dataclasses import dataclass
 
+from launch_linter.model.globs import Glob, gitignore_glob
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 
-if typing.TYPE_CHECKING:
-    import pathspec
-
 MAX_GITIGNORE_BYTES = 1024 * 1024
 MAX_WALK_UP = 64
-MAX_STARS_PER_SEGMENT = 2
-"""``pathspec`` matches with Python's backtracking regular expressions: a segment with k
-single ``*`` costs up to n^k steps on a name of n characters (``*a*a*a*a*b`` on a 255-character
-name: seconds per path). Real patterns hold one or two (``*.tar.*``); a pattern with more
-is dropped (it then ignores nothing)."""
 MAX_PATTERNS = 10_000
 """Lines of one ``.gitignore`` read (each is matched against every path below it)."""
-_STARS = re.compile(r"(?<!\*)\*(?!\*)")
+MAX_PATTERN_CHARS = 4096
+"""Longest pattern kept (a match costs pattern length times path length)."""
+
+
+@dataclass(frozen=True)
+class Rule:
+    """One ``.gitignore`` line: its glob (``**/`` put before an unanchored one),
+    whether it re-includes (``!``) and whether it applies to folders only (``/`` last)."""
+
+    glob: Glob
+    negated: bool
+    folders_only: bool
+
+    def verdict(self, relative: str, is_folder: bool) -> bool | None:
+        """True (ignored) or False (re-included) when the rule matches ``relative`` or a
+        folder it lies in; None when it does not."""
+        if self.glob.matches_a_folder_of(relative) or (
+                (is_folder or not self.folders_only) and self.glob.match(relative)):
+            return not self.negated
+        return None
+
+
+def parse_rule(line: str) -> Rule | None:
+    """The rule of one ``.gitignore`` line, or None (blank, a comment, too long)."""
+    line = line.rstrip("\r")
+    stripped = line.rstrip(" ")
+    # Trailing spaces are dropped, except one quoted with a backslash ("\ ").
+    line = stripped + " " if stripped != line and stripped.endswith("\\") else stripped
+    if not line or line.startswith("#") or len(line) > MAX_PATTERN_CHARS:
+        return None
+    negated = line.startswith("!")
+    if negated:
+        line = line[1:]
+    folders_only = line.endswith("/") and not line.endswith("\\/")
+    body = line.rstrip("/") if folders_only else line
+    if not body:
+        return None
+    anchored = "/" in body
+    body = body.lstrip("/") if anchored else body
+    return Rule(gitignore_glob(body if anchored else "**/" + body), negated, folders_only)
 
 
 class GitIgnore:
     """The ``.gitignore`` files met so far, read once each."""
 
     def __init__(self) -> None:
-        self._specs: dict[str, pathspec.GitIgnoreSpec | None] = {}
+        self._specs: dict[str, tuple[Rule, ...] | None] = {}
         self._tops: dict[str, str] = {}
-        self._chains: dict[str, list[tuple[str, pathspec.GitIgnoreSpec]]] = {}
+        self._chains: dict[str, list[tuple[str, tuple[Rule, ...]]]] = {}
 
-    def _spec(self, directory: str) -> pathspec.GitIgnoreSpec | None:
+    def _spec(self, directory: str) -> tuple[Rule, ...] | None:
         if directory not in self._specs:
             spec = None
             try:
                 # A repository's file: a FIFO or device named .gitignore is not read.
                 data = read_regular_file(os.path.join(directory, ".gitignore"),
                                          MAX_GITIGNORE_BYTES)
-                lines = [line for line in data.decode("utf-8", "replace").splitlines()
-                         [:MAX_PATTERNS] if _cheap(line)]
-                import pathspec
-
-                spec = pathspec.GitIgnoreSpec.from_lines(lines)
-            except (OSError, ValueError, ImportError):
-                # no .gitignore, one pathspec cannot read, or no pathspec: nothing ignored
-                spec = None
+            except (OSError, ValueError):
+                data = None  # no .gitignore, or not a regular file: nothing ignored here
+            if data is not None:
+                lines = data.decode("utf-8", "replace").split("\n")[:MAX_PATTERNS]
+                rules = tuple(rule for rule in map(parse_rule, lines) if rule is not None)
+                # Last rule first: the last one that matches decides.
+                spec = tuple(reversed(rules)) or None
             self._specs[directory] = spec
         return self._specs[directory]
 
@@ -84,7 +114,7 @@ class GitIgnore:
             self._tops[folder] = top
         return top
 
-    def _chain(self, directory: str) -> list[tuple[str, pathspec.GitIgnoreSpec]]:
+    def _chain(self, directory: str) -> list[tuple[str, tuple[Rule, ...]]]:
         """The folders from the top down to ``directory`` that hold a ``.gitignore``, with
         its rules; worked out once per folder (a folder's files all share it)."""
         found = self._chains.get(directory)
@@ -115,28 +145,12 @@ class GitIgnore:
             # ``path`` is under ``folder`` and both are normal absolute paths: the path
             # relative to it is what follows it (os.path.relpath costs ten times more).
             relative = path[len(folder):].lstrip(os.sep).replace(os.sep, "/")
-            if is_folder:
-                relative += "/"
-            result = _check(spec, relative)
-            if result is not None:
-                verdict = result
+            for rule in spec:
+                result = rule.verdict(relative, is_folder)
+                if result is not None:
+                    verdict = result
+                    break
         return verdict
-
-
-def _cheap(line: str) -> bool:
-    """Whether ``pathspec`` matches the pattern in low polynomial time."""
-    return all(len(_STARS.findall(segment)) <= MAX_STARS_PER_SEGMENT
-               for segment in line.split("/"))
-
-
-def _check(spec: pathspec.GitIgnoreSpec, relative: str) -> bool | None:
-    """True (ignored), False (re-included by a ``!`` pattern) or None (no pattern)."""
-    check_file = getattr(spec, "check_file", None)
-    if check_file is not None:
-        result = check_file(relative)
-        include = getattr(result, "include", None)
-        return None if include is None else bool(include)
-    return True if spec.match_file(relative) else None
 
 
 def gitignore_predicate() -> GitIgnore:

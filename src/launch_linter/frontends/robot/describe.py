@@ -11,13 +11,21 @@ from __future__ import annotations
 import os
 import re
 import typing
-from collections.abc import Callable, Hashable, Sequence
+from collections.abc import Callable, Hashable, Mapping, Sequence
 from dataclasses import replace
 
+from launch_linter.frontends.params import (
+    CONTROLLER_MANAGER_NAME,
+    controllers_of,
+    read_yaml_file,
+    ros2_file_params,
+)
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
+from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import (
+    UNKNOWN_VALUE,
     DescriptionFault,
     DescriptionKind,
     DescriptionSource,
@@ -25,6 +33,7 @@ from launch_linter.model.robot import (
     NodeRecord,
     RobotJoint,
     RobotModel,
+    spawns_into_simulator,
 )
 from launch_linter.resolve import reads
 from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
@@ -37,38 +46,66 @@ if typing.TYPE_CHECKING:
 RSP_PACKAGE = "robot_state_publisher"
 _XACRO_NAMED = re.compile(r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]""")
 MAX_DESCRIPTIONS_PER_TREE = 50
+MAX_EXPANSIONS_PER_FILE = 64
+"""Expansions of one file kept with different args (a run's memory stays bounded)."""
 
 # Aliases are evaluated at run time: typing's spelling keeps them working on Python 3.8.
 Word = typing.Tuple[str, bool]
 """A command word and whether it is fully resolved."""
 
 
+_ABSENT = "\0absent"
+"""What a relevance key holds for an arg or variable that was not given."""
+
+_Given = typing.Tuple[typing.Tuple[str, typing.Optional[str]], ...]
+
+
+def _relevant(given: Mapping[str, str | None], names: frozenset[str]) -> _Given:
+    return tuple(sorted((name, given.get(name, _ABSENT)) for name in names))
+
+
 class RobotCache:
-    """Expansions made in one run, keyed by (file, args, package roots)."""
+    """Expansions made in one run, each computed once per (file, package roots, the given
+    args and environment variables the expansion looked up) and reused by every
+    description that gives the same values for those names: twelve descriptions of one
+    costly xacro, differing only in args it never reads, cost one expansion."""
 
     def __init__(self) -> None:
-        self._expansions: dict[Hashable, tuple[Expansion, reads.ReadLog]] = {}
+        self._expansions: dict[Hashable, list[tuple[_Given, _Given, Expansion,
+                                                     reads.ReadLog]]] = {}
         self.included: dict[Hashable, tuple[frozenset[str], reads.ReadLog]] = {}
         """Package folder -> the description file names its descriptions include (with
         what scanning them read: ``reads.remembered``)."""
 
     def expansion(self, file: str, args: tuple[tuple[str, str | None], ...],
-                  packages: PackageIndex, env: dict[str, str]) -> Expansion:
-        key = (file, args, packages.key, tuple(sorted(env.items())))
+                  packages: PackageIndex, env: dict[str, str],
+                  budget: Budget | None = None) -> Expansion:
+        """The expansion of ``file`` with ``args``: computed under ``budget`` (the launch
+        tree's) unless an earlier one read the same values; one stopped by a tree's budget
+        is not kept (a tree with budget left expands it again)."""
+        given = dict(args)
+        found = self._expansions.setdefault((file, packages.key), [])
+        for args_read, env_read, expansion, log in found:
+            if (all(given.get(name, _ABSENT) == value for name, value in args_read)
+                    and all(env.get(name, _ABSENT) == value for name, value in env_read)):
+                # Every launch file that uses the expansion depends on the files it read.
+                reads.depend_on(log)
+                return expansion
+        # Imported when a description is first expanded: xacro (with its interpreter
+        # of ${} expressions) is a third of the start-up of a run that meets none.
+        from launch_linter.frontends.robot.xacro import expand
 
-        def expand_file() -> Expansion:
-            # Imported when a description is first expanded: xacro (with its interpreter
-            # of ${} expressions) is a third of the start-up of a run that meets none.
-            from launch_linter.frontends.robot.xacro import expand
-
-            return expand(file, dict(args), packages.find, env,
-                          locate=lambda path: packages.locate(path).path)
-
-        # Every launch file that uses the expansion depends on the files it read.
-        return reads.remembered(self._expansions, key, expand_file)
+        with reads.recording() as log:
+            expansion = expand(file, given, packages.find, env,
+                               locate=lambda path: packages.locate(path).path, budget=budget)
+        if not expansion.cut_by_budget and len(found) < MAX_EXPANSIONS_PER_FILE:
+            found.append((_relevant(given, expansion.args_read),
+                          _relevant(env, expansion.env_read), expansion, log))
+        reads.depend_on(log)
+        return expansion
 
     def __len__(self) -> int:
-        return len(self._expansions)
+        return sum(len(found) for found in self._expansions.values())
 
 
 XacroCall = typing.Tuple[
@@ -155,6 +192,8 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     if not publishes:
         return tree
     cache = cache if cache is not None else RobotCache()
+    # The expansions a tree needs share one budget; a reused expansion costs nothing.
+    budget = Budget()
     joints: list[RobotJoint] = []
     robots: list[RobotModel] = []
     problems_found: list[Problem] = []
@@ -170,23 +209,82 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
                 problems_found.append(_unresolved(source, f"robot description not read: "
                                                   f"{source.reason or 'unknown file'}"))
             continue
-        robot, unresolved = read_description(source, packages, cache, display, env)
+        robot, unresolved = read_description(source, packages, cache, display, env,
+                                             budget=budget)
         if first:
             problems_found.extend(unresolved)
         if robot is not None:
             joints.extend(robot.joints)
             robots.append(robot)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
-                   problems=tree.problems + tuple(problems_found))
+                   problems=tree.problems + tuple(problems_found),
+                   nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))
+
+
+def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]
+                      ) -> list[NodeRecord]:
+    """The Gazebo plugins of the descriptions, when the tree spawns a description into a
+    simulator (a description only published by robot_state_publisher, as on the real
+    robot, runs no plugin). Each runs under its description's condition and, when every
+    spawner is conditional, the first spawner's; a ros2_control plugin's controller
+    parameter file gives its controllers."""
+    spawners = [n for n in nodes if spawns_into_simulator(n)]
+    if not spawners:
+        return []
+    ros = next((n.ros for n in nodes if n.ros is not None), None)
+    condition = (spawners[0].condition if all(not s.condition.always for s in spawners)
+                 else None)
+    out: list[NodeRecord] = []
+    for robot in robots:
+        for plugin in robot.plugins:
+            plugin = replace(plugin, ros=ros if ros is not None else plugin.ros,
+                             condition=plugin.condition if condition is None
+                             else plugin.condition & condition)
+            out.append(plugin)
+            out.extend(_simulated_controllers(plugin))
+    return out
+
+
+_ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
+                         "libgz_ros2_control-system.so", "ign_ros2_control-system",
+                         "libign_ros2_control-system.so")
+
+
+def _simulated_controllers(plugin: NodeRecord) -> list[NodeRecord]:
+    """The controllers a simulated ros2_control plugin's ``<parameters>`` file gives
+    (its controller manager is named by ``controller_manager_name``, by default
+    ``controller_manager``)."""
+    if plugin.plugin not in _ROS2_CONTROL_PLUGINS:
+        return []
+    documents: list[object] = []
+    for key, path in plugin.params:
+        if key == "parameters" and path != UNKNOWN_VALUE:
+            document, why = read_yaml_file(path)
+            if why is None:
+                documents.append(document)
+    name = plugin.given("controller_manager_name") or CONTROLLER_MANAGER_NAME
+    params: list[tuple[str, str]] = []
+    for document in documents:
+        params.extend(ros2_file_params(document, name, plugin.namespace))
+    manager = replace(plugin, params=tuple(params))
+    return controllers_of(manager, documents)
 
 
 def read_description(source: DescriptionSource, packages: PackageIndex, cache: RobotCache,
                      display: Callable[[str], str], env: dict[str, str],
-                     standalone: bool = False) -> tuple[RobotModel | None, list[Problem]]:
+                     standalone: bool = False, budget: Budget | None = None,
+                     ) -> tuple[RobotModel | None, list[Problem]]:
     """The expanded description ``source`` gives (None when it cannot be read), and an
-    ``unresolved`` diagnostic per problem of the expansion that is not a fault of its own."""
+    ``unresolved`` diagnostic per problem of the expansion that is not a fault of its own;
+    ``budget``: the launch tree's (a new one when the description is linted alone)."""
+    budget = budget if budget is not None else Budget()
     # Imported here, as xacro is in RobotCache: only trees that publish a robot need it.
-    from launch_linter.frontends.robot.urdf import elements_of, joints_of, literal_root
+    from launch_linter.frontends.robot.urdf import (
+        elements_of,
+        joints_of,
+        literal_root,
+        plugins_of,
+    )
 
     problems_found: list[Problem] = []
     defines_macros = False
@@ -199,7 +297,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
 
         expansion = expand(source.file, dict(source.args), packages.find, env,
                            source.text.encode("utf-8"),
-                           lambda path: packages.locate(path).path)
+                           lambda path: packages.locate(path).path, budget)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     else:
@@ -211,7 +309,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                                               f"not read: {located.reason}")]
         args = source.args if source.kind is DescriptionKind.XACRO else ()
         expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
-                                    packages, env)
+                                    packages, env, budget)
         root, problems = expansion.root, expansion.problems
         defines_macros = expansion.defines_macros
     faults = _faults(problems, source, display)
@@ -227,7 +325,16 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             ))
     if root is None:
         return None, problems_found
+    if root.tag == "sdf":
+        # ROS 2's robot_state_publisher reads SDF through the sdformat_urdf parser plugin
+        # (gz-sim demos do); the linter reads URDF only, so the joints are unknown, not none.
+        where = display(source.file) if source.file is not None else "(text)"
+        problems_found.append(_unresolved(
+            source, f"robot description {where} is SDF (<sdf> root, which "
+                    f"robot_state_publisher reads through the sdformat_urdf plugin); "
+                    f"its joints are not read"))
     found = joints_of(root, source, display, source.condition)
+    plugins = plugins_of(root, display, source.condition, None)
     unknown = [j for j in found if j.reasons]
     for joint in unknown[:20]:
         problems_found.append(Problem(
@@ -239,7 +346,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     elements, names_known = elements_of(root, display, source.condition)
     followed = all(p.kind in (KEPT, DROPPED) for p in problems)
     robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
-                       faults, defines_macros, standalone)
+                       faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found
 
 

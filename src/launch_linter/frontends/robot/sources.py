@@ -140,6 +140,11 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
                                  condition=condition, node=node, text=text)
+    if text is None and value:
+        # A value only launch knows (a configuration an includer passes, a helper's return):
+        # the robot is there but unread, which is said once rather than left silent.
+        return DescriptionSource(path, line, column, DescriptionKind.FILE, None,
+                                 condition=condition, node=node, reason=_why(value))
     return None
 
 

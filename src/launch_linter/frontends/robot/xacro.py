@@ -42,6 +42,7 @@ from launch_linter.frontends.robot.xacro_values import (
     MAX_OUTPUT_ELEMENTS,
     MAX_TEXT,
     MAX_WORK,
+    PLUGIN_TEXT_TAGS,
     REFUSED,
     UNKNOWN,
     ExpandedNode,
@@ -56,6 +57,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _Table,
     _Unknown,
 )
+from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
 from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
@@ -94,6 +96,7 @@ class XacroExpander:
         find: Callable[[str], str | None],
         env: Mapping[str, str] | None = None,
         locate: Callable[[str], str | None] | None = None,
+        budget: Budget | None = None,
     ) -> None:
         self.args: dict[str, str | None] = dict(args)
         """xacro args; None is an arg given with a value the linter does not know."""
@@ -101,6 +104,11 @@ class XacroExpander:
         self.locate = locate
         """Where a missing file is installed from (a share path to its source file)."""
         self.env = dict(env or {})
+        self.budget = budget
+        """The launch tree's budget, charged with every unit of work besides MAX_WORK."""
+        self._args_read: set[str] = set()
+        self._env_read: set[str] = set()
+        self._cut_by_budget = False
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
         self._include_stack: list[str] = []
@@ -139,7 +147,9 @@ class XacroExpander:
             self.problems.append(XacroProblem(
                 self._path or absolute, self._line, "description nested too deeply", True))
             root = None
-        return Expansion(root, self.problems, self.files, self._defines_macros)
+        return Expansion(root, self.problems, self.files, self._defines_macros,
+                         frozenset(self._args_read), frozenset(self._env_read),
+                         self._cut_by_budget)
 
     # -- bounds and problems -------------------------------------------------------------
     def _charge(self, units: int = 1) -> None:
@@ -147,6 +157,12 @@ class XacroExpander:
         if self._work > MAX_WORK:
             raise _Abort(f"expansion needs more than {MAX_WORK:,} steps; stopped",
                          self._path, self._line)
+        if self.budget is not None:
+            try:
+                self.budget.step(units)
+            except BudgetExceeded as exc:
+                self._cut_by_budget = True
+                raise _Abort(exc.message, self._path, self._line) from None
 
     def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
                  conditions: tuple[str, ...] = ()) -> None:
@@ -177,7 +193,7 @@ class XacroExpander:
                           f"{exc.strerror or exc}")
             return None
         try:
-            return parse_xml(data).root
+            return parse_xml(data, PLUGIN_TEXT_TAGS).root
         except XmlError as exc:
             message = f"{absolute}:{exc.line}: not well-formed XML: {exc.message}"
             if at is None:
@@ -233,6 +249,7 @@ class XacroExpander:
         command, rest = words[0], words[1:]
         if command == "arg" and len(rest) == 1:
             name = rest[0]
+            self._args_read.add(name)
             if name not in self.args:
                 raise _Refused(f"$(arg {name}): the arg is not declared and not given")
             value = self.args[name]
@@ -244,6 +261,8 @@ class XacroExpander:
             if found is None:
                 raise _Unknown(f"$(find {rest[0]}): package not found under the package path")
             return found
+        if command in ("env", "optenv") and rest:
+            self._env_read.add(rest[0])
         if command == "env" and len(rest) == 1:
             if rest[0] not in self.env:
                 raise _Unknown(f"$(env {rest[0]}): not given with --env")
@@ -311,6 +330,11 @@ class XacroExpander:
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
+                if element.text.strip():
+                    try:
+                        node.text = self.evaluate_text(element.text.strip(), table)
+                    except _Unknown:
+                        node.text = None
                 out.children.append(node)
                 self._children(element.children, path, table, node, conditions)
                 continue
@@ -328,6 +352,7 @@ class XacroExpander:
             self._property(element, path, table)
         elif what == "arg":
             name = attrib.get("name", "")
+            self._args_read.add(name)
             if name not in self.args:
                 default = attrib.get("default")
                 try:
@@ -592,11 +617,13 @@ def _boolean(value: str) -> bool | None:
 def expand(path: str, args: Mapping[str, str | None],
            find: Callable[[str], str | None],
            env: Mapping[str, str] | None = None, data: bytes | None = None,
-           locate: Callable[[str], str | None] | None = None) -> Expansion:
+           locate: Callable[[str], str | None] | None = None,
+           budget: Budget | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
     ``data`` is expanded as if it were that file (text linted by ``lint_text``);
-    ``locate`` maps an included path that is not there to the file installed there."""
-    return XacroExpander(args, find, env, locate).expand(path, data)
+    ``locate`` maps an included path that is not there to the file installed there;
+    ``budget``: the launch tree's, charged besides the expansion's own bounds."""
+    return XacroExpander(args, find, env, locate, budget).expand(path, data)
 
 
 __all__ = [

@@ -77,11 +77,26 @@ class XacroProblem:
     """The undecided ``xacro:if``/``xacro:unless`` texts around it (see ExpandedNode)."""
 
 
+PLUGIN_TEXT_TAGS = frozenset({
+    # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
+    "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",
+    "robotBaseFrame", "frameName", "bodyName", "publishOdom", "broadcastTF",
+    # gazebo_ros (ROS 2): parameters, and <ros><namespace>/<remapping>.
+    "namespace", "remapping", "publish_odom_tf", "publish_wheel_tf", "odometry_frame",
+    "robot_base_frame", "frame_name", "body_name", "publish_odom",
+    # gz-sim systems (diff drive, odometry publisher) and gz_ros2_control.
+    "frame_id", "child_frame_id", "tf_topic", "odom_frame", "odom_publish_frequency",
+    "parameters", "controller_manager_name",
+})
+"""The elements whose text the expander keeps: the parameters of the Gazebo plugins the
+knowledge base knows (tests/knowledge checks that every plugin entry's parameter is one)."""
+
+
 class ExpandedNode:
     """An element of the expanded document, with where it was written."""
 
     __slots__ = ("attrib", "children", "column", "conditions", "line", "path", "tag",
-                 "unknown")
+                 "text", "unknown")
 
     def __init__(self, tag: str, path: str, line: int, column: int,
                  conditions: tuple[str, ...]) -> None:
@@ -93,6 +108,9 @@ class ExpandedNode:
         self.unknown: dict[str, str] = {}
         """Attribute name -> why its value is unknown."""
         self.children: list[ExpandedNode] = []
+        self.text: str | None = ""
+        """Character data inside (kept for :data:`PLUGIN_TEXT_TAGS` only); None when
+        a ``${}`` in it cannot be known."""
         self.conditions = conditions
         """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
         (``unless`` texts start with ``!``)."""
@@ -107,6 +125,14 @@ class Expansion:
     files: list[str]
     defines_macros: bool = False
     """Whether a ``xacro:macro`` was defined (an empty robot made of a macros-only file)."""
+    args_read: frozenset[str] = frozenset()
+    """The xacro args the expansion looked up (given or not): the result depends on the
+    given args only through these names, so a call differing elsewhere may reuse it."""
+    env_read: frozenset[str] = frozenset()
+    """The environment variables ``$(env)``/``$(optenv)`` looked up."""
+    cut_by_budget: bool = False
+    """Stopped by the work budget of the launch tree it was expanded for (not by a bound
+    of its own): another tree, with budget left, must expand it again."""
 
 
 @dataclass
