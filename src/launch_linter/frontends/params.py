@@ -12,9 +12,9 @@ import os
 import re
 import textwrap
 from collections.abc import Iterable, Sequence
-from dataclasses import replace
 from typing import Any
 
+from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file

@@ -18,7 +18,6 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
-from dataclasses import replace
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.params import (
@@ -71,6 +70,7 @@ from launch_linter.frontends.ros2_run import (
     prefix_namespace,
 )
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
 from launch_linter.resolve.ros2_substitution import Call, Subs

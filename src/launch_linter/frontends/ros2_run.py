@@ -8,7 +8,7 @@ import os
 import shlex
 import typing
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.frontends.ros1 import LoadOptions
@@ -48,6 +48,7 @@ from launch_linter.model.launch import (
     UndeclaredUse,
     holds_directive,
 )
+from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     ALWAYS,

@@ -3,25 +3,29 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from typing import Tuple, Union
+
+from launch_linter.model.record import Record, _set
 
 MAX_REASON = 300
 """Longest reason kept in a hole."""
 
 
-@dataclass(frozen=True)
-class Hole:
+class Hole(Record):
     """An unresolved piece of text: the substitution as written and why it is unknown."""
 
     text: str
     reason: str
 
-    def __post_init__(self) -> None:
+    __slots__ = ("text", "reason")
+
+    def __init__(self, text: str, reason: str) -> None:
+        _set(self, "text", text)
         # A reason quotes the reasons of the values it was made from: values that refer to
         # each other would double it at each level.
-        if len(self.reason) > MAX_REASON:
-            object.__setattr__(self, "reason", self.reason[: MAX_REASON - 3] + "...")
+        if len(reason) > MAX_REASON:
+            reason = reason[: MAX_REASON - 3] + "..."
+        _set(self, "reason", reason)
 
 
 Part = Union[str, Hole]

@@ -6,12 +6,12 @@ publishes ``/joint_states`` (without which robot_state_publisher sends no movabl
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from launch_linter.knowledge import Entry, KnowledgeBase
 from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
 
@@ -22,8 +22,7 @@ JOINT_STATE_CONTROLLERS = ("joint_state_broadcaster/JointStateBroadcaster",
                            "joint_state_controller/JointStateController")
 
 
-@dataclass(frozen=True)
-class NodeEdge:
+class NodeEdge(Record):
     """An edge a launched node publishes at run time."""
 
     parent: str
@@ -31,9 +30,27 @@ class NodeEdge:
     role: str
     node: NodeRecord
     entry: Entry
-    assumed: bool = False
+    assumed: bool
     """The edge rests on defaults that an unread parameter file of the node may change:
     enough for a warning measured on real files, never for an error."""
+
+    __slots__ = ("parent", "child", "role", "node", "entry", "assumed")
+
+    def __init__(
+        self,
+        parent: str,
+        child: str,
+        role: str,
+        node: NodeRecord,
+        entry: Entry,
+        assumed: bool = False,
+    ) -> None:
+        _set(self, "parent", parent)
+        _set(self, "child", child)
+        _set(self, "role", role)
+        _set(self, "node", node)
+        _set(self, "entry", entry)
+        _set(self, "assumed", assumed)
 
     @property
     def location(self) -> Location:
@@ -45,8 +62,7 @@ class NodeEdge:
         return f"{what} {shown} ({self.node.path}:{self.node.line})"
 
 
-@dataclass(frozen=True)
-class Lookup:
+class Lookup(Record):
     """A frame a node looks up by a parameter."""
 
     frame: str
@@ -54,9 +70,16 @@ class Lookup:
     node: NodeRecord
     entry: Entry
 
+    __slots__ = ("frame", "param", "node", "entry")
 
-@dataclass(frozen=True)
-class NodeView:
+    def __init__(self, frame: str, param: str, node: NodeRecord, entry: Entry) -> None:
+        _set(self, "frame", frame)
+        _set(self, "param", param)
+        _set(self, "node", node)
+        _set(self, "entry", entry)
+
+
+class NodeView(Record):
     edges: tuple[NodeEdge, ...]
     lookups: tuple[Lookup, ...]
     cameras: tuple[Lookup, ...]
@@ -66,6 +89,24 @@ class NodeView:
     """Known nodes whose edges the linter cannot work out (parameters not read)."""
     joint_states: bool
     """Whether a node the knowledge base knows publishes ``/joint_states``."""
+
+    __slots__ = ("edges", "lookups", "cameras", "unknown", "unsure", "joint_states")
+
+    def __init__(
+        self,
+        edges: tuple[NodeEdge, ...],
+        lookups: tuple[Lookup, ...],
+        cameras: tuple[Lookup, ...],
+        unknown: tuple[NodeRecord, ...],
+        unsure: tuple[NodeRecord, ...],
+        joint_states: bool,
+    ) -> None:
+        _set(self, "edges", edges)
+        _set(self, "lookups", lookups)
+        _set(self, "cameras", cameras)
+        _set(self, "unknown", unknown)
+        _set(self, "unsure", unsure)
+        _set(self, "joint_states", joint_states)
 
     @property
     def open_because(self) -> NodeRecord | None:

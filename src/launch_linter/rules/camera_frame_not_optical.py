@@ -69,10 +69,10 @@ holds no descriptions).
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import replace
 
 from launch_linter.knowledge.publish import frames_named
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import entry_of, finding_at_node

@@ -12,7 +12,6 @@ import os
 import re
 import typing
 from collections.abc import Callable, Hashable, Mapping, Sequence
-from dataclasses import replace
 
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
@@ -24,6 +23,7 @@ from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.robot import (
     UNKNOWN_VALUE,
     DescriptionFault,

@@ -11,10 +11,10 @@ import os
 import re
 import shlex
 from collections.abc import Sequence
-from dataclasses import replace
 
 from launch_linter.frontends.params import ros1_controllers
 from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
+from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
