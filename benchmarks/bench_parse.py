@@ -3,6 +3,7 @@
 
     python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--every N]
                                      [--profile N [--format ros1|python] [--measure read|check]]
+                                     [--repeat N --format ros1|python --measure floor|read|check]
 
 Over the latest version of every corpus file (``manifest.jsonl``, ``latest: true``;
 ``../shared/corpus`` relative to the repository root by default), grouped by format (the
@@ -30,6 +31,14 @@ process).
 ``--profile N`` instead runs one pass of ``--measure`` over the ``--format`` files under
 ``cProfile`` and prints its N costliest functions by own time, then by cumulative time
 (the profiler slows Python code more than C code: compare shares, not times).
+
+``--repeat N`` runs only that pass, N times after one warm-up pass, and prints nothing: for
+an instruction counter, which the machine's load does not move (docs/performance.md):
+
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null \\
+        python benchmarks/bench_parse.py --every 8 --repeat 1 --format ros1 --measure read
+
+and again with ``--repeat 3``: half the difference is one pass.
 """
 
 from __future__ import annotations
@@ -175,9 +184,9 @@ def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> 
         print(f"{label:18s} {spread(cpu[label], 1e6):>22s} {spread(wall[label], 1e6):>22s} "
               f"{ratio:>22s}")
     if "check" in cpu:
-        ratio = statistics.median(o / f for o, f in zip(cpu["check"], cpu[floor_label]))
-        verdict = "met" if ratio <= TARGETS[name] else "not met"
-        print(f"target: check <= {TARGETS[name]:g}x {floor_label}: {verdict} ({ratio:.2f}x)")
+        times = statistics.median(o / f for o, f in zip(cpu["check"], cpu[floor_label]))
+        verdict = "met" if times <= TARGETS[name] else "not met"
+        print(f"target: check <= {TARGETS[name]:g}x {floor_label}: {verdict} ({times:.2f}x)")
 
 
 def roslaunch_per_file(paths: list[str], runs: int) -> tuple[list[float], list[float]] | None:
@@ -214,8 +223,10 @@ def main() -> int:
                         help="profile one pass and show N functions")
     parser.add_argument("--format", choices=sorted(FORMATS), default="ros1",
                         help="what --profile profiles")
-    parser.add_argument("--measure", choices=("read", "check"), default="check",
-                        help="what --profile profiles")
+    parser.add_argument("--measure", choices=("floor", "read", "check"), default="check",
+                        help="what --profile profiles or --repeat runs")
+    parser.add_argument("--repeat", type=int, metavar="N", default=0,
+                        help="only run the --format/--measure pass N times, silently")
     parser.add_argument("--no-roslaunch", action="store_true",
                         help="skip roslaunch's loader")
     ns = parser.parse_args()
@@ -225,6 +236,12 @@ def main() -> int:
     groups = groups_of(latest_files(ns.corpus)[:: ns.every])
     tune_collector()  # the collector as the ``launch-linter`` command sets it
     passes = {"read": make_read_pass(), "check": make_check_pass()}
+    if ns.repeat:
+        name = FORMATS[ns.format]
+        function = FLOORS[name][1] if ns.measure == "floor" else passes[ns.measure]
+        for _ in range(ns.repeat + 1):
+            function(groups[name])
+        return 0
     for paths in groups.values():  # warm-up: imports, regular expressions, page cache
         for function in passes.values():
             function(paths)
