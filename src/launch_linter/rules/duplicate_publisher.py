@@ -45,6 +45,9 @@ where the knowledge base says they are not); a node the knowledge base does not 
 not seen publishing anything. Reported at info: the corpus (all 6,724 file versions) and
 122 whole repositories fetched for it gave 2 findings, both true
 (docs/evaluation/tree_judged.jsonl): too few to say it is 90% precise, so not a warning.
+Run again once Gazebo plugins of spawned descriptions and controller managers without a
+name were read (163 checkouts of the 122 repositories, 4,552 files; the corpus's 5,518
+distinct files): the same 2 findings and no new one, so the sample is still 2 of 2.
 """
 
 from __future__ import annotations
