@@ -1,33 +1,41 @@
 #!/usr/bin/env python3
-"""How fast launch-linter reads ROS 1 launch files, against the floor and against roslaunch.
+"""What one launch file costs launch-linter to read and to check, against its parser's floor.
 
-    python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--profile N]
+    python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--every N]
+                                     [--profile N [--format ros1|python] [--measure read|check]]
 
-Over the latest version of every ROS 1 corpus file (``manifest.jsonl``, ``latest: true``;
-``../shared/corpus`` relative to the repository root by default; the dispatcher decides
-which are ROS 1, so the XML floor fits them all), with every file's bytes already in
-memory, it reports files per second (median of ``--runs`` passes) for:
+Over the latest version of every corpus file (``manifest.jsonl``, ``latest: true``;
+``../shared/corpus`` relative to the repository root by default), grouped by format (the
+dispatcher decides which XML files are ROS 1; every ``.py`` file is ROS 2 Python), it
+measures per file, in CPU time of this process (``time.process_time``, steadier on a shared
+machine) with the wall-clock time beside it:
 
-(a) the floor: bare XML parsing with the standard library,
-    ``xml.etree.ElementTree.fromstring`` over the bytes;
-(b) launch-linter: parse and resolve, ``load_tree`` for each file (no package roots,
-    no launch args, an empty environment);
-(c) roslaunch's own loader (``XmlLoader`` into a fresh ``ROSLaunchConfig`` per file), when
-    ``/usr/bin/python3`` can import it: one process loads every file ``--runs`` times
-    (``scripts/roslaunch_oracle_driver.py``), timed inside that process, so the process
-    start is not counted;
+floor   ROS 1 XML: read the file + parse it with bare expat (``xml.parsers.expat``);
+        ROS 2 Python: read the file + ``ast.parse``;
+read    launch-linter's front-end: ``load_tree`` of the file (read, parse, resolve; no
+        package roots, no launch args, an empty environment, so included packages are not
+        followed);
+check   launch-linter's ``check`` of the file: ``lint_files`` with the bundled beliefs and
+        one job (read, parse, resolve, rules, suppressions, fix locations) over the
+        format's files at once, as ``benchmarks/bench_all.py --only per-file`` does;
 
-and the ratios, all from the same run. Each figure is given twice: from wall-clock time,
-and from the CPU time of the process (steadier when other work shares the machine).
-(a) and (b) alternate pass by pass so that a change of machine load affects both alike.
+and the ratios read / floor and check / floor (issue 24's targets: ROS 2 Python check <= 3x
+``ast.parse``, ROS 1 XML check <= 10x read + expat). The three measures alternate pass by
+pass, so that a change of machine load hits all of them alike; every figure is the median
+of ``--runs`` passes with the lowest and highest in brackets, each ratio the median of the
+ratios of the same pass. Then, when ``/usr/bin/python3`` can import ``roslaunch``, its own
+``XmlLoader`` on the ROS 1 files (``scripts/roslaunch_oracle_driver.py``, timed inside its
+process).
 
-``--profile N`` instead runs one pass of (b) under ``cProfile`` and prints its N costliest
-functions by own time (the profiler slows everything down: compare shares, not times).
+``--profile N`` instead runs one pass of ``--measure`` over the ``--format`` files under
+``cProfile`` and prints its N costliest functions by own time, then by cumulative time
+(the profiler slows Python code more than C code: compare shares, not times).
 """
 
 from __future__ import annotations
 
 import argparse
+import ast
 import cProfile
 import json
 import os
@@ -36,9 +44,12 @@ import statistics
 import subprocess
 import sys
 import time
-import xml.etree.ElementTree as ET
-from typing import Callable, List, Tuple
+from typing import Callable, Dict, List, Sequence
+from xml.parsers import expat
 
+from launch_linter.beliefs_files import load_beliefs
+from launch_linter.cli import tune_collector
+from launch_linter.engine import InputFile, LintOptions, lint_files
 from launch_linter.frontends.dispatch import front_end, load_tree
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.workspace.packages import PackageIndex
@@ -47,8 +58,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CORPUS = os.path.join(ROOT, "..", "shared", "corpus")
 DRIVER = os.path.join(ROOT, "scripts", "roslaunch_oracle_driver.py")
 SYSTEM_PYTHON = "/usr/bin/python3"
+FORMATS = {"ros1": "ROS 1 XML", "python": "ROS 2 Python"}
+TARGETS = {"ROS 1 XML": 10.0, "ROS 2 Python": 3.0}
+"""Issue 24: check per file at most this many times the floor."""
 
-Items = List[Tuple[str, bytes]]
+Pass = Callable[[Sequence[str]], None]
+Timings = Dict[str, List[float]]
 
 
 def latest_files(corpus: str) -> list[str]:
@@ -61,36 +76,111 @@ def latest_files(corpus: str) -> list[str]:
     return list(paths)
 
 
-def floor_pass(items: Items) -> None:
-    for _, data in items:
-        # Not contextlib.suppress: its cost per file would slow the floor down.
-        try:  # noqa: SIM105
-            ET.fromstring(data)
-        except ET.ParseError:
+def read(path: str) -> bytes:
+    with open(path, "rb") as handle:
+        return handle.read()
+
+
+def groups_of(paths: Sequence[str]) -> dict[str, list[str]]:
+    groups: dict[str, list[str]] = {name: [] for name in FORMATS.values()}
+    for path in paths:
+        if path.endswith(".py"):
+            groups["ROS 2 Python"].append(path)
+        elif not path.endswith((".yaml", ".yml")) and front_end(path, read(path)) == "ros1":
+            groups["ROS 1 XML"].append(path)
+    return groups
+
+
+def expat_pass(paths: Sequence[str]) -> None:
+    for path in paths:
+        parser = expat.ParserCreate()
+        try:  # noqa: SIM105 - contextlib.suppress would cost more than the floor's parse
+            parser.Parse(read(path), True)
+        except expat.ExpatError:
             pass
 
 
-def make_ours_pass(options: LoadOptions) -> Callable[[Items], None]:
-    def ours_pass(items: Items) -> None:
-        for path, data in items:
-            load_tree(path, options, data)
+def ast_pass(paths: Sequence[str]) -> None:
+    for path in paths:
+        try:  # noqa: SIM105
+            ast.parse(read(path))
+        except (SyntaxError, ValueError):
+            pass
 
-    return ours_pass
+
+FLOORS: dict[str, tuple[str, Pass]] = {
+    "ROS 1 XML": ("read + expat", expat_pass),
+    "ROS 2 Python": ("read + ast.parse", ast_pass),
+}
 
 
-def timed(function: Callable[[Items], None], items: Items) -> tuple[float, float]:
-    """Wall-clock and CPU seconds of one pass."""
+def make_read_pass() -> Pass:
+    # Input files are shown as given, as the engine shows them.
+    options = LoadOptions(packages=PackageIndex([]), display_path=str)
+
+    def read_pass(paths: Sequence[str]) -> None:
+        for path in paths:
+            load_tree(path, options)
+
+    return read_pass
+
+
+def make_check_pass() -> Pass:
+    options = LintOptions(beliefs=load_beliefs("bundled", 1.0))
+
+    def check_pass(paths: Sequence[str]) -> None:
+        lint_files([InputFile(os.path.abspath(path), path) for path in paths], options)
+
+    return check_pass
+
+
+def timed(function: Pass, paths: Sequence[str]) -> tuple[float, float]:
+    """CPU and wall-clock seconds per file of one pass."""
     wall, cpu = time.perf_counter(), time.process_time()
-    function(items)
-    return time.perf_counter() - wall, time.process_time() - cpu
+    function(paths)
+    count = len(paths)
+    return (time.process_time() - cpu) / count, (time.perf_counter() - wall) / count
 
 
-def rate(count: int, runs: list[float]) -> float:
-    return count / statistics.median(runs)
+def spread(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
+    """``median [lowest..highest]`` of ``values`` times ``scale``."""
+    med = statistics.median(values) * scale
+    return (f"{med:.{digits}f} [{min(values) * scale:.{digits}f}.."
+            f"{max(values) * scale:.{digits}f}]")
 
 
-def roslaunch_runs(paths: list[str], runs: int, cwd: str
-                   ) -> tuple[list[float], list[float]] | None:
+def load_average() -> str:
+    try:
+        with open("/proc/loadavg", encoding="ascii") as handle:
+            return "load average " + " ".join(handle.read().split()[:3])
+    except OSError:
+        return "load average unknown"
+
+
+def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> None:
+    floor_label, floor = FLOORS[name]
+    measures = {floor_label: floor, **passes}
+    cpu: Timings = {label: [] for label in measures}
+    wall: Timings = {label: [] for label in measures}
+    for _ in range(runs):
+        for label, function in measures.items():
+            seconds, elapsed = timed(function, paths)
+            cpu[label].append(seconds)
+            wall[label].append(elapsed)
+    print(f"\n{name}: {len(paths)} files; µs per file, median [lowest..highest] of {runs}")
+    print(f"{'measure':18s} {'CPU':>22s} {'wall':>22s} {'/ floor (CPU)':>22s}")
+    for label in measures:
+        ratio = ("" if label == floor_label else
+                 spread([o / f for o, f in zip(cpu[label], cpu[floor_label])], digits=2))
+        print(f"{label:18s} {spread(cpu[label], 1e6):>22s} {spread(wall[label], 1e6):>22s} "
+              f"{ratio:>22s}")
+    if "check" in cpu:
+        ratio = statistics.median(o / f for o, f in zip(cpu["check"], cpu[floor_label]))
+        verdict = "met" if ratio <= TARGETS[name] else "not met"
+        print(f"target: check <= {TARGETS[name]:g}x {floor_label}: {verdict} ({ratio:.2f}x)")
+
+
+def roslaunch_per_file(paths: list[str], runs: int) -> tuple[list[float], list[float]] | None:
     if not os.path.exists(SYSTEM_PYTHON):
         return None
     probe = subprocess.run([SYSTEM_PYTHON, "-c", "import roslaunch"], capture_output=True,
@@ -99,59 +189,60 @@ def roslaunch_runs(paths: list[str], runs: int, cwd: str
         return None
     request = {"package_path": [], "repeat": runs, "files": [{"path": p} for p in paths]}
     done = subprocess.run([SYSTEM_PYTHON, DRIVER], input=json.dumps(request), text=True,
-                          capture_output=True, cwd=cwd, env={}, check=True, timeout=3600)
+                          capture_output=True, env={}, check=True, timeout=3600)
     result = json.loads(done.stdout.splitlines()[-1])
-    return [float(r) for r in result["runs"]], [float(r) for r in result["cpu_runs"]]
+    count = len(paths)
+    return ([float(r) / count for r in result["cpu_runs"]],
+            [float(r) / count for r in result["runs"]])
+
+
+def profile(paths: list[str], function: Pass, count: int) -> None:
+    profiler = cProfile.Profile()
+    profiler.runcall(function, paths)
+    stats = pstats.Stats(profiler)
+    stats.sort_stats("tottime").print_stats(count)
+    stats.sort_stats("cumtime").print_stats(count)
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--corpus", default=CORPUS)
     parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--every", type=int, default=1, metavar="N",
+                        help="only every Nth corpus file (a quicker sample)")
     parser.add_argument("--profile", type=int, metavar="N", default=0,
-                        help="profile one pass of launch-linter and show N functions")
+                        help="profile one pass and show N functions")
+    parser.add_argument("--format", choices=sorted(FORMATS), default="ros1",
+                        help="what --profile profiles")
+    parser.add_argument("--measure", choices=("read", "check"), default="check",
+                        help="what --profile profiles")
+    parser.add_argument("--no-roslaunch", action="store_true",
+                        help="skip roslaunch's loader")
     ns = parser.parse_args()
     if not os.path.exists(os.path.join(ns.corpus, "manifest.jsonl")):
         print(f"no corpus at {ns.corpus}", file=sys.stderr)
         return 2
-    items = []
-    for path in latest_files(ns.corpus):
-        with open(path, "rb") as handle:
-            data = handle.read()
-        if front_end(path, data) == "ros1":
-            items.append((path, data))
-    paths = [path for path, _ in items]
-    count = len(items)
-    size = sum(len(d) for _, d in items)
-    print(f"{count} ROS 1 files (latest versions), {size / 1e6:.2f} MB; "
-          f"median of {ns.runs} passes")
-    # Input files are shown as given, as the engine shows them.
-    ours_pass = make_ours_pass(LoadOptions(packages=PackageIndex([]), display_path=str))
-    ours_pass(items)  # warm-up: imports, regular expressions
+    groups = groups_of(latest_files(ns.corpus)[:: ns.every])
+    tune_collector()  # the collector as the ``launch-linter`` command sets it
+    passes = {"read": make_read_pass(), "check": make_check_pass()}
+    for paths in groups.values():  # warm-up: imports, regular expressions, page cache
+        for function in passes.values():
+            function(paths)
     if ns.profile:
-        profiler = cProfile.Profile()
-        profiler.runcall(ours_pass, items)
-        pstats.Stats(profiler).sort_stats("tottime").print_stats(ns.profile)
+        profile(groups[FORMATS[ns.format]], passes[ns.measure], ns.profile)
         return 0
-    floor_times, ours_times = [], []
-    for _ in range(ns.runs):
-        floor_times.append(timed(floor_pass, items))
-        ours_times.append(timed(ours_pass, items))
-    floor = [rate(count, [t[i] for t in floor_times]) for i in (0, 1)]
-    ours = [rate(count, [t[i] for t in ours_times]) for i in (0, 1)]
-    print(f"{'files/s':40s} {'wall-clock':>12s} {'CPU time':>12s}")
-    print(f"{'(a) floor: ElementTree.fromstring':40s} {floor[0]:12.0f} {floor[1]:12.0f}")
-    print(f"{'(b) launch-linter parse + resolve':40s} {ours[0]:12.0f} {ours[1]:12.0f}")
-    print(f"{'(b) time / (a) time (target <= 3)':40s} {floor[0] / ours[0]:12.2f} "
-          f"{floor[1] / ours[1]:12.2f}")
-    measured = roslaunch_runs(paths, ns.runs, os.path.join(ns.corpus, "files"))
-    if measured is None:
-        print(f"(c) roslaunch: not measured ({SYSTEM_PYTHON} cannot import roslaunch)")
-        return 0
-    theirs = [rate(count, measured[i]) for i in (0, 1)]
-    print(f"{'(c) roslaunch XmlLoader':40s} {theirs[0]:12.0f} {theirs[1]:12.0f}")
-    print(f"{'(c) time / (b) time (target >= 10)':40s} {ours[0] / theirs[0]:12.2f} "
-          f"{ours[1] / theirs[1]:12.2f}")
+    print(f"{sum(map(len, groups.values()))} corpus files (latest versions; every "
+          f"{ns.every}); Python {sys.version.split()[0]}; {load_average()}")
+    for name, paths in groups.items():
+        if paths:
+            measure(name, paths, ns.runs, passes)
+    ros1 = groups["ROS 1 XML"]
+    measured = None if ns.no_roslaunch or not ros1 else roslaunch_per_file(ros1, ns.runs)
+    if measured is not None:
+        cpu, wall = measured
+        print(f"\nroslaunch XmlLoader on the ROS 1 files: {spread(cpu, 1e6)} µs CPU per "
+              f"file, {spread(wall, 1e6)} wall")
+    print(f"\n{load_average()} at the end")
     return 0
 
 

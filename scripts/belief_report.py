@@ -13,13 +13,13 @@ study's artifact); and how many of the compared beliefs are stored at all (any z
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import sys
 
 from launch_linter.beliefs_files import load_beliefs
 from launch_linter.mining.stats import z_score
 from launch_linter.model.beliefs import BELIEF_CLASSES
 from launch_linter.model.diagnostic import Belief
+from launch_linter.model.record import replace
 
 
 def key(belief: Belief) -> tuple[object, object]:
@@ -46,8 +46,8 @@ def main() -> int:
     p0 = every.p0
     if ns.p0 is not None:
         p0 = ns.p0
-        every = dataclasses.replace(every, beliefs=tuple(
-            dataclasses.replace(b, z=z_score(b.n, b.e, p0)) for b in every.beliefs if b.n
+        every = replace(every, beliefs=tuple(
+            replace(b, z=z_score(b.n, b.e, p0)) for b in every.beliefs if b.n
         ))
     other = load_beliefs(ns.compare, 1.0)
     thresholds = [float(t) for t in ns.thresholds.split(",")]

@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
-"""Whether ``check`` and ``transforms`` print byte-identical JSON to a saved baseline.
+"""Whether ``check`` and ``transforms`` print byte-identical JSON and text to a saved baseline.
 
     python scripts/output_identity.py --save   [--baseline DIR] [PATH ...]
     python scripts/output_identity.py [--jobs 1,2] [--baseline DIR] [PATH ...]
 
-Runs this checkout's ``launch-linter check --format json`` and ``launch-linter transforms
---format json`` (``PYTHONPATH`` set to its ``src``) over each PATH (default: the corpus
-files, ``../shared/corpus/files``, and the examples), from the repository root so that
-every path in the output is the same in every run. ``--save`` stores the outputs in DIR
+Runs this checkout's ``launch-linter check`` and ``launch-linter transforms``, each with
+``--format json`` and ``--format text`` (``PYTHONPATH`` set to its ``src``) over each PATH
+(default: the corpus files, ``../shared/corpus/files``, and the examples), from the repository
+root so that every path in the output is the same in every run. ``--save`` stores the outputs in DIR
 (default ``build/output-baseline``, which git ignores): run it on the code *before* a
 change. Without ``--save`` it runs the same commands, once per ``--jobs`` count, and
 compares each output byte for byte with the baseline; it prints the first differing
@@ -28,12 +28,13 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 DEFAULT_PATHS = ("../shared/corpus/files", "examples")
 COMMANDS = ("check", "transforms")
+FORMATS = ("json", "text")
 
 
-def run(command: str, paths: list[str], jobs: int | None) -> bytes:
+def run(command: str, form: str, paths: list[str], jobs: int | None) -> bytes:
     env = dict(os.environ, PYTHONPATH=str(REPO / "src"))
     env.pop("NO_COLOR", None)
-    argv = [sys.executable, "-m", "launch_linter", command, "--format", "json", *paths]
+    argv = [sys.executable, "-m", "launch_linter", command, "--format", form, *paths]
     if jobs is not None:
         argv += ["--jobs", str(jobs)]
     done = subprocess.run(argv, cwd=REPO, env=env, capture_output=True, check=False)
@@ -61,10 +62,11 @@ def main() -> int:
     if ns.save:
         base.mkdir(parents=True, exist_ok=True)
         for command in COMMANDS:
-            out = run(command, ns.paths, None)
-            (base / f"{command}.json").write_bytes(out)
-            digest = hashlib.sha256(out).hexdigest()[:16]
-            print(f"saved {command}: {len(out)} bytes, sha256 {digest}")
+            for form in FORMATS:
+                out = run(command, form, ns.paths, None)
+                (base / f"{command}.{form}").write_bytes(out)
+                digest = hashlib.sha256(out).hexdigest()[:16]
+                print(f"saved {command} {form}: {len(out)} bytes, sha256 {digest}")
         (base / "paths.txt").write_text("\n".join(ns.paths) + "\n", encoding="utf-8")
         return 0
     saved_paths = (base / "paths.txt").read_text(encoding="utf-8").split()
@@ -73,14 +75,16 @@ def main() -> int:
         return 2
     same = True
     for command in COMMANDS:
-        old = (base / f"{command}.json").read_bytes()
-        for jobs in (int(j) for j in ns.jobs.split(",")):
-            new = run(command, ns.paths, jobs)
-            if new == old:
-                print(f"{command} --jobs {jobs}: identical ({len(new)} bytes)")
-            else:
-                same = False
-                print(f"{command} --jobs {jobs}: DIFFERENT, {first_difference(old, new)}")
+        for form in FORMATS:
+            old = (base / f"{command}.{form}").read_bytes()
+            for jobs in (int(j) for j in ns.jobs.split(",")):
+                new = run(command, form, ns.paths, jobs)
+                label = f"{command} --format {form} --jobs {jobs}"
+                if new == old:
+                    print(f"{label}: identical ({len(new)} bytes)")
+                else:
+                    same = False
+                    print(f"{label}: DIFFERENT, {first_difference(old, new)}")
     return 0 if same else 1
 
 

@@ -8,7 +8,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from launch_linter.engine import LintOptions, lint_paths
-from launch_linter.model.equality import equality_test, exclusive
+from launch_linter.model.equality import TRUTH, equality_test, exclusive, truth_test
 from launch_linter.model.transform import Condition, ConditionLiteral
 
 
@@ -91,3 +91,51 @@ def test_xacro_alternatives_are_alternatives(tmp_path: Path) -> None:
     result = lint_paths([str(tmp_path / "a.launch")], LintOptions())
     assert sorted(j.name for _, j in result.joints) == ["a", "b"]
     assert not [d for d in result.diagnostics if d.rule == "multiple_parents"]
+
+
+def test_truth_tests_of_one_value_exclude_each_other() -> None:
+    """IfCondition(x), UnlessCondition(x), IfCondition(PythonExpression(['not ', x])) and
+    LaunchConfiguration(Not)Equals on x, related as truths of x (nav2's composed and
+    separate nodes)."""
+    assert truth_test("LaunchConfiguration('use_composition')") == (
+        "use_composition", TRUTH, True)
+    assert truth_test("PythonExpression(['not ', use_composition])") == (
+        "use_composition", TRUTH, False)
+    assert truth_test("$(eval not arg('sim'))") == ("sim", TRUTH, False)
+    composed = literal("LaunchConfigAsBool('use_composition')")
+    separate = literal("PythonExpression(['not ', use_composition])")
+    assert composed.excludes(separate) and separate.excludes(composed)
+    assert separate.excludes(literal("LaunchConfiguration('use_composition')"))
+    assert not separate.excludes(literal("LaunchConfiguration('use_composition')", False))
+    assert literal("$(var sim)").excludes(literal("$(var sim)", False))
+    assert literal("$(var sim)").excludes(literal("LaunchConfigurationEquals('sim', 'false')"))
+    assert not literal("$(var sim)").excludes(
+        literal("LaunchConfigurationEquals('sim', 'true')"))
+    assert literal("$(var sim)", False).excludes(
+        literal("LaunchConfigurationEquals('sim', 'True')"))
+    assert not literal("$(var sim)").excludes(
+        literal("LaunchConfigurationNotEquals('sim', 'false')"))
+    assert not literal("$(var sim)").excludes(literal("$(var other)", False))
+    assert not literal("PythonExpression(['not ', a, ' and ', b])").excludes(literal("$(var a)"))
+
+
+def test_one_program_under_two_unrelated_conditions_runs_twice(tmp_path: Path) -> None:
+    """Two amcl under conditions on different arguments may both run: reported; under
+    ``x`` and ``not x`` they are alternatives."""
+    def launch(second: str) -> str:
+        return ("from launch import LaunchDescription\n"
+                "from launch.conditions import IfCondition\n"
+                "from launch.substitutions import LaunchConfiguration, PythonExpression\n"
+                "from launch_ros.actions import Node\n"
+                "def generate_launch_description():\n"
+                "    a = LaunchConfiguration('a')\n"
+                "    return LaunchDescription([\n"
+                "        Node(package='nav2_amcl', executable='amcl', condition=IfCondition(a)),\n"
+                f"        Node(package='nav2_amcl', executable='amcl', condition={second}),\n"
+                "    ])\n")
+    path = tmp_path / "a.launch.py"
+    options = LintOptions(package_paths=(), select=frozenset({"duplicate_publisher"}))
+    path.write_text(launch("IfCondition(LaunchConfiguration('b'))"))
+    assert len(lint_paths([str(path)], options).diagnostics) == 1
+    path.write_text(launch("IfCondition(PythonExpression(['not ', a]))"))
+    assert lint_paths([str(path)], options).diagnostics == ()

@@ -84,6 +84,13 @@ def test_every_rule_module_is_registered() -> None:
     assert registered == files
 
 
+def test_the_catalog_lists_every_rule_with_its_category_in_table_order() -> None:
+    # The catalog is what a run answered by the results cache knows of the rules.
+    from launch_linter.rules._catalog import CATALOG
+
+    assert tuple((r.id, r.category) for r in RULES) == CATALOG
+
+
 def test_ids_are_unique_snake_case_and_match_module_names() -> None:
     ids = [r.id for r in RULES]
     assert len(ids) == len(set(ids))

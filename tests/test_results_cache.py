@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import json
 import os
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -26,6 +25,7 @@ from launch_linter.model.diagnostic import (
     TokenEdit,
 )
 from launch_linter.model.launch import Comment, FileRecord, FileStatus, LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.results_cache import ResultsCache

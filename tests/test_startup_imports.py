@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 import launch_linter
+from launch_linter.commands.options import NO_CACHE_VARIABLE
 
 SRC = str(Path(launch_linter.__file__).resolve().parents[1])
 
@@ -41,6 +42,12 @@ HEAVY = (
     "yaml",
     "difflib",  # only for "did you mean" messages and diffs
     "sqlite3",
+    "tempfile",  # only when a file (the results cache, a fixed file) is written
+    "dataclasses",  # the types of the ROS 1 path are records (model/record.py)
+    "launch_linter.fix_python",  # only when a fix is located in a Python file
+    "launch_linter.commands.transforms",  # a command imports its own module alone
+    "launch_linter.commands.rules",
+    "launch_linter.commands.explain",
 )
 
 LAUNCH = """\
@@ -66,9 +73,11 @@ print(json.dumps({"status": status, "new": sorted(set(sys.modules) - before)}))
 """
 
 
-def _imported(argv: list[str], cwd: Path) -> tuple[int, set[str]]:
+def _imported(argv: list[str], cwd: Path, cache: bool = False) -> tuple[int, set[str]]:
     env = dict(os.environ, PYTHONPATH=SRC)
     env.pop("LAUNCH_LINTER_DEBUG", None)
+    if cache:
+        env.pop(NO_CACHE_VARIABLE, None)
     done = subprocess.run([sys.executable, "-c", PROBE, json.dumps(argv)], cwd=cwd, env=env,
                           capture_output=True, text=True, check=True, timeout=120)
     result = json.loads(done.stdout.splitlines()[-1])
@@ -84,6 +93,14 @@ def test_check_of_one_ros1_file_imports_nothing_heavy(tmp_path: Path) -> None:
     status, modules = _imported(["check", "--format", "json", "base.launch"], tmp_path)
     assert status == 0
     assert "launch_linter.frontends.ros1" in modules  # the probe saw the run's imports
+    assert _heavy(modules) == []
+    # Answered from the results cache the first run wrote: no front-end, no tempfile.
+    _imported(["check", "--format", "json", "base.launch"], tmp_path, cache=True)
+    status, modules = _imported(["check", "--format", "json", "base.launch"], tmp_path,
+                                cache=True)
+    assert status == 0
+    assert "launch_linter.frontends.ros1" not in modules
+    assert "launch_linter.rules.self_transform" not in modules  # no rule runs: none loaded
     assert _heavy(modules) == []
 
 

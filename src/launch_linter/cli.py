@@ -45,10 +45,30 @@ def _edge_commands() -> list[ModuleType]:
     return [mine, generate, evaluate, graph, server]
 
 
-def _core_commands() -> list[ModuleType]:
-    from launch_linter.commands import check, explain, rules, transforms
+def _core_commands(only: str | None = None) -> list[ModuleType]:
+    """The core commands' modules in help order (``only``: that command's alone, the
+    others' modules are start-up time for nothing)."""
+    return [_core_command(name) for name in CORE_COMMANDS if only is None or name == only]
 
-    return [check, transforms, rules, explain]
+
+def _core_command(name: str) -> ModuleType:
+    # Each import written out (not importlib): the standalone linter's embedding follows
+    # the imports it reads (generate/embed.py).
+    if name == "check":
+        from launch_linter.commands import check
+
+        return check
+    if name == "transforms":
+        from launch_linter.commands import transforms
+
+        return transforms
+    if name == "rules":
+        from launch_linter.commands import rules
+
+        return rules
+    from launch_linter.commands import explain
+
+    return explain
 
 
 def _named_command(argv: Sequence[str]) -> str | None:
@@ -78,9 +98,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         # The named command's parser alone; none for ``--version``, which argparse prints
         # before any command is read.
         named = _named_command(argv)
-        commands = [] if named is None else [
-            m for m in _core_commands() if m.__name__.rsplit(".", 1)[1] == named
-        ]
+        commands = [] if named is None else _core_commands(named)
     else:
         commands = [*_core_commands(), *_edge_commands()]
     for module in commands:

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 
+from launch_linter.model.record import MutableRecord
 from launch_linter.model.transform import ArgForm, NumberIssue, Rotation, RotationKind
 
 # What C's strtod (hence atof) reads, in the "C" locale. Hexadecimal comes first because a
@@ -77,8 +77,7 @@ def is_number(text: str) -> bool:
     return whole
 
 
-@dataclass
-class Decoded:
+class Decoded(MutableRecord):
     """What the program makes of the words (treat as read-only)."""
 
     form: ArgForm
@@ -92,6 +91,37 @@ class Decoded:
     numeric_indices: tuple[int, ...]
     parent_index: int | None
     child_index: int | None
+
+    __slots__ = (
+        "form", "parent", "child", "translation", "rotation", "period_ms", "arity_issue",
+        "number_issues", "numeric_indices", "parent_index", "child_index",
+    )
+
+    def __init__(
+        self,
+        form: ArgForm,
+        parent: str | None,
+        child: str | None,
+        translation: tuple[float, float, float] | None,
+        rotation: Rotation | None,
+        period_ms: float | None,
+        arity_issue: str | None,
+        number_issues: tuple[NumberIssue, ...],
+        numeric_indices: tuple[int, ...],
+        parent_index: int | None,
+        child_index: int | None,
+    ) -> None:
+        self.form = form
+        self.parent = parent
+        self.child = child
+        self.translation = translation
+        self.rotation = rotation
+        self.period_ms = period_ms
+        self.arity_issue = arity_issue
+        self.number_issues = number_issues
+        self.numeric_indices = numeric_indices
+        self.parent_index = parent_index
+        self.child_index = child_index
 
 
 def program_words(tokens: tuple[str, ...]) -> tuple[str, ...]:

@@ -5,20 +5,22 @@ from __future__ import annotations
 import contextlib
 import os
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
+from launch_linter import rules as registry
 from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve import reads
 from launch_linter.results_cache import Linted, ResultsCache, lint_with_cache
-from launch_linter.rules import RULES, RULES_BY_ID, Rule, RuleContext
+from launch_linter.rules import Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
+from launch_linter.rules._catalog import CATALOG, CATEGORY_OF, RULE_IDS
 from launch_linter.rules._profiles import STUDY_SEVERITY
 from launch_linter.suppressions import (
     UNUSED_ID,
@@ -45,6 +47,7 @@ from launch_linter.workspace.paths import shown_path
 if TYPE_CHECKING:
     # Imported where a file is linted (``_front_ends``): a run whose results are all in
     # the results cache reads no launch file, and the front-ends are a fifth of start-up.
+    from launch_linter.frontends import python_trees
     from launch_linter.frontends.robot.describe import RobotCache
     from launch_linter.frontends.ros1 import LoadOptions
 
@@ -69,42 +72,89 @@ FILES_PER_JOB = 300
 millisecond, a worker's start and the results it sends back tens of milliseconds."""
 
 
-@dataclass(frozen=True)
-class LintOptions:
+class LintOptions(Record):
     """How to resolve launch files and which rules to run."""
 
-    args: dict[str, str] = field(default_factory=dict)
-    env: dict[str, str] = field(default_factory=dict)
-    package_paths: tuple[str, ...] | None = None
+    args: dict[str, str]
+    env: dict[str, str]
+    package_paths: tuple[str, ...] | None
     """``$(find)`` roots; None means the enclosing workspace of each linted file."""
-    environment: tuple[Place, ...] = ()
+    environment: tuple[Place, ...]
     """Package places of a sourced environment (``workspace.environment``), searched
     after the roots and the workspace's own ``install/``/``devel/``."""
-    select: frozenset[str] | None = None
-    ignore: frozenset[str] = frozenset()
-    severity: dict[str, Severity] = field(default_factory=dict)
-    beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
-    jobs: int = 1
+    select: frozenset[str] | None
+    ignore: frozenset[str]
+    severity: dict[str, Severity]
+    beliefs: BeliefSet
+    jobs: int
     """Worker processes; ``AUTO_JOBS`` (0) lets ``auto_jobs`` choose from the file count."""
-    per_path_ignores: tuple[PathIgnore, ...] = ()
-    profile: str = "default"
+    per_path_ignores: tuple[PathIgnore, ...]
+    profile: str
     """``default`` or ``study`` (the study's checks and severities, for ``evaluate``)."""
-    ros: int | None = None
+    ros: int | None
     """1 or 2: read every XML launch file as that ROS's (``--ros``); None: the nearest
     ``package.xml`` decides for ``*.xml`` files, else their content."""
-    ros_distro: str | None = None
+    ros_distro: str | None
     """Target ROS distribution (lower case), for the rules and fixes that depend on it;
     None: from evidence in the files, else unknown."""
-    knowledge: KnowledgeBase | None = None
+    knowledge: KnowledgeBase | None
     """The knowledge base of tf publishers; None: the bundled one."""
 
+    __slots__ = (
+        "args", "env", "package_paths", "environment", "select", "ignore", "severity", "beliefs",
+        "jobs", "per_path_ignores", "profile", "ros", "ros_distro", "knowledge",
+    )
 
-@dataclass(frozen=True)
-class LintResult:
+    def __init__(
+        self,
+        args: dict[str, str] | None = None,
+        env: dict[str, str] | None = None,
+        package_paths: tuple[str, ...] | None = None,
+        environment: tuple[Place, ...] = (),
+        select: frozenset[str] | None = None,
+        ignore: frozenset[str] = frozenset(),
+        severity: dict[str, Severity] | None = None,
+        beliefs: BeliefSet | None = None,
+        jobs: int = 1,
+        per_path_ignores: tuple[PathIgnore, ...] = (),
+        profile: str = "default",
+        ros: int | None = None,
+        ros_distro: str | None = None,
+        knowledge: KnowledgeBase | None = None,
+    ) -> None:
+        _set(self, "args", {} if args is None else args)
+        _set(self, "env", {} if env is None else env)
+        _set(self, "package_paths", package_paths)
+        _set(self, "environment", environment)
+        _set(self, "select", select)
+        _set(self, "ignore", ignore)
+        _set(self, "severity", {} if severity is None else severity)
+        _set(self, "beliefs", BeliefSet.empty() if beliefs is None else beliefs)
+        _set(self, "jobs", jobs)
+        _set(self, "per_path_ignores", per_path_ignores)
+        _set(self, "profile", profile)
+        _set(self, "ros", ros)
+        _set(self, "ros_distro", ros_distro)
+        _set(self, "knowledge", knowledge)
+
+
+class LintResult(Record):
     files: tuple[FileRecord, ...]
     trees: tuple[LaunchTree, ...]
     """Empty when the run was asked not to keep them (``keep_trees=False``)."""
     diagnostics: tuple[Diagnostic, ...]
+
+    __slots__ = ("files", "trees", "diagnostics")
+
+    def __init__(
+        self,
+        files: tuple[FileRecord, ...],
+        trees: tuple[LaunchTree, ...],
+        diagnostics: tuple[Diagnostic, ...],
+    ) -> None:
+        _set(self, "files", files)
+        _set(self, "trees", trees)
+        _set(self, "diagnostics", diagnostics)
 
     @property
     def transforms(self) -> tuple[StaticTransform, ...]:
@@ -124,12 +174,19 @@ def _display_function(item: InputFile) -> object:
 
 
 def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
-    return tuple(
-        r
-        for r in RULES
-        if (options.select is None or r.id in options.select or r.category.value in options.select)
-        and r.id not in options.ignore
-        and r.category.value not in options.ignore
+    selected = selected_ids(options)
+    return tuple(r for r in registry.RULES if r.id in selected)
+
+
+def selected_ids(options: LintOptions) -> frozenset[str]:
+    """The ids of the rules ``options`` select (no rule module needed)."""
+    return frozenset(
+        rule_id
+        for rule_id, category in CATALOG
+        if (options.select is None or rule_id in options.select
+            or category.value in options.select)
+        and rule_id not in options.ignore
+        and category.value not in options.ignore
     )
 
 
@@ -238,18 +295,19 @@ def finish_diagnostics(
     trees: Sequence[LaunchTree], diagnostics: Iterable[Diagnostic], options: LintOptions
 ) -> tuple[Diagnostic, ...]:
     """Apply inline suppressions and per-path ignores to the rules' diagnostics, and sort."""
-    ran = {r.id for r in selected_rules(options)}
-    unused_rule = RULES_BY_ID[UNUSED_ID]
+    ran = selected_ids(options)
     kept, unused = apply_suppressions(
         trees,
         diagnostics,
-        known={r.id: r.category.value for r in RULES},
+        known={rule_id: category.value for rule_id, category in CATEGORY_OF.items()},
         ran=ran,
         report_unused=UNUSED_ID in ran,
     )
+    # The rules themselves (their modules) only when a directive went unused.
+    stamped = [_stamp(registry.RULES_BY_ID[UNUSED_ID], finding_of(u), options) for u in unused]
     out = [
         d
-        for d in (*kept, *(_stamp(unused_rule, finding_of(u), options) for u in unused))
+        for d in (*kept, *stamped)
         if not ignored_by_path(d, options.per_path_ignores)
     ]
     return tuple(sorted(out, key=lambda d: d.sort_key))
@@ -281,7 +339,7 @@ def internal_error_tree(item: InputFile, what: str, line: int = 1) -> LaunchTree
 def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
     """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
     tree = internal_error_tree(item, what, line)
-    rule = RULES_BY_ID["parse_error"]
+    rule = registry.RULES_BY_ID["parse_error"]
     found = [rule.diagnostic(finding_of(p)) for p in tree.problems]
     return tree, _file_record(item, tree), found
 
@@ -293,11 +351,17 @@ def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
               cache: Packages, robots: RobotCache | None = None,
               versions: Versions | None = None) -> Linted:
     """One file, isolated: an unexpected exception costs this file only."""
+    from launch_linter.frontends import python_trees
     from launch_linter.frontends.dispatch import load_tree
 
     try:
-        tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
-        return tree, _file_record(item, tree), check_tree(tree, rules, options)
+        # The fixes are located while the front-end's Python syntax trees are at hand, so
+        # that no file is parsed twice (and the results cache keeps them located).
+        with python_trees.keeping() as trees:
+            tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
+            found = check_tree(tree, rules, options)
+        located = _with_located_fixes(found, options.ros_distro, trees=trees)
+        return tree, _file_record(item, tree), list(located)
     except (KeyboardInterrupt, SystemExit):
         raise
     except BaseException as exc:  # one bad file never loses a run
@@ -431,15 +495,15 @@ def _lint_alone(
 
 def _with_located_fixes(
     diagnostics: Sequence[Diagnostic], distro: str | None,
-    sources: dict[str, bytes] | None = None,
+    sources: dict[str, bytes] | None = None, trees: python_trees.Trees | None = None,
 ) -> tuple[Diagnostic, ...]:
-    """``fix.with_located_fixes``, imported only when a finding carries a fix: locating
-    edits (with ``ast`` and ``difflib``) is start-up time a run without one never needs."""
-    if all(d.fix is None for d in diagnostics):
+    """``fix.with_located_fixes``, imported only when a finding carries a fix not located
+    yet: locating edits is start-up time a run without one never needs."""
+    if all(d.fix is None or d.fix.edits for d in diagnostics):
         return tuple(diagnostics)
     from launch_linter.fix import with_located_fixes
 
-    return with_located_fixes(diagnostics, distro, sources)
+    return with_located_fixes(diagnostics, distro, sources, trees)
 
 
 def lint_files(
@@ -530,15 +594,17 @@ def lint_bytes(
     options = options or LintOptions()
     item = InputFile(os.path.abspath(path), path)
     load = load_options_for(item, options, {})
+    from launch_linter.frontends import python_trees
     from launch_linter.frontends.dispatch import load_tree
 
-    tree = load_tree(item.path, load, data)
+    with python_trees.keeping() as trees:
+        tree = load_tree(item.path, load, data)
     found = check_tree(tree, selected_rules(options), options)
     diagnostics = _with_located_fixes(
-        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data},
+        finish_diagnostics((tree,), found, options), options.ros_distro, {path: data}, trees,
     )
     return LintResult((_file_record(item, tree),), (tree,), diagnostics)
 
 
 def rule_ids() -> tuple[str, ...]:
-    return tuple(RULES_BY_ID)
+    return RULE_IDS

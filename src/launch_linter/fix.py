@@ -12,18 +12,23 @@ ones the rule read. Every byte outside the edited words is kept. The diff of the
 
 from __future__ import annotations
 
-import ast
 import bisect
 import codecs
 import collections
+import os
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import replace
-from typing import Tuple
+from typing import TYPE_CHECKING, Tuple
 
 from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
+from launch_linter.model.record import replace
 from launch_linter.resolve.xml_safe import declared_encoding, read_regular_file
 from launch_linter.rules._fixes import distro_at_least
+
+if TYPE_CHECKING:
+    import ast
+
+    from launch_linter.frontends.python_trees import Trees
 
 MAX_FIX_BYTES = 8 * 1024 * 1024
 MAX_FIX_PASSES = 8
@@ -82,6 +87,7 @@ class Source:
     a character of the first line and Python skips)."""
 
     def __init__(self, path: str, data: bytes, module: ast.Module | None = None) -> None:
+        """``module``: the syntax tree of ``data``, if the front-end has parsed it."""
         self.path = path
         self.data = data
         self.python = path.endswith(".py")
@@ -162,76 +168,13 @@ class Source:
             return None
         return [(found[0] + m.start(), found[0] + m.end()) for m in _WORD.finditer(value)]
 
-    def _tree(self) -> ast.Module:
-        if self._module is None:
-            try:
-                # As the front-end reads it: UTF-8, a byte order mark allowed.
-                self._module = ast.parse(self.data.decode("utf-8-sig"))
-            except (SyntaxError, ValueError, RecursionError, MemoryError):
-                self._module = ast.Module(body=[], type_ignores=[])
-        return self._module
-
     def _python_spans(self, line: int) -> tuple[list[Span], list[str]] | None:
-        """Byte spans (quotes included) and values of the string items of
-        ``arguments=[...]`` of the first call on ``line`` that has one (in ``ast.walk``
-        order); None unless every item is a plain one-line string literal."""
-        # ast.walk's breadth-first order, without the subtrees that lie off the line (a
-        # file parsed once, each line's search a thin slice of it).
-        queue: collections.deque[ast.AST] = collections.deque([self._tree()])
-        while queue:
-            node = queue.popleft()
-            if isinstance(node, ast.Call) and node.lineno == line:
-                for keyword in node.keywords:
-                    value = keyword.value
-                    if keyword.arg == "arguments" and isinstance(value, (ast.List, ast.Tuple)):
-                        return self._string_spans(value.elts)
-            for child in ast.iter_child_nodes(node):
-                if _may_hold(child, line):
-                    queue.append(child)
-        return None
+        # Imported here: ``ast`` is start-up time for every run that locates no Python fix.
+        from launch_linter import fix_python
 
-    def _string_spans(self, items: list[ast.expr]) -> tuple[list[Span], list[str]] | None:
-        """The items' spans and values, when each is a plain one-line string literal
-        whose bytes in the file read as that string."""
-        starts = self.line_starts
-        spans: list[Span] = []
-        values: list[str] = []
-        for item in items:
-            if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
-                return None
-            if item.end_lineno != item.lineno or item.end_col_offset is None:
-                return None
-            if not 1 <= item.lineno <= len(starts):
-                return None
-            base = starts[item.lineno - 1]
-            span = (base + item.col_offset, base + item.end_col_offset)
-            if not _reads_as(self.text(*span), item.value):
-                return None
-            spans.append(span)
-            values.append(item.value)
-        return spans, values
-
-
-def _reads_as(literal: str | None, value: str) -> bool:
-    """Whether ``literal`` is one Python string literal whose value is ``value``."""
-    if literal is None or literal[-1:] not in ("'", '"'):
-        return False
-    try:
-        return bool(ast.literal_eval(literal) == value)
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        return False
-
-
-def _may_hold(node: ast.AST, line: int) -> bool:
-    """False for a node whose lines do not include ``line`` (nor do its children's)."""
-    if isinstance(node, _DECORATED):
-        return True  # its decorators lie above its first line
-    first = getattr(node, "lineno", None)
-    last = getattr(node, "end_lineno", None)
-    return first is None or last is None or first <= line <= last
-
-
-_DECORATED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+        if self._module is None:
+            self._module = fix_python.parse(self.data)
+        return fix_python.call_spans(self._module, line, self.line_starts, self.text)
 
 
 def _python_literal(text: str, like: bytes) -> str:
@@ -362,9 +305,14 @@ def with_located_fixes(
     diagnostics: Sequence[Diagnostic],
     distro: str | None = None,
     sources: Mapping[str, bytes] | None = None,
+    trees: Trees | None = None,
 ) -> tuple[Diagnostic, ...]:
     """Each diagnostic with its fix located in its file (or without a fix when it cannot
-    be), a fix that is safe for the target distribution marked safe."""
+    be), a fix that is safe for the target distribution marked safe. A fix already
+    located (it has edits) is kept as it is.
+
+    ``sources``: the bytes of some files (else they are read); ``trees``: the Python files
+    the front-end parsed, with their bytes (``frontends.python_trees``), not parsed again."""
     given = sources or {}
     # The diagnostics come file by file (a root file's, then its includes'), so the few
     # files seen last are the ones asked for again; keeping every file's source (bytes,
@@ -373,15 +321,14 @@ def with_located_fixes(
     out: list[Diagnostic] = []
     for diagnostic in diagnostics:
         fix = diagnostic.fix
-        if fix is None:
+        if fix is None or fix.edits:
             out.append(diagnostic)
             continue
         path = diagnostic.path
         if path in cache:
             cache.move_to_end(path)
         else:
-            data = given[path] if path in given else read_bytes(path)
-            cache[path] = None if data is None else Source(path, data)
+            cache[path] = _source(path, given, trees)
             if len(cache) > RECENT_SOURCES:
                 cache.popitem(last=False)
         source = cache[path]
@@ -398,6 +345,17 @@ def with_located_fixes(
             applicability = Applicability.SAFE
         out.append(replace(diagnostic, fix=replace(fix, edits=edits, applicability=applicability)))
     return tuple(out)
+
+
+def _source(path: str, given: Mapping[str, bytes], trees: Trees | None) -> Source | None:
+    """``path``'s source: the bytes and tree the front-end parsed, the bytes given, or
+    the file read now (None when it cannot be)."""
+    parsed = trees.get(os.path.abspath(path)) if trees else None
+    if parsed is not None and len(parsed[0]) <= MAX_FIX_BYTES and (
+            path not in given or given[path] == parsed[0]):
+        return Source(path, parsed[0], parsed[1])
+    data = given[path] if path in given else read_bytes(path)
+    return None if data is None else Source(path, data)
 
 
 def wanted(diagnostic: Diagnostic, unsafe: bool) -> bool:

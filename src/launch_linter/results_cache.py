@@ -20,10 +20,10 @@ import contextlib
 import json
 import os
 from collections.abc import Callable, Iterable
-from dataclasses import fields, is_dataclass
 from enum import Enum
 from typing import Any, List, Optional, Tuple
 
+from launch_linter.model import record
 from launch_linter.model.diagnostic import (
     Applicability,
     Belief,
@@ -52,7 +52,7 @@ _CACHEDIR_TAG = ("Signature: 8a477f597d28d172789f06886806bc55\n"
 
 Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
 
-_CODEC_FIELDS: dict[type, tuple[str, ...]] = {
+_CODEC_FIELDS: dict[type[record.Record], tuple[str, ...]] = {
     Diagnostic: ("rule", "category", "severity", "path", "line", "column", "message", "node",
                  "related", "belief", "fix"),
     Location: ("path", "line", "column"),
@@ -68,7 +68,7 @@ the cache off (``codec_matches``) until the codec learns it (``tests/test_result
 
 
 def codec_matches() -> bool:
-    return all(tuple(f.name for f in fields(cls)) == names
+    return all(record.fields(cls) == names
                for cls, names in _CODEC_FIELDS.items())
 
 
@@ -90,9 +90,9 @@ def canonical(value: Any) -> Any:
         return ["float", repr(value)]
     if isinstance(value, Enum):
         return [type(value).__name__, canonical(value.value)]
-    if is_dataclass(value) and not isinstance(value, type):
-        return [type(value).__name__,
-                [[f.name, canonical(getattr(value, f.name))] for f in fields(value) if f.compare]]
+    if isinstance(value, record.Record):
+        return [type(value).__name__, [[name, canonical(getattr(value, name))]
+                                       for name in record.compared_fields(value)]]
     if isinstance(value, dict):
         return ["dict", sorted(([canonical(k), canonical(v)] for k, v in value.items()),
                                key=json.dumps)]
@@ -130,10 +130,10 @@ NOT_KEYED = ("jobs",)
 processes, which ``scripts/output_identity.py --jobs`` checks)."""
 
 
-def run_key(version: str, options: object, configuration: object, folder: str) -> str:
+def run_key(version: str, options: record.Record, configuration: object, folder: str) -> str:
     """The run key: tool, options (but ``NOT_KEYED``), configuration and working folder."""
-    kept = [[f.name, canonical(getattr(options, f.name))] for f in fields(options)  # type: ignore[arg-type]
-            if f.compare and f.name not in NOT_KEYED]
+    kept = [[name, canonical(getattr(options, name))] for name in record.compared_fields(options)
+            if name not in NOT_KEYED]
     text = json.dumps([FORMAT, tool_stamp(version), type(options).__name__, kept,
                        canonical(configuration), folder], separators=(",", ":"))
     return reads.digest(text.encode("utf-8"))
@@ -293,7 +293,7 @@ class ResultsCache:
         self._load()
 
     @staticmethod
-    def open(folder: str, version: str, options: object,
+    def open(folder: str, version: str, options: record.Record,
              configuration: object = None) -> ResultsCache | None:
         """The cache in ``folder`` for the tool's ``version``, these options (a
         ``LintOptions``) and ``configuration`` (a ``Config``), or None when none can be

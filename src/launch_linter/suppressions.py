@@ -22,11 +22,11 @@ import bisect
 import os
 import re
 from collections.abc import Collection, Iterable, Mapping, Sequence
-from dataclasses import dataclass
 
 from launch_linter.model.diagnostic import Diagnostic, Problem
 from launch_linter.model.globs import path_glob
 from launch_linter.model.launch import DIRECTIVE_MARKER, LaunchTree
+from launch_linter.model.record import Record, _set
 
 UNUSED_ID = "unused_suppression"
 PREFIX = DIRECTIVE_MARKER
@@ -37,8 +37,7 @@ _DIRECTIVE = re.compile(
 )
 
 
-@dataclass(frozen=True)
-class Directive:
+class Directive(Record):
     """One ``launch-linter:`` comment; ``target`` is the element line it covers."""
 
     path: str
@@ -49,18 +48,39 @@ class Directive:
     target: int | None
     """Start line of the next element; None for ``disable-file`` or when none follows."""
 
+    __slots__ = ("path", "line", "whole_file", "ids", "target")
 
-@dataclass(frozen=True)
-class Malformed:
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        whole_file: bool,
+        ids: tuple[str, ...],
+        target: int | None,
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "whole_file", whole_file)
+        _set(self, "ids", ids)
+        _set(self, "target", target)
+
+
+class Malformed(Record):
     """A comment that starts with ``launch-linter:`` but is not a directive."""
 
     path: str
     line: int
     text: str
 
+    __slots__ = ("path", "line", "text")
 
-@dataclass(frozen=True)
-class PathIgnore:
+    def __init__(self, path: str, line: int, text: str) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "text", text)
+
+
+class PathIgnore(Record):
     """``per-path-ignores``: rules (or categories) ignored in files matching ``pattern``.
 
     ``pattern`` is relative to ``base`` (the configuration file's folder) and only matches
@@ -71,6 +91,13 @@ class PathIgnore:
     base: str
     pattern: str
     ids: frozenset[str]
+
+    __slots__ = ("base", "pattern", "ids")
+
+    def __init__(self, base: str, pattern: str, ids: frozenset[str]) -> None:
+        _set(self, "base", base)
+        _set(self, "pattern", pattern)
+        _set(self, "ids", ids)
 
     def matches(self, path: str) -> bool:
         absolute = os.path.abspath(path)

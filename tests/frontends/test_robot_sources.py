@@ -120,3 +120,77 @@ def test_ros2_xml_file_content(tmp_path: Path) -> None:
             'demo_description)/urdf/plain.urdf)"/></node></launch>')
     found = tree(tmp_path, "a.launch.xml", text)
     assert [(j.parent, j.child) for j in found.joints] == [("base_link", "gps")]
+
+
+SDF = ('<sdf version="1.6"><model name="vehicle"><link name="chassis"/><link name="wheel"/>'
+       '<joint name="axle" type="revolute"><parent>chassis</parent><child>wheel</child>'
+       '</joint></model></sdf>')
+
+
+@pytest.mark.parametrize(("model", "sdf"), [("model.sdf", True), ("model.urdf", False)])
+def test_an_sdf_description_is_said_unread(tmp_path: Path, model: str, sdf: bool) -> None:
+    # precision trial, gazebosim/ros_gz: sdf_parser.launch.py gives robot_state_publisher
+    # an SDF model (read through sdformat_urdf); its joints were silently none.
+    (tmp_path / model).write_text(
+        SDF if sdf else '<robot name="r"><link name="a"/><link name="b"/><joint name="j" '
+                        'type="fixed"><parent link="a"/><child link="b"/></joint></robot>')
+    text = ('<launch><node pkg="robot_state_publisher" exec="robot_state_publisher">'
+            f'<param name="robot_description" value="$(file-content $(dirname)/{model})"/>'
+            '</node></launch>')
+    found = tree(tmp_path, "a.launch.xml", text)
+    said = [p.message for p in found.problems if "is SDF" in p.message]
+    assert len(said) == int(sdf)
+    assert [(j.parent, j.child) for j in found.joints] == ([] if sdf else [("a", "b")])
+
+
+def test_an_unknown_description_value_is_said_once(tmp_path: Path) -> None:
+    # A robot_state_publisher given a value only launch knows has a robot the linter does
+    # not read: said, so that the tree does not look like one without a description.
+    text = '''from launch import LaunchDescription
+from launch_ros.actions import Node
+import helpers
+
+
+def generate_launch_description():
+    description = helpers.urdf()
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{"robot_description": description}]),
+        Node(package="controller_manager", executable="ros2_control_node",
+             parameters=[{"robot_description": description}]),
+    ])
+'''
+    found = tree(tmp_path, "a.launch.py", text)
+    said = [p.message for p in found.problems if p.message.startswith("robot description")]
+    assert said == ["robot description not read: line 7: calls 'helpers.urdf', which the "
+                    "linter does not model"]
+    assert found.joints == ()
+
+
+@pytest.mark.parametrize("text", ["toxml()", "toprettyxml(indent='  ')"])
+def test_ros2_python_xacro_process_file(tmp_path: Path, text: str) -> None:
+    # precision trial, gazebosim/ros_gz joint_states.launch.py: xacro.process_file(path)
+    # .toxml() (45 calls in the corpus) was an unknown description.
+    launch = f'''import os
+import xacro
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    path = os.path.join(get_package_share_directory("demo_description"), "urdf",
+                        "robot.urdf.xacro")
+    document = xacro.process_file(path, mappings={{"use_lidar": "false"}})
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{{"robot_description": document.{text}}}]),
+    ])
+'''
+    found = tree(tmp_path, "a.launch.py", launch)
+    (source,) = found.descriptions
+    assert source.kind is DescriptionKind.XACRO and source.args == (("use_lidar", "false"),)
+    assert "sonar" in {j.child for j in found.joints}
+    unknown = launch.replace('mappings={"use_lidar": "false"}', "mappings=helpers.m()")
+    found = tree(tmp_path, "b.launch.py", unknown)
+    assert found.joints == ()

@@ -1,9 +1,9 @@
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Callable, List, Tuple
 
 from launch_linter.model import Diagnostic, LaunchTree, Location, Severity
+from launch_linter.model.record import replace
 from launch_linter.rules import RULES_BY_ID, RuleContext
 
 Lint = Callable[..., List[Tuple[str, int]]]

@@ -13,7 +13,6 @@ from __future__ import annotations
 import contextlib
 import os
 import stat
-import tempfile
 from collections.abc import Iterable
 
 from launch_linter.report.escape import printable
@@ -75,6 +74,8 @@ def write_atomically(real: str, before: bytes, after: bytes) -> str | None:
     finally:
         os.close(descriptor)
     folder, name = os.path.split(real)
+    import tempfile  # only when a file is written: with ``random`` it is start-up time
+
     try:
         handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".fix", dir=folder)
     except OSError as exc:

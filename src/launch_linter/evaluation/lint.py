@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Tuple
 
 from launch_linter.engine import (
@@ -15,6 +15,7 @@ from launch_linter.engine import (
 )
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.model.diagnostic import Diagnostic
+from launch_linter.model.record import replace
 from launch_linter.model.transform import StaticTransform
 
 

@@ -12,9 +12,9 @@ import os
 import re
 import textwrap
 from collections.abc import Iterable, Sequence
-from dataclasses import replace
 from typing import Any
 
+from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
@@ -199,6 +199,93 @@ def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[Nod
             params.extend(ros2_file_params(document, controller, manager.namespace))
         out.append(replace(manager, executable="", name=controller, kind="controller",
                            plugin=value, params=tuple(params)))
+    return out
+
+
+EMBEDDED_COSTMAPS = {
+    ("nav2_controller", "controller_server"): "local_costmap",
+    ("nav2_planner", "planner_server"): "global_costmap",
+}
+"""nav2 servers that run a costmap node of their own in their process
+(``Costmap2DROS(NAME, namespace, NAME)``: the node ``NAMESPACE/NAME/NAME``, navigation2
+controller_server.cpp and planner_server.cpp, humble 3c3db59 and main a3a9704)."""
+COSTMAP_PLUGIN = "nav2_costmap_2d::Costmap2DROS"
+
+
+def embedded_costmap(server: NodeRecord, documents: Sequence[object],
+                     scope_params: Sequence[tuple[str, str]] = ()) -> NodeRecord | None:
+    """The costmap node a nav2 server runs, with the section of the server's parameter
+    files that names it (and what ``SetParameter`` gives every node)."""
+    name = EMBEDDED_COSTMAPS.get((server.package, server.executable))
+    if name is None:
+        return None
+    namespace = (None if server.namespace is None
+                 else "/" + "/".join(p for p in (server.namespace.strip("/"), name) if p))
+    params = list(scope_params)
+    for document in documents:
+        params.extend(ros2_file_params(document, name, namespace))
+    return replace(server, package="nav2_costmap_2d", executable="", name=name,
+                   plugin=COSTMAP_PLUGIN, params=tuple(params), namespace=namespace)
+
+
+CONTROLLER_MANAGER_NAME = "controller_manager"
+"""The node name ros2_control_node takes when the launch file gives none."""
+SPAWNERS = ("spawner", "spawner.py")
+_SPAWNER_FILE_FLAGS = ("--param-file", "-p")
+_SPAWNER_TYPE_FLAGS = ("--controller-type", "-t")
+_SPAWNER_VALUE_FLAGS = ("-c", "--controller-manager", "-n", "--namespace",
+                        "--controller-manager-timeout", "--switch-timeout",
+                        "--service-call-timeout", "--controller-ros-args")
+
+
+def spawner_words(words: Sequence[str | None]
+                  ) -> tuple[list[str], list[str | None], str | None]:
+    """The controllers a ``spawner`` loads (its positional words), the parameter files
+    it gives them (``--param-file``, None when unresolved) and the type it names
+    (``--controller-type``). An unresolved positional word is left out: it names a
+    controller the linter cannot know."""
+    names: list[str] = []
+    files: list[str | None] = []
+    kind: str | None = None
+    skip: str | None = None
+    for word in words:
+        if skip is not None:
+            if skip in _SPAWNER_FILE_FLAGS:
+                files.append(word)
+            elif skip in _SPAWNER_TYPE_FLAGS:
+                kind = word
+            skip = None
+            continue
+        if word is None:
+            continue
+        if word in _SPAWNER_FILE_FLAGS + _SPAWNER_TYPE_FLAGS + _SPAWNER_VALUE_FLAGS:
+            skip = word
+        elif word == "--ros-args":
+            break
+        elif not word.startswith("-"):
+            names.append(word)
+    return names, files, kind
+
+
+def spawned_controllers(spawner: NodeRecord, names: Sequence[str], kind: str | None,
+                        documents: Sequence[object]) -> list[NodeRecord]:
+    """The controllers a spawner loads with ``--param-file``, each with its section of
+    the files (its own key or ``/**``). Its type: ``--controller-type``, else ``type`` in
+    its section (jazzy's spawner sets it), else ``NAME.type`` in the file's controller
+    manager section (what the manager is given when it reads the same file)."""
+    out: list[NodeRecord] = []
+    for name in names:
+        params: list[tuple[str, str]] = []
+        declared: str | None = None
+        for document in documents:
+            params.extend(ros2_file_params(document, name, spawner.namespace))
+            for key, section in ros2_sections(document):
+                if key.rstrip("/").endswith("/" + CONTROLLER_MANAGER_NAME):
+                    declared = dict(flatten(section, ".")).get(name + ".type", declared)
+        found = kind or dict(params).get("type") or declared or ""
+        if _CONTROLLER_TYPE.match(found):
+            out.append(replace(spawner, executable="", name=name, kind="controller",
+                               plugin=found, params=tuple(params)))
     return out
 
 

@@ -2,7 +2,8 @@
 
 A front-end knows three things about a ``static_transform_publisher`` node: where it is
 declared (:class:`Site`), how it is written (:class:`Command`), and what its arguments
-mean (:class:`Reading`). :func:`transform_record` puts them into the
+mean (:class:`Reading`): named tuples, made for each such node and read once (a frozen
+dataclass costs a call per field to make). :func:`transform_record` puts them into the
 :class:`~launch_linter.model.transform.StaticTransform` the rules read, and
 :func:`unresolved_message` words the ``unresolved`` problem both front-ends report for it.
 """
@@ -10,7 +11,7 @@ mean (:class:`Reading`). :func:`transform_record` puts them into the
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from launch_linter.model.transform import (
     ArgForm,
@@ -24,8 +25,7 @@ from launch_linter.model.transform import (
 )
 
 
-@dataclass(frozen=True)
-class Site:
+class Site(NamedTuple):
     """Where a node is declared (the file as shown, line, column), the root file of its
     tree, the include that brought its file in, and its presence condition."""
 
@@ -37,8 +37,7 @@ class Site:
     condition: Condition
 
 
-@dataclass(frozen=True)
-class Command:
+class Command(NamedTuple):
     """The node as written: name and namespace, package and executable, and its arguments
     (as written, as text, and as the words the program receives)."""
 
@@ -51,8 +50,7 @@ class Command:
     tokens: tuple[str, ...]
 
 
-@dataclass(frozen=True)
-class Reading:
+class Reading(NamedTuple):
     """What the arguments mean: the frames and numbers the developer intended (None where
     unknown), the form, and how the package's program reads or refuses them."""
 

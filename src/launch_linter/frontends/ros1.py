@@ -44,6 +44,7 @@ from launch_linter.frontends.ros1_checks import (
 from launch_linter.frontends.ros1_names import _COLLAPSE_SLASHES, make_global_ns, ns_join
 from launch_linter.frontends.ros1_tags import Ros1Tags
 from launch_linter.frontends.tokens import split_args
+from launch_linter.frontends.xml_dialect import is_ros2_xml
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.transform import ALWAYS, DECODED_FIELDS, ArgForm, Condition, Field
@@ -263,6 +264,15 @@ class Ros1Loader(Ros1Tags):
                         f"cannot read included file {path}: {exc.strerror or exc}")
             return
         self.budget.produce(len(data))
+        if is_ros2_xml(data):
+            # The package found is the ROS 2 version of one a ROS 1 environment has (a
+            # migrated repository keeps its old ROS 1 tests): roslaunch would open the ROS 1
+            # package's file, which the workspace does not hold.
+            self._report("unresolved", context.filename, element,
+                         f"include of {self._display(absolute)} not followed: it is ROS 2 "
+                         f"launch XML, which roslaunch does not read (the package found is "
+                         f"built for ROS 2; a ROS 1 environment has its own)")
+            return
         root = self._parse(absolute, data)
         if root is None:
             return

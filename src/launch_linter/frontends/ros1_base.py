@@ -7,7 +7,6 @@ import os
 import re
 import typing
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
 
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.robot.sources import with_node_params
@@ -22,6 +21,7 @@ from launch_linter.model.launch import (
     holds_directive,
     may_hold_directive,
 )
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.substitution import (
@@ -66,23 +66,42 @@ _ENV_REFERENCE = re.compile(r"\$\((optenv|env|arg)\s+([^\s)]+)")
 """``$(optenv NAME ...)``, ``$(env NAME)``, ``$(arg NAME)`` in attribute text."""
 
 
-@dataclass(frozen=True)
-class LoadOptions:
+class LoadOptions(Record):
     """What the command line tells the loader."""
 
-    args: Mapping[str, str] = field(default_factory=dict)
-    env: Mapping[str, str] = field(default_factory=dict)
-    packages: PackageIndex = field(default_factory=lambda: PackageIndex([]))
-    display_path: Callable[[str], str] = relative_to_cwd
-    study_errors: bool = False
+    args: Mapping[str, str]
+    env: Mapping[str, str]
+    packages: PackageIndex
+    display_path: Callable[[str], str]
+    study_errors: bool
     """True (the ``study`` profile): report as ``roslaunch_error``, as the study counted
     them, what the default reports as ``unresolved`` info because the file alone cannot
     decide it: an error whose cause depends on the environment (``$(optenv)``/``$(env)``
     not given with ``--env``, a ``~`` path in ROS 2)."""
-    ros_version: int | None = None
+    ros_version: int | None
     """1 or 2 to read an XML root file as that ROS's launch XML; None: by its content."""
-    robots: RobotCache | None = None
+    robots: RobotCache | None
     """Robot descriptions expanded in this run (None: a new cache per tree)."""
+
+    __slots__ = ("args", "env", "packages", "display_path", "study_errors", "ros_version", "robots")
+
+    def __init__(
+        self,
+        args: Mapping[str, str] | None = None,
+        env: Mapping[str, str] | None = None,
+        packages: PackageIndex | None = None,
+        display_path: Callable[[str], str] = relative_to_cwd,
+        study_errors: bool = False,
+        ros_version: int | None = None,
+        robots: RobotCache | None = None,
+    ) -> None:
+        _set(self, "args", {} if args is None else args)
+        _set(self, "env", {} if env is None else env)
+        _set(self, "packages", PackageIndex([]) if packages is None else packages)
+        _set(self, "display_path", display_path)
+        _set(self, "study_errors", study_errors)
+        _set(self, "ros_version", ros_version)
+        _set(self, "robots", robots)
 
 
 class _AnonNames:
@@ -140,7 +159,15 @@ class _Context:
 
     def copy(self) -> _Context:
         """A child context: roslaunch deep-copies args and anonymous names."""
-        child = _Context(self.ns, self.filename, dict(self.args), self.open_args)
+        # Not through ``__init__``: the include call it would work out (sorting and joining
+        # every arg) is the parent's, copied below.
+        child = _Context.__new__(_Context)
+        child.ns = self.ns
+        child.filename = self.filename
+        child.args = dict(self.args)
+        child.open_args = self.open_args
+        child.scope = None
+        child.side_scope = None
         child.ns_unresolved = self.ns_unresolved
         child.arg_names = dict(self.arg_names)
         child.anon = dict(self.anon)
@@ -186,6 +213,9 @@ class Ros1Base:
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
         self._env_args: dict[str, str] = {}
+        self._child_values: dict[Element, Value] = {}
+        """The resolved ``value`` of each ``<param>`` inside a node whose text names no
+        anonymous name: the node's record reads it again (see ``_frame_node``)."""
         """Args whose value comes from the environment -> the substitution it comes from."""
         """The element whose attribute is being resolved (for errors found meanwhile)."""
         self.budget = Budget()

@@ -189,9 +189,11 @@ class Ros1Tags(Ros1Base):
                          f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
             return
         for key in ("value", "default"):
-            source = self._env_in_text(attrib.get(key, ""))
-            if source is not None:
-                self._env_args[name] = source
+            text = attrib.get(key)
+            if text is not None and "$(" in text:
+                source = self._env_in_text(text)
+                if source is not None:
+                    self._env_args[name] = source
         self._declare(context, element, name, value, default, condition)
 
     def _param(self, element: Element, context: _Context,
@@ -204,6 +206,9 @@ class Ros1Tags(Ros1Base):
                 return
             condition = found
         written = self._resolve(element, "value", context, anon)
+        if anon is not None and written is not None and "anon" not in attrib["value"]:
+            # Without an anonymous name the value is the same in any anonymous-name table.
+            self._child_values[element] = written
         count = int(written is not None)
         sources: dict[str, Value] = {}
         for key in ("textfile", "binfile", "command"):
@@ -272,8 +277,11 @@ class Ros1Tags(Ros1Base):
                     known = None
                 elif "$" in value:
                     # Anonymous names are left alone: resolving one here would renumber.
-                    known = None if "$(anon" in value else resolved_text(self._resolve_text(
-                        value, sub, "value", context, dict(context.anon)))
+                    # A value ``_param`` resolved already is not resolved again.
+                    resolved = self._child_values.get(sub)
+                    known = None if "$(anon" in value else resolved_text(
+                        resolved if resolved is not None else self._resolve_text(
+                            value, sub, "value", context, dict(context.anon)))
                 params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
             elif sub.tag == "rosparam":
                 found, why = self._rosparam_values(sub, context)

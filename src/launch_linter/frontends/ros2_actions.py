@@ -221,6 +221,9 @@ class Uses:
     where: Where
     condition: Predicate | None
     uses: tuple[Subs, ...]
+    parameter: tuple[Subs, Subs] | None = None
+    """``SetParameter``/``<set_parameter>``: the name and value it gives every node
+    launched after it in its scope."""
 
 
 @dataclass(frozen=True)

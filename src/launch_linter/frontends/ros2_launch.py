@@ -18,14 +18,18 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
-from dataclasses import replace
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.params import (
+    CONTROLLER_MANAGER_NAME,
     MAX_PARAMS,
+    SPAWNERS,
     controllers_of,
+    embedded_costmap,
     read_yaml_file,
     ros2_file_params,
+    spawned_controllers,
+    spawner_words,
 )
 from launch_linter.frontends.record import (
     Command,
@@ -66,6 +70,7 @@ from launch_linter.frontends.ros2_run import (
     prefix_namespace,
 )
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
 from launch_linter.resolve.ros2_substitution import Call, Subs
@@ -120,21 +125,45 @@ class Ros2Loader(Ros2Runner):
         name = None if name_value is None else resolved_text(name_value)
         namespace, pending = self._namespace(action.namespace, scope, frame, where)
         known_namespace = None if pending else namespace
+        # A controller manager without a name reads its file by its default name.
+        section = (CONTROLLER_MANAGER_NAME if name is None and package == "controller_manager"
+                   and executable == "ros2_control_node" else name)
         params, unread, documents = self._node_params(action.parameters, scope, frame, where,
-                                                      name, known_namespace)
+                                                      section, known_namespace)
         for group in action.parameters:
             if isinstance(group, Params):
                 for key, subs in group.items:
                     if is_description_name(key.rsplit(".", 1)[-1]):
                         self._ros2_description(subs, scope, frame, where, name)
+        # SetParameter's parameters first: the node's own win over them.
         node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
-            executable or "", name, params, frame.condition,
+            executable or "", name, tuple(scope.parameters) + params, frame.condition,
             unread=unread, namespace=known_namespace, ros=2,
         )
         self.nodes.append(node)
+        costmap = embedded_costmap(node, documents, scope.parameters)
+        if costmap is not None:
+            self.nodes.append(costmap)
         if package == "controller_manager" and documents:
             self.nodes.extend(controllers_of(node, documents))
+        if package == "controller_manager" and executable in SPAWNERS \
+                and action.arguments is not None:
+            self._spawned(node, action, scope, frame)
+
+    def _spawned(self, spawner: NodeRecord, action: RunNode, scope: _Scope,
+                 frame: _Frame) -> None:
+        """The controllers a ``spawner`` loads from its ``--param-file``s."""
+        words = [resolved_text(self._resolve(item, scope, frame, action.where))
+                 for item in action.arguments or ()]
+        names, files, kind = spawner_words(words)
+        documents: list[object] = []
+        for path in files:
+            document, why = (None, "unresolved") if path is None else read_yaml_file(path)
+            if why is None:
+                documents.append(document)
+        if names and documents:
+            self.nodes.extend(spawned_controllers(spawner, names, kind, documents))
 
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,
@@ -209,7 +238,8 @@ class Ros2Loader(Ros2Runner):
                 None if pending else namespace)
             self.nodes.append(NodeRecord(
                 self._display(here.filename), component.where.line, component.where.column,
-                package_text, "", name, node_params, here.condition, plugin=plugin_text,
+                package_text, "", name, tuple(scope.parameters) + node_params, here.condition,
+                plugin=plugin_text,
                 unread=unread, namespace=None if pending else namespace, ros=2))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return

@@ -8,7 +8,7 @@ import os
 import shlex
 import typing
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.frontends.ros1 import LoadOptions
@@ -48,7 +48,8 @@ from launch_linter.model.launch import (
     UndeclaredUse,
     holds_directive,
 )
-from launch_linter.model.robot import DescriptionSource, NodeRecord
+from launch_linter.model.record import replace
+from launch_linter.model.robot import UNKNOWN_VALUE, DescriptionSource, NodeRecord
 from launch_linter.model.transform import (
     ALWAYS,
     Condition,
@@ -94,9 +95,13 @@ class _Scope:
     """The presence condition under which this scope was opened."""
     resolvers: dict[str, Ros2Scope] = field(default_factory=dict)
     """What substitutions see here, by the file being run: made once, not per value."""
+    parameters: list[tuple[str, str]] = field(default_factory=list)
+    """What ``SetParameter`` gives every node launched after it here (a value under an
+    unresolved condition is unknown)."""
 
     def copy(self, condition: Condition) -> _Scope:
-        return _Scope(dict(self.configs), dict(self.env), condition)
+        return _Scope(dict(self.configs), dict(self.env), condition,
+                      parameters=list(self.parameters))
 
 
 IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
@@ -358,9 +363,19 @@ class Ros2Runner:
 
     def _uses(self, action: RunNode | LoadComponents | Uses, scope: _Scope, frame: _Frame
               ) -> None:
-        """Resolve what the action performs, for the launch configurations it reads."""
+        """Resolve what the action performs, for the launch configurations it reads; a
+        ``SetParameter`` gives its parameter to the nodes launched after it."""
         for subs in action.uses:
             self._resolve(subs, scope, frame, action.where)
+        if isinstance(action, Uses) and action.parameter is not None:
+            name = resolved_text(self._resolve(action.parameter[0], scope, frame,
+                                               action.where))
+            value = resolved_text(self._resolve(action.parameter[1], scope, frame,
+                                                action.where))
+            if name is not None:
+                certain = value is not None and self._certain(scope, frame.condition)
+                scope.parameters.append((name, value if certain and value is not None
+                                         else UNKNOWN_VALUE))
 
     def _components(self, action: LoadComponents, scope: _Scope, frame: _Frame) -> None:
         self._uses(action, scope, frame)

@@ -188,6 +188,10 @@ class _Reader:
         # Any other action (<set_parameter>, <set_remap>, <log>, an extension's tag) still
         # performs its substitutions when it runs.
         uses = self.performed(entity)
+        if tag == "set_parameter":
+            name, value = self.subs(entity, "name"), self.subs(entity, "value")
+            if name is not None and value is not None:
+                return Uses(where, condition, uses, (name, value))
         return Uses(where, condition, uses) if uses or condition is not None else None
 
     def include(self, entity: Entity, where: Where, condition: Predicate | None

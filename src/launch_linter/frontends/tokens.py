@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import re
 import shlex
-from dataclasses import dataclass
 
+from launch_linter.model.record import MutableRecord
 from launch_linter.resolve.value import Hole, Value
 
 _OPEN, _CLOSE = "\ue000", "\ue001"
@@ -18,8 +18,7 @@ _SHLEX_SPECIAL = re.compile(r"[\"'\\]")
 _NO_HOLES: frozenset[int] = frozenset()
 
 
-@dataclass
-class Words:
+class Words(MutableRecord):
     """The argv words of one ``args`` value (treat as read-only)."""
 
     words: tuple[str, ...]
@@ -27,8 +26,22 @@ class Words:
     unresolved: frozenset[int]
     """Indices of words that contain a hole."""
     holes: tuple[Hole, ...]
-    quoting_error: str | None = None
+    quoting_error: str | None
     """Why ``shlex.split`` refuses the text (then it was split on whitespace instead)."""
+
+    __slots__ = ("words", "unresolved", "holes", "quoting_error")
+
+    def __init__(
+        self,
+        words: tuple[str, ...],
+        unresolved: frozenset[int],
+        holes: tuple[Hole, ...],
+        quoting_error: str | None = None,
+    ) -> None:
+        self.words = words
+        self.unresolved = unresolved
+        self.holes = holes
+        self.quoting_error = quoting_error
 
 
 def shell_words(text: str) -> tuple[list[str], str | None]:

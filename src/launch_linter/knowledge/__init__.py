@@ -14,8 +14,9 @@ from __future__ import annotations
 import json
 import os
 import re
-from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
+
+from launch_linter.model.record import Record, _set
 
 FORMAT = 1
 DATA_FILE = "tf_publishers.json"
@@ -33,8 +34,7 @@ class KnowledgeError(ValueError):
     """A knowledge file that does not follow the format; the message names the entry."""
 
 
-@dataclass(frozen=True)
-class Source:
+class Source(Record):
     """Where an entry's facts were read: the repository, package, file, branch or tag,
     commit and lines."""
 
@@ -45,9 +45,26 @@ class Source:
     commit: str
     lines: str
 
+    __slots__ = ("repository", "package", "file", "ref", "commit", "lines")
 
-@dataclass(frozen=True)
-class EdgeSpec:
+    def __init__(
+        self,
+        repository: str,
+        package: str,
+        file: str,
+        ref: str,
+        commit: str,
+        lines: str,
+    ) -> None:
+        _set(self, "repository", repository)
+        _set(self, "package", package)
+        _set(self, "file", file)
+        _set(self, "ref", ref)
+        _set(self, "commit", commit)
+        _set(self, "lines", lines)
+
+
+class EdgeSpec(Record):
     """One edge a publisher sends: parent and child as templates (``{param}`` replaced by
     the parameter's value), the conditions under which it does (``param`` true,
     ``!param`` false, ``a|b`` either true, ``a==b`` equal values), and its REP 105 role."""
@@ -57,9 +74,16 @@ class EdgeSpec:
     when: tuple[str, ...]
     role: str
 
+    __slots__ = ("parent", "child", "when", "role")
 
-@dataclass(frozen=True)
-class Prefix:
+    def __init__(self, parent: str, child: str, when: tuple[str, ...], role: str) -> None:
+        _set(self, "parent", parent)
+        _set(self, "child", child)
+        _set(self, "when", when)
+        _set(self, "role", role)
+
+
+class Prefix(Record):
     """A parameter that prefixes every published frame (``tf_frame_prefix``); when
     ``empty_means_namespace``, an empty prefix is the node's namespace."""
 
@@ -67,9 +91,15 @@ class Prefix:
     enabled_by: str | None
     empty_means_namespace: bool
 
+    __slots__ = ("param", "enabled_by", "empty_means_namespace")
 
-@dataclass(frozen=True)
-class Entry:
+    def __init__(self, param: str, enabled_by: str | None, empty_means_namespace: bool) -> None:
+        _set(self, "param", param)
+        _set(self, "enabled_by", enabled_by)
+        _set(self, "empty_means_namespace", empty_means_namespace)
+
+
+class Entry(Record):
     """What the knowledge base knows of one program."""
 
     id: str
@@ -96,6 +126,57 @@ class Entry:
     sources: tuple[Source, ...]
     origin: str
 
+    __slots__ = (
+        "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
+        "parameters", "publishes", "looks_up", "camera_frames", "strips_leading_slash",
+        "publishes_joint_states", "publishes_description", "parameters_elsewhere",
+        "unsure_defaults", "prefix", "sources", "origin",
+    )
+
+    def __init__(
+        self,
+        id: str,
+        kind: str,
+        ros: tuple[int, ...],
+        packages: tuple[str, ...],
+        executables: tuple[str, ...],
+        plugins: tuple[str, ...],
+        filenames: tuple[str, ...],
+        types: tuple[str, ...],
+        parameters: tuple[tuple[str, object], ...],
+        publishes: tuple[EdgeSpec, ...],
+        looks_up: tuple[str, ...],
+        camera_frames: tuple[str, ...],
+        strips_leading_slash: bool,
+        publishes_joint_states: bool,
+        publishes_description: bool,
+        parameters_elsewhere: str | None,
+        unsure_defaults: tuple[str, ...],
+        prefix: Prefix | None,
+        sources: tuple[Source, ...],
+        origin: str,
+    ) -> None:
+        _set(self, "id", id)
+        _set(self, "kind", kind)
+        _set(self, "ros", ros)
+        _set(self, "packages", packages)
+        _set(self, "executables", executables)
+        _set(self, "plugins", plugins)
+        _set(self, "filenames", filenames)
+        _set(self, "types", types)
+        _set(self, "parameters", parameters)
+        _set(self, "publishes", publishes)
+        _set(self, "looks_up", looks_up)
+        _set(self, "camera_frames", camera_frames)
+        _set(self, "strips_leading_slash", strips_leading_slash)
+        _set(self, "publishes_joint_states", publishes_joint_states)
+        _set(self, "publishes_description", publishes_description)
+        _set(self, "parameters_elsewhere", parameters_elsewhere)
+        _set(self, "unsure_defaults", unsure_defaults)
+        _set(self, "prefix", prefix)
+        _set(self, "sources", sources)
+        _set(self, "origin", origin)
+
     def default(self, name: str) -> object:
         for key, value in self.parameters:
             if key == name:
@@ -112,10 +193,17 @@ class KnowledgeBase:
 
     def __init__(self, entries: Sequence[Entry]) -> None:
         self.entries = tuple(entries)
+        # Every launched node is looked up (several times per node, by several rules): the
+        # node entries by package, in the base's order, so a lookup reads only those.
+        self._nodes: dict[str, list[Entry]] = {}
+        for entry in self.entries:
+            if entry.kind == "node":
+                for package in dict.fromkeys(entry.packages):
+                    self._nodes.setdefault(package, []).append(entry)
 
     def node(self, package: str, executable: str, ros: int | None = None) -> Entry | None:
         """The entry of a launched node, preferring the one of ``ros``."""
-        found = [e for e in self.entries if e.kind == "node" and e.names(package, executable)]
+        found = [e for e in self._nodes.get(package, ()) if e.names(package, executable)]
         return _of_version(found, ros)
 
     def plugin(self, kind: str, name: str, ros: int | None = None) -> Entry | None:

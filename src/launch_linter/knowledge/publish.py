@@ -4,9 +4,9 @@ parameters the launch files give it."""
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from launch_linter.knowledge import EdgeSpec, Entry
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 
 MAX_TEMPLATE_DEPTH = 4
@@ -15,14 +15,21 @@ _TRUE = ("true", "1", "yes", "on")
 _FALSE = ("false", "0", "no", "off", "")
 
 
-@dataclass(frozen=True)
-class PublishedEdge:
+class PublishedEdge(Record):
     """An edge a node publishes: frames None when unknown; ``spec`` is the entry's edge."""
 
     parent: str | None
     child: str | None
     role: str
     spec: EdgeSpec
+
+    __slots__ = ("parent", "child", "role", "spec")
+
+    def __init__(self, parent: str | None, child: str | None, role: str, spec: EdgeSpec) -> None:
+        _set(self, "parent", parent)
+        _set(self, "child", child)
+        _set(self, "role", role)
+        _set(self, "spec", spec)
 
     @property
     def signature(self) -> tuple[str, str] | None:

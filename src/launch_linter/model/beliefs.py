@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.model.diagnostic import Belief
+from launch_linter.model.record import Record, _set
 
 BELIEF_FORMAT = "launch-linter-beliefs/1"
 BELIEF_CLASSES = (
@@ -32,17 +32,30 @@ def _key(value: Any) -> tuple[str, ...] | str:
     raise BeliefFormatError(f"belief key must be a string or a list of strings, not {value!r}")
 
 
-@dataclass(frozen=True)
-class BeliefSet:
+class BeliefSet(Record):
     """Beliefs at or above ``min_z``; ``source`` names where they came from."""
 
     source: str
     min_z: float
     beliefs: tuple[Belief, ...]
-    p0: float = 0.9
-    _index: dict[str, dict[tuple[str, ...] | str, tuple[Belief, ...]]] = field(
-        default_factory=dict, init=False, repr=False, compare=False
-    )
+    p0: float
+    _index: dict[str, dict[tuple[str, ...] | str, tuple[Belief, ...]]]
+
+    __slots__ = ("source", "min_z", "beliefs", "p0", "_index")
+    _private = ("_index",)
+
+    def __init__(
+        self,
+        source: str,
+        min_z: float,
+        beliefs: tuple[Belief, ...],
+        p0: float = 0.9,
+    ) -> None:
+        _set(self, "source", source)
+        _set(self, "min_z", min_z)
+        _set(self, "beliefs", beliefs)
+        _set(self, "p0", p0)
+        _set(self, "_index", {})
 
     @staticmethod
     def empty(source: str = "none") -> BeliefSet:

@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from enum import Enum
+
+from launch_linter.model.record import OrderedRecord, Record, _set
 
 
 class Severity(str, Enum):
@@ -24,15 +25,20 @@ class Category(str, Enum):
     LAUNCH = "launch"
 
 
-@dataclass(frozen=True, order=True)
-class Location:
+class Location(OrderedRecord):
     path: str
     line: int
     column: int
 
+    __slots__ = ("path", "line", "column")
 
-@dataclass(frozen=True)
-class Problem:
+    def __init__(self, path: str, line: int, column: int) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+
+
+class Problem(Record):
     """What a front-end (or the suppression pass) noticed, before the engine stamps it.
 
     It names its rule by id only: the rule registry owns category and severity, so the
@@ -44,12 +50,31 @@ class Problem:
     line: int
     column: int
     message: str
-    node: str | None = None
-    related: tuple[Location, ...] = ()
+    node: str | None
+    related: tuple[Location, ...]
+
+    __slots__ = ("rule", "path", "line", "column", "message", "node", "related")
+
+    def __init__(
+        self,
+        rule: str,
+        path: str,
+        line: int,
+        column: int,
+        message: str,
+        node: str | None = None,
+        related: tuple[Location, ...] = (),
+    ) -> None:
+        _set(self, "rule", rule)
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "message", message)
+        _set(self, "node", node)
+        _set(self, "related", related)
 
 
-@dataclass(frozen=True)
-class Belief:
+class Belief(Record):
     """A mined MAY-Implied belief: ``if`` (signature or name) implies ``then``."""
 
     cls: str
@@ -58,6 +83,24 @@ class Belief:
     n: int
     e: int
     z: float
+
+    __slots__ = ("cls", "antecedent", "consequent", "n", "e", "z")
+
+    def __init__(
+        self,
+        cls: str,
+        antecedent: tuple[str, ...] | str,
+        consequent: tuple[str, ...] | str | None,
+        n: int,
+        e: int,
+        z: float,
+    ) -> None:
+        _set(self, "cls", cls)
+        _set(self, "antecedent", antecedent)
+        _set(self, "consequent", consequent)
+        _set(self, "n", n)
+        _set(self, "e", e)
+        _set(self, "z", z)
 
     def to_json(self) -> dict[str, object]:
         def enc(v: tuple[str, ...] | str | None) -> object:
@@ -81,8 +124,7 @@ class Applicability(str, Enum):
     UNSAFE = "unsafe"
 
 
-@dataclass(frozen=True)
-class TokenEdit:
+class TokenEdit(Record):
     """Replace the argument words ``tokens[start:end]`` with ``text`` ("" deletes them
     and the blank before them)."""
 
@@ -90,9 +132,15 @@ class TokenEdit:
     end: int
     text: str
 
+    __slots__ = ("start", "end", "text")
 
-@dataclass(frozen=True)
-class Edit:
+    def __init__(self, start: int, end: int, text: str) -> None:
+        _set(self, "start", start)
+        _set(self, "end", end)
+        _set(self, "text", text)
+
+
+class Edit(Record):
     """A replacement of the bytes ``[start, end)`` of the file ``path``.
 
     ``expected``: the text those bytes held when the edit was located (a fix is applied
@@ -102,14 +150,29 @@ class Edit:
     start: int
     end: int
     content: str
-    expected: str | None = None
+    expected: str | None
+
+    __slots__ = ("path", "start", "end", "content", "expected")
+
+    def __init__(
+        self,
+        path: str,
+        start: int,
+        end: int,
+        content: str,
+        expected: str | None = None,
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "start", start)
+        _set(self, "end", end)
+        _set(self, "content", content)
+        _set(self, "expected", expected)
 
     def to_json(self) -> dict:  # type: ignore[type-arg]
         return {"path": self.path, "start": self.start, "end": self.end, "content": self.content}
 
 
-@dataclass(frozen=True)
-class Fix:
+class Fix(Record):
     """How to fix a diagnostic: edits of the argument words ``tokens`` as written (what a
     rule knows), turned into byte ``edits`` of the file once it has been located there.
 
@@ -118,10 +181,28 @@ class Fix:
 
     applicability: Applicability
     message: str
-    tokens: tuple[str, ...] = ()
-    token_edits: tuple[TokenEdit, ...] = ()
-    edits: tuple[Edit, ...] = ()
-    safe_from_distro: str | None = None
+    tokens: tuple[str, ...]
+    token_edits: tuple[TokenEdit, ...]
+    edits: tuple[Edit, ...]
+    safe_from_distro: str | None
+
+    __slots__ = ("applicability", "message", "tokens", "token_edits", "edits", "safe_from_distro")
+
+    def __init__(
+        self,
+        applicability: Applicability,
+        message: str,
+        tokens: tuple[str, ...] = (),
+        token_edits: tuple[TokenEdit, ...] = (),
+        edits: tuple[Edit, ...] = (),
+        safe_from_distro: str | None = None,
+    ) -> None:
+        _set(self, "applicability", applicability)
+        _set(self, "message", message)
+        _set(self, "tokens", tokens)
+        _set(self, "token_edits", token_edits)
+        _set(self, "edits", edits)
+        _set(self, "safe_from_distro", safe_from_distro)
 
     def to_json(self) -> dict:  # type: ignore[type-arg]
         return {
@@ -131,8 +212,7 @@ class Fix:
         }
 
 
-@dataclass(frozen=True)
-class Diagnostic:
+class Diagnostic(Record):
     rule: str
     category: Category
     severity: Severity
@@ -140,10 +220,41 @@ class Diagnostic:
     line: int
     column: int
     message: str
-    node: str | None = None
-    related: tuple[Location, ...] = ()
-    belief: Belief | None = None
-    fix: Fix | None = None
+    node: str | None
+    related: tuple[Location, ...]
+    belief: Belief | None
+    fix: Fix | None
+
+    __slots__ = (
+        "rule", "category", "severity", "path", "line", "column", "message", "node", "related",
+        "belief", "fix",
+    )
+
+    def __init__(
+        self,
+        rule: str,
+        category: Category,
+        severity: Severity,
+        path: str,
+        line: int,
+        column: int,
+        message: str,
+        node: str | None = None,
+        related: tuple[Location, ...] = (),
+        belief: Belief | None = None,
+        fix: Fix | None = None,
+    ) -> None:
+        _set(self, "rule", rule)
+        _set(self, "category", category)
+        _set(self, "severity", severity)
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "message", message)
+        _set(self, "node", node)
+        _set(self, "related", related)
+        _set(self, "belief", belief)
+        _set(self, "fix", fix)
 
     @property
     def sort_key(self) -> tuple[str, int, int, str, str]:

@@ -6,6 +6,12 @@ env('RUN_TYPE') == 'simulation')`` and ``== 'uav'``; ``LaunchConfigurationEquals
 alternatives: at most one runs. This module reads such a test from the condition's text
 (never evaluating it) as (subject, constant, equal); texts it does not recognise give
 None, and then nothing is assumed.
+
+A condition on a value's truth is a test too: ``IfCondition(x)`` (``x`` true),
+``UnlessCondition(x)``, ``IfCondition(PythonExpression(['not ', x]))`` (``x`` false),
+``$(eval not arg('x'))``. Such a test has the constant :data:`TRUTH`, and it excludes an
+equality test of the same value with a boolean word of the other truth (or with a word
+that is not boolean: launch then refuses the truth test).
 """
 
 from __future__ import annotations
@@ -17,6 +23,10 @@ Test = typing.Tuple[str, str, bool]
 """(normalised subject, constant, True for ``==`` / False for ``!=``)."""
 
 MAX_TEXT = 500
+TRUTH = "\x00truth"
+"""The constant of a truth test: (subject, TRUTH, True) holds when the value is true."""
+_TRUE_WORDS = ("true", "1")
+_FALSE_WORDS = ("false", "0")
 _LAUNCH_EQUALS = re.compile(
     r"""LaunchConfiguration(Not)?Equals\(\s*(['"])(\w+)\2\s*,\s*(['"])(.*?)\4\s*\)""")
 _EVAL = re.compile(r"\$\(eval\s+(.*)\)", re.DOTALL)
@@ -30,7 +40,10 @@ _SUBJECT_FORMS = (
     (re.compile(r"""^(?:opt)?env\((['"])(\w+)\1(?:,.*)?\)$"""), "env:{}"),
     (re.compile(r"""^\$\((?:opt)?env\s+(\w+)(?:\s.*)?\)$"""), "env:{}"),
     (re.compile(r"""^LaunchConfiguration\((['"])(\w+)\1\)$"""), "{}"),
+    # nav2_common's LaunchConfigAsBool: a launch configuration read as a boolean.
+    (re.compile(r"""^LaunchConfigAsBool\((['"])(\w+)\1\)$"""), "{}"),
 )
+_NOT = re.compile(r"^not\s*(?:\((.*)\)|(.*))$", re.DOTALL)
 
 
 def equality_test(text: str) -> Test | None:
@@ -48,6 +61,29 @@ def equality_test(text: str) -> Test | None:
         if match:
             return _comparison(_unquote(match.group(1).strip()))
     return None
+
+
+def truth_test(text: str) -> Test | None:
+    """The truth test a condition's text makes (``x``, ``not x``) as ``(subject, TRUTH,
+    True when x must be true)``, or None when it is not one."""
+    if len(text) > MAX_TEXT:
+        return None
+    text = text.strip()
+    expression = None
+    if text.startswith("PythonExpression([") and text.endswith("])"):
+        expression = _joined(text[len("PythonExpression(["):-2])
+    else:
+        match = _EVAL.fullmatch(text)
+        if match:
+            expression = _unquote(match.group(1).strip())
+    if expression is None:
+        name = _subject(text)
+        return None if name is None else (name, TRUTH, True)
+    expression = expression.strip()
+    negated = _NOT.fullmatch(expression)
+    inner = expression if negated is None else (negated.group(1) or negated.group(2) or "")
+    name = _subject(inner.strip())
+    return None if name is None else (name, TRUTH, negated is None)
 
 
 def _joined(items: str) -> str:
@@ -110,8 +146,27 @@ def exclusive(first: Test, second: Test) -> bool:
     """Whether two tests of one subject can never both hold."""
     if first[0] != second[0]:
         return False
+    if first[1] == TRUTH or second[1] == TRUTH:
+        return _truth_excludes(first, second)
     if first[2] and second[2]:
         return first[1] != second[1]
     if first[2] != second[2]:
         return first[1] == second[1]
     return False
+
+
+def _truth_excludes(first: Test, second: Test) -> bool:
+    """Whether a truth test excludes another test of its subject: another truth test of
+    the other truth; ``== word`` where the word is boolean of the other truth or not
+    boolean at all (launch refuses to read it as a truth)."""
+    truth, other = (first, second) if first[1] == TRUTH else (second, first)
+    if other[1] == TRUTH:
+        return truth[2] != other[2]
+    if not other[2]:
+        return False
+    word = other[1].lower()
+    if word in _TRUE_WORDS:
+        return not truth[2]
+    if word in _FALSE_WORDS:
+        return truth[2]
+    return True

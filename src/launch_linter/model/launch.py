@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
 from enum import Enum
 
 from launch_linter.model.diagnostic import Problem
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint, RobotModel
 from launch_linter.model.transform import StaticTransform
 
@@ -19,22 +19,34 @@ class FileStatus(str, Enum):
     """The linter itself failed on this file (a bug to report); the other files are fine."""
 
 
-@dataclass(frozen=True)
-class FileRecord:
+class FileRecord(Record):
     """One input file and how reading it went."""
 
     path: str
     status: FileStatus
     transforms: int
 
+    __slots__ = ("path", "status", "transforms")
 
-@dataclass(frozen=True)
-class Comment:
+    def __init__(self, path: str, status: FileStatus, transforms: int) -> None:
+        _set(self, "path", path)
+        _set(self, "status", status)
+        _set(self, "transforms", transforms)
+
+
+class Comment(Record):
     """An XML comment (or YAML/Python comment) with the line it ends on."""
 
     path: str
     line: int
     text: str
+
+    __slots__ = ("path", "line", "text")
+
+    def __init__(self, path: str, line: int, text: str) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "text", text)
 
 
 DIRECTIVE_MARKER = "launch-linter:"
@@ -53,8 +65,7 @@ def holds_directive(comments: Iterable[tuple[int, str]]) -> bool:
     return any(DIRECTIVE_MARKER in text for _, text in comments)
 
 
-@dataclass(frozen=True)
-class UndeclaredUse:
+class UndeclaredUse(Record):
     """A ROS 2 launch configuration read without a default (``$(var x)``,
     ``LaunchConfiguration('x')``) that nothing in the tree declares, sets or passes: launch
     stops there with "launch configuration 'x' does not exist" unless something the linter
@@ -73,12 +84,38 @@ class UndeclaredUse:
     included_by: str | None
     """Another launch file that names the root: the root is (also) included, and its
     includer may pass the argument."""
-    similar: str | None = None
+    similar: str | None
     """A configuration the tree does declare with a close name (a likely misspelling)."""
 
+    __slots__ = (
+        "name", "path", "line", "column", "root", "conditional", "open_reason", "included_by",
+        "similar",
+    )
 
-@dataclass(frozen=True)
-class LaunchTree:
+    def __init__(
+        self,
+        name: str,
+        path: str,
+        line: int,
+        column: int,
+        root: str,
+        conditional: bool,
+        open_reason: str | None,
+        included_by: str | None,
+        similar: str | None = None,
+    ) -> None:
+        _set(self, "name", name)
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "root", root)
+        _set(self, "conditional", conditional)
+        _set(self, "open_reason", open_reason)
+        _set(self, "included_by", included_by)
+        _set(self, "similar", similar)
+
+
+class LaunchTree(Record):
     """Everything read from one root file, its includes included."""
 
     root: str
@@ -87,16 +124,49 @@ class LaunchTree:
     problems: tuple[Problem, ...]
     """What the front-end noticed (parse errors, roslaunch errors, unresolved values)."""
     files: tuple[str, ...]
-    comments: tuple[Comment, ...] = ()
-    element_lines: tuple[tuple[str, int], ...] = ()
-    descriptions: tuple[DescriptionSource, ...] = ()
+    comments: tuple[Comment, ...]
+    element_lines: tuple[tuple[str, int], ...]
+    descriptions: tuple[DescriptionSource, ...]
     """The ``robot_description`` sources the launch files give."""
-    nodes: tuple[NodeRecord, ...] = ()
+    nodes: tuple[NodeRecord, ...]
     """Launched nodes that tf rules need (robot_state_publisher, localization, odometry)."""
-    joints: tuple[RobotJoint, ...] = ()
+    joints: tuple[RobotJoint, ...]
     """URDF joints of the descriptions a robot_state_publisher of the tree publishes."""
-    robots: tuple[RobotModel, ...] = ()
+    robots: tuple[RobotModel, ...]
     """The expanded descriptions themselves (links, joints, xacro faults), one per source
     that a robot_state_publisher of the tree publishes, for the URDF structure rules."""
-    undeclared: tuple[UndeclaredUse, ...] = ()
+    undeclared: tuple[UndeclaredUse, ...]
     """ROS 2 launch configurations read where nothing declares, sets or passes them."""
+
+    __slots__ = (
+        "root", "status", "transforms", "problems", "files", "comments", "element_lines",
+        "descriptions", "nodes", "joints", "robots", "undeclared",
+    )
+
+    def __init__(
+        self,
+        root: str,
+        status: FileStatus,
+        transforms: tuple[StaticTransform, ...],
+        problems: tuple[Problem, ...],
+        files: tuple[str, ...],
+        comments: tuple[Comment, ...] = (),
+        element_lines: tuple[tuple[str, int], ...] = (),
+        descriptions: tuple[DescriptionSource, ...] = (),
+        nodes: tuple[NodeRecord, ...] = (),
+        joints: tuple[RobotJoint, ...] = (),
+        robots: tuple[RobotModel, ...] = (),
+        undeclared: tuple[UndeclaredUse, ...] = (),
+    ) -> None:
+        _set(self, "root", root)
+        _set(self, "status", status)
+        _set(self, "transforms", transforms)
+        _set(self, "problems", problems)
+        _set(self, "files", files)
+        _set(self, "comments", comments)
+        _set(self, "element_lines", element_lines)
+        _set(self, "descriptions", descriptions)
+        _set(self, "nodes", nodes)
+        _set(self, "joints", joints)
+        _set(self, "robots", robots)
+        _set(self, "undeclared", undeclared)

@@ -2,14 +2,26 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from enum import Enum
 
+from launch_linter.model.record import Record, _set
 from launch_linter.model.transform import Condition
 
 UNKNOWN_VALUE = "\x00unknown"
 """The value recorded for a node's frame parameter that the linter cannot resolve."""
 MOVABLE_JOINTS = ("revolute", "continuous", "prismatic", "floating", "planar")
+
+
+SIMULATOR_SPAWNERS = frozenset({
+    ("gazebo_ros", "spawn_model"), ("gazebo_ros", "spawn_entity.py"),
+    ("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"),
+})
+"""Nodes that give a robot description to a simulator, which then runs its plugins."""
+
+
+def spawns_into_simulator(node: NodeRecord) -> bool:
+    """Whether ``node`` spawns a robot description into Gazebo (classic or gz-sim)."""
+    return node.kind == "node" and (node.package, node.executable) in SIMULATOR_SPAWNERS
 
 
 class DescriptionKind(str, Enum):
@@ -23,8 +35,7 @@ class DescriptionKind(str, Enum):
     """URDF text written in the launch file itself."""
 
 
-@dataclass(frozen=True)
-class DescriptionSource:
+class DescriptionSource(Record):
     """A ``robot_description`` a launch file gives, where it does, and what it names.
 
     ``file`` is the absolute path of the description (None when unresolved, then
@@ -37,17 +48,47 @@ class DescriptionSource:
     column: int
     kind: DescriptionKind
     file: str | None
-    args: tuple[tuple[str, str | None], ...] = ()
-    condition: Condition = field(default_factory=Condition)
-    node: str | None = None
-    text: str | None = None
-    reason: str | None = None
-    open_args: bool = False
+    args: tuple[tuple[str, str | None], ...]
+    condition: Condition
+    node: str | None
+    text: str | None
+    reason: str | None
+    open_args: bool
     """True when a word of the xacro call is unresolved and may give more args."""
 
+    __slots__ = (
+        "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
+        "open_args",
+    )
 
-@dataclass(frozen=True)
-class RobotJoint:
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        column: int,
+        kind: DescriptionKind,
+        file: str | None,
+        args: tuple[tuple[str, str | None], ...] = (),
+        condition: Condition | None = None,
+        node: str | None = None,
+        text: str | None = None,
+        reason: str | None = None,
+        open_args: bool = False,
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "kind", kind)
+        _set(self, "file", file)
+        _set(self, "args", args)
+        _set(self, "condition", Condition() if condition is None else condition)
+        _set(self, "node", node)
+        _set(self, "text", text)
+        _set(self, "reason", reason)
+        _set(self, "open_args", open_args)
+
+
+class RobotJoint(Record):
     """One URDF joint as a tf edge: parent link -> child link, at the joint's file:line.
 
     ``dynamic`` is true for movable joints (robot_state_publisher publishes them from
@@ -67,9 +108,44 @@ class RobotJoint:
     translation: tuple[float, float, float] | None
     rpy: tuple[float, float, float] | None
     source: DescriptionSource
-    condition: Condition = field(default_factory=Condition)
-    unresolved: tuple[str, ...] = ()
-    reasons: tuple[str, ...] = ()
+    condition: Condition
+    unresolved: tuple[str, ...]
+    reasons: tuple[str, ...]
+
+    __slots__ = (
+        "path", "line", "column", "name", "joint_type", "parent", "child", "translation", "rpy",
+        "source", "condition", "unresolved", "reasons",
+    )
+
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        column: int,
+        name: str,
+        joint_type: str,
+        parent: str | None,
+        child: str | None,
+        translation: tuple[float, float, float] | None,
+        rpy: tuple[float, float, float] | None,
+        source: DescriptionSource,
+        condition: Condition | None = None,
+        unresolved: tuple[str, ...] = (),
+        reasons: tuple[str, ...] = (),
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "name", name)
+        _set(self, "joint_type", joint_type)
+        _set(self, "parent", parent)
+        _set(self, "child", child)
+        _set(self, "translation", translation)
+        _set(self, "rpy", rpy)
+        _set(self, "source", source)
+        _set(self, "condition", Condition() if condition is None else condition)
+        _set(self, "unresolved", unresolved)
+        _set(self, "reasons", reasons)
 
     @property
     def dynamic(self) -> bool:
@@ -82,8 +158,7 @@ class RobotJoint:
         return (self.parent, self.child)
 
 
-@dataclass(frozen=True)
-class NodeRecord:
+class NodeRecord(Record):
     """A launched node (or a Gazebo plugin, or a ros2_control controller): which program
     it runs, and the parameters it is given as ``(name, value)`` pairs (a value the linter
     cannot resolve is ``UNKNOWN_VALUE``; nested names joined with ``/`` in ROS 1 and
@@ -101,14 +176,49 @@ class NodeRecord:
     column: int
     package: str
     executable: str
-    name: str | None = None
-    params: tuple[tuple[str, str], ...] = ()
-    condition: Condition = field(default_factory=Condition)
-    kind: str = "node"
-    plugin: str | None = None
-    unread: tuple[str, ...] = ()
-    namespace: str | None = "/"
-    ros: int | None = None
+    name: str | None
+    params: tuple[tuple[str, str], ...]
+    condition: Condition
+    kind: str
+    plugin: str | None
+    unread: tuple[str, ...]
+    namespace: str | None
+    ros: int | None
+
+    __slots__ = (
+        "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
+        "plugin", "unread", "namespace", "ros",
+    )
+
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        column: int,
+        package: str,
+        executable: str,
+        name: str | None = None,
+        params: tuple[tuple[str, str], ...] = (),
+        condition: Condition | None = None,
+        kind: str = "node",
+        plugin: str | None = None,
+        unread: tuple[str, ...] = (),
+        namespace: str | None = "/",
+        ros: int | None = None,
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "package", package)
+        _set(self, "executable", executable)
+        _set(self, "name", name)
+        _set(self, "params", params)
+        _set(self, "condition", Condition() if condition is None else condition)
+        _set(self, "kind", kind)
+        _set(self, "plugin", plugin)
+        _set(self, "unread", unread)
+        _set(self, "namespace", namespace)
+        _set(self, "ros", ros)
 
     def given(self, name: str) -> str | None:
         """The value of the parameter ``name`` exactly as the node is given it (the last
@@ -126,8 +236,7 @@ class NodeRecord:
         return None
 
 
-@dataclass(frozen=True)
-class RobotElement:
+class RobotElement(Record):
     """A ``<link>`` or ``<joint>`` of an expanded description, by name, where it was written.
 
     ``name`` is None when the name could not be known; ``condition`` is the launch element's
@@ -139,7 +248,25 @@ class RobotElement:
     path: str
     line: int
     column: int
-    condition: Condition = field(default_factory=Condition)
+    condition: Condition
+
+    __slots__ = ("kind", "name", "path", "line", "column", "condition")
+
+    def __init__(
+        self,
+        kind: str,
+        name: str | None,
+        path: str,
+        line: int,
+        column: int,
+        condition: Condition | None = None,
+    ) -> None:
+        _set(self, "kind", kind)
+        _set(self, "name", name)
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "condition", Condition() if condition is None else condition)
 
 
 class FaultKind(str, Enum):
@@ -152,8 +279,7 @@ class FaultKind(str, Enum):
     """xacro goes on and drops content silently: a block parameter the macro never inserts."""
 
 
-@dataclass(frozen=True)
-class DescriptionFault:
+class DescriptionFault(Record):
     """A fault of the xacro source that xacro itself refuses or silently drops.
 
     ``proven`` is false when an earlier element could not be followed (an include not
@@ -164,12 +290,29 @@ class DescriptionFault:
     line: int
     kind: FaultKind
     message: str
-    proven: bool = True
-    conditions: tuple[str, ...] = ()
+    proven: bool
+    conditions: tuple[str, ...]
+
+    __slots__ = ("path", "line", "kind", "message", "proven", "conditions")
+
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        kind: FaultKind,
+        message: str,
+        proven: bool = True,
+        conditions: tuple[str, ...] = (),
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "kind", kind)
+        _set(self, "message", message)
+        _set(self, "proven", proven)
+        _set(self, "conditions", conditions)
 
 
-@dataclass(frozen=True)
-class RobotModel:
+class RobotModel(Record):
     """One expanded description as robot_state_publisher (urdfdom, then KDL) reads it.
 
     ``complete`` is true when nothing of it is unknown: the expansion followed every
@@ -181,11 +324,39 @@ class RobotModel:
     elements: tuple[RobotElement, ...]
     joints: tuple[RobotJoint, ...]
     complete: bool
-    faults: tuple[DescriptionFault, ...] = ()
-    defines_macros: bool = False
+    faults: tuple[DescriptionFault, ...]
+    defines_macros: bool
     """Whether the description's files define xacro macros (an empty robot made of a
     macros-only file)."""
-    standalone: bool = False
+    standalone: bool
+    plugins: tuple[NodeRecord, ...]
+    """Its ``<gazebo><plugin>`` blocks, as records of kind ``gazebo_plugin``: they run
+    only when a simulator is given the description (see :func:`spawns_into_simulator`)."""
+
+    __slots__ = (
+        "source", "elements", "joints", "complete", "faults", "defines_macros", "standalone",
+        "plugins",
+    )
+
+    def __init__(
+        self,
+        source: DescriptionSource,
+        elements: tuple[RobotElement, ...],
+        joints: tuple[RobotJoint, ...],
+        complete: bool,
+        faults: tuple[DescriptionFault, ...] = (),
+        defines_macros: bool = False,
+        standalone: bool = False,
+        plugins: tuple[NodeRecord, ...] = (),
+    ) -> None:
+        _set(self, "source", source)
+        _set(self, "elements", elements)
+        _set(self, "joints", joints)
+        _set(self, "complete", complete)
+        _set(self, "faults", faults)
+        _set(self, "defines_macros", defines_macros)
+        _set(self, "standalone", standalone)
+        _set(self, "plugins", plugins)
 
     @property
     def links(self) -> tuple[RobotElement, ...]:

@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
 from enum import Enum
 
-from launch_linter.model.equality import Test, equality_test, exclusive
+from launch_linter.model.equality import Test, equality_test, exclusive, truth_test
+from launch_linter.model.record import Record, _set
 
 NULL_TOLERANCE = 1e-9
 
@@ -89,12 +88,17 @@ class RotationKind(str, Enum):
     QUATERNION = "quaternion"
 
 
-@dataclass(frozen=True)
-class Rotation:
+class Rotation(Record):
     """A rotation as written: ``values`` is (yaw, pitch, roll) or (qx, qy, qz, qw)."""
 
     kind: RotationKind
     values: tuple[float, ...]
+
+    __slots__ = ("kind", "values")
+
+    def __init__(self, kind: RotationKind, values: tuple[float, ...]) -> None:
+        _set(self, "kind", kind)
+        _set(self, "values", values)
 
     @property
     def is_null(self) -> bool:
@@ -110,22 +114,31 @@ class Rotation:
         )
 
 
-@dataclass(frozen=True)
-class ConditionLiteral:
+class ConditionLiteral(Record):
     """One unresolved ``if``/``unless`` test: the attribute text and whether it must be true."""
 
     text: str
     positive: bool
 
+    __slots__ = ("text", "positive")
+
+    def __init__(self, text: str, positive: bool) -> None:
+        _set(self, "text", text)
+        _set(self, "positive", positive)
+
     def negated(self) -> ConditionLiteral:
         return ConditionLiteral(self.text, not self.positive)
 
 
-@dataclass(frozen=True)
-class Condition:
+class Condition(Record):
     """A presence condition: the conjunction of unresolved literals (empty means always)."""
 
-    literals: tuple[ConditionLiteral, ...] = ()
+    literals: tuple[ConditionLiteral, ...]
+
+    __slots__ = ("literals",)
+
+    def __init__(self, literals: tuple[ConditionLiteral, ...] = ()) -> None:
+        _set(self, "literals", literals)
 
     @property
     def always(self) -> bool:
@@ -139,7 +152,8 @@ class Condition:
     def excludes(self, other: Condition) -> bool:
         """True when the two conditions can never hold together: one requires a test the
         other negates, or both compare one value with constants that cannot both hold
-        (``== 'a'`` and ``== 'b'``; ``== 'a'`` and ``!= 'a'``)."""
+        (``== 'a'`` and ``== 'b'``; ``== 'a'`` and ``!= 'a'``), or one value's truth
+        both ways (``IfCondition(x)`` and ``IfCondition(PythonExpression(['not ', x]))``)."""
         if any(lit.negated() in other.literals for lit in self.literals):
             return True
         tests = [t for t in map(_test, other.literals) if t is not None]
@@ -164,21 +178,26 @@ ALWAYS = Condition()
 @functools.lru_cache(maxsize=4096)
 def _test(literal: ConditionLiteral) -> Test | None:
     """The comparison a literal requires (an ``unless`` negates it)."""
-    found = equality_test(literal.text)
+    found = equality_test(literal.text) or truth_test(literal.text)
     return None if found is None else (found[0], found[1], found[2] == literal.positive)
 
 
-@dataclass(frozen=True)
-class NumberIssue:
+class NumberIssue(Record):
     """A numeric argument that the program does not read as written."""
 
     index: int
     written: str
     read_as: float | None
 
+    __slots__ = ("index", "written", "read_as")
 
-@dataclass(frozen=True)
-class ArgIssue:
+    def __init__(self, index: int, written: str, read_as: float | None) -> None:
+        _set(self, "index", index)
+        _set(self, "written", written)
+        _set(self, "read_as", read_as)
+
+
+class ArgIssue(Record):
     """A mistake in how a ROS 2 transform is written, beyond counts and numbers: the facts,
     which the rule of ``kind`` words.
 
@@ -198,15 +217,32 @@ class ArgIssue:
     """
 
     kind: ArgIssueKind
-    words: tuple[str, ...] = ()
-    others: tuple[str, ...] = ()
-    values: tuple[float, ...] = ()
-    fatal: bool = True
-    split: bool = False
+    words: tuple[str, ...]
+    others: tuple[str, ...]
+    values: tuple[float, ...]
+    fatal: bool
+    split: bool
+
+    __slots__ = ("kind", "words", "others", "values", "fatal", "split")
+
+    def __init__(
+        self,
+        kind: ArgIssueKind,
+        words: tuple[str, ...] = (),
+        others: tuple[str, ...] = (),
+        values: tuple[float, ...] = (),
+        fatal: bool = True,
+        split: bool = False,
+    ) -> None:
+        _set(self, "kind", kind)
+        _set(self, "words", words)
+        _set(self, "others", others)
+        _set(self, "values", values)
+        _set(self, "fatal", fatal)
+        _set(self, "split", split)
 
 
-@dataclass(frozen=True)
-class StaticTransform:
+class StaticTransform(Record):
     """One ``static_transform_publisher`` node, resolved as far as statically possible.
 
     ``parent``/``child`` and the numbers are the developer's intended reading of the
@@ -232,14 +268,80 @@ class StaticTransform:
     rotation: Rotation | None
     period_ms: float | None
     form: ArgForm
-    arity_issue: str | None = None
-    number_issues: tuple[NumberIssue, ...] = ()
-    condition: Condition = dataclasses.field(default_factory=Condition)
-    unresolved: frozenset[Field] = frozenset()
-    unresolved_reasons: tuple[str, ...] = ()
-    ros_version: int = 1
-    launch_format: LaunchFormat = LaunchFormat.ROS1_XML
-    arg_issues: tuple[ArgIssue, ...] = ()
+    arity_issue: str | None
+    number_issues: tuple[NumberIssue, ...]
+    condition: Condition
+    unresolved: frozenset[Field]
+    unresolved_reasons: tuple[str, ...]
+    ros_version: int
+    launch_format: LaunchFormat
+    arg_issues: tuple[ArgIssue, ...]
+
+    __slots__ = (
+        "path", "line", "column", "root", "included_from", "name", "namespace", "package",
+        "executable", "args_written", "args", "tokens", "parent_written", "child_written",
+        "translation", "rotation", "period_ms", "form", "arity_issue", "number_issues", "condition",
+        "unresolved", "unresolved_reasons", "ros_version", "launch_format", "arg_issues",
+        "_signature",
+    )
+    _private = ("_signature",)
+    _signature: tuple[str, str] | None
+
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        column: int,
+        root: str,
+        included_from: tuple[str, int] | None,
+        name: str | None,
+        namespace: str,
+        package: str,
+        executable: str,
+        args_written: str,
+        args: str,
+        tokens: tuple[str, ...],
+        parent_written: str | None,
+        child_written: str | None,
+        translation: tuple[float, float, float] | None,
+        rotation: Rotation | None,
+        period_ms: float | None,
+        form: ArgForm,
+        arity_issue: str | None = None,
+        number_issues: tuple[NumberIssue, ...] = (),
+        condition: Condition | None = None,
+        unresolved: frozenset[Field] = frozenset(),
+        unresolved_reasons: tuple[str, ...] = (),
+        ros_version: int = 1,
+        launch_format: LaunchFormat = LaunchFormat.ROS1_XML,
+        arg_issues: tuple[ArgIssue, ...] = (),
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "root", root)
+        _set(self, "included_from", included_from)
+        _set(self, "name", name)
+        _set(self, "namespace", namespace)
+        _set(self, "package", package)
+        _set(self, "executable", executable)
+        _set(self, "args_written", args_written)
+        _set(self, "args", args)
+        _set(self, "tokens", tokens)
+        _set(self, "parent_written", parent_written)
+        _set(self, "child_written", child_written)
+        _set(self, "translation", translation)
+        _set(self, "rotation", rotation)
+        _set(self, "period_ms", period_ms)
+        _set(self, "form", form)
+        _set(self, "arity_issue", arity_issue)
+        _set(self, "number_issues", number_issues)
+        _set(self, "condition", Condition() if condition is None else condition)
+        _set(self, "unresolved", unresolved)
+        _set(self, "unresolved_reasons", unresolved_reasons)
+        _set(self, "ros_version", ros_version)
+        _set(self, "launch_format", launch_format)
+        _set(self, "arg_issues", arg_issues)
 
     def is_unresolved(self, *fields: Field) -> bool:
         """True when any of ``fields`` could not be resolved."""
@@ -265,17 +367,22 @@ class StaticTransform:
     def child(self) -> str | None:
         return normalise_frame(self.child_written)
 
-    @functools.cached_property
+    @property
     def signature(self) -> tuple[str, str] | None:
         """(parent, child) without leading slashes; None unless both are resolved. Most
-        rules ask, several times per transform: worked out once (kept in the instance's
-        dictionary, which a frozen dataclass has)."""
+        rules ask, several times per transform: worked out once (kept in a slot that is
+        not a field)."""
+        try:
+            return self._signature
+        except AttributeError:
+            pass
         parent, child = self.parent, self.child
-        if parent is None or child is None:
-            return None
-        if self.is_unresolved(Field.PARENT, Field.CHILD):
-            return None
-        return (parent, child)
+        signature = None
+        if parent is not None and child is not None and not self.is_unresolved(
+                Field.PARENT, Field.CHILD):
+            signature = (parent, child)
+        _set(self, "_signature", signature)
+        return signature
 
     @property
     def qualified_name(self) -> str | None:

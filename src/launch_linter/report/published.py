@@ -14,11 +14,11 @@ folder, or one whose includer gives other values) is published by that file itse
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Tuple, Union
 
 from launch_linter.engine import LintResult
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 
@@ -60,12 +60,17 @@ def entry_points(result: LintResult) -> list[int]:
     return found or list(range(len(result.trees)))
 
 
-@dataclass(frozen=True)
-class Published:
+class Published(Record):
     """An edge and the roots of the entry points whose trees have it."""
 
     edge: TfEdge
     entry_points: tuple[str, ...]
+
+    __slots__ = ("edge", "entry_points")
+
+    def __init__(self, edge: TfEdge, entry_points: tuple[str, ...]) -> None:
+        _set(self, "edge", edge)
+        _set(self, "entry_points", entry_points)
 
 
 def published(result: LintResult) -> list[Published]:

@@ -125,7 +125,32 @@ def evaluate(source: str, scope: EvalScope) -> str:
 _MARKERS: Final = (ast.expr_context, ast.boolop, ast.operator, ast.unaryop, ast.cmpop)
 
 
+# The same few expressions come back in file after file (``$(eval arg('x') == 'true')``):
+# each text's checked tree (the interpreter only reads it) or refusal, kept for short texts,
+# the whole memo dropped when full.
+_PARSED: dict[str, ast.Expression | str] = {}
+_PARSED_MAX_ENTRIES: Final = 1024
+_PARSED_MAX_CHARS: Final = 400
+
+
 def _parse(source: str) -> ast.Expression:
+    if len(source) > _PARSED_MAX_CHARS:
+        return _parse_uncached(source)
+    known = _PARSED.get(source)
+    if known is None:
+        try:
+            known = _parse_uncached(source)
+        except EvalError as exc:
+            known = exc.reason
+        if len(_PARSED) >= _PARSED_MAX_ENTRIES:
+            _PARSED.clear()
+        _PARSED[source] = known
+    if isinstance(known, str):
+        raise EvalError(known)
+    return known
+
+
+def _parse_uncached(source: str) -> ast.Expression:
     if len(source) > MAX_SOURCE_CHARS:
         raise EvalError(f"expression is longer than {MAX_SOURCE_CHARS:,} characters")
     if "__" in source:

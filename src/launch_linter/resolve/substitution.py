@@ -12,10 +12,10 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from typing import Optional, Tuple
 
 from launch_linter.model.budget import Budget
+from launch_linter.model.record import MutableRecord
 from launch_linter.resolve.value import Hole, Part, Value, is_resolved, join, resolved_text
 
 VALID_COMMANDS = ("find", "env", "optenv", "dirname", "anon", "arg")
@@ -29,8 +29,7 @@ class SubstitutionError(Exception):
     """roslaunch refuses this value; the message is close to roslaunch's own."""
 
 
-@dataclass
-class SubstitutionScope:
+class SubstitutionScope(MutableRecord):
     """What a substitution can see at one place of a launch file (treat as read-only).
 
     ``missing_arg`` is called with the name of an arg that is not set at all and returns
@@ -42,9 +41,29 @@ class SubstitutionScope:
     find: Callable[[str], str | None]
     anon: Callable[[str], str]
     filename: str
-    missing_arg: Callable[[str], str] | None = None
-    budget: Budget | None = None
+    missing_arg: Callable[[str], str] | None
+    budget: Budget | None
     """The root file's work budget, charged before a value is built."""
+
+    __slots__ = ("args", "env", "find", "anon", "filename", "missing_arg", "budget")
+
+    def __init__(
+        self,
+        args: Mapping[str, Value],
+        env: Mapping[str, str],
+        find: Callable[[str], str | None],
+        anon: Callable[[str], str],
+        filename: str,
+        missing_arg: Callable[[str], str] | None = None,
+        budget: Budget | None = None,
+    ) -> None:
+        self.args = args
+        self.env = env
+        self.find = find
+        self.anon = anon
+        self.filename = filename
+        self.missing_arg = missing_arg
+        self.budget = budget
 
 
 _SPECIAL = re.compile(r"[$()]")

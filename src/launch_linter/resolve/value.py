@@ -2,25 +2,30 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import re
 from typing import Tuple, Union
+
+from launch_linter.model.record import Record, _set
 
 MAX_REASON = 300
 """Longest reason kept in a hole."""
 
 
-@dataclass(frozen=True)
-class Hole:
+class Hole(Record):
     """An unresolved piece of text: the substitution as written and why it is unknown."""
 
     text: str
     reason: str
 
-    def __post_init__(self) -> None:
+    __slots__ = ("text", "reason")
+
+    def __init__(self, text: str, reason: str) -> None:
+        _set(self, "text", text)
         # A reason quotes the reasons of the values it was made from: values that refer to
         # each other would double it at each level.
-        if len(self.reason) > MAX_REASON:
-            object.__setattr__(self, "reason", self.reason[: MAX_REASON - 3] + "...")
+        if len(reason) > MAX_REASON:
+            reason = reason[: MAX_REASON - 3] + "..."
+        _set(self, "reason", reason)
 
 
 Part = Union[str, Hole]
@@ -77,6 +82,10 @@ def holes(value: Value) -> tuple[Hole, ...]:
 
 
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
+_MARK = re.compile(r"""[\\'"()\[\]{}:;,]""")
+"""The characters :func:`_expression_end` acts on; it jumps over the rest."""
+_QUOTED_MARK = re.compile(r"""[\\'"]""")
+"""The same inside quotes."""
 
 
 def _expression_end(text: str, start: int) -> int:
@@ -87,7 +96,11 @@ def _expression_end(text: str, start: int) -> int:
     quote = ""
     bracketed = False
     index = start
-    while index < len(text):
+    while True:
+        found = (_QUOTED_MARK if quote else _MARK).search(text, index)
+        if found is None:
+            return -1
+        index = found.start()
         char = text[index]
         if quote:
             if char == "\\":
@@ -106,7 +119,6 @@ def _expression_end(text: str, start: int) -> int:
         elif not closing and char in ";,":
             return -1  # several reasons, or words
         index += 1
-    return -1
 
 
 def blocker(hole: Hole) -> tuple[str, str]:

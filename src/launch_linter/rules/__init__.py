@@ -1,127 +1,157 @@
-"""The rule registry: every rule module, in the order of the rules table."""
+"""The rule registry: every rule module, in the order of the rules table (``_catalog``)."""
 
 from __future__ import annotations
 
-from launch_linter.rules import (
-    bad_arity,
-    bad_number,
-    bad_quaternion,
-    component_default_frames,
-    conflicting_transform,
-    dup_name,
-    dup_sig,
-    duplicate_publisher,
-    frame_authority,
-    frame_param_slash,
-    frame_without_publisher,
-    int_suffix,
-    leading_slash,
-    multiple_parents,
-    name_implication,
-    name_null_disp,
-    name_null_rot,
-    ned_transform,
-    node_second_parent,
-    optical_frame_rotation,
-    parse_error,
-    py_arguments_single_string,
-    quaternion_order,
-    rep105_order,
-    reversed_name,
-    robot_frame_collision,
-    ros2_bad_flag,
-    ros2_positional_args,
-    ros2_removed_keyword,
-    ros2_schema,
-    ros2_undeclared_arg,
-    roslaunch_error,
-    rot_degrees,
-    rounded_pi,
-    self_transform,
-    sensor_null,
-    sig_implication,
-    sig_null_disp,
-    sig_null_rot,
-    tf_cycle,
-    unresolved,
-    unused_suppression,
-    urdf_duplicate_name,
-    urdf_empty_robot,
-    urdf_missing_link,
-    urdf_root,
-    xacro_error,
-    xacro_unused_block,
-)
+from types import ModuleType
+from typing import TYPE_CHECKING, Any
+
 from launch_linter.rules._api import Rule, RuleContext, rule_from_module
+from launch_linter.rules._catalog import RULE_IDS
 
-RULE_MODULES = (
-    self_transform,
-    dup_name,
-    dup_sig,
-    reversed_name,
-    rot_degrees,
-    int_suffix,
-    ned_transform,
-    sensor_null,
-    sig_implication,
-    name_implication,
-    sig_null_disp,
-    name_null_disp,
-    sig_null_rot,
-    name_null_rot,
-    bad_arity,
-    bad_number,
-    bad_quaternion,
-    leading_slash,
-    multiple_parents,
-    tf_cycle,
-    parse_error,
-    roslaunch_error,
-    unresolved,
-    unused_suppression,
-    ros2_positional_args,
-    ros2_bad_flag,
-    ros2_removed_keyword,
-    py_arguments_single_string,
-    component_default_frames,
-    conflicting_transform,
-    optical_frame_rotation,
-    frame_authority,
-    duplicate_publisher,
-    node_second_parent,
-    frame_param_slash,
-    frame_without_publisher,
-    robot_frame_collision,
-    rep105_order,
-    quaternion_order,
-    ros2_schema,
-    urdf_root,
-    urdf_duplicate_name,
-    urdf_missing_link,
-    urdf_empty_robot,
-    xacro_error,
-    xacro_unused_block,
-    rounded_pi,
-    ros2_undeclared_arg,
-)
+if TYPE_CHECKING:
+    RULE_MODULES: tuple[ModuleType, ...]
+    """The rule modules, in the rules table's order (``_catalog``)."""
+    RULES: tuple[Rule, ...]
+    RULES_BY_ID: dict[str, Rule]
 
-RULES: tuple[Rule, ...] = tuple(rule_from_module(m) for m in RULE_MODULES)
-RULES_BY_ID: dict[str, Rule] = {r.id: r for r in RULES}
+_LOADED = ("RULE_MODULES", "RULES", "RULES_BY_ID")
+
+
+def _load() -> None:
+    # The imports written out: the standalone linter's embedding follows what it reads.
+    from launch_linter.rules import (
+        bad_arity,
+        bad_number,
+        bad_quaternion,
+        camera_frame_not_optical,
+        component_default_frames,
+        conflicting_transform,
+        dup_name,
+        dup_sig,
+        duplicate_publisher,
+        frame_authority,
+        frame_param_slash,
+        frame_without_publisher,
+        int_suffix,
+        leading_slash,
+        multiple_parents,
+        name_implication,
+        name_null_disp,
+        name_null_rot,
+        ned_transform,
+        node_second_parent,
+        optical_frame_rotation,
+        parse_error,
+        py_arguments_single_string,
+        quaternion_order,
+        rep105_order,
+        reversed_name,
+        robot_frame_collision,
+        ros2_bad_flag,
+        ros2_positional_args,
+        ros2_removed_keyword,
+        ros2_schema,
+        ros2_undeclared_arg,
+        roslaunch_error,
+        rot_degrees,
+        rounded_pi,
+        self_transform,
+        sensor_null,
+        sig_implication,
+        sig_null_disp,
+        sig_null_rot,
+        sim_time_mismatch,
+        tf_cycle,
+        unresolved,
+        unused_suppression,
+        urdf_duplicate_name,
+        urdf_empty_robot,
+        urdf_missing_link,
+        urdf_root,
+        xacro_error,
+        xacro_unused_block,
+    )
+
+    modules = {module.ID: module for module in (
+        bad_arity,
+        bad_number,
+        bad_quaternion,
+        camera_frame_not_optical,
+        component_default_frames,
+        conflicting_transform,
+        dup_name,
+        dup_sig,
+        duplicate_publisher,
+        frame_authority,
+        frame_param_slash,
+        frame_without_publisher,
+        int_suffix,
+        leading_slash,
+        multiple_parents,
+        name_implication,
+        name_null_disp,
+        name_null_rot,
+        ned_transform,
+        node_second_parent,
+        optical_frame_rotation,
+        parse_error,
+        py_arguments_single_string,
+        quaternion_order,
+        rep105_order,
+        reversed_name,
+        robot_frame_collision,
+        ros2_bad_flag,
+        ros2_positional_args,
+        ros2_removed_keyword,
+        ros2_schema,
+        ros2_undeclared_arg,
+        roslaunch_error,
+        rot_degrees,
+        rounded_pi,
+        self_transform,
+        sensor_null,
+        sig_implication,
+        sig_null_disp,
+        sig_null_rot,
+        sim_time_mismatch,
+        tf_cycle,
+        unresolved,
+        unused_suppression,
+        urdf_duplicate_name,
+        urdf_empty_robot,
+        urdf_missing_link,
+        urdf_root,
+        xacro_error,
+        xacro_unused_block,
+    )}
+    ordered = tuple(modules[rule_id] for rule_id in RULE_IDS)
+    rules = tuple(rule_from_module(module) for module in ordered)
+    globals().update(RULE_MODULES=ordered, RULES=rules, RULES_BY_ID={r.id: r for r in rules})
+
+
+def __getattr__(name: str) -> Any:
+    """The rules, their modules imported on first use: a run answered by the results
+    cache runs no rule (``_catalog`` gives what it needs: the ids and categories)."""
+    if name in _LOADED:
+        _load()
+        return globals()[name]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def rules_for_profile(profile: str) -> tuple[Rule, ...]:
     """The rules as a profile sees them: ``study`` gives each the study's severity and
     leaves out the rules that cannot fire without a target distribution."""
+    rules: tuple[Rule, ...] = __getattr__("RULES")
     if profile != "study":
-        return RULES
-    from dataclasses import replace
-
+        return rules
+    from launch_linter.model.record import replace
     from launch_linter.rules._profiles import STUDY_EXCLUDED, study_severity
 
     return tuple(
         replace(r, severity=study_severity(r.id, r.severity))
-        for r in RULES
+        for r in rules
         if r.id not in STUDY_EXCLUDED
     )
+
 
 __all__ = ["RULES", "RULES_BY_ID", "Rule", "RuleContext", "rules_for_profile"]

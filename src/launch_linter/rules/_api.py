@@ -5,7 +5,6 @@ from __future__ import annotations
 import itertools
 import typing
 from collections.abc import Iterable
-from dataclasses import dataclass, field
 from types import ModuleType
 from typing import Any, Callable, TypeVar
 
@@ -22,27 +21,43 @@ from launch_linter.model.diagnostic import (
     Severity,
 )
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.transform import StaticTransform
 
 T = TypeVar("T")
 
 
-@dataclass(frozen=True)
-class RuleContext:
+class RuleContext(Record):
     """Everything a rule may look at: one launch tree and the selected beliefs."""
 
     tree: LaunchTree
-    beliefs: BeliefSet = field(default_factory=BeliefSet.empty)
-    profile: str = "default"
+    beliefs: BeliefSet
+    profile: str
     """``default``, or ``study``: the study's checks and severities (see docs/severity.md)."""
-    distro: str | None = None
+    distro: str | None
     """The target ROS distribution (lower case), None when unknown (see docs/severity.md)."""
-    knowledge: KnowledgeBase = field(default_factory=bundled)
+    knowledge: KnowledgeBase
     """The tf publishers and frame consumers known (bundled, extended by the config)."""
-    _shared: dict[Callable[[Any], Any], Any] = field(
-        default_factory=dict, init=False, repr=False, compare=False
-    )
+    _shared: dict[Callable[[Any], Any], Any]
     """What ``shared`` worked out for this tree, by the function that works it out."""
+
+    __slots__ = ("tree", "beliefs", "profile", "distro", "knowledge", "_shared")
+    _private = ("_shared",)
+
+    def __init__(
+        self,
+        tree: LaunchTree,
+        beliefs: BeliefSet | None = None,
+        profile: str = "default",
+        distro: str | None = None,
+        knowledge: KnowledgeBase | None = None,
+    ) -> None:
+        _set(self, "tree", tree)
+        _set(self, "beliefs", BeliefSet.empty() if beliefs is None else beliefs)
+        _set(self, "profile", profile)
+        _set(self, "distro", distro)
+        _set(self, "knowledge", bundled() if knowledge is None else knowledge)
+        _set(self, "_shared", {})
 
     @property
     def study(self) -> bool:
@@ -67,8 +82,7 @@ class RuleContext:
             return value
 
 
-@dataclass(frozen=True)
-class Finding:
+class Finding(Record):
     """What a rule reports: where, what, and on what evidence; never which rule or category.
 
     The engine stamps the rule's id, category and severity from the registry. ``severity``
@@ -80,27 +94,72 @@ class Finding:
     line: int
     column: int
     message: str
-    node: str | None = None
-    related: tuple[Location, ...] = ()
-    belief: Belief | None = None
-    severity: Severity | None = None
-    fix: Fix | None = None
+    node: str | None
+    related: tuple[Location, ...]
+    belief: Belief | None
+    severity: Severity | None
+    fix: Fix | None
     """Word edits that fix it (see ``rules._fixes``); the engine locates them in the file."""
+
+    __slots__ = (
+        "path", "line", "column", "message", "node", "related", "belief", "severity", "fix",
+    )
+
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        column: int,
+        message: str,
+        node: str | None = None,
+        related: tuple[Location, ...] = (),
+        belief: Belief | None = None,
+        severity: Severity | None = None,
+        fix: Fix | None = None,
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "message", message)
+        _set(self, "node", node)
+        _set(self, "related", related)
+        _set(self, "belief", belief)
+        _set(self, "severity", severity)
+        _set(self, "fix", fix)
 
 
 Check = Callable[[RuleContext], typing.Iterable[Finding]]
 
 
-@dataclass(frozen=True)
-class Rule:
+class Rule(Record):
     id: str
     category: Category
     severity: Severity
     summary: str
     doc: str
     check: Check
-    fix: Applicability | None = None
+    fix: Applicability | None
     """The kind of fix the rule offers (its module's ``FIX``), None for none."""
+
+    __slots__ = ("id", "category", "severity", "summary", "doc", "check", "fix")
+
+    def __init__(
+        self,
+        id: str,
+        category: Category,
+        severity: Severity,
+        summary: str,
+        doc: str,
+        check: Check,
+        fix: Applicability | None = None,
+    ) -> None:
+        _set(self, "id", id)
+        _set(self, "category", category)
+        _set(self, "severity", severity)
+        _set(self, "summary", summary)
+        _set(self, "doc", doc)
+        _set(self, "check", check)
+        _set(self, "fix", fix)
 
     def diagnostic(self, finding: Finding, override: Severity | None = None) -> Diagnostic:
         """``finding`` stamped with this rule's metadata; ``override`` (configuration or

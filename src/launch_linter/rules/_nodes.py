@@ -6,12 +6,12 @@ publishes ``/joint_states`` (without which robot_state_publisher sends no movabl
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from launch_linter.knowledge import Entry, KnowledgeBase
 from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
 
@@ -22,8 +22,7 @@ JOINT_STATE_CONTROLLERS = ("joint_state_broadcaster/JointStateBroadcaster",
                            "joint_state_controller/JointStateController")
 
 
-@dataclass(frozen=True)
-class NodeEdge:
+class NodeEdge(Record):
     """An edge a launched node publishes at run time."""
 
     parent: str
@@ -31,9 +30,27 @@ class NodeEdge:
     role: str
     node: NodeRecord
     entry: Entry
-    assumed: bool = False
+    assumed: bool
     """The edge rests on defaults that an unread parameter file of the node may change:
     enough for a warning measured on real files, never for an error."""
+
+    __slots__ = ("parent", "child", "role", "node", "entry", "assumed")
+
+    def __init__(
+        self,
+        parent: str,
+        child: str,
+        role: str,
+        node: NodeRecord,
+        entry: Entry,
+        assumed: bool = False,
+    ) -> None:
+        _set(self, "parent", parent)
+        _set(self, "child", child)
+        _set(self, "role", role)
+        _set(self, "node", node)
+        _set(self, "entry", entry)
+        _set(self, "assumed", assumed)
 
     @property
     def location(self) -> Location:
@@ -41,11 +58,11 @@ class NodeEdge:
 
     def describe(self) -> str:
         shown = self.node.plugin or f"{self.node.package}/{self.node.executable}"
-        return f"node {shown} ({self.node.path}:{self.node.line})"
+        what = "Gazebo plugin" if self.node.kind == "gazebo_plugin" else "node"
+        return f"{what} {shown} ({self.node.path}:{self.node.line})"
 
 
-@dataclass(frozen=True)
-class Lookup:
+class Lookup(Record):
     """A frame a node looks up by a parameter."""
 
     frame: str
@@ -53,9 +70,16 @@ class Lookup:
     node: NodeRecord
     entry: Entry
 
+    __slots__ = ("frame", "param", "node", "entry")
 
-@dataclass(frozen=True)
-class NodeView:
+    def __init__(self, frame: str, param: str, node: NodeRecord, entry: Entry) -> None:
+        _set(self, "frame", frame)
+        _set(self, "param", param)
+        _set(self, "node", node)
+        _set(self, "entry", entry)
+
+
+class NodeView(Record):
     edges: tuple[NodeEdge, ...]
     lookups: tuple[Lookup, ...]
     cameras: tuple[Lookup, ...]
@@ -65,6 +89,24 @@ class NodeView:
     """Known nodes whose edges the linter cannot work out (parameters not read)."""
     joint_states: bool
     """Whether a node the knowledge base knows publishes ``/joint_states``."""
+
+    __slots__ = ("edges", "lookups", "cameras", "unknown", "unsure", "joint_states")
+
+    def __init__(
+        self,
+        edges: tuple[NodeEdge, ...],
+        lookups: tuple[Lookup, ...],
+        cameras: tuple[Lookup, ...],
+        unknown: tuple[NodeRecord, ...],
+        unsure: tuple[NodeRecord, ...],
+        joint_states: bool,
+    ) -> None:
+        _set(self, "edges", edges)
+        _set(self, "lookups", lookups)
+        _set(self, "cameras", cameras)
+        _set(self, "unknown", unknown)
+        _set(self, "unsure", unsure)
+        _set(self, "joint_states", joint_states)
 
     @property
     def open_because(self) -> NodeRecord | None:
@@ -88,9 +130,16 @@ def _view(context: RuleContext) -> NodeView:
     unknown: list[NodeRecord] = []
     unsure: list[NodeRecord] = []
     joint_states = False
+    controllers: set[tuple[str | None, str | None]] = set()
     for node in context.tree.nodes:
         if node.package in STATIC_PUBLISHERS and node.kind == "node":
             continue
+        if node.kind == "controller":
+            # One controller given both in the manager's file and by a spawner's
+            # --param-file is one controller.
+            if (node.name, node.namespace) in controllers:
+                continue
+            controllers.add((node.name, node.namespace))
         if node.kind == "controller" and node.plugin in JOINT_STATE_CONTROLLERS:
             joint_states = True
             continue
@@ -126,12 +175,10 @@ __all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of", "view_of"]
 
 def rivals(a: NodeEdge, b: NodeEdge) -> bool:
     """Whether two node edges come from two publishers that run together: not one launch
-    element included twice (that is ``dup_name``'s), not under exclusive conditions, and
-    not one program under two different conditions (the usual alternatives, such as
-    nav2's composed and separate amcl, whose conditions the linter may not relate)."""
-    if a.location == b.location or a.node.condition.excludes(b.node.condition):
-        return False
-    return a.entry.id != b.entry.id or a.node.condition == b.node.condition
+    element included twice (that is ``dup_name``'s), not under exclusive conditions
+    (nav2's composed and separate amcl: ``IfCondition(x)`` and ``IfCondition(
+    PythonExpression(['not ', x]))``)."""
+    return a.location != b.location and not a.node.condition.excludes(b.node.condition)
 
 
 def finding_at_node(node: NodeRecord, message: str,

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import math
 import typing
-from dataclasses import dataclass
 
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext
@@ -44,8 +44,7 @@ def same_rotation(a: Quaternion, b: Quaternion, tolerance: float = 1e-4) -> bool
     return dot >= 1.0 - tolerance
 
 
-@dataclass(frozen=True)
-class Edge:
+class Edge(Record):
     """One parent -> child edge of the tf tree and where it comes from."""
 
     parent: str
@@ -54,8 +53,32 @@ class Edge:
     rotation: Quaternion | None
     condition: Condition
     location: Location
-    transform: StaticTransform | None = None
-    joint: RobotJoint | None = None
+    transform: StaticTransform | None
+    joint: RobotJoint | None
+
+    __slots__ = (
+        "parent", "child", "translation", "rotation", "condition", "location", "transform", "joint",
+    )
+
+    def __init__(
+        self,
+        parent: str,
+        child: str,
+        translation: tuple[float, float, float] | None,
+        rotation: Quaternion | None,
+        condition: Condition,
+        location: Location,
+        transform: StaticTransform | None = None,
+        joint: RobotJoint | None = None,
+    ) -> None:
+        _set(self, "parent", parent)
+        _set(self, "child", child)
+        _set(self, "translation", translation)
+        _set(self, "rotation", rotation)
+        _set(self, "condition", condition)
+        _set(self, "location", location)
+        _set(self, "transform", transform)
+        _set(self, "joint", joint)
 
     @property
     def kind(self) -> str:

@@ -48,9 +48,9 @@ not seen publishing anything.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import replace
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import replace
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of, rivals
 from launch_linter.rules._tree import edges_of, finding_on

@@ -43,9 +43,9 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import Record, _set
 from launch_linter.model.transform import Field, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, finding_at, transforms_by_file
 
@@ -61,11 +61,22 @@ _SYNTHETIC_STEM = "_anon"
 MAX_LISTED = 6
 
 
-@dataclass(frozen=True)
-class _Kind:
+class _Kind(Record):
     label: str
     field: Field
     value: Callable[[StaticTransform], str | None]
+
+    __slots__ = ("label", "field", "value")
+
+    def __init__(
+        self,
+        label: str,
+        field: Field,
+        value: Callable[[StaticTransform], str | None],
+    ) -> None:
+        _set(self, "label", label)
+        _set(self, "field", field)
+        _set(self, "value", value)
 
 
 KINDS = (

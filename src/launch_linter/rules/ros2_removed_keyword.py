@@ -44,10 +44,10 @@ def generate_launch_description():
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import replace
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.distro import LEGACY_KEYWORDS_OK, uses_flags
+from launch_linter.model.record import replace
 from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 

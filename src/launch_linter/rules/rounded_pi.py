@@ -42,9 +42,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from dataclasses import replace
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import replace
 from launch_linter.model.transform import RotationKind
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._tree import Edge, edges_of, finding_on

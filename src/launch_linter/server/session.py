@@ -15,13 +15,14 @@ from __future__ import annotations
 import argparse
 import os
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from launch_linter.commands import check as check_command
 from launch_linter.commands.options import lint_command_paths, lint_options, load_config
 from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
 from launch_linter.model.diagnostic import Diagnostic
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.transform import normalise_frame
 from launch_linter.resolve.xml_safe import unsaved_texts
 from launch_linter.workspace.discovery import (

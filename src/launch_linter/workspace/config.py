@@ -14,12 +14,12 @@ import importlib
 import math
 import os
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
 from typing import Any
 
 from launch_linter.model.diagnostic import Severity
+from launch_linter.model.record import Record, _set
 from launch_linter.resolve.xml_safe import read_regular_file
-from launch_linter.rules import RULES, RULES_BY_ID
+from launch_linter.rules._catalog import CATALOG, CATEGORY_NAMES, CATEGORY_OF
 from launch_linter.suppressions import PathIgnore
 from launch_linter.workspace.toml_fallback import NoTomlParser, loads_without_parser
 
@@ -54,42 +54,89 @@ class ConfigError(ValueError):
     """The configuration file cannot be used; the message names the file and the key."""
 
 
-@dataclass(frozen=True)
-class Config:
+class Config(Record):
     """What a configuration file sets; None (or empty) where it sets nothing."""
 
-    path: str | None = None
-    select: tuple[str, ...] | None = None
-    ignore: tuple[str, ...] | None = None
-    severity: dict[str, Severity] = field(default_factory=dict)
-    min_z: float | None = None
-    beliefs: str | None = None
-    args: dict[str, str] = field(default_factory=dict)
-    package_path: tuple[str, ...] | None = None
-    env: dict[str, str] = field(default_factory=dict)
-    per_path_ignores: tuple[PathIgnore, ...] = ()
-    fail_on: str | None = None
-    profile: str | None = None
+    path: str | None
+    select: tuple[str, ...] | None
+    ignore: tuple[str, ...] | None
+    severity: dict[str, Severity]
+    min_z: float | None
+    beliefs: str | None
+    args: dict[str, str]
+    package_path: tuple[str, ...] | None
+    env: dict[str, str]
+    per_path_ignores: tuple[PathIgnore, ...]
+    fail_on: str | None
+    profile: str | None
     """``default`` or ``study`` (docs/severity.md)."""
-    exclude: tuple[str, ...] | None = None
-    extend_exclude: tuple[str, ...] = ()
-    respect_gitignore: bool | None = None
-    ros: int | None = None
-    ros_distro: str | None = None
-    cache_dir: str | None = None
+    exclude: tuple[str, ...] | None
+    extend_exclude: tuple[str, ...]
+    respect_gitignore: bool | None
+    ros: int | None
+    ros_distro: str | None
+    cache_dir: str | None
     """The results cache's folder (absolute; relative in the file to its folder)."""
-    knowledge: tuple[str, ...] = ()
+    knowledge: tuple[str, ...]
     """Knowledge files (JSON, docs/knowledge.md) that extend the bundled knowledge base."""
 
+    __slots__ = (
+        "path", "select", "ignore", "severity", "min_z", "beliefs", "args", "package_path", "env",
+        "per_path_ignores", "fail_on", "profile", "exclude", "extend_exclude", "respect_gitignore",
+        "ros", "ros_distro", "cache_dir", "knowledge",
+    )
 
-def _categories() -> set[str]:
-    return {r.category.value for r in RULES}
+    def __init__(
+        self,
+        path: str | None = None,
+        select: tuple[str, ...] | None = None,
+        ignore: tuple[str, ...] | None = None,
+        severity: dict[str, Severity] | None = None,
+        min_z: float | None = None,
+        beliefs: str | None = None,
+        args: dict[str, str] | None = None,
+        package_path: tuple[str, ...] | None = None,
+        env: dict[str, str] | None = None,
+        per_path_ignores: tuple[PathIgnore, ...] = (),
+        fail_on: str | None = None,
+        profile: str | None = None,
+        exclude: tuple[str, ...] | None = None,
+        extend_exclude: tuple[str, ...] = (),
+        respect_gitignore: bool | None = None,
+        ros: int | None = None,
+        ros_distro: str | None = None,
+        cache_dir: str | None = None,
+        knowledge: tuple[str, ...] = (),
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "select", select)
+        _set(self, "ignore", ignore)
+        _set(self, "severity", {} if severity is None else severity)
+        _set(self, "min_z", min_z)
+        _set(self, "beliefs", beliefs)
+        _set(self, "args", {} if args is None else args)
+        _set(self, "package_path", package_path)
+        _set(self, "env", {} if env is None else env)
+        _set(self, "per_path_ignores", per_path_ignores)
+        _set(self, "fail_on", fail_on)
+        _set(self, "profile", profile)
+        _set(self, "exclude", exclude)
+        _set(self, "extend_exclude", extend_exclude)
+        _set(self, "respect_gitignore", respect_gitignore)
+        _set(self, "ros", ros)
+        _set(self, "ros_distro", ros_distro)
+        _set(self, "cache_dir", cache_dir)
+        _set(self, "knowledge", knowledge)
+
+
+def _categories() -> frozenset[str]:
+    return CATEGORY_NAMES
 
 
 def check_rule_ids(ids: Iterable[str], where: str) -> None:
     """Raise :class:`ConfigError` naming every id that is neither a rule nor a category."""
-    known = sorted({*RULES_BY_ID, *_categories()})
-    unknown = [i for i in ids if i not in RULES_BY_ID and i not in _categories()]
+    known = sorted({*CATEGORY_OF, *_categories()})
+    unknown = [i for i in ids if i not in CATEGORY_OF and i not in _categories()]
     if unknown:
         import difflib  # only for the message of a mistake: not at start-up
 
@@ -234,10 +281,11 @@ def _severities(table: Mapping[str, Any], path: str) -> dict[str, Severity]:
                 f"{path}: 'severity.{name}' must be error, warning or info, not {level!r}"
             )
     for name, level in table.items():
-        if name not in RULES_BY_ID:
-            levels.update({r.id: Severity(level) for r in RULES if r.category.value == name})
+        if name not in CATEGORY_OF:
+            levels.update({rule_id: Severity(level) for rule_id, category in CATALOG
+                           if category.value == name})
     for name, level in table.items():
-        if name in RULES_BY_ID:
+        if name in CATEGORY_OF:
             levels[name] = Severity(level)
     return levels
 

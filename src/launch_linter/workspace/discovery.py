@@ -20,10 +20,10 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
 from typing import Callable
 
 from launch_linter.model.globs import Glob, fnmatch_glob
+from launch_linter.model.record import Record, _set
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.paths import shown_path
@@ -71,12 +71,17 @@ CONTENT_SUFFIXES = (".xml", ".test", ".py", ".yaml", ".yml")
 MAX_CONTENT_BYTES = 256 * 1024
 
 
-@dataclass(frozen=True)
-class InputFile:
+class InputFile(Record):
     path: str
     """Absolute path."""
     display: str
     """As the user gave it (relative stays relative)."""
+
+    __slots__ = ("path", "display")
+
+    def __init__(self, path: str, display: str) -> None:
+        _set(self, "path", path)
+        _set(self, "display", display)
 
 
 def is_launch_name(name: str) -> bool:
@@ -142,13 +147,18 @@ def is_workspace_folder(directory: str, name: str) -> bool:
     return any(reads.exists(os.path.join(full, marker)) for marker in WORKSPACE_MARKERS)
 
 
-@dataclass(frozen=True)
-class Exclusions:
+class Exclusions(Record):
     """Glob patterns (ruff's ``exclude``/``extend-exclude``) matched against a path's
     base name, its path relative to ``base`` and its absolute path."""
 
-    patterns: tuple[str, ...] = DEFAULT_EXCLUDE
-    base: str = "."
+    patterns: tuple[str, ...]
+    base: str
+
+    __slots__ = ("patterns", "base")
+
+    def __init__(self, patterns: tuple[str, ...] = DEFAULT_EXCLUDE, base: str = ".") -> None:
+        _set(self, "patterns", patterns)
+        _set(self, "base", base)
 
     @classmethod
     def of(

@@ -14,9 +14,9 @@ A ``.gitignore`` comes with the repository, so its patterns are matched in linea
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 
 from launch_linter.model.globs import Glob, gitignore_glob
+from launch_linter.model.record import Record, _set
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 
@@ -28,14 +28,20 @@ MAX_PATTERN_CHARS = 4096
 """Longest pattern kept (a match costs pattern length times path length)."""
 
 
-@dataclass(frozen=True)
-class Rule:
+class Rule(Record):
     """One ``.gitignore`` line: its glob (``**/`` put before an unanchored one),
     whether it re-includes (``!``) and whether it applies to folders only (``/`` last)."""
 
     glob: Glob
     negated: bool
     folders_only: bool
+
+    __slots__ = ("glob", "negated", "folders_only")
+
+    def __init__(self, glob: Glob, negated: bool, folders_only: bool) -> None:
+        _set(self, "glob", glob)
+        _set(self, "negated", negated)
+        _set(self, "folders_only", folders_only)
 
     def verdict(self, relative: str, is_folder: bool) -> bool | None:
         """True (ignored) or False (re-included) when the rule matches ``relative`` or a

@@ -45,8 +45,8 @@ def test_front_end(path: str, text: str, expected: str) -> None:
 
 
 def test_ros2_only_tags_are_the_schema_actions_roslaunch_lacks() -> None:
-    from launch_linter.frontends.dispatch import ROS2_ONLY_TAGS
     from launch_linter.frontends.ros2_schema import ACTIONS
+    from launch_linter.frontends.xml_dialect import ROS2_ONLY_TAGS
 
     roslaunch_tags = {"arg", "group", "include", "node"}
     assert set(ROS2_ONLY_TAGS) == (set(ACTIONS) - roslaunch_tags) | {"composable_node"}

@@ -12,13 +12,20 @@ import os
 import re
 import typing
 from collections.abc import Callable, Hashable, Mapping, Sequence
-from dataclasses import replace
 
+from launch_linter.frontends.params import (
+    CONTROLLER_MANAGER_NAME,
+    controllers_of,
+    read_yaml_file,
+    ros2_file_params,
+)
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.robot import (
+    UNKNOWN_VALUE,
     DescriptionFault,
     DescriptionKind,
     DescriptionSource,
@@ -26,6 +33,7 @@ from launch_linter.model.robot import (
     NodeRecord,
     RobotJoint,
     RobotModel,
+    spawns_into_simulator,
 )
 from launch_linter.resolve import reads
 from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
@@ -214,7 +222,57 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
             joints.extend(robot.joints)
             robots.append(robot)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
-                   problems=tree.problems + tuple(problems_found))
+                   problems=tree.problems + tuple(problems_found),
+                   nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))
+
+
+def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]
+                      ) -> list[NodeRecord]:
+    """The Gazebo plugins of the descriptions, when the tree spawns a description into a
+    simulator (a description only published by robot_state_publisher, as on the real
+    robot, runs no plugin). Each runs under its description's condition and, when every
+    spawner is conditional, the first spawner's; a ros2_control plugin's controller
+    parameter file gives its controllers."""
+    spawners = [n for n in nodes if spawns_into_simulator(n)]
+    if not spawners:
+        return []
+    ros = next((n.ros for n in nodes if n.ros is not None), None)
+    condition = (spawners[0].condition if all(not s.condition.always for s in spawners)
+                 else None)
+    out: list[NodeRecord] = []
+    for robot in robots:
+        for plugin in robot.plugins:
+            plugin = replace(plugin, ros=ros if ros is not None else plugin.ros,
+                             condition=plugin.condition if condition is None
+                             else plugin.condition & condition)
+            out.append(plugin)
+            out.extend(_simulated_controllers(plugin))
+    return out
+
+
+_ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
+                         "libgz_ros2_control-system.so", "ign_ros2_control-system",
+                         "libign_ros2_control-system.so")
+
+
+def _simulated_controllers(plugin: NodeRecord) -> list[NodeRecord]:
+    """The controllers a simulated ros2_control plugin's ``<parameters>`` file gives
+    (its controller manager is named by ``controller_manager_name``, by default
+    ``controller_manager``)."""
+    if plugin.plugin not in _ROS2_CONTROL_PLUGINS:
+        return []
+    documents: list[object] = []
+    for key, path in plugin.params:
+        if key == "parameters" and path != UNKNOWN_VALUE:
+            document, why = read_yaml_file(path)
+            if why is None:
+                documents.append(document)
+    name = plugin.given("controller_manager_name") or CONTROLLER_MANAGER_NAME
+    params: list[tuple[str, str]] = []
+    for document in documents:
+        params.extend(ros2_file_params(document, name, plugin.namespace))
+    manager = replace(plugin, params=tuple(params))
+    return controllers_of(manager, documents)
 
 
 def read_description(source: DescriptionSource, packages: PackageIndex, cache: RobotCache,
@@ -226,7 +284,12 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     ``budget``: the launch tree's (a new one when the description is linted alone)."""
     budget = budget if budget is not None else Budget()
     # Imported here, as xacro is in RobotCache: only trees that publish a robot need it.
-    from launch_linter.frontends.robot.urdf import elements_of, joints_of, literal_root
+    from launch_linter.frontends.robot.urdf import (
+        elements_of,
+        joints_of,
+        literal_root,
+        plugins_of,
+    )
 
     problems_found: list[Problem] = []
     defines_macros = False
@@ -267,7 +330,16 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             ))
     if root is None:
         return None, problems_found
+    if root.tag == "sdf":
+        # ROS 2's robot_state_publisher reads SDF through the sdformat_urdf parser plugin
+        # (gz-sim demos do); the linter reads URDF only, so the joints are unknown, not none.
+        where = display(source.file) if source.file is not None else "(text)"
+        problems_found.append(_unresolved(
+            source, f"robot description {where} is SDF (<sdf> root, which "
+                    f"robot_state_publisher reads through the sdformat_urdf plugin); "
+                    f"its joints are not read"))
     found = joints_of(root, source, display, source.condition)
+    plugins = plugins_of(root, display, source.condition, None)
     unknown = [j for j in found if j.reasons]
     for joint in unknown[:20]:
         problems_found.append(Problem(
@@ -279,7 +351,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     elements, names_known = elements_of(root, display, source.condition)
     followed = all(p.kind in (KEPT, DROPPED) for p in problems)
     robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
-                       faults, defines_macros, standalone)
+                       faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found
 
 

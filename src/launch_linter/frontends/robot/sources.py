@@ -11,10 +11,10 @@ import os
 import re
 import shlex
 from collections.abc import Sequence
-from dataclasses import replace
 
 from launch_linter.frontends.params import ros1_controllers
 from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
+from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
@@ -140,6 +140,11 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
                                  condition=condition, node=node, text=text)
+    if text is None and value:
+        # A value only launch knows (a configuration an includer passes, a helper's return):
+        # the robot is there but unread, which is said once rather than left silent.
+        return DescriptionSource(path, line, column, DescriptionKind.FILE, None,
+                                 condition=condition, node=node, reason=_why(value))
     return None
 
 

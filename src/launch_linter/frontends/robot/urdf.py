@@ -7,7 +7,14 @@ import math
 import typing
 
 from launch_linter.frontends.robot.xacro import ExpandedNode, XacroProblem
-from launch_linter.model.robot import DescriptionSource, RobotElement, RobotJoint
+from launch_linter.frontends.robot.xacro_values import PLUGIN_TEXT_TAGS
+from launch_linter.model.robot import (
+    UNKNOWN_VALUE,
+    DescriptionSource,
+    NodeRecord,
+    RobotElement,
+    RobotJoint,
+)
 from launch_linter.model.transform import Condition, ConditionLiteral
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
 
@@ -117,12 +124,88 @@ def elements_of(root: ExpandedNode, display: Display,
     return out, known
 
 
+SIMULATOR_PACKAGE = "gazebo"
+"""The package a Gazebo plugin's record names (it runs inside the simulator)."""
+SENSOR_LINK_PARAM = "gazebo_reference"
+"""The parameter a plugin's record gives the link of its ``<gazebo reference=...>``: a
+sensor plugin's default frame (gazebo_ros's SensorFrameID) and the body its sensor looks
+out of."""
+MAX_PLUGINS = 200
+
+
+ROS1_PLUGIN_TAGS = frozenset({"robotNamespace", "frameName", "publishOdomTF",
+                              "odometryFrame", "robotBaseFrame", "bodyName", "broadcastTF"})
+ROS2_PLUGIN_TAGS = frozenset({"ros", "frame_name", "publish_odom_tf", "odometry_frame",
+                              "robot_base_frame", "body_name"})
+
+
+def _ros_of(plugin: ExpandedNode) -> int | None:
+    """The ROS version a gazebo_ros plugin is written for, by its parameters' spelling
+    (ROS 1 camelCase, ROS 2 snake_case and ``<ros>``); None when they do not say."""
+    tags = {child.tag for child in plugin.children}
+    if tags & ROS2_PLUGIN_TAGS:
+        return 2
+    return 1 if tags & ROS1_PLUGIN_TAGS else None
+
+
+def _plugin_elements(gazebo: ExpandedNode) -> list[ExpandedNode]:
+    """The plugins of a ``<gazebo>`` block: its own and its sensors'."""
+    found: list[ExpandedNode] = []
+    for child in gazebo.children:
+        if child.tag == "plugin":
+            found.append(child)
+        elif child.tag == "sensor":
+            found.extend(p for p in child.children if p.tag == "plugin")
+    return found
+
+
+def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
+               ros: int | None) -> list[NodeRecord]:
+    """The ``<gazebo><plugin>`` blocks of a description, each as the record of a plugin
+    (``filename``, its parameter elements as parameters, ``<ros><namespace>`` or
+    ``<robotNamespace>`` as its namespace), at the plugin element; ``ros`` None leaves the
+    ROS version to the plugin's own spelling."""
+    out: list[NodeRecord] = []
+    if root.tag != "robot":
+        return out
+    for gazebo in root.children:
+        if gazebo.tag != "gazebo":
+            continue
+        reference = gazebo.attrib.get("reference")
+        for plugin in _plugin_elements(gazebo):
+            filename = plugin.attrib.get("filename")
+            if not filename or "filename" in plugin.unknown:
+                continue
+            params: list[tuple[str, str]] = []
+            if reference and "reference" not in gazebo.unknown:
+                params.append((SENSOR_LINK_PARAM, reference))
+            namespace: str | None = "/"
+            for child in plugin.children:
+                inner = child.children if child.tag == "ros" else [child]
+                for element in inner:
+                    if element.tag in ("namespace", "robotNamespace"):
+                        namespace = (None if element.text is None
+                                     else "/" + element.text.strip("/"))
+                    elif element.tag in PLUGIN_TEXT_TAGS:
+                        params.append((element.tag, UNKNOWN_VALUE if element.text is None
+                                       else element.text))
+            out.append(NodeRecord(
+                display(plugin.path), plugin.line, plugin.column, SIMULATOR_PACKAGE, "",
+                plugin.attrib.get("name"), tuple(params),
+                outer & _condition(plugin.conditions), kind="gazebo_plugin",
+                plugin=filename, namespace=namespace,
+                ros=ros if ros is not None else _ros_of(plugin)))
+            if len(out) >= MAX_PLUGINS:
+                return out
+    return out
+
+
 def literal_root(text: str, path: str, line: int, own_lines: bool = False
                  ) -> tuple[ExpandedNode | None, list[XacroProblem]]:
     """A URDF written in a launch file, as an expanded tree (no xacro in it); with
     ``own_lines`` the text is the file ``path`` itself and keeps its lines."""
     try:
-        document = parse_xml(text.encode("utf-8"))
+        document = parse_xml(text.encode("utf-8"), PLUGIN_TEXT_TAGS)
     except XmlError as exc:
         return None, [XacroProblem(path, line, f"literal robot description is not "
                                                f"well-formed XML: {exc.message}", True)]
@@ -131,8 +214,10 @@ def literal_root(text: str, path: str, line: int, own_lines: bool = False
         node = (ExpandedNode(element.tag, path, element.line, element.column, ())
                 if own_lines else ExpandedNode(element.tag, path, line, 1, ()))
         node.attrib = dict(element.attrib)
-        # Only joints and their direct children matter; deeper levels are not copied.
-        if element.tag in ("robot", "joint"):
+        node.text = element.text.strip()
+        # Only joints and Gazebo plugins, with their children, matter; the rest of the
+        # tree is not copied.
+        if element.tag in ("robot", "joint", "gazebo", "sensor", "plugin", "ros"):
             node.children = [convert(child) for child in element.children]
         return node
 

@@ -42,6 +42,7 @@ from launch_linter.frontends.robot.xacro_values import (
     MAX_OUTPUT_ELEMENTS,
     MAX_TEXT,
     MAX_WORK,
+    PLUGIN_TEXT_TAGS,
     REFUSED,
     UNKNOWN,
     ExpandedNode,
@@ -192,7 +193,7 @@ class XacroExpander:
                           f"{exc.strerror or exc}")
             return None
         try:
-            return parse_xml(data).root
+            return parse_xml(data, PLUGIN_TEXT_TAGS).root
         except XmlError as exc:
             message = f"{absolute}:{exc.line}: not well-formed XML: {exc.message}"
             if at is None:
@@ -329,6 +330,11 @@ class XacroExpander:
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
+                if element.text.strip():
+                    try:
+                        node.text = self.evaluate_text(element.text.strip(), table)
+                    except _Unknown:
+                        node.text = None
                 out.children.append(node)
                 self._children(element.children, path, table, node, conditions)
                 continue

@@ -4,8 +4,8 @@ and its tables of properties, macros and blocks with their scoping."""
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
+from launch_linter.model.record import MutableRecord, Record, _set
 from launch_linter.resolve.xml_safe import Element
 
 MAX_FILES = 200
@@ -62,26 +62,58 @@ DROPPED = "dropped"
 """A problem kind: the real xacro silently drops content here (a block never inserted)."""
 
 
-@dataclass(frozen=True)
-class XacroProblem:
+class XacroProblem(Record):
     """Something the expander could not follow, with where it was."""
 
     path: str
     line: int
     message: str
-    fatal: bool = False
+    fatal: bool
     """True when the expansion stopped (a bound was reached or the root is unreadable)."""
-    kind: str = UNKNOWN
+    kind: str
     """``UNKNOWN``, ``KEPT``, ``REFUSED`` or ``DROPPED``."""
-    conditions: tuple[str, ...] = ()
+    conditions: tuple[str, ...]
     """The undecided ``xacro:if``/``xacro:unless`` texts around it (see ExpandedNode)."""
+
+    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions")
+
+    def __init__(
+        self,
+        path: str,
+        line: int,
+        message: str,
+        fatal: bool = False,
+        kind: str = UNKNOWN,
+        conditions: tuple[str, ...] = (),
+    ) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "message", message)
+        _set(self, "fatal", fatal)
+        _set(self, "kind", kind)
+        _set(self, "conditions", conditions)
+
+
+PLUGIN_TEXT_TAGS = frozenset({
+    # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
+    "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",
+    "robotBaseFrame", "frameName", "bodyName", "publishOdom", "broadcastTF",
+    # gazebo_ros (ROS 2): parameters, and <ros><namespace>/<remapping>.
+    "namespace", "remapping", "publish_odom_tf", "publish_wheel_tf", "odometry_frame",
+    "robot_base_frame", "frame_name", "body_name", "publish_odom",
+    # gz-sim systems (diff drive, odometry publisher) and gz_ros2_control.
+    "frame_id", "child_frame_id", "tf_topic", "odom_frame", "odom_publish_frequency",
+    "parameters", "controller_manager_name",
+})
+"""The elements whose text the expander keeps: the parameters of the Gazebo plugins the
+knowledge base knows (tests/knowledge checks that every plugin entry's parameter is one)."""
 
 
 class ExpandedNode:
     """An element of the expanded document, with where it was written."""
 
     __slots__ = ("attrib", "children", "column", "conditions", "line", "path", "tag",
-                 "unknown")
+                 "text", "unknown")
 
     def __init__(self, tag: str, path: str, line: int, column: int,
                  conditions: tuple[str, ...]) -> None:
@@ -93,56 +125,113 @@ class ExpandedNode:
         self.unknown: dict[str, str] = {}
         """Attribute name -> why its value is unknown."""
         self.children: list[ExpandedNode] = []
+        self.text: str | None = ""
+        """Character data inside (kept for :data:`PLUGIN_TEXT_TAGS` only); None when
+        a ``${}`` in it cannot be known."""
         self.conditions = conditions
         """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
         (``unless`` texts start with ``!``)."""
 
 
-@dataclass
-class Expansion:
+class Expansion(MutableRecord):
     """The result of expanding one description file with some args."""
 
     root: ExpandedNode | None
     problems: list[XacroProblem]
     files: list[str]
-    defines_macros: bool = False
+    defines_macros: bool
     """Whether a ``xacro:macro`` was defined (an empty robot made of a macros-only file)."""
-    args_read: frozenset[str] = frozenset()
+    args_read: frozenset[str]
     """The xacro args the expansion looked up (given or not): the result depends on the
     given args only through these names, so a call differing elsewhere may reuse it."""
-    env_read: frozenset[str] = frozenset()
+    env_read: frozenset[str]
     """The environment variables ``$(env)``/``$(optenv)`` looked up."""
-    cut_by_budget: bool = False
+    cut_by_budget: bool
     """Stopped by the work budget of the launch tree it was expanded for (not by a bound
     of its own): another tree, with budget left, must expand it again."""
 
+    __slots__ = (
+        "root", "problems", "files", "defines_macros", "args_read", "env_read", "cut_by_budget",
+    )
 
-@dataclass
-class _Property:
+    def __init__(
+        self,
+        root: ExpandedNode | None,
+        problems: list[XacroProblem],
+        files: list[str],
+        defines_macros: bool = False,
+        args_read: frozenset[str] = frozenset(),
+        env_read: frozenset[str] = frozenset(),
+        cut_by_budget: bool = False,
+    ) -> None:
+        self.root = root
+        self.problems = problems
+        self.files = files
+        self.defines_macros = defines_macros
+        self.args_read = args_read
+        self.env_read = env_read
+        self.cut_by_budget = cut_by_budget
+
+
+class _Property(MutableRecord):
     text: str | None
     """Unevaluated text, or None once evaluated."""
     value: str | None
     """Evaluated text; None while unevaluated or when unknown."""
-    reason: str | None = None
-    block: tuple[Element, str] | None = None
+    reason: str | None
+    block: tuple[Element, str] | None
     """For a block property: the ``xacro:property`` element and its file."""
 
+    __slots__ = ("text", "value", "reason", "block")
 
-@dataclass
-class _Macro:
+    def __init__(
+        self,
+        text: str | None,
+        value: str | None,
+        reason: str | None = None,
+        block: tuple[Element, str] | None = None,
+    ) -> None:
+        self.text = text
+        self.value = value
+        self.reason = reason
+        self.block = block
+
+
+class _Macro(MutableRecord):
     params: list[str]
     defaults: dict[str, tuple[str | None, str | None]]
     """param -> (forwarded name, default text)."""
     body: Element
     path: str
 
+    __slots__ = ("params", "defaults", "body", "path")
 
-@dataclass
-class _Block:
+    def __init__(
+        self,
+        params: list[str],
+        defaults: dict[str, tuple[str | None, str | None]],
+        body: Element,
+        path: str,
+    ) -> None:
+        self.params = params
+        self.defaults = defaults
+        self.body = body
+        self.path = path
+
+
+class _Block(MutableRecord):
     element: Element
     path: str
     content_only: bool
     scope: _Table
+
+    __slots__ = ("element", "path", "content_only", "scope")
+
+    def __init__(self, element: Element, path: str, content_only: bool, scope: _Table) -> None:
+        self.element = element
+        self.path = path
+        self.content_only = content_only
+        self.scope = scope
 
 
 class _Table:

@@ -17,6 +17,7 @@ from launch_linter.frontends.ros2_actions import (
     Uses,
     Where,
 )
+from launch_linter.frontends.ros2_python import moveit
 from launch_linter.frontends.ros2_python.evaluator import _performed
 from launch_linter.frontends.ros2_python.expressions import Expressions
 from launch_linter.frontends.ros2_python.values import (
@@ -32,14 +33,18 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchObject,
     LazyStr,
     ModuleVal,
+    MoveItBuilderVal,
     OpenFile,
+    PartlyKnownList,
     SubsVal,
     Unknown,
+    XacroDocVal,
     _as_subs,
     _Break,
     _Continue,
     _Return,
 )
+from launch_linter.frontends.ros2_python.xacro_call import DOCUMENT_TEXT
 from launch_linter.resolve.bounded import PYTHON_MAX_CALL_DEPTH as MAX_CALL_DEPTH
 from launch_linter.resolve.bounded import PYTHON_MAX_ITEMS as MAX_ITEMS
 from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
@@ -190,6 +195,10 @@ class Calls(Expressions):
     def method(self, method: BoundMethod, args: list[object], kwargs: dict[str, object],
                node: ast.Call) -> object:
         target, name = method.target, method.name
+        if isinstance(target, MoveItBuilderVal):
+            return moveit.builder_method(self, target, name, args, kwargs, node)
+        if isinstance(target, XacroDocVal) and name in DOCUMENT_TEXT:
+            return target.text
         if isinstance(target, OpenFile) and name == "read" and not args:
             return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, list):
@@ -390,15 +399,18 @@ class Calls(Expressions):
                 pending[:0] = item.items
             elif isinstance(item, (list, tuple)):
                 pending[:0] = list(item)
+            elif isinstance(item, PartlyKnownList):
+                # Its known lists are flattened below; each unknown part is said once.
+                pending[:0] = item.parts
             elif isinstance(item, Unknown):
                 found.append(Unfollowed(Where(self.path, item.line, 1),
                                         f"launch entity not followed: {item.describe()}"))
             elif isinstance(item, ACTION_TYPES):
                 found.append(item)
             elif isinstance(item, LaunchObject) and item.where is not None and (
-                item.uses or item.condition is not None
+                item.uses or item.condition is not None or item.parameter is not None
             ):
-                found.append(Uses(item.where, item.condition, item.uses))
+                found.append(Uses(item.where, item.condition, item.uses, item.parameter))
         return tuple(found)
 
     # -- defined by a subclass, further on ---------------------------------------------------

@@ -7,6 +7,7 @@ import ast
 from collections.abc import Callable
 from typing import Any
 
+from launch_linter.frontends.ros2_python import moveit
 from launch_linter.frontends.ros2_python.evaluator import Evaluator, _performed
 from launch_linter.frontends.ros2_python.values import (
     _COMPARE,
@@ -21,9 +22,13 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchObject,
     LazyStr,
     ModuleVal,
+    MoveItBuilderVal,
+    MoveItConfigsVal,
     OpenFile,
+    PartlyKnownList,
     SubsVal,
     Unknown,
+    XacroDocVal,
     _as_subs,
     _OutOfSteps,
     _plain,
@@ -52,6 +57,22 @@ def _why_unknown(value: object) -> str | None:
                     "only known when the launch runs")
         return f"{call.written}: only known when the launch runs"
     return None
+
+
+def _partly_known(left: object, right: object) -> Unknown:
+    """``left + right`` where one side is unknown and the other a list (or unknown): the
+    first unknown operand, keeping the parts in order for reading launch entities."""
+    parts: list[object] = []
+    for side in (left, right):
+        if isinstance(side, PartlyKnownList):
+            parts.extend(side.parts)
+        else:
+            parts.append(side)
+    first = next(part for part in parts if isinstance(part, Unknown))
+    assert isinstance(first, Unknown)
+    if len(parts) > MAX_ITEMS:
+        return first
+    return PartlyKnownList(first.reason, first.text, first.line, tuple(parts))
 
 
 class Expressions(Evaluator):
@@ -159,8 +180,10 @@ class Expressions(Evaluator):
             return base
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
+        if isinstance(base, MoveItConfigsVal):
+            return moveit.configs_attribute(self, base, name, node)
         if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,
-                             OpenFile)):
+                             OpenFile, MoveItBuilderVal, XacroDocVal)):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"
@@ -190,6 +213,10 @@ class Expressions(Evaluator):
         return self.text_value(tuple(parts), node)
 
     def binary(self, op: ast.operator, left: object, right: object, node: ast.AST) -> object:
+        if isinstance(op, ast.Add) and (isinstance(left, Unknown) or isinstance(
+                right, Unknown)) and isinstance(left, (list, tuple, Unknown)) and isinstance(
+                right, (list, tuple, Unknown)):
+            return _partly_known(left, right)
         if isinstance(left, Unknown):
             return left
         if isinstance(right, Unknown):

@@ -33,6 +33,7 @@ from launch_linter.frontends.ros2_actions import (
     ros2_run,
     shell_reads_as_words,
 )
+from launch_linter.frontends.ros2_python import moveit, xacro_call
 from launch_linter.frontends.ros2_python.calls import Calls
 from launch_linter.frontends.ros2_python.values import (
     _LEGACY_NODE_KEYWORDS,
@@ -90,6 +91,10 @@ class Interpreter(Calls):
             return self.os_call(dotted, args, node)
         if root == "ament_index_python":
             return self.ament(name, args, node)
+        if dotted == "xacro.process_file":
+            return xacro_call.process_file(self, args, kwargs, node)
+        if root == "moveit_configs_utils" and name == "MoveItConfigsBuilder":
+            return moveit.builder(self, args, kwargs, node)
         if root not in LAUNCH_ROOTS:
             return self.unknown(node, f"calls '{dotted}', which the linter does not model")
         if name == "Parameter" and ".substitutions" in dotted:
@@ -109,7 +114,14 @@ class Interpreter(Calls):
         """A launch class the linter does not model (``SetParameter``, ``LogInfo``, an
         ``ExecuteProcess``): as an action it performs the substitutions it was given."""
         uses = performed([*args, *(v for k, v in kwargs.items() if k != "condition")])
-        return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses)
+        parameter = None
+        if name == "SetParameter":
+            key, value = self.arg(args, kwargs, 0, "name"), self.arg(args, kwargs, 1, "value")
+            if key is not None and value is not None:
+                parameter = (self.subs(key, node, "parameter name"),
+                             self.subs(_parameter_text(value), node, "parameter value"))
+        return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses,
+                            parameter)
 
     def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
                                  node: ast.Call) -> object:
@@ -552,3 +564,12 @@ HANDLERS: Mapping[
 }
 """Every launch class the linter models, by its name: the handler builds the action,
 substitution or condition it stands for from the call's arguments."""
+
+
+def _parameter_text(value: object) -> object:
+    """A ``SetParameter`` value as the text a node is given (``True`` as ``true``)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    return value

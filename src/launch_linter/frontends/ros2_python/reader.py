@@ -9,6 +9,7 @@ import tokenize
 from collections.abc import Mapping
 from io import BytesIO
 
+from launch_linter.frontends import python_trees
 from launch_linter.frontends.ros2_actions import Action, FileRead, Problem, Unfollowed, Where
 from launch_linter.frontends.ros2_python.launch_api import Interpreter
 from launch_linter.frontends.ros2_python.values import (
@@ -76,6 +77,7 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
     except (RecursionError, MemoryError, ValueError) as exc:
         message = f"not readable Python: {type(exc).__name__}"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
+    python_trees.note(path, data, tree)  # for locating fixes without parsing again
     comments = _directive_comments(data)
     # Statement lines only place directives: skipped (with the tokenizer) in the many files
     # that hold none.

@@ -54,6 +54,45 @@ class Unknown:
 
 
 @dataclass(frozen=True)
+class PartlyKnownList(Unknown):
+    """``unknown + [known, ...]`` (or the reverse): unknown as a value, but as launch
+    entities the known operands' items are there for certain (``+`` of a list needs a list
+    on the other side), so they are read and only the unknown part is not followed."""
+
+    parts: tuple[object, ...] = ()
+
+
+@dataclass(frozen=True)
+class MoveItBuilderVal:
+    """``moveit_configs_utils.MoveItConfigsBuilder``: the package its relative file paths
+    are in (``package_name``, else ``<robot_name>_moveit_config``), the parameter name it
+    gives the robot description, and the description chosen so far (the ``xacro`` command
+    of ``.robot_description(file_path=...)``; None: the builder's default, which it reads
+    from the package's ``.setup_assistant`` and the linter does not)."""
+
+    package: Subs
+    parameter: str
+    description: object = None
+
+
+@dataclass(frozen=True)
+class MoveItConfigsVal:
+    """What ``MoveItConfigsBuilder.to_moveit_configs()`` gives: only its robot description
+    is modelled."""
+
+    parameter: str
+    description: object
+
+
+@dataclass(frozen=True)
+class XacroDocVal:
+    """``xacro.process_file(...)``: the document whose ``toxml()`` is ``text`` (the xacro
+    command's output, :mod:`.xacro_call`)."""
+
+    text: SubsVal
+
+
+@dataclass(frozen=True)
 class SubsVal:
     """A launch substitution object (or a list of them): evaluated only when it runs."""
 
@@ -121,6 +160,8 @@ class LaunchObject:
     where: Where | None = None
     condition: Predicate | None = None
     uses: tuple[Subs, ...] = ()
+    parameter: tuple[Subs, Subs] | None = None
+    """``SetParameter``'s name and value."""
 
 
 @dataclass(frozen=True)

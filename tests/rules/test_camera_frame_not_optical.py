@@ -1,0 +1,71 @@
+"""camera_frame_not_optical: a Gazebo camera plugin stamping images with a body frame."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from launch_linter.engine import LintOptions, lint_paths
+
+RULE = "camera_frame_not_optical"
+
+ROBOT = """<robot name="r">
+  <link name="base_link"/><link name="camera_link"/><link name="camera_link_optical"/>
+  <joint name="camera_joint" type="fixed">
+    <parent link="base_link"/><child link="camera_link"/>
+    <origin xyz="0.1 0 0.2" rpy="0 0.3 0"/>
+  </joint>
+  <joint name="camera_optical_joint" type="fixed">
+    <parent link="camera_link"/><child link="camera_link_optical"/>
+    <origin xyz="0 0 0" rpy="{rpy}"/>
+  </joint>
+  <gazebo reference="camera_link">
+    <sensor name="camera" type="depth">
+      <plugin name="camera_controller" filename="{filename}">{body}</plugin>
+    </sensor>
+  </gazebo>
+</robot>
+"""
+OPTICAL_RPY = "-1.5707963 0 -1.5707963"
+
+
+def run(tmp_path: Path, text: str) -> list[tuple[int, str]]:
+    path = tmp_path / "robot.urdf"
+    path.write_text(text)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    return [(d.line, d.message) for d in lint_paths([str(path)], options).diagnostics]
+
+
+def test_ros2_camera_on_its_sensor_link_by_default(tmp_path: Path) -> None:
+    fault = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body="")
+    (found,) = run(tmp_path, fault)
+    assert found[0] == 13 and "'camera_link' (frame_name)" in found[1]
+    fixed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                         body="<frame_name>camera_link_optical</frame_name>")
+    assert run(tmp_path, fixed) == []
+
+
+def test_ros1_frame_name_that_lacks_the_optical_rotation(tmp_path: Path) -> None:
+    body = "<frameName>camera_link_optical</frameName>"
+    fault = ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_openni_kinect.so", body=body)
+    (found,) = run(tmp_path, fault)
+    assert "not rotated from its sensor link 'camera_link'" in found[1]
+    fixed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_openni_kinect.so",
+                         body=body)
+    assert run(tmp_path, fixed) == []
+    # The same rotation written another way (a quaternion's other sign, yaw first) holds.
+    assert run(tmp_path, fixed.replace(OPTICAL_RPY, "-1.5707963 0.0 4.712389")) == []
+
+
+def test_unjoined_frames_are_judged_by_name_and_movable_paths_not_at_all(
+        tmp_path: Path) -> None:
+    named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                         body="<frame_name>{}</frame_name>")
+    assert len(run(tmp_path, named.format("kinect_frame"))) == 1
+    assert run(tmp_path, named.format("kinect_optical_frame")) == []
+    movable = ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_camera.so",
+                           body="<frame_name>camera_link_optical</frame_name>").replace(
+        'name="camera_optical_joint" type="fixed"', 'name="camera_optical_joint" '
+        'type="revolute"')
+    assert run(tmp_path, movable) == []
+    assert run(tmp_path, ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_imu_sensor.so",
+                                      body="")) == []

@@ -1,0 +1,70 @@
+"""sim_time_mismatch: ROS 2 nodes on wall time beside a simulator (fault, then fixed)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from launch_linter.engine import LintOptions, lint_paths
+
+RULE = "sim_time_mismatch"
+
+
+def run(tmp_path: Path, name: str, text: str) -> list[tuple[str, int]]:
+    path = tmp_path / name
+    path.write_text(text)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    return [(d.rule, d.line) for d in lint_paths([str(path)], options).diagnostics]
+
+
+PY = ("from launch import LaunchDescription\n"
+      "from launch.actions import DeclareLaunchArgument, GroupAction\n"
+      "from launch.conditions import IfCondition, UnlessCondition\n"
+      "from launch.substitutions import LaunchConfiguration\n"
+      "from launch_ros.actions import Node, SetParameter\n"
+      "def generate_launch_description():\n"
+      "    sim = LaunchConfiguration('use_sim_time')\n"
+      "    return LaunchDescription([\n"
+      "        DeclareLaunchArgument('use_sim_time', default_value='{default}'),\n"
+      "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+      "             arguments=['-topic', 'robot_description', '-entity', 'r']),\n"
+      "        Node(package='robot_localization', executable='ekf_node',\n"
+      "             parameters=[{{'use_sim_time': sim}}]),\n"
+      "        Node(package='slam_toolbox', executable='async_slam_toolbox_node'{slam}),\n"
+      "        Node(package='robot_state_publisher', executable='robot_state_publisher'),\n"
+      "    ])\n")
+
+
+def test_nodes_on_wall_time_beside_a_spawned_robot(tmp_path: Path) -> None:
+    fault = PY.format(default="false", slam="")
+    assert run(tmp_path, "sim.launch.py", fault) == [(RULE, 12), (RULE, 14)]
+    fixed = PY.format(default="true", slam=", parameters=[{'use_sim_time': sim}]")
+    assert run(tmp_path, "sim.launch.py", fixed) == []
+
+
+def test_set_parameter_gives_sim_time_to_the_nodes_after_it(tmp_path: Path) -> None:
+    text = PY.format(default="true", slam="").replace(
+        "        Node(package='gazebo_ros'", "        SetParameter(name='use_sim_time', "
+        "value=True),\n        Node(package='gazebo_ros'")
+    assert run(tmp_path, "sim.launch.py", text) == []
+
+
+def test_no_simulator_unknown_values_and_exclusive_branches_are_silent(
+        tmp_path: Path) -> None:
+    no_sim = PY.format(default="false", slam="").replace("gazebo_ros", "demo")
+    assert run(tmp_path, "real.launch.py", no_sim) == []
+    unknown = PY.format(default="false", slam="").replace(
+        "default_value='false'", "default_value=os.environ['SIM']").replace(
+        "from launch import", "import os\nfrom launch import")
+    assert run(tmp_path, "env.launch.py", unknown) == [(RULE, 15)]
+    branches = ('<launch><arg name="sim" default="true"/>\n'
+                '<node if="$(var sim)" pkg="ros_gz_sim" exec="create" args="-topic x"/>\n'
+                '<node unless="$(var sim)" pkg="nav2_amcl" exec="amcl"/>\n'
+                '<node if="$(var sim)" pkg="nav2_amcl" exec="amcl">'
+                '<param name="use_sim_time" value="$(var sim)"/></node>\n</launch>\n')
+    assert run(tmp_path, "b.launch.xml", branches) == []
+
+
+def test_ros1_is_left_out(tmp_path: Path) -> None:
+    ros1 = ('<launch><node pkg="gazebo_ros" type="spawn_model" name="s" args="-urdf"/>'
+            '<node pkg="amcl" type="amcl" name="amcl"/></launch>')
+    assert run(tmp_path, "a.launch", ros1) == []
