@@ -8,7 +8,8 @@ in a subprocess, with this process's environment, so a sourced ``AMENT_PREFIX_PA
 seen) and writes ``OUT_DIR/<repo>.json``; then it prints one line per repository: errors,
 warnings and infos, whether a tree of the repository starts ``robot_state_publisher``
 with a description, and whether any such tree had its description read (URDF joints
-found, or, for a URDF without joints, no problem reported about the description). The
+found, or, for a URDF without joints, no problem reported about the description), and
+how many distinct URDF joints those trees hold. The
 errors and warnings are listed in ``OUT_DIR/<repo>.findings.txt`` for judging by reading
 the files. Run it with ``PYTHONPATH`` pointing at another checkout's ``src`` to measure
 that version.
@@ -46,8 +47,9 @@ def counts(repo: str, out_dir: str) -> collections.Counter[str]:
     return collections.Counter(d["severity"] for d in diagnostics)
 
 
-def descriptions(repo: str) -> tuple[bool, bool]:
-    """(a tree starts robot_state_publisher with a description, one such tree has joints)."""
+def descriptions(repo: str) -> tuple[bool, bool, int]:
+    """(a tree starts robot_state_publisher with a description, one such tree had it
+    read, the distinct URDF joints of those trees)."""
     try:
         from launch_linter.workspace.environment import environment_places
 
@@ -57,9 +59,10 @@ def descriptions(repo: str) -> tuple[bool, bool]:
     result = lint_paths([repo], options)
     starting = [t for t in result.trees
                 if t.descriptions and any(n.package == RSP for n in t.nodes)]
+    joints = {(j.path, j.line, j.name, j.parent, j.child) for t in starting for j in t.joints}
     return bool(starting), any(
         t.joints or not any(p.message.startswith("robot description") for p in t.problems)
-        for t in starting)
+        for t in starting), len(joints)
 
 
 def main() -> int:
@@ -68,12 +71,12 @@ def main() -> int:
     parser.add_argument("repos", nargs="+")
     ns = parser.parse_args()
     os.makedirs(ns.out_dir, exist_ok=True)
-    print("repo\terrors\twarnings\tinfos\tstarts_rsp\tdescription_read")
+    print("repo\terrors\twarnings\tinfos\tstarts_rsp\tdescription_read\tjoints")
     for repo in ns.repos:
         found = counts(repo, ns.out_dir)
-        starts, read = descriptions(repo)
+        starts, read, joints = descriptions(repo)
         print(f"{os.path.basename(os.path.normpath(repo))}\t{found['error']}\t"
-              f"{found['warning']}\t{found['info']}\t{starts}\t{read}", flush=True)
+              f"{found['warning']}\t{found['info']}\t{starts}\t{read}\t{joints}", flush=True)
     return 0
 
 

@@ -1,10 +1,11 @@
 """How often our xacro expansion agrees with the real xacro on real robot descriptions.
 
-Usage: ``python scripts/xacro_agreement.py DIR [DIR ...]`` where each DIR is a checked-out
-repository or a bare git directory (its HEAD's text files are copied to a temporary
+Usage: ``python scripts/xacro_agreement.py DIR [DIR ...] [name:=value ...]`` where each DIR
+is a checked-out repository or a bare git directory (its HEAD's text files are copied to a temporary
 folder first). Every ``*.xacro``/``*.urdf`` file whose root is ``<robot>`` is expanded by
 both, with default args and the packages found in all DIRs; the joints (name, type,
-parent, child, origin within 1e-6) are compared. Prints one line per file and a summary.
+parent, child, origin within 1e-6) are compared; ``name:=value`` words are given to both
+as xacro args (``ur_type:=ur5e``). Prints one line per file and a summary.
 The real xacro is a development-only oracle (``scripts/xacro_oracle_driver.py``).
 """
 
@@ -52,8 +53,8 @@ def _numbers(text: str) -> tuple[float, ...]:
         return ()
 
 
-def oracle(path: str, packages: dict[str, str]) -> list[Joint] | None:
-    done = subprocess.run([sys.executable, str(DRIVER), path, json.dumps(packages)],
+def oracle(path: str, packages: dict[str, str], args: list[str]) -> list[Joint] | None:
+    done = subprocess.run([sys.executable, str(DRIVER), path, json.dumps(packages), *args],
                           capture_output=True, text=True, check=False, timeout=120)
     try:
         answer = json.loads(done.stdout)
@@ -65,8 +66,8 @@ def oracle(path: str, packages: dict[str, str]) -> list[Joint] | None:
              _numbers(j["rpy"])) for j in answer["joints"]]
 
 
-def ours(path: str, index: PackageIndex) -> tuple[list[Joint], int]:
-    expansion = expand(path, {}, index.find)
+def ours(path: str, index: PackageIndex, args: list[str]) -> tuple[list[Joint], int]:
+    expansion = expand(path, dict(a.split(":=", 1) for a in args), index.find)
     if expansion.root is None:
         return [], len(expansion.problems)
     source = DescriptionSource(path, 1, 1, DescriptionKind.XACRO, path)
@@ -104,6 +105,8 @@ def is_robot(path: Path) -> bool:
 
 
 def main(argv: list[str]) -> int:
+    args = [a for a in argv if ":=" in a]
+    argv = [a for a in argv if ":=" not in a]
     with tempfile.TemporaryDirectory() as scratch:
         roots = []
         for i, given in enumerate(argv):
@@ -121,8 +124,8 @@ def main(argv: list[str]) -> int:
             for path in sorted(Path(root).rglob("*")):
                 if path.suffix not in (".xacro", ".urdf") or not is_robot(path):
                     continue
-                expected = oracle(str(path), packages)
-                got, problems = ours(str(path), index)
+                expected = oracle(str(path), packages, args)
+                got, problems = ours(str(path), index, args)
                 shown = os.path.relpath(path, scratch) if str(path).startswith(scratch) else path
                 if expected is None:
                     counts["oracle_refuses"] += 1

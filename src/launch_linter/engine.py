@@ -22,6 +22,7 @@ from launch_linter.rules import Rule, RuleContext
 from launch_linter.rules._api import Finding, finding_of
 from launch_linter.rules._catalog import CATALOG, CATEGORY_OF, RULE_IDS
 from launch_linter.rules._profiles import STUDY_SEVERITY
+from launch_linter.rules._tree import with_macro_definitions
 from launch_linter.suppressions import (
     UNUSED_ID,
     PathIgnore,
@@ -260,7 +261,8 @@ def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) ->
     """Run ``rules`` on one tree; each finding becomes a diagnostic stamped by its rule."""
     context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options),
                           options.knowledge if options.knowledge is not None else bundled())
-    return [_stamp(rule, f, options) for rule in rules for f in rule.check(context)]
+    return with_macro_definitions(
+        tree, [_stamp(rule, f, options) for rule in rules for f in rule.check(context)])
 
 
 def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:

@@ -138,7 +138,9 @@ def test_urdf_joint_and_included_launch_file() -> None:
     (found,) = ws_lint("demo_bringup/launch/robot.launch", RULE)
     assert found.path.endswith("sensors.launch")
     assert "URDF joint 'laser_joint'" in found.message
-    assert found.related[0].path.endswith("common.xacro")
+    # The joint a macro made: at its call in the robot's file, then in the macro.
+    assert found.related[0].path.endswith("robot.urdf.xacro")
+    assert found.related[1].path.endswith("common.xacro")
 
 
 def test_urdf_part_switched_off_by_an_arg() -> None:

@@ -25,8 +25,10 @@ def test_a_macro_instantiated_twice_with_one_prefix() -> None:
     text = robot('<xacro:macro name="arm" params="prefix">\n'
                  '<link name="${prefix}link"/></xacro:macro>\n'
                  '<xacro:arm prefix="left_"/>\n<xacro:arm prefix="left_"/>')
+    # Each instance is shown at its call: the second call, pointing at the first.
     (found,) = lint_urdf(text, RULE)
-    assert "same line: a macro instantiated twice" in found.message
+    assert "already defined at line" in found.message and found.node == "left_link"
+    assert found.line == found.related[0].line + 1
     assert lint_urdf(text.replace('"left_"/>\n<xacro:arm prefix="left_"',
                                   '"left_"/>\n<xacro:arm prefix="right_"'), RULE) == ()
 

@@ -267,7 +267,9 @@ class Ros2Runner:
         if display not in self.files:
             self.files.append(display)
         if absolute.endswith(".py"):
-            read = read_python(absolute, data, self.work, self.options.env)
+            # __file__ is where the launch file runs from: its installed place.
+            read = read_python(absolute, data, self.work, self.options.env,
+                               lambda: self.options.packages.installed(absolute))
         elif absolute.endswith((".yaml", ".yml")):
             read = read_yaml(absolute, data)
         else:

@@ -55,10 +55,13 @@ class DescriptionSource(Record):
     reason: str | None
     open_args: bool
     """True when a word of the xacro call is unresolved and may give more args."""
+    open_file: tuple[str, str, str] | None
+    """When ``file`` is unknown only because an environment variable in its name is not
+    given: (the path before it, the text after it, the variable's name)."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args",
+        "open_args", "open_file",
     )
 
     def __init__(
@@ -74,6 +77,7 @@ class DescriptionSource(Record):
         text: str | None = None,
         reason: str | None = None,
         open_args: bool = False,
+        open_file: tuple[str, str, str] | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -86,6 +90,7 @@ class DescriptionSource(Record):
         _set(self, "text", text)
         _set(self, "reason", reason)
         _set(self, "open_args", open_args)
+        _set(self, "open_file", open_file)
 
 
 class RobotJoint(Record):
@@ -111,10 +116,13 @@ class RobotJoint(Record):
     condition: Condition
     unresolved: tuple[str, ...]
     reasons: tuple[str, ...]
+    defined: tuple[str, int, int] | None
+    """For a joint a xacro macro made: where its ``<joint>`` is written in the macro
+    (``path``/``line`` are then the outermost call of the macro)."""
 
     __slots__ = (
         "path", "line", "column", "name", "joint_type", "parent", "child", "translation", "rpy",
-        "source", "condition", "unresolved", "reasons",
+        "source", "condition", "unresolved", "reasons", "defined",
     )
 
     def __init__(
@@ -132,6 +140,7 @@ class RobotJoint(Record):
         condition: Condition | None = None,
         unresolved: tuple[str, ...] = (),
         reasons: tuple[str, ...] = (),
+        defined: tuple[str, int, int] | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -146,6 +155,7 @@ class RobotJoint(Record):
         _set(self, "condition", Condition() if condition is None else condition)
         _set(self, "unresolved", unresolved)
         _set(self, "reasons", reasons)
+        _set(self, "defined", defined)
 
     @property
     def dynamic(self) -> bool:

@@ -38,7 +38,7 @@ def _fn_arg(it: Machine, args: tuple[object, ...]) -> object:
     value = it.scope.args[name]
     if value is None:
         raise EvalUnresolved(f"the value of arg '{name}' is not known", name)
-    return _auto_convert(value)
+    return _auto_convert(value) if isinstance(value, str) else value
 
 
 def _fn_env(it: Machine, args: tuple[object, ...]) -> object:

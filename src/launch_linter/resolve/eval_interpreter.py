@@ -29,6 +29,7 @@ from launch_linter.resolve.eval_values import (
     _OPAQUE_SCALAR,
     _SCALAR,
     _TEXT_ITEMS_PER_UNIT,
+    AttributeDict,
     EvalError,
     EvalScope,
     EvalUnresolved,
@@ -218,6 +219,8 @@ class _Interpreter:
             return self._subscript(node)
         if isinstance(node, ast.Call):
             return self._call(node)
+        if isinstance(node, ast.Attribute):
+            return self._attribute(node)
         what = _REFUSED.get(type(node), f"{type(node).__name__} expressions are")
         raise EvalError(f"{what} not allowed in $(eval)")
 
@@ -235,7 +238,7 @@ class _Interpreter:
             value = args[name]
             if value is None:
                 raise EvalUnresolved(f"the value of arg '{name}' is not known", name)
-            return self.checked(_auto_convert(value))
+            return self.checked(_auto_convert(value) if isinstance(value, str) else value)
         if name in _BUILTINS:
             return _BUILTINS[name]
         if name in vars(builtins):
@@ -438,22 +441,37 @@ class _Interpreter:
         if node.keywords:
             raise EvalError("keyword arguments are not supported in $(eval)")
         if isinstance(node.func, ast.Attribute):
-            return self._string_method(node.func, node.args)
-        function = self.eval(node.func)
+            receiver = self.eval(node.func.value)
+            if not isinstance(receiver, AttributeDict):
+                return self._string_method(receiver, node.func.attr, node.args)
+            function = self.member(receiver, node.func.attr)
+        else:
+            function = self.eval(node.func)
         args = tuple(self.eval(arg) for arg in node.args)
         if not isinstance(function, _Function):
             raise EvalError(f"{_type_name(function)!r} object is not callable")
         return self.call(function, args)
 
-    def _string_method(self, attribute: ast.Attribute, arg_nodes: list[ast.expr]) -> object:
+    def _attribute(self, node: ast.Attribute) -> object:
+        """``d.key`` on a dict the caller marked as attribute-readable (xacro's YAML data
+        and include namespaces); every other attribute access stays refused."""
+        return self.member(self.eval(node.value), node.attr)
+
+    @staticmethod
+    def member(receiver: object, name: str) -> object:
+        if not isinstance(receiver, AttributeDict):
+            raise EvalError(f"attribute access (x.{name}) is not allowed in $(eval)")
+        if name not in receiver:
+            raise EvalError(f"the dict has no key or attribute {name!r}")
+        return receiver[name]
+
+    def _string_method(self, receiver: object, name: str, arg_nodes: list[ast.expr]) -> object:
         """``text.method(...)`` for the few ``str`` methods launch files use on names.
 
         Attribute access stays refused everywhere else: only a call of a whitelisted
         method on a value that is already a ``str`` gets here, and every result is sized
         before it is built.
         """
-        receiver = self.eval(attribute.value)
-        name = attribute.attr
         if not isinstance(receiver, str) or name not in STRING_METHODS:
             raise EvalError(f"attribute access (x.{name}) is not allowed in $(eval)")
         args = tuple(self.eval(arg) for arg in arg_nodes)

@@ -61,8 +61,10 @@ class EvalUnresolved(EvalError):
 class EvalScope:
     """What an expression can see."""
 
-    args: Mapping[str, str | None]
-    """Launch args visible here; ``None`` means known to exist but with an unresolved value."""
+    args: Mapping[str, object]
+    """Launch args visible here; ``None`` means known to exist but with an unresolved value.
+    Text is converted by roslaunch's "auto" rule; a caller may bind data values (dict,
+    list, numbers) or values made by :func:`function`, which are used as they are."""
     env: Mapping[str, str]
     """Explicit environment; ``env('X')`` for a missing X raises :class:`EvalUnresolved`."""
     find: Callable[[str], str | None]
@@ -136,6 +138,23 @@ _Function.__name__ = "function"
 _MapObject.__name__ = "map"
 
 _OPAQUE: Final = (_Function, _MapObject)
+
+
+class AttributeDict(dict):  # type: ignore[type-arg]
+    """A dict whose keys also read as attributes (``d.key``), as xacro's YAML dicts and
+    include namespaces do. Only data supplied by the caller (never built by an
+    expression) is of this kind, and reading an attribute only looks its key up."""
+
+    __slots__ = ()
+
+
+AttributeDict.__name__ = "dict"
+
+
+def function(name: str, impl: _Impl) -> object:
+    """A callable value of the language, for a caller that binds extra names (xacro's
+    ``load_yaml``): ``impl`` receives the interpreter and the positional arguments."""
+    return _Function(name, impl)
 
 
 class _Meta(NamedTuple):

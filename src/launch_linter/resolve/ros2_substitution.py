@@ -31,6 +31,7 @@ from launch_linter.resolve.value import (
     holes,
     is_resolved,
     join,
+    only_environment,
     resolved_text,
     text_of,
 )
@@ -365,7 +366,7 @@ class _Resolver:
             return _hole(call, f"the configuration name is unresolved: {_reasons(name)}")
         if name in self.scope.configs:
             value = self.scope.configs[name]
-            return value if is_resolved(value) else _hole(call, _reasons(value))
+            return value if only_environment(value) else _hole(call, _reasons(value))
         if len(call.args) == 2:
             return self.value(call.args[1])
         if self.scope.missing is not None:
@@ -398,9 +399,22 @@ class _Resolver:
 
     def _path_join(self, call: Call) -> Value:
         pieces: list[Value] = [self.value(arg) for arg in call.args]
-        if not all(is_resolved(piece) for piece in pieces):
+        if all(is_resolved(piece) for piece in pieces):
+            return (os.path.join(*(text_of(piece) for piece in pieces)),) if pieces else ()
+        # A path whose unknowns are environment variables keeps its text around them
+        # (``urdf/turtlebot3_`` + $TURTLEBOT3_MODEL + ``.urdf``): what it is for each
+        # value of the variable is exact (a value that is itself an absolute path is
+        # one of the values it does not name).
+        if not all(only_environment(piece) for piece in pieces):
             return _hole(call, "; ".join(_reasons(p) for p in pieces if not is_resolved(p)))
-        return (os.path.join(*(text_of(piece) for piece in pieces)),) if pieces else ()
+        parts: list[Part] = []
+        for piece in pieces:
+            if piece and isinstance(piece[0], str) and piece[0].startswith("/"):
+                parts = []
+            elif parts and not (isinstance(parts[-1], str) and parts[-1].endswith("/")):
+                parts.append("/")
+            parts.extend(piece)
+        return join(parts)
 
     def _eval(self, call: Call) -> Value:
         expression = self.text(call.args[0])

@@ -29,7 +29,8 @@ launch args (converted by roslaunch's "auto" rule), then the whitelisted builtin
 
 Deliberate differences from roslaunch, all on text no sane launch file contains:
 
-* attribute access (so no methods such as ``'a'.upper()``), keyword arguments, ``*x``,
+* attribute access (except a few ``str`` methods and the keys of a dict the caller
+  binds as attribute-readable, :class:`AttributeDict`), keyword arguments, ``*x``,
   lambdas, comprehensions, f-strings, ``:=``, set displays, bitwise operators and complex
   numbers are refused;
 * ``is``/``is not`` are only allowed against ``None``, ``True`` or ``False`` (otherwise
@@ -86,6 +87,7 @@ __all__ = [
     "EvalScope",
     "EvalUnresolved",
     "evaluate",
+    "evaluate_value",
     "subscript_index",
 ]
 
@@ -96,12 +98,25 @@ def evaluate(source: str, scope: EvalScope) -> str:
     Raises :class:`EvalUnresolved` when a needed value is unknown and :class:`EvalError`
     for anything roslaunch would reject, this interpreter refuses, or the bounds forbid.
     """
+    result = _run(source, scope, True)
+    assert isinstance(result, str)
+    return result
+
+
+def evaluate_value(source: str, scope: EvalScope) -> object:
+    """Like :func:`evaluate`, but the value itself (a dict, list, number or text; xacro
+    keeps the value of a text that is one ``${...}``), bounded in size like any result."""
+    return _run(source, scope, False)
+
+
+def _run(source: str, scope: EvalScope, as_text: bool) -> object:
     tree = _parse(source)
     interpreter = _Interpreter(scope)
     try:
-        result = interpreter.text(interpreter.eval(tree.body))
+        value = interpreter.eval(tree.body)
+        result = interpreter.text(value) if as_text else value
         if scope.budget is not None:
-            scope.budget.produce(len(result))
+            scope.budget.produce(len(result) if isinstance(result, str) else 1)
         return result
     except EvalError:
         raise

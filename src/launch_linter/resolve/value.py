@@ -81,6 +81,22 @@ def holes(value: Value) -> tuple[Hole, ...]:
     return tuple(p for p in value if isinstance(p, Hole))
 
 
+_NOT_GIVEN = re.compile(r"environment variable '([^'\s]+)' (?:is )?not given \(use --env\)")
+
+
+def environment_variable(hole: Hole) -> str | None:
+    """The name of the environment variable a hole is, when it is only that (its value
+    is what the user's shell gives: ``$(env X)``, ``os.environ['X']``); None otherwise."""
+    match = _NOT_GIVEN.fullmatch(hole.reason)
+    return None if match is None else match.group(1)
+
+
+def only_environment(value: Value) -> bool:
+    """Whether every unknown of ``value`` is an environment variable (a value whose known
+    text is worth keeping around it: a path with one unknown name in it)."""
+    return all(environment_variable(h) is not None for h in holes(value))
+
+
 _OPENERS = {"(": ")", "[": "]", "{": "}"}
 _MARK = re.compile(r"""[\\'"()\[\]{}:;,]""")
 """The characters :func:`_expression_end` acts on; it jumps over the rest."""

@@ -6,9 +6,9 @@ from __future__ import annotations
 import math
 import typing
 
-from launch_linter.model.diagnostic import Location
+from launch_linter.model.diagnostic import Diagnostic, Location
 from launch_linter.model.launch import LaunchTree
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _set, replace
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext
@@ -134,6 +134,25 @@ def _joint_edge(j: RobotJoint) -> Edge | None:
     rotation = None if j.rpy is None else quaternion_from_ypr(j.rpy[2], j.rpy[1], j.rpy[0])
     return Edge(j.parent, j.child, j.translation, rotation, j.condition,
                 Location(j.path, j.line, j.column), joint=j)
+
+
+def with_macro_definitions(tree: LaunchTree, found: list[Diagnostic]) -> list[Diagnostic]:
+    """``found``, each diagnostic that points at the xacro macro call that made a joint
+    (as its place or a related one) also pointing at the ``<joint>`` in the macro."""
+    written = {Location(j.path, j.line, j.column): Location(*j.defined)
+               for j in tree.joints if j.defined}
+    if not written:
+        return found
+    out: list[Diagnostic] = []
+    for diagnostic in found:
+        places = (Location(diagnostic.path, diagnostic.line, diagnostic.column),
+                  *diagnostic.related)
+        more = [written[p] for p in places if p in written]
+        more = [m for i, m in enumerate(more) if m not in places and m not in more[:i]]
+        if more:
+            diagnostic = replace(diagnostic, related=(*diagnostic.related, *more))
+        out.append(diagnostic)
+    return out
 
 
 def tree_edges(tree: LaunchTree) -> tuple[Edge, ...]:

@@ -161,6 +161,12 @@ def check(context: RuleContext) -> Iterator[Finding]:
             f"{'angle' if len(found) == 1 else 'angles'} meant, which misplaces what it "
             f"carries by {at_one_metre}; write π to full precision (e.g. {exact})",
         )
+        if edge.joint is not None and edge.joint.defined is not None:
+            # The angle is typed in the macro that made the joint: shown there (where
+            # --fix edits it), with the call as the related place.
+            path, line, column = edge.joint.defined
+            finding = replace(finding, path=path, line=line, column=column,
+                              related=(edge.location,))
         sensor = any(part in edge.child.lower() for part in SENSOR_PARTS)
         coarse = any(_decimals(value) < 2 for _, value in _angles(edge) if value != 0)
         warn = sensor and worst >= WARNING_FROM and not coarse

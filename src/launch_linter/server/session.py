@@ -107,7 +107,8 @@ class Session:
         for tree in trees:
             root = os.path.realpath(tree.root)
             read = {*tree.files, *(d.file for d in tree.descriptions if d.file),
-                    *(j.path for j in tree.joints)}
+                    *(j.path for j in tree.joints),
+                    *(j.defined[0] for j in tree.joints if j.defined)}
             for path in read:
                 self.readers.setdefault(os.path.realpath(path), set()).add(root)
 

@@ -87,6 +87,21 @@ class Layout:
         return Explanation(sources, exact and not self.reasons, list(self.reasons))
 
 
+    def installed_as(self, source: str) -> list[str]:
+        """Where the package-relative file ``source`` lands, relative to
+        ``share/<package>``, in rule order (empty when no rule installs it)."""
+        targets: list[str] = []
+        for rule in self.rules:
+            if rule.kind == "file":
+                if rule.source == source:
+                    targets.append(rule.target)
+                continue
+            rest = _below(source, rule.source)
+            if rest is not None and rest != "." and not _filtered_out(rest, rule):
+                targets.append(posixpath.join(rule.target, rest) if rule.target else rest)
+        return targets
+
+
 def _below(path: str, folder: str) -> str | None:
     if not folder or folder == ".":
         return path

@@ -108,6 +108,26 @@ class PackageIndex:
         return Located(None, False, "it is outside the linted workspace and no package "
                        "found holds it; the machine that runs the launch may have it")
 
+    def installed(self, path: str) -> str | None:
+        """Where the source file ``path`` of a ROS 2 package found in source is
+        installed, as the share folder is spelled here (the package's source folder
+        stands for ``share/<pkg>``): ``<pkg>/bringup/launch/x.launch.py`` installed by
+        ``install(DIRECTORY bringup/launch DESTINATION share/<pkg>)`` is
+        ``<pkg>/launch/x.launch.py``. None when no rule installs it, or when the rules
+        install it to more than one place."""
+        path = os.path.normpath(os.path.abspath(path))
+        owner = self._owner(path)
+        if owner is None or owner[1] in self._installed:
+            return None
+        layout = self._layout(*owner)
+        if layout is None:
+            return None
+        relative = os.path.relpath(path, owner[1]).replace(os.sep, "/")
+        targets = set(layout.installed_as(relative))
+        if len(targets) != 1:
+            return None
+        return os.path.normpath(os.path.join(owner[1], targets.pop()))
+
     def _owner(self, path: str) -> tuple[str, str] | None:
         best: tuple[str, str] | None = None
         for name, directory in self._all().items():

@@ -95,3 +95,26 @@ def generate_launch_description():
     result = lint_text(text, "d_launch.py")
     (info,) = [d for d in result.diagnostics if d.rule == "unresolved"]
     assert "builds launch actions but returns none" in info.message
+
+
+def test_a_list_of_arguments_rebound_under_an_unknown_if_is_one_or_the_other() -> None:
+    # husarion/rosbot_xl_ros spawn.launch.py: ``rpy`` is one of two 3-item lists; the
+    # arguments are 8 either way, never 11 (both lists at once).
+    text = HEADER + """
+
+def launch_setup(context):
+    camera_model = context.perform_substitution(LaunchConfiguration('camera_model'))
+    rpy = ['1.57', '-1.57', '0']
+    if camera_model.startswith('zed'):
+        rpy = ['0', '0', '0']
+    return [Node(package='tf2_ros', executable='static_transform_publisher',
+                 arguments=['0', '0', '0'] + rpy + ['a', 'b'])]
+
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('camera_model'),
+                              OpaqueFunction(function=launch_setup)])
+"""
+    result = lint_text(text, "e_launch.py")
+    assert not [d for d in result.diagnostics if d.rule == "bad_arity"]
+    assert [d for d in result.diagnostics if d.rule == "unresolved"]

@@ -19,6 +19,7 @@ from launch_linter.frontends.params import (
     read_yaml_file,
     ros2_file_params,
 )
+from launch_linter.frontends.robot.alternatives import alternatives
 from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Problem
@@ -36,7 +37,13 @@ from launch_linter.model.robot import (
     spawns_into_simulator,
 )
 from launch_linter.resolve import reads
-from launch_linter.resolve.value import Value, blocker, holes, why_unresolved
+from launch_linter.resolve.value import (
+    Value,
+    blocker,
+    environment_variable,
+    holes,
+    why_unresolved,
+)
 from launch_linter.workspace.packages import PackageIndex
 
 if typing.TYPE_CHECKING:
@@ -176,6 +183,11 @@ def _unresolved_file(text: str, command: Value) -> str:
     inside = tuple(hole for hole in holes(command) if hole.text in text)
     if not inside:
         return f"the description file {text!r} is not resolved"
+    if text not in {hole.text for hole in inside} and all(
+            environment_variable(hole) for hole in inside):
+        # Known text around environment variables: the variables are what blocks it.
+        return "the description file depends on " + "; ".join(
+            f"{hole.text}: {hole.reason}" for hole in inside)
     if all(blocker(hole)[0] == hole.text for hole in inside):
         return f"the description file {text!r} is not resolved: {why_unresolved(inside)}"
     return f"the description file depends on {why_unresolved(inside)}"
@@ -209,18 +221,26 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         same = (source.kind, source.file, source.args, source.text, source.reason)
         first = same not in reported
         reported.add(same)
-        if source.file is None and source.kind is not DescriptionKind.LITERAL:
+        chosen, said = [source], None
+        if source.file is None and source.open_file is not None:
+            chosen, said = alternatives(source, display)
+            if chosen and first:
+                problems_found.append(_unresolved(source, f"robot description: {said}"))
+        if source.file is None and source.kind is not DescriptionKind.LITERAL and not (
+                source.open_file and chosen):
             if first:
                 problems_found.append(_unresolved(source, f"robot description not read: "
-                                                  f"{source.reason or 'unknown file'}"))
+                                                  f"{source.reason or 'unknown file'}"
+                                                  + (f"; {said}" if said else "")))
             continue
-        robot, unresolved = read_description(source, packages, cache, display, env,
-                                             budget=budget)
-        if first:
-            problems_found.extend(unresolved)
-        if robot is not None:
-            joints.extend(robot.joints)
-            robots.append(robot)
+        for each in chosen:
+            robot, unresolved = read_description(each, packages, cache, display, env,
+                                                 budget=budget)
+            if first:
+                problems_found.extend(unresolved)
+            if robot is not None:
+                joints.extend(robot.joints)
+                robots.append(robot)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found),
                    nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))

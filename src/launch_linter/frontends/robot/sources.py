@@ -17,7 +17,14 @@ from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_com
 from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
 from launch_linter.model.transform import Condition
-from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
+from launch_linter.resolve.value import (
+    Hole,
+    Value,
+    environment_variable,
+    holes,
+    resolved_text,
+    text_of,
+)
 
 DESCRIPTION_PARAM = "robot_description"
 FRAME_NODE_PACKAGES = frozenset({
@@ -84,7 +91,8 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
         file, args, reason, open_args = parsed
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
                                  _absolute(file, directory), args, condition, reason=reason,
-                                 open_args=open_args)
+                                 open_args=open_args,
+                                 open_file=None if file else _open_word(words, command))
     textfile = values.get("textfile")
     if textfile is not None:
         file = resolved_text(textfile)
@@ -135,7 +143,9 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
         file, args, reason, open_args = parsed
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
                                  _absolute(file, "/"), args, condition, node, reason=reason,
-                                 open_args=open_args)
+                                 open_args=open_args,
+                                 open_file=None if file else _open_word(words_of(command),
+                                                                        command))
     text = resolved_text(value)
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
@@ -187,4 +197,31 @@ def from_file_value(value: Value, path: str, line: int, column: int, condition: 
     file = resolved_text(value)
     return DescriptionSource(path, line, column, DescriptionKind.FILE,
                              _absolute(file, directory), condition=condition, node=node,
-                             reason=None if file else _why(value))
+                             reason=None if file else _why(value),
+                             open_file=None if file else _open_file(value, text_of(value)))
+
+
+def _open_word(words: Sequence[Word], command: Value) -> tuple[str, str, str] | None:
+    """:func:`_open_file` for the file word of a xacro call: an unresolved word that is
+    neither an option nor an argument (the words before it name xacro, and may be
+    unresolved too: ``$(find xacro)/xacro`` without the xacro package)."""
+    for text, resolved in words:
+        if not resolved and ":=" not in text and not text.startswith("-"):
+            found = _open_file(command, text)
+            if found is not None:
+                return found
+    return None
+
+
+def _open_file(value: Value, word: str) -> tuple[str, str, str] | None:
+    """(path before, text after, variable) when the file named by ``word`` (written in
+    ``value``) is unknown only through one environment variable inside its file name:
+    ``$(find pkg)/urdf/$(env MODEL).urdf``, ``'turtlebot3_' + os.environ['MODEL']``."""
+    inside = [hole for hole in holes(value) if hole.text in word]
+    if len(inside) != 1 or word.count(inside[0].text) != 1:
+        return None
+    variable = environment_variable(inside[0])
+    before, _, after = word.partition(inside[0].text)
+    if variable is None or "/" in after or not os.path.isabs(before):
+        return None
+    return before, after, variable

@@ -89,8 +89,13 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
         if why_rpy is not None:
             unresolved.append("rotation")
             reasons.append(why_rpy)
+        # A joint a macro made is shown at the call (the instance a user edits), and
+        # its <joint> in the macro as the place it is written.
+        at = joint.call or (joint.path, joint.line, joint.column)
         out.append(RobotJoint(
-            path=display(joint.path), line=joint.line, column=joint.column,
+            path=display(at[0]), line=at[1], column=at[2],
+            defined=None if joint.call is None else (display(joint.path), joint.line,
+                                                     joint.column),
             name=joint.attrib.get("name", ""), joint_type=joint.attrib.get("type", ""),
             parent=frames["parent"], child=frames["child"], translation=xyz, rpy=rpy,
             source=source, condition=outer & _condition(joint.conditions),
@@ -119,8 +124,9 @@ def elements_of(root: ExpandedNode, display: Display,
                 end_element = _first(element, end)
                 if end_element is not None and "link" in end_element.unknown:
                     known = False
-        out.append(RobotElement(element.tag, name, display(element.path), element.line,
-                                element.column, outer & _condition(element.conditions)))
+        at = element.call or (element.path, element.line, element.column)
+        out.append(RobotElement(element.tag, name, display(at[0]), at[1], at[2],
+                                outer & _condition(element.conditions)))
     return out, known
 
 

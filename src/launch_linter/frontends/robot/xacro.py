@@ -23,16 +23,18 @@ and total work end the expansion with a problem, never a hang.
 from __future__ import annotations
 
 import os
-import re
 import typing
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Mapping
 
+from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
 from launch_linter.frontends.robot.xacro_values import (
     _GLOB,
     _IDENTIFIER,
     _MATH_PREFIX,
+    _PARAM,
     _PREFIX,
     _TOKEN,
+    _WHOLE_EXPRESSION,
     DROPPED,
     KEPT,
     MAX_FILES,
@@ -50,41 +52,20 @@ from launch_linter.frontends.robot.xacro_values import (
     XacroProblem,
     _Abort,
     _Block,
+    _boolean,
     _literal,
     _Macro,
     _Property,
     _Refused,
     _Table,
     _Unknown,
+    _unquoted,
 )
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
-from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate
+from launch_linter.resolve.eval_values import AttributeDict, _auto_convert
+from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate, evaluate_value
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
-
-
-class _Symbols(typing.Mapping[str, typing.Optional[str]]):
-    """The properties visible from a table, evaluated on demand, as the evaluator's args."""
-
-    def __init__(self, expander: XacroExpander, table: _Table) -> None:
-        self._expander = expander
-        self._table = table
-
-    def __contains__(self, name: object) -> bool:
-        return isinstance(name, str) and self._table.find_property(name) is not None
-
-    def __getitem__(self, name: str) -> str | None:
-        found = self._table.find_property(name)
-        if found is None:
-            raise KeyError(name)
-        value = self._expander.property_value(name, found[0], found[1])
-        return None if value is None else _literal(value)
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(())
-
-    def __len__(self) -> int:
-        return 0
 
 
 class XacroExpander:
@@ -124,6 +105,9 @@ class XacroExpander:
         self._parsed: dict[str, Element | None] = {}
         """Each file parsed once, however often it is included (the tree is only read)."""
         self._defines_macros = False
+        self._yaml_files: dict[str, object] = {}
+        self._load_yaml: object | None = None
+        self._call_site: tuple[str, int, int] | None = None
 
     # -- entry -------------------------------------------------------------------------
     def expand(self, path: str, data: bytes | None = None) -> Expansion:
@@ -217,7 +201,7 @@ class XacroExpander:
             if token in ("$${", "$$("):
                 parts.append(token[1:])
             elif token.startswith("${"):
-                parts.append(self._expression(token[2:-1], table))
+                parts.append(self._expression(self._inner(token[2:-1], table), table))
             else:
                 inner = token[2:-1]
                 if "${" in inner:
@@ -230,13 +214,18 @@ class XacroExpander:
         parts.append(text[position:])
         return "".join(parts)
 
-    def _expression(self, source: str, table: _Table) -> str:
+    def _inner(self, source: str, table: _Table) -> str:
+        # xacro substitutes the $(...) inside an expression first:
+        # ${load_yaml('$(find pkg)/config/x.yaml')}
+        return self.evaluate_text(source, table) if "$(" in source else source
+
+    def _expression(self, source: str, table: _Table, as_text: bool = True) -> typing.Any:
         source = _MATH_PREFIX.sub("", source.strip())
-        scope = EvalScope(args=_Symbols(self, table), env={}, find=lambda _: None,
+        scope = EvalScope(args=Symbols(self, table), env={}, find=lambda _: None,
                           anon=lambda name: name, dirname=None)
         self._charge(len(source) + 1)
         try:
-            return evaluate(source, scope)
+            return evaluate(source, scope) if as_text else evaluate_value(source, scope)
         except _Unknown:
             raise
         except EvalError as exc:
@@ -270,7 +259,7 @@ class XacroExpander:
         if command == "optenv" and rest:
             return self.env.get(rest[0], " ".join(rest[1:]))
         if command == "eval":
-            return self._expression(body[len("eval"):], table)
+            return str(self._expression(body[len("eval"):], table))
         raise _Unknown(f"$({body}) is not supported")
 
     def property_value(self, name: str, table: _Table, prop: _Property) -> str | None:
@@ -286,7 +275,7 @@ class XacroExpander:
             raise _Unknown(prop.reason)
         self._resolving.append(name)
         try:
-            prop.value = self.evaluate_text(prop.text, table)
+            prop.value, prop.data = self._text_or_data(prop.text, table)
         except _Unknown as unknown:
             prop.reason = unknown.reason
             raise
@@ -295,6 +284,41 @@ class XacroExpander:
             self._resolving.pop()
         return prop.value
 
+    def _text_or_data(self, text: str, table: _Table) -> tuple[str | None, object]:
+        """A text that is one ``${...}`` keeps a dict or list value, as xacro keeps the
+        value of such a text (``${load_yaml(...)}``); anything else is text."""
+        if not _WHOLE_EXPRESSION.match(text):
+            return self.evaluate_text(text, table), None
+        value = self._expression(self._inner(text[2:-1], table), table, as_text=False)
+        if isinstance(value, (dict, list)):
+            return None, value
+        if len(str(value)) > MAX_TEXT:
+            raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path, self._line)
+        return str(value), None
+
+    def yaml_loader(self) -> object:
+        if self._load_yaml is None:
+            self._load_yaml = yaml_loader(lambda: self._path, self._charge, self._yaml_files)
+        return self._load_yaml
+
+    def namespace_values(self, table: _Table) -> AttributeDict:
+        """The properties of a namespaced include as ``${ns.x}`` reads them; one whose
+        value is unknown is left out (reading it is then unknown too)."""
+        values = AttributeDict()
+        for name, prop in table.properties.items():
+            self._charge()
+            try:
+                text = self.property_value(name, table, prop)
+            except _Unknown:
+                continue
+            if prop.namespace is not None:
+                values[name] = self.namespace_values(prop.namespace)
+            elif prop.data is not None:
+                values[name] = prop.data
+            elif text is not None:
+                values[name] = _auto_convert(_literal(text))
+        return values
+
     # -- elements ----------------------------------------------------------------------
     def _node(self, element: Element, path: str, conditions: tuple[str, ...],
               tag: str | None = None) -> ExpandedNode:
@@ -302,7 +326,9 @@ class XacroExpander:
         if self._made > MAX_OUTPUT_ELEMENTS:
             raise _Abort(f"expansion makes more than {MAX_OUTPUT_ELEMENTS:,} elements", path,
                          element.line)
-        return ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
+        made = ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
+        made.call = self._call_site
+        return made
 
     def _attributes(self, element: Element, node: ExpandedNode, table: _Table) -> None:
         for name, text in element.attrib.items():
@@ -430,10 +456,7 @@ class XacroExpander:
         prop = _Property(text, None)
         if attrib.get("lazy_eval", "true").lower() in ("false", "0") or target is not table:
             # A property set in another scope is evaluated here, where its names are seen.
-            try:
-                prop = _Property(None, self.evaluate_text(text, table))
-            except _Unknown as unknown:
-                prop = _Property(None, None, unknown.reason)
+            prop = self._evaluated(text, table)
         target.properties[name] = prop
 
     def _define_macro(self, element: Element, path: str, table: _Table) -> None:
@@ -499,9 +522,8 @@ class XacroExpander:
         if included is None:
             return
         self._include_stack.append(target)
-        # With ns=, the file's macros are called as ns.name (xacro gives the file a table
-        # of its own, reached through the namespace); its properties, read as ${ns.x},
-        # stay unknown.
+        # With ns=, the file's macros are called as ns.name and its properties read as
+        # ${ns.x} (xacro gives the file a table of its own, reached through the namespace).
         inner = table if namespace is None else _Table(table)
         try:
             self._children(included.children, target, inner, out, conditions)
@@ -509,7 +531,9 @@ class XacroExpander:
             self._include_stack.pop()
         if namespace is not None:
             for name, macro in inner.macros.items():
-                table.macros[f"{namespace}.{name}"] = macro
+                table.macros[f"{namespace}.{name}"] = _Macro(
+                    macro.params, macro.defaults, macro.body, macro.path, macro.scope or inner)
+            table.properties[namespace] = _Property(None, None, namespace=inner)
 
     def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                       conditions: tuple[str, ...]) -> None:
@@ -536,7 +560,7 @@ class XacroExpander:
         if self._macro_depth >= MAX_MACRO_DEPTH:
             raise _Abort(f"macros nested deeper than {MAX_MACRO_DEPTH} (recursive macro?)",
                          path, element.line)
-        scoped = _Table(table)
+        scoped = _Table(table if macro.scope is None else macro.scope)
         params = list(macro.params)
         for attribute, text in element.attrib.items():
             if attribute not in params:
@@ -560,9 +584,10 @@ class XacroExpander:
             if forward is not None:
                 found = table.find_property(forward)
                 if found is not None:
-                    value = _Property(None, None)
+                    value = _Property(None, None, namespace=found[1].namespace)
                     try:
                         value.value = self.property_value(forward, found[0], found[1])
+                        value.data = found[1].data
                     except _Unknown as unknown:
                         value.reason = unknown.reason
                     scoped.properties[param] = value
@@ -573,45 +598,22 @@ class XacroExpander:
         if params:
             raise _Refused(f"undefined parameters [{','.join(params)}] of macro '{name}'")
         self._macro_depth += 1
+        outermost = self._call_site is None
+        if outermost:
+            self._call_site = (path, element.line, element.column)
         try:
             self._children(macro.body.children, macro.path, scoped, out, conditions)
         finally:
             self._macro_depth -= 1
+            if outermost:
+                self._call_site = None
 
     def _evaluated(self, text: str, table: _Table) -> _Property:
         try:
-            return _Property(None, self.evaluate_text(text, table))
+            value, data = self._text_or_data(text, table)
+            return _Property(None, value, data=data)
         except _Unknown as unknown:
             return _Property(None, None, unknown.reason)
-
-
-_PARAM = re.compile(
-    r"""([^\s:=]+)(?:\s*(:?=)\s*(\^\|?)?"""
-    r"""((?:\$\{[^}]*\}|\$\([^)]*\)|'[^']*'|"[^"]*"|[^\s'"])*))?""")
-"""One macro parameter: name, then optionally ``:=``/``=``, ``^``/``^|`` and a default
-that runs to the next space outside quotes, ``${}`` and ``$()`` (xacro's syntax)."""
-
-
-def _unquoted(default: str) -> str:
-    if len(default) >= 2 and default[0] == default[-1] and default[0] in "'\"":
-        return default[1:-1]
-    return default
-
-
-def _boolean(value: str) -> bool | None:
-    """xacro's ``get_boolean_value``; None when the text is not a boolean."""
-    if value in ("true", "True"):
-        return True
-    if value in ("false", "False"):
-        return False
-    try:
-        return bool(int(value))
-    except ValueError:
-        pass
-    try:
-        return bool(float(value))
-    except ValueError:
-        raise _Unknown(f"conditional value {value!r} is not a boolean") from None
 
 
 def expand(path: str, args: Mapping[str, str | None],

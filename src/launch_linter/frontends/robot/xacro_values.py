@@ -112,7 +112,7 @@ knowledge base knows (tests/knowledge checks that every plugin entry's parameter
 class ExpandedNode:
     """An element of the expanded document, with where it was written."""
 
-    __slots__ = ("attrib", "children", "column", "conditions", "line", "path", "tag",
+    __slots__ = ("attrib", "call", "children", "column", "conditions", "line", "path", "tag",
                  "text", "unknown")
 
     def __init__(self, tag: str, path: str, line: int, column: int,
@@ -131,6 +131,9 @@ class ExpandedNode:
         self.conditions = conditions
         """Texts of the enclosing ``xacro:if``/``unless`` whose values are unknown
         (``unless`` texts start with ``!``)."""
+        self.call: tuple[str, int, int] | None = None
+        """For an element a macro made: the outermost ``<xacro:macro_name .../>`` call
+        that made it (file, line, column): what a user edits to change that instance."""
 
 
 class Expansion(MutableRecord):
@@ -181,8 +184,12 @@ class _Property(MutableRecord):
     reason: str | None
     block: tuple[Element, str] | None
     """For a block property: the ``xacro:property`` element and its file."""
+    data: object
+    """A value that is not text (a dict or list from ``load_yaml``); ``value`` is None."""
+    namespace: _Table | None
+    """For the name of an ``xacro:include ns=``: the table of the included file."""
 
-    __slots__ = ("text", "value", "reason", "block")
+    __slots__ = ("text", "value", "reason", "block", "data", "namespace")
 
     def __init__(
         self,
@@ -190,11 +197,15 @@ class _Property(MutableRecord):
         value: str | None,
         reason: str | None = None,
         block: tuple[Element, str] | None = None,
+        data: object = None,
+        namespace: _Table | None = None,
     ) -> None:
         self.text = text
         self.value = value
         self.reason = reason
         self.block = block
+        self.data = data
+        self.namespace = namespace
 
 
 class _Macro(MutableRecord):
@@ -203,8 +214,11 @@ class _Macro(MutableRecord):
     """param -> (forwarded name, default text)."""
     body: Element
     path: str
+    scope: _Table | None
+    """For a macro of a namespaced include: the include's table, where its body runs
+    (xacro resolves ``ns.name`` to the namespace's own macros and properties)."""
 
-    __slots__ = ("params", "defaults", "body", "path")
+    __slots__ = ("params", "defaults", "body", "path", "scope")
 
     def __init__(
         self,
@@ -212,11 +226,13 @@ class _Macro(MutableRecord):
         defaults: dict[str, tuple[str | None, str | None]],
         body: Element,
         path: str,
+        scope: _Table | None = None,
     ) -> None:
         self.params = params
         self.defaults = defaults
         self.body = body
         self.path = path
+        self.scope = scope
 
 
 class _Block(MutableRecord):
@@ -288,3 +304,33 @@ def _literal(text: str) -> str:
         return text
     shown = repr(number)
     return shown if "." in shown else text
+
+
+_WHOLE_EXPRESSION = re.compile(r"\$\{[^}]*\}\Z")
+_PARAM = re.compile(
+    r"""([^\s:=]+)(?:\s*(:?=)\s*(\^\|?)?"""
+    r"""((?:\$\{[^}]*\}|\$\([^)]*\)|'[^']*'|"[^"]*"|[^\s'"])*))?""")
+"""One macro parameter: name, then optionally ``:=``/``=``, ``^``/``^|`` and a default
+that runs to the next space outside quotes, ``${}`` and ``$()`` (xacro's syntax)."""
+
+
+def _unquoted(default: str) -> str:
+    if len(default) >= 2 and default[0] == default[-1] and default[0] in "'\"":
+        return default[1:-1]
+    return default
+
+
+def _boolean(value: str) -> bool | None:
+    """xacro's ``get_boolean_value``; None when the text is not a boolean."""
+    if value in ("true", "True"):
+        return True
+    if value in ("false", "False"):
+        return False
+    try:
+        return bool(int(value))
+    except ValueError:
+        pass
+    try:
+        return bool(float(value))
+    except ValueError:
+        raise _Unknown(f"conditional value {value!r} is not a boolean") from None

@@ -49,7 +49,7 @@ from launch_linter.resolve.bounded import PYTHON_MAX_CALL_DEPTH as MAX_CALL_DEPT
 from launch_linter.resolve.bounded import PYTHON_MAX_ITEMS as MAX_ITEMS
 from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
 from launch_linter.resolve.bounded import STRING_METHODS, Refused, format_fields, string_method
-from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, literal
+from launch_linter.resolve.ros2_substitution import Call, Opaque, Sub, Subs, Text, literal
 from launch_linter.resolve.value import holes, resolved_text
 
 _UNSET_MARKER = "<unset launch configuration>"
@@ -201,6 +201,13 @@ class Calls(Expressions):
             return target.text
         if isinstance(target, OpenFile) and name == "read" and not args:
             return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
+        if isinstance(target, LazyStr) and target.path and not args:
+            if name == "read_text":
+                return LazyStr((Call("file-content", (target.subs,), self.segment(node)),))
+            if name in ("resolve", "absolute", "expanduser"):
+                return target
+            if name == "as_posix":
+                return LazyStr(target.subs)
         if isinstance(target, list):
             if name == "append" and len(args) == 1:
                 self.extend(target, [args[0]])
@@ -329,6 +336,9 @@ class Calls(Expressions):
                 "os.path.normpath": os.path.normpath, "pathlib.Path": os.path.join,
                 "os.path.expanduser": lambda p: p,
             }
+            if dotted == "pathlib.Path":
+                # Kept as a path: pathlib's ``/`` and ``.parent`` apply to it.
+                return LazyStr((Text(os.path.join(*texts)),), path=True)
             return operations[dotted](*texts)
         parts = tuple(_as_subs(a) for a in args if isinstance(a, (str, LazyStr)))
         if dotted in ("os.path.join", "pathlib.Path"):

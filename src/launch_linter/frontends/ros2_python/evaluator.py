@@ -70,6 +70,10 @@ class Evaluator:
     """The environment the run is told of (``--env``, and ``ROS_DISTRO`` from
     ``--ros-distro``): a Python comparison of one of its variables is decided, so that a
     branch for another distribution is not taken."""
+    installed: Callable[[], str | None] | None = None
+    """Where the file is installed (``share/<pkg>/launch/...``, spelled through the
+    package's source folder), which ``__file__`` names; None: where it is read from.
+    Asked only when ``__file__`` is read (the install rules are read for that file)."""
 
     # -- helpers -------------------------------------------------------------------------
     def scope(self, parent: Env | None) -> Env:
@@ -309,7 +313,10 @@ class Evaluator:
             a, b = then.get(name), otherwise.get(name)
             if a is b:
                 merged[name] = a
-            elif isinstance(a, list) and isinstance(b, list):
+            elif isinstance(a, list) and isinstance(b, list) and all(
+                    isinstance(item, ACTION_TYPES) for item in (*a, *b)):
+                # Lists of actions: each action runs under its branch. A list of values
+                # (arguments, say) is one or the other, never both: unknown below.
                 merged[name] = [
                     *self.under(a, True, text, node), *self.under(b, False, text, node)
                 ]

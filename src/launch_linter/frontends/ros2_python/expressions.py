@@ -4,6 +4,7 @@ comparisons, subscripts and comprehensions, over known values and bounded in siz
 from __future__ import annotations
 
 import ast
+import os
 from collections.abc import Callable
 from typing import Any
 
@@ -97,7 +98,7 @@ class Expressions(Evaluator):
             if found:
                 return value
             if name == "__file__":
-                return self.path
+                return (self.installed() if self.installed else None) or self.path
             if name == "__name__":
                 return "__launch__"
             if name in BUILTINS:
@@ -180,6 +181,12 @@ class Expressions(Evaluator):
             return base
         if isinstance(base, ContextVal) and name == "launch_configurations":
             return ConfigsVal(base.resolver)
+        if isinstance(base, LazyStr) and base.path and name == "parent":
+            # pathlib's parent of a path known as text (Path(__file__).parent.parent).
+            if all(isinstance(sub, Text) for sub in base.subs):
+                text = "".join(sub.text for sub in base.subs if isinstance(sub, Text))
+                return LazyStr((Text(os.path.dirname(text.rstrip("/")) or "/"),), path=True)
+            return self.unknown(node, "the parent of a path known only at launch time")
         if isinstance(base, MoveItConfigsVal):
             return moveit.configs_attribute(self, base, name, node)
         if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,

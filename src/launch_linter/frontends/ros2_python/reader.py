@@ -6,7 +6,7 @@ from __future__ import annotations
 import ast
 import os
 import tokenize
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from io import BytesIO
 
 from launch_linter.frontends import python_trees
@@ -52,9 +52,11 @@ def _directive_comments(data: bytes) -> tuple[tuple[int, str], ...]:
 
 
 def read_python(path: str, data: bytes, budget: Budget | None = None,
-                environ: Mapping[str, str] | None = None) -> FileRead:
+                environ: Mapping[str, str] | None = None,
+                installed: Callable[[], str | None] | None = None) -> FileRead:
     """Read a ROS 2 Python launch file (``path`` absolute, ``data`` its bytes; ``environ``
-    the environment variables the run is told of)."""
+    the environment variables the run is told of; ``installed`` tells, when asked, where
+    the file is installed, which ``__file__`` names, if that differs from ``path``)."""
     if len(data) > MAX_BYTES:
         message = f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
@@ -85,7 +87,8 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         sorted({n.lineno for n in ast.walk(tree) if isinstance(n, (ast.stmt, ast.Call))})
         if comments else ()
     )
-    interpreter = Interpreter(path, source, environ=dict(environ or {}))
+    interpreter = Interpreter(path, source, environ=dict(environ or {}),
+                              installed=installed)
     actions = _launch_description(interpreter, tree)
     if budget is not None:
         # The interpreter's own step limit bounds one file; the root file's budget bounds
