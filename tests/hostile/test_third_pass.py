@@ -89,3 +89,19 @@ def test_diff_headers_escape_the_file_name(tmp_path: Path) -> None:
     lines = done.stdout.decode().splitlines()
     assert [line[:3] for line in lines[:2]] == ["---", "+++"] and len(lines) == 5, lines
     assert "\x1b" not in done.stdout.decode()
+
+
+@pytest.mark.parametrize("fmt", ["text", "json", "sarif", "junit", "gitlab", "github"])
+def test_every_format_keeps_controls_and_bidi_inert(tmp_path: Path, fmt: str) -> None:
+    """A file name and node name with a newline, ESC, C1 controls, separators and a bidi
+    override: no output format carries them raw (JSON ones escape them as ``\\uNNNN``)."""
+    path = tmp_path / "odd\n+x\x1b[2J\u202e\x85\u2028.launch"
+    path.write_text('<launch><node pkg="tf" type="static_transform_publisher" '
+                    'name="n&#x1b;]0;x&#x7;&#x9b;&#x202e;" args="0 0 0 0 0 0 a a 100"/>'
+                    "</launch>")
+    out = _survived(run("check", str(path), "--format", fmt))
+    raw = [c for c in out if (ord(c) < 32 and c not in "\n\t") or 0x7F <= ord(c) < 0xA0
+           or c in "\u2028\u2029\u202e"]
+    assert raw == [], (fmt, raw)
+    if fmt in ("json", "sarif", "gitlab"):
+        assert "\u202e" in json.dumps(json.loads(out), ensure_ascii=False)

@@ -228,7 +228,8 @@ def _exclude_backtracking(folder: Path) -> str:
 
 
 THIRD_PASS: dict[str, Case] = {
-    "xacro_doubling": Case("work", _xacro_doubling, "steps; stopped"),
+    # Stopped by its own step bound, or on a slow machine by the tree's 5 s first.
+    "xacro_doubling": Case("work", _xacro_doubling, "its joints are not read"),
     "xacro_big_include": Case("work", _xacro_big_include),
     "xacro_many_descriptions": Case("work", _xacro_many_descriptions),
     "xacro_unread_args": Case("discovery", _xacro_unread_args),

@@ -25,7 +25,7 @@ from collections.abc import Iterable
 
 from launch_linter.engine import LintResult
 from launch_linter.model.diagnostic import Diagnostic, Severity
-from launch_linter.report.escape import json_safe, printable
+from launch_linter.report.escape import json_escaped, json_safe, printable
 
 # Messages name other findings' places ("at line 18", "(robot.launch:18)"): they move too.
 _LINE_REFERENCE = re.compile(r"\blines? \d+|:\d+(?::\d+)?\b")
@@ -107,4 +107,5 @@ def gitlab(diagnostics: Iterable[Diagnostic]) -> str:
             "severity": GITLAB_SEVERITIES[diagnostic.severity],
             "location": {"path": path, "lines": {"begin": max(diagnostic.line, 1)}},
         })
-    return json.dumps(json_safe(issues), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    return json_escaped(json.dumps(json_safe(issues), indent=2, ensure_ascii=False,
+                                   allow_nan=False)) + "\n"

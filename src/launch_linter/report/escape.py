@@ -32,6 +32,18 @@ def printable(text: str) -> str:
 
 
 _SURROGATE = re.compile("[\ud800-\udfff]")
+_RAW_IN_JSON = re.compile("[\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+"""What ``json`` leaves raw with ``ensure_ascii=False`` that a reader's terminal or editor
+would act on (C1 controls, separators, bidi overrides); C0 controls it escapes itself."""
+
+
+def json_escaped(text: str) -> str:
+    """JSON text with those characters as ``\\uNNNN`` escapes: the same document for a
+    JSON reader, inert for a person reading it (only strings can hold them)."""
+    if _RAW_IN_JSON.search(text) is None:
+        return text
+    return _RAW_IN_JSON.sub(lambda match: f"\\u{ord(match.group()):04x}", text)
+
 
 
 def json_safe(value: Any) -> Any:

@@ -14,7 +14,7 @@ from launch_linter.model.included import included_from
 from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
-from launch_linter.report.escape import json_safe
+from launch_linter.report.escape import json_escaped, json_safe
 from launch_linter.report.published import published
 
 JSON_VERSION = 1
@@ -156,7 +156,7 @@ def _encoder() -> json.JSONEncoder:
 
 
 def dumps(document: dict[str, Any]) -> str:
-    return _encoder().encode(json_safe(document))
+    return json_escaped(_encoder().encode(json_safe(document)))
 
 
 def pieces(document: dict[str, Any]) -> Iterator[str]:
@@ -171,10 +171,10 @@ def _batched(chunks: Iterable[str]) -> Iterator[str]:
     for chunk in chunks:
         batch.append(chunk)
         if len(batch) >= 4096:
-            yield "".join(batch)
+            yield json_escaped("".join(batch))
             batch.clear()
     batch.append("\n")
-    yield "".join(batch)
+    yield json_escaped("".join(batch))
 
 
 ITEM_INDENT = "\n    "

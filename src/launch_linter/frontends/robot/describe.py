@@ -92,8 +92,9 @@ class RobotCache:
                   display: Callable[[str], str] | None = None) -> Expansion:
         """The expansion of ``file`` with ``args``: computed under ``budget`` (the launch
         tree's) unless an earlier one read the same values; one stopped by a tree's budget
-        is not kept (a tree with budget left expands it again). ``display`` (how messages
-        show paths) is the run's, the same for every use."""
+        after other work of that tree is not kept (a tree with budget left expands it
+        again). ``display`` (how messages show paths) is the run's, the same for every
+        use."""
         given = dict(args)
         found = self._expansions.setdefault((file, packages.key), [])
         for args_read, env_read, expansion, log in found:
@@ -106,11 +107,15 @@ class RobotCache:
         # of ${} expressions) is a third of the start-up of a run that meets none.
         from launch_linter.frontends.robot.xacro import expand
 
+        # Begun with a tree's whole budget, an expansion stopped by it would be stopped in
+        # any tree (on a slow machine five seconds come before its own step bound).
+        fresh = budget is None or budget.steps == 0
         with reads.recording() as log:
             expansion = expand(file, given, packages.find, env,
                                locate=lambda path: packages.locate(path).path, budget=budget,
                                display=display)
-        if not expansion.cut_by_budget and len(found) < MAX_EXPANSIONS_PER_FILE:
+        kept = fresh or not expansion.cut_by_budget
+        if kept and len(found) < MAX_EXPANSIONS_PER_FILE:
             found.append((_relevant(given, expansion.args_read),
                           _relevant(env, expansion.env_read), expansion, log))
         reads.depend_on(log)
