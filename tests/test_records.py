@@ -66,7 +66,8 @@ def violations(cls: type, contract: dict[str, Any]) -> list[str]:
         return [f"{cls.__qualname__} is not a record"]
     if list(record.fields(cls)) != init_fields:
         found.append(f"fields {record.fields(cls)} != {init_fields}")
-    declared = [n for n in inspect.get_annotations(cls) if n not in cls._private]
+    # The class's own annotations (inspect.get_annotations is 3.10+).
+    declared = [n for n in vars(cls).get("__annotations__", {}) if n not in cls._private]
     if declared != init_fields:
         found.append(f"annotated fields {declared} != {init_fields}")
     parameters = list(inspect.signature(cls).parameters.values())
