@@ -36,7 +36,6 @@ wall-clock time on a shared machine; both are shown. ``uptime`` is printed first
 from __future__ import annotations
 
 import argparse
-import ast
 import json
 import os
 import resource
@@ -49,51 +48,31 @@ import typing
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from pathlib import Path
-from xml.parsers import expat
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
+from bench_common import (  # noqa: E402 - benchmarks/ is on the path (above)
+    DRIVER,
+    SYSTEM_PYTHON,
+    Pass,
+    ast_pass,
+    expat_pass,
+    load_average,
+    read,
+    roslaunch_per_file,
+    spread,
+    timed,
+)
+
 CORPUS = ROOT / ".." / "shared" / "corpus"
-DRIVER = ROOT / "scripts" / "roslaunch_oracle_driver.py"
-SYSTEM_PYTHON = "/usr/bin/python3"
 SECTIONS = ("per-file", "process", "startup", "files", "nodes", "jobs")
 
 # typing's spellings: the alias is evaluated at run time (Python 3.8).
-Pass = typing.Callable[[typing.Sequence[str]], None]
 Summary = typing.Dict[str, str]
 """What each section measured against the issue's targets, for the closing table."""
 
 
-def spread(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
-    """``median [lowest..highest]`` of ``values`` times ``scale``."""
-    med = statistics.median(values) * scale
-    low, high = min(values) * scale, max(values) * scale
-    return f"{med:.{digits}f} [{low:.{digits}f}..{high:.{digits}f}]"
-
-
-def uptime() -> str:
-    try:
-        with open("/proc/loadavg", encoding="ascii") as handle:
-            return "load average " + " ".join(handle.read().split()[:3])
-    except OSError:
-        return "load average unknown"
-
-
 # ---------------------------------------------------------------- per-file, in one process
-
-
-def read(path: str) -> bytes:
-    with open(path, "rb") as handle:
-        return handle.read()
-
-
-def expat_pass(paths: Sequence[str]) -> None:
-    for path in paths:
-        parser = expat.ParserCreate()
-        try:  # noqa: SIM105 - contextlib.suppress would cost more than the floor's parse
-            parser.Parse(read(path), True)
-        except expat.ExpatError:
-            pass
 
 
 def etree_pass(paths: Sequence[str]) -> None:
@@ -101,14 +80,6 @@ def etree_pass(paths: Sequence[str]) -> None:
         try:  # noqa: SIM105
             ET.fromstring(read(path))
         except ET.ParseError:
-            pass
-
-
-def ast_pass(paths: Sequence[str]) -> None:
-    for path in paths:
-        try:  # noqa: SIM105
-            ast.parse(read(path))
-        except (SyntaxError, ValueError):
             pass
 
 
@@ -161,31 +132,6 @@ FLOORS: dict[str, list[tuple[str, Pass]]] = {
 }
 
 
-def timed(function: Pass, paths: Sequence[str]) -> tuple[float, float]:
-    """Wall-clock and CPU seconds per file of one pass."""
-    wall, cpu = time.perf_counter(), time.process_time()
-    function(paths)
-    count = len(paths)
-    return (time.perf_counter() - wall) / count, (time.process_time() - cpu) / count
-
-
-def roslaunch_per_file(paths: Sequence[str], runs: int) -> tuple[list[float], list[float]] | None:
-    if not os.path.exists(SYSTEM_PYTHON):
-        return None
-    probe = subprocess.run([SYSTEM_PYTHON, "-c", "import roslaunch"], capture_output=True,
-                           check=False)
-    if probe.returncode != 0:
-        return None
-    request = {"package_path": [], "repeat": runs,
-               "files": [{"path": os.path.abspath(p)} for p in paths]}
-    done = subprocess.run([SYSTEM_PYTHON, str(DRIVER)], input=json.dumps(request), text=True,
-                          capture_output=True, env={}, check=True, timeout=3600)
-    result = json.loads(done.stdout.splitlines()[-1])
-    count = len(paths)
-    return ([float(r) / count for r in result["runs"]],
-            [float(r) / count for r in result["cpu_runs"]])
-
-
 def per_file_section(files: list[str], runs: int, summary: Summary) -> None:
     from launch_linter.cli import tune_collector
 
@@ -204,12 +150,12 @@ def per_file_section(files: list[str], runs: int, summary: Summary) -> None:
           f"{'ours / this (CPU)':>20s}")
     ours_cpu: dict[str, list[float]] = {}
     for name, group in groups.items():
-        ours = [cpu for _, cpu in times[(name, "launch-linter")]]
+        ours = [cpu for cpu, _ in times[(name, "launch-linter")]]
         ours_cpu[name] = ours
         for label, _ in [*FLOORS[name], ("launch-linter", ours_pass)]:
             measured = times[(name, label)]
-            cpu = [c for _, c in measured]
-            wall = [w for w, _ in measured]
+            cpu = [c for c, _ in measured]
+            wall = [w for _, w in measured]
             ratio = ("" if label == "launch-linter" else
                      spread([o / c for o, c in zip(ours, cpu)], digits=2))
             if label == FLOORS[name][0][0]:
@@ -221,7 +167,7 @@ def per_file_section(files: list[str], runs: int, summary: Summary) -> None:
     if measured is None:
         print(f"roslaunch: not measured ({SYSTEM_PYTHON} cannot import roslaunch)")
         return
-    wall, cpu = measured
+    cpu, wall = measured
     speed_up = [t / o for t, o in zip(sorted(cpu), sorted(ours_cpu["ROS 1 XML"]))]
     print(f"{'ROS 1 XML':13s} {len(ros1):6d} {'roslaunch XmlLoader':20s} "
           f"{spread(cpu, 1e6):>22s} {spread(wall, 1e6):>22s}")
@@ -331,7 +277,7 @@ def process_section(ros1: list[str], runs: int) -> None:
         return
     request = json.dumps({"package_path": [],
                           "files": [{"path": os.path.abspath(p)} for p in ros1]}).encode()
-    theirs = repeated(with_peak([SYSTEM_PYTHON, str(DRIVER)]), runs, stdin=request, env={})
+    theirs = repeated(with_peak([SYSTEM_PYTHON, DRIVER]), runs, stdin=request, env={})
     if theirs[3] != 0:
         print("roslaunch driver: not measured (it failed)")
         return
@@ -437,8 +383,8 @@ def nodes_section(sizes: Sequence[int], roslaunch_sizes: Sequence[int], runs: in
             measured = roslaunch_per_file([path], 1)
             if measured is None:
                 return
-            print(f"{'pairs':6s} {size:7d} roslaunch XmlLoader CPU {measured[1][0]:.2f} s "
-                  f"({measured[1][0] / size * 1e6:.1f} µs per node)")
+            print(f"{'pairs':6s} {size:7d} roslaunch XmlLoader CPU {measured[0][0]:.2f} s "
+                  f"({measured[0][0] / size * 1e6:.1f} µs per node)")
 
 
 def jobs_section(corpus: Path, runs: int, summary: Summary) -> None:
@@ -447,7 +393,7 @@ def jobs_section(corpus: Path, runs: int, summary: Summary) -> None:
 
     files_dir = corpus / "files"
     corpus_count = len(os.listdir(files_dir))
-    print(f"\n== check by job count ({os.cpu_count()} CPUs; {uptime()}; wall s: median "
+    print(f"\n== check by job count ({os.cpu_count()} CPUs; {load_average()}; wall s: median "
           "[spread]; ratio to --jobs 1 run by run)")
     print(f"{'input':>14s} {'jobs':18s} {'wall s':>20s} {'CPU s':>20s} "
           f"{'/ --jobs 1 (wall)':>20s}")
@@ -536,7 +482,7 @@ def main() -> int:
     if ns.quick:
         files = files[::4]
     print(f"{len(files)} corpus files; {runs} runs per figure; {os.cpu_count()} CPUs; "
-          f"Python {sys.version.split()[0]}; {uptime()}")
+          f"Python {sys.version.split()[0]}; {load_average()}")
     started = time.perf_counter()
     summary: Summary = {}
     if "per-file" in only:
@@ -558,7 +504,7 @@ def main() -> int:
     if "jobs" in only:
         jobs_section(ns.corpus, runs, summary)
     print_summary(summary)
-    print(f"\ndone in {time.perf_counter() - started:.0f} s; {uptime()}; "
+    print(f"\ndone in {time.perf_counter() - started:.0f} s; {load_average()}; "
           f"this process peak {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB")
     return 0
 

@@ -44,17 +44,24 @@ and again with ``--repeat 3``: half the difference is one pass.
 from __future__ import annotations
 
 import argparse
-import ast
 import cProfile
 import json
 import os
 import pstats
 import statistics
-import subprocess
 import sys
-import time
-from typing import Callable, Dict, List, Sequence
-from xml.parsers import expat
+from typing import Dict, List, Sequence
+
+from bench_common import (  # benchmarks/ is on the path (the script's folder)
+    Pass,
+    ast_pass,
+    expat_pass,
+    load_average,
+    read,
+    roslaunch_per_file,
+    spread,
+    timed,
+)
 
 from launch_linter.beliefs_files import load_beliefs
 from launch_linter.cli import tune_collector
@@ -65,13 +72,10 @@ from launch_linter.workspace.packages import PackageIndex
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CORPUS = os.path.join(ROOT, "..", "shared", "corpus")
-DRIVER = os.path.join(ROOT, "scripts", "roslaunch_oracle_driver.py")
-SYSTEM_PYTHON = "/usr/bin/python3"
 FORMATS = {"ros1": "ROS 1 XML", "python": "ROS 2 Python"}
 TARGETS = {"ROS 1 XML": 10.0, "ROS 2 Python": 3.0}
 """Issue 24: check per file at most this many times the floor."""
 
-Pass = Callable[[Sequence[str]], None]
 Timings = Dict[str, List[float]]
 
 
@@ -85,11 +89,6 @@ def latest_files(corpus: str) -> list[str]:
     return list(paths)
 
 
-def read(path: str) -> bytes:
-    with open(path, "rb") as handle:
-        return handle.read()
-
-
 def groups_of(paths: Sequence[str]) -> dict[str, list[str]]:
     groups: dict[str, list[str]] = {name: [] for name in FORMATS.values()}
     for path in paths:
@@ -98,23 +97,6 @@ def groups_of(paths: Sequence[str]) -> dict[str, list[str]]:
         elif not path.endswith((".yaml", ".yml")) and front_end(path, read(path)) == "ros1":
             groups["ROS 1 XML"].append(path)
     return groups
-
-
-def expat_pass(paths: Sequence[str]) -> None:
-    for path in paths:
-        parser = expat.ParserCreate()
-        try:  # noqa: SIM105 - contextlib.suppress would cost more than the floor's parse
-            parser.Parse(read(path), True)
-        except expat.ExpatError:
-            pass
-
-
-def ast_pass(paths: Sequence[str]) -> None:
-    for path in paths:
-        try:  # noqa: SIM105
-            ast.parse(read(path))
-        except (SyntaxError, ValueError):
-            pass
 
 
 FLOORS: dict[str, tuple[str, Pass]] = {
@@ -143,29 +125,6 @@ def make_check_pass() -> Pass:
     return check_pass
 
 
-def timed(function: Pass, paths: Sequence[str]) -> tuple[float, float]:
-    """CPU and wall-clock seconds per file of one pass."""
-    wall, cpu = time.perf_counter(), time.process_time()
-    function(paths)
-    count = len(paths)
-    return (time.process_time() - cpu) / count, (time.perf_counter() - wall) / count
-
-
-def spread(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
-    """``median [lowest..highest]`` of ``values`` times ``scale``."""
-    med = statistics.median(values) * scale
-    return (f"{med:.{digits}f} [{min(values) * scale:.{digits}f}.."
-            f"{max(values) * scale:.{digits}f}]")
-
-
-def load_average() -> str:
-    try:
-        with open("/proc/loadavg", encoding="ascii") as handle:
-            return "load average " + " ".join(handle.read().split()[:3])
-    except OSError:
-        return "load average unknown"
-
-
 def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> None:
     floor_label, floor = FLOORS[name]
     measures = {floor_label: floor, **passes}
@@ -187,22 +146,6 @@ def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> 
         times = statistics.median(o / f for o, f in zip(cpu["check"], cpu[floor_label]))
         verdict = "met" if times <= TARGETS[name] else "not met"
         print(f"target: check <= {TARGETS[name]:g}x {floor_label}: {verdict} ({times:.2f}x)")
-
-
-def roslaunch_per_file(paths: list[str], runs: int) -> tuple[list[float], list[float]] | None:
-    if not os.path.exists(SYSTEM_PYTHON):
-        return None
-    probe = subprocess.run([SYSTEM_PYTHON, "-c", "import roslaunch"], capture_output=True,
-                           check=False)
-    if probe.returncode != 0:
-        return None
-    request = {"package_path": [], "repeat": runs, "files": [{"path": p} for p in paths]}
-    done = subprocess.run([SYSTEM_PYTHON, DRIVER], input=json.dumps(request), text=True,
-                          capture_output=True, env={}, check=True, timeout=3600)
-    result = json.loads(done.stdout.splitlines()[-1])
-    count = len(paths)
-    return ([float(r) / count for r in result["cpu_runs"]],
-            [float(r) / count for r in result["runs"]])
 
 
 def profile(paths: list[str], function: Pass, count: int) -> None:

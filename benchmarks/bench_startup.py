@@ -27,7 +27,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -35,6 +34,8 @@ import time
 import typing
 from collections.abc import Sequence
 from pathlib import Path
+
+from bench_common import load_average, spread  # benchmarks/ is on the path (the script's)
 
 ROOT = Path(__file__).resolve().parents[1]
 Summary = typing.Dict[str, str]
@@ -64,21 +65,6 @@ with open(os.environ["BENCH_PHASES_FILE"], "w", encoding="ascii") as handle:
     json.dump([started, imported - started, done - imported], handle)
 """
 """A ``check`` in process: CPU at the start of the code, for the imports, for the run."""
-
-
-def spread(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
-    """``median [lowest..highest]`` of ``values`` times ``scale``."""
-    med = statistics.median(values) * scale
-    low, high = min(values) * scale, max(values) * scale
-    return f"{med:.{digits}f} [{low:.{digits}f}..{high:.{digits}f}]"
-
-
-def load() -> str:
-    try:
-        with open("/proc/loadavg", encoding="ascii") as handle:
-            return "load average " + " ".join(handle.read().split()[:3])
-    except OSError:
-        return "load average unknown"
 
 
 def run(argv: Sequence[str], env: dict[str, str], cwd: str) -> tuple[float, float]:
@@ -119,7 +105,7 @@ def startup_section(runs: int, summary: Summary, against: Path | None = None) ->
     cases = [("python -c pass", [sys.executable, "-c", "pass"], dict(os.environ))]
     for prefix, src in trees.items():
         cases += [(prefix + label, argv, environment(src)) for label, argv in commands.items()]
-    print(f"\n== Start-up, whole process ({runs} interleaved rounds; {load()}); ms: "
+    print(f"\n== Start-up, whole process ({runs} interleaved rounds; {load_average()}); ms: "
           "median [lowest..highest]")
     for _, argv, env in cases:  # bytecode written, results cache filled
         run(argv, env, scratch)
@@ -141,7 +127,7 @@ def startup_section(runs: int, summary: Summary, against: Path | None = None) ->
             name = label.replace("this: ", "")
             summary[f"start-up: {name}, above bare (ms)"] = spread(above, 1e3)
     _phases(runs, scratch, trees)
-    print(f"({load()} at the end)")
+    print(f"({load_average()} at the end)")
     for name in os.listdir(scratch):
         if name == ".launch-linter-cache":
             for entry in os.listdir(os.path.join(scratch, name)):
