@@ -5,17 +5,14 @@ gives the bytes ``--fix`` writes."""
 
 from __future__ import annotations
 
-import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from tests.test_diff import _applied
 
 from launch_linter.cli import main
-
-GIT = shutil.which("git")
 
 TWO_PASSES = """\
 from launch import LaunchDescription
@@ -32,14 +29,6 @@ def generate_launch_description():
 slash fixes, so it waits for the second pass."""
 
 HUMBLE = ("--ros-distro", "humble", "--unsafe-fixes", "--no-cache")
-
-
-def _git_apply(folder: Path, patch: bytes) -> None:
-    if GIT is None:
-        pytest.skip("git is not installed")
-    done = subprocess.run([GIT, "apply", "-"], cwd=folder, input=patch, capture_output=True,
-                          check=False)
-    assert done.returncode == 0, done.stderr.decode()
 
 
 def _diff(capsysbinary: pytest.CaptureFixture[bytes], *argv: str) -> bytes:
@@ -60,7 +49,7 @@ def _diff_then_fix(folder: Path, files: dict[str, bytes], argv: tuple[str, ...],
     monkeypatch.chdir(folder / "patched")
     patch = _diff(capsysbinary, ".", *argv)
     if patch:
-        _git_apply(folder / "patched", patch)
+        _applied(folder / "patched", patch)
     assert _diff(capsysbinary, ".", *argv) == b""
     monkeypatch.chdir(folder / "fixed")
     main(["check", ".", *argv, "--fix"])
