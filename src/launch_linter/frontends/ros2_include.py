@@ -35,11 +35,11 @@ def environment_names(subs: Subs, depth: int = 0) -> list[str]:
 def required_arguments(actions: tuple[Action, ...]) -> list[str]:
     """Arguments an included file declares unconditionally and without a default."""
     found: list[str] = []
-    pending: list[Action] = list(actions)
+    pending: list[Action] = list(reversed(actions))  # the next action last: a stack
     while pending:
-        action = pending.pop(0)
+        action = pending.pop()
         if isinstance(action, Group) and action.condition is None:
-            pending[:0] = action.actions
+            pending.extend(reversed(action.actions))
         elif isinstance(action, DeclareArg) and action.condition is None and (
             action.default is None
         ) and all(isinstance(sub, Text) for sub in action.name):

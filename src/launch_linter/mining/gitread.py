@@ -192,8 +192,10 @@ def commit_count(folder: str) -> tuple[int | None, str]:
     if gitdir is None:
         return None, ""
     head = head_sha(gitdir)
-    objects = os.path.join(_common_dir(gitdir), "objects")
-    if head is None or not os.path.isdir(objects) or object_store_problem(objects):
+    common = _common_dir(gitdir)
+    objects = os.path.join(common, "objects")
+    # object_store_problem also refuses a missing ``objects`` or one that is no folder.
+    if head is None or object_store_problem(objects):
         return None, ""
     git = shutil.which("git")
     if git is None:
@@ -211,7 +213,7 @@ def commit_count(folder: str) -> tuple[int | None, str]:
         with open(os.path.join(own, "objects", "info", "alternates"), "w",
                   encoding="utf-8", errors="surrogateescape") as handle:
             handle.write(os.path.abspath(objects) + "\n")
-        shallow = _read_small(os.path.join(_common_dir(gitdir), "shallow"), 16 * 1024 * 1024)
+        shallow = _read_small(os.path.join(common, "shallow"), 16 * 1024 * 1024)
         if shallow is not None:
             with open(os.path.join(own, "shallow"), "w", encoding="ascii",
                       errors="replace") as handle:

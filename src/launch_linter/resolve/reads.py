@@ -165,15 +165,7 @@ def list_folder(path: str) -> list[str]:
     """``os.listdir``, noted as a listing of every entry (:func:`note_folder`)."""
     if not _active:
         return os.listdir(path)
-    folders: list[str] = []
-    files: list[str] = []
-    with os.scandir(path) as entries:
-        for entry in entries:
-            try:
-                is_folder = entry.is_dir()
-            except OSError:
-                is_folder = False
-            (folders if is_folder else files).append(entry.name)
+    folders, files = _entries(path)
     note_folder(path, os.stat(path), folders, files, EVERY_FILE)
     return [*folders, *files]
 
@@ -187,7 +179,7 @@ def note_unsaved() -> None:
 def note_path(path: str) -> None:
     """The kind of ``path`` (or its absence) decided something."""
     if _active:
-        _active[-1].add(path, (_kind_now(path), -1, -1, None))
+        _noted_kind(path)
 
 
 PACKAGE_LISTING = "=" + ",".join(sorted((
@@ -245,8 +237,9 @@ def listing_digest(folders: Iterable[str], files: Iterable[str], listing: str) -
     return f"{listing}|{found}"
 
 
-def _listing_now(path: str, listing: str) -> str:
-    """:func:`listing_digest` of the folder ``path`` as ``os.walk`` would list it now."""
+def _entries(path: str) -> tuple[list[str], list[str]]:
+    """The names of the folder ``path``'s subfolders and of its other entries, as
+    ``os.walk`` splits them."""
     folders: list[str] = []
     files: list[str] = []
     with os.scandir(path) as entries:
@@ -256,7 +249,12 @@ def _listing_now(path: str, listing: str) -> str:
             except OSError:
                 is_folder = False
             (folders if is_folder else files).append(entry.name)
-    return listing_digest(folders, files, listing)
+    return folders, files
+
+
+def _listing_now(path: str, listing: str) -> str:
+    """:func:`listing_digest` of the folder ``path`` as ``os.walk`` would list it now."""
+    return listing_digest(*_entries(path), listing)
 
 
 def _kind_now(path: str) -> str:
