@@ -43,7 +43,6 @@ from launch_linter.frontends.robot.sources import (
     from_ros2_value,
     is_description_name,
 )
-from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
     Component,
     Params,
@@ -69,7 +68,6 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
-from launch_linter.model.launch import LaunchTree
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
@@ -317,11 +315,6 @@ class Ros2Loader(Ros2Runner):
 
 
 
-def load_ros2(path: str, options: LoadOptions, data: bytes | None = None) -> LaunchTree:
-    """Load the ROS 2 launch file ``path`` (or ``data`` standing for it)."""
-    return Ros2Loader(options).load(path, data)
-
-
 __all__ = [
     "MAX_ACTIONS_PER_TREE",
     "MAX_FILES_PER_TREE",
@@ -331,7 +324,6 @@ __all__ = [
     "STATIC_TF_PACKAGE",
     "STATIC_TF_PLUGIN",
     "Ros2Loader",
-    "load_ros2",
     "make_absolute",
     "prefix_namespace",
 ]
