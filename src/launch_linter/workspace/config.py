@@ -130,17 +130,13 @@ class Config(Record):
         _set(self, "knowledge", knowledge)
 
 
-def _categories() -> frozenset[str]:
-    return CATEGORY_NAMES
-
-
 def check_rule_ids(ids: Iterable[str], where: str) -> None:
     """Raise :class:`ConfigError` naming every id that is neither a rule nor a category."""
-    known = sorted({*CATEGORY_OF, *_categories()})
-    unknown = [i for i in ids if i not in CATEGORY_OF and i not in _categories()]
+    unknown = [i for i in ids if i not in CATEGORY_OF and i not in CATEGORY_NAMES]
     if unknown:
         import difflib  # only for the message of a mistake: not at start-up
 
+        known = sorted({*CATEGORY_OF, *CATEGORY_NAMES})
         hints = []
         for name in unknown:
             close = difflib.get_close_matches(name, known, n=1)

@@ -86,7 +86,6 @@ class Layout:
             sources.append(rule.source if rest == "." else posixpath.join(rule.source, rest))
         return Explanation(sources, exact and not self.reasons, list(self.reasons))
 
-
     def installed_as(self, source: str) -> list[str]:
         """Where the package-relative file ``source`` lands, relative to
         ``share/<package>``, in rule order (empty when no rule installs it)."""

@@ -24,7 +24,12 @@ import time
 
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
-from launch_linter.workspace.discovery import VCS_FOLDERS, WORKSPACE_FOLDERS, is_launch_name
+from launch_linter.workspace.discovery import (
+    VCS_FOLDERS,
+    WORKSPACE_FOLDERS,
+    is_launch_name,
+    walk,
+)
 from launch_linter.workspace.packages import MAX_WALK_UP, default_package_roots, nearest_package_xml
 
 MAX_FILES = 5_000
@@ -59,7 +64,7 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
     files = 0
     folders = 0
     total = 0
-    for directory, subdirs, entries in os.walk(folder):
+    for directory, subdirs, entries in walk(folder):
         folders += 1
         if folders > MAX_FOLDERS:
             break

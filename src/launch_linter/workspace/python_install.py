@@ -24,6 +24,7 @@ import posixpath
 import re
 
 from launch_linter.resolve import reads
+from launch_linter.workspace.discovery import walk
 from launch_linter.workspace.install_rules import InstallRule, Layout, share_relative
 
 MAX_SETUP_BYTES = 1024 * 1024
@@ -201,7 +202,7 @@ def _glob_regex(pattern: str, recursive: bool) -> str:
 def package_files(package_dir: str) -> list[str]:
     """The files of a package, ``/``-separated and relative to it, sorted; bounded."""
     found: list[str] = []
-    for directory, subdirs, files in os.walk(package_dir):
+    for directory, subdirs, files in walk(package_dir):
         with contextlib.suppress(OSError):  # the results cache: a file added changes them
             reads.note_folder(directory, os.stat(directory), subdirs, files, reads.EVERY_FILE)
         subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))

@@ -25,7 +25,7 @@ from launch_linter.resolve.xml_safe import (
     read_launch_bytes,
     read_regular_file,
 )
-from launch_linter.workspace.discovery import DESCRIPTION_SUFFIXES
+from launch_linter.workspace.discovery import DESCRIPTION_SUFFIXES, walk
 from launch_linter.workspace.packages import PackageIndex
 
 _INCLUDE = re.compile(rb"""<xacro:include\s[^<>]*?filename\s*=\s*["']([^"'<>]*)["']""")
@@ -99,7 +99,7 @@ def _included_names(package: str, cache: RobotCache | None) -> frozenset[str]:
 def _scan_included_names(package: str) -> frozenset[str]:
     names: set[str] = set()
     scanned = 0
-    for directory, subdirs, files in os.walk(package):
+    for directory, subdirs, files in walk(package):
         with contextlib.suppress(OSError):  # a folder gone since it was listed
             # A description added or removed here changes what is included.
             reads.note_folder(directory, os.stat(directory), subdirs, files,

@@ -108,7 +108,7 @@ class XacroExpander:
         self._parsed: dict[str, Element | None] = {}
         """Each file parsed once, however often it is included (the tree is only read)."""
         self._defines_macros = False
-        self._yaml_files: dict[str, object] = {}
+        self._yaml_files: dict[str, tuple[object, int] | _Unknown] = {}
         self._load_yaml: object | None = None
         self._call_site: tuple[str, int, int] | None = None
 

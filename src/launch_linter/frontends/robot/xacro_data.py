@@ -114,9 +114,10 @@ def as_values(document: object, path: str) -> object:
 
 
 def yaml_loader(where: Callable[[], str], charge: Callable[[int], None],
-                cache: dict[str, object]) -> object:
+                cache: dict[str, tuple[object, int] | _Unknown]) -> object:
     """The ``load_yaml`` function of one expansion: a relative name is read beside the
-    file being expanded (``where()``), each file once; its size is charged."""
+    file being expanded (``where()``), each file once (with its size, charged at every
+    use)."""
 
     def load_yaml(machine: Machine, args: tuple[object, ...]) -> object:
         if len(args) != 1 or not isinstance(args[0], str):
@@ -125,15 +126,18 @@ def yaml_loader(where: Callable[[], str], charge: Callable[[int], None],
         path = os.path.normpath(os.path.join(os.path.dirname(where()), name))
         if path not in cache:
             try:
-                cache[path] = read_yaml_data(path)
+                document = read_yaml_data(path)
             except _Unknown as unknown:
                 cache[path] = unknown
+            else:
+                cache[path] = (document, _size(document))
         found = cache[path]
         if isinstance(found, _Unknown):
             raise found
+        document, size = found
         machine.charge(1)
-        charge(_size(found))
-        return found
+        charge(size)
+        return document
 
     return function("load_yaml", load_yaml)
 
