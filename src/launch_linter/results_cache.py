@@ -350,10 +350,8 @@ class ResultsCache:
         stored = self._discovery
         if not isinstance(stored, dict) or stored.get("question") != asked:
             return None
-        holds = self._freshness.holds
-        for raw in _list(stored.get("stamps")):
-            if not holds(*_decode_stamp(raw)):
-                return None
+        if not self._stamps_hold(_list(stored.get("stamps"))):
+            return None
         return [InputFile(_str(path), _str(display))
                 for path, display in (_list(i, 2) for i in _list(stored.get("inputs")))]
 
@@ -384,10 +382,8 @@ class ResultsCache:
     def _still_holds(self, entry: object, item: InputFile) -> Linted | None:
         if not isinstance(entry, dict) or entry.get("display") != item.display:
             return None
-        holds = self._freshness.holds
-        for raw in _list(entry.get("stamps")):
-            if not holds(*_decode_stamp(raw)):
-                return None
+        if not self._stamps_hold(_list(entry.get("stamps"))):
+            return None
         for group in _list(entry.get("groups")):
             if not self._group_still_holds(_str(group)):
                 return None
@@ -397,10 +393,14 @@ class ResultsCache:
         known = self._group_holds.get(group)
         if known is None:
             stamps = self._groups.get(group)
-            holds = self._freshness.holds
-            known = isinstance(stamps, list) and all(holds(*_decode_stamp(s)) for s in stamps)
+            known = isinstance(stamps, list) and self._stamps_hold(stamps)
             self._group_holds[group] = known
         return known
+
+    def _stamps_hold(self, stamps: list[Any]) -> bool:
+        """Whether every stored stamp still holds (this run checks each path once)."""
+        holds = self._freshness.holds
+        return all(holds(*_decode_stamp(raw)) for raw in stamps)
 
     def put(self, item: InputFile, linted: Linted, log: reads.ReadLog) -> None:
         """Keep ``linted`` for ``item``, as long as what ``log`` recorded holds. A result

@@ -267,24 +267,29 @@ def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
     name = getattr(ns, "stdin_filename", None) or STDIN_NAME
     data = read_stdin()
     current = data
+    last: list[LintResult] = []
+
+    def lint() -> tuple[Diagnostic, ...]:
+        last.append(lint_bytes(current, name, options))
+        return last[-1].diagnostics
+
+    def read(path: str) -> bytes | None:
+        return current if path == name else None
+
+    def keep(path: str, old: bytes, new: bytes) -> str | None:
+        nonlocal current
+        current = new
+        return None
+
     notes: list[tuple[str, str]] = []
-    fixed_count = 0
-    for _ in range(fixing.MAX_FIX_PASSES):
-        result = lint_bytes(current, name, options)
-        fixes = fixing.fixes_by_file(result.diagnostics, ns.unsafe_fixes).get(name, [])
-        skipped: list[str] = []
-        fixed, applied = fixing.apply_edits(current, fixes, skipped)
-        notes.extend((name, reason) for reason in skipped if (name, reason) not in notes)
-        if fixed == current:
-            break
-        fixed_count += len(applied)
-        current = fixed
+    counts, _ = fixing.fix_until_stable(lint, ns.unsafe_fixes, keep, read, notes)
+    result = last[-1]  # the lint of ``current``, the text as fixed
     _print_notes(notes)
     if ns.diff:
         _write_bytes(ns, diff.unified_diff(name, data, current))
         if not ns.quiet:
             hidden = text.hidden_fixes(result.diagnostics, ns.unsafe_fixes)
-            sys.stderr.write(diff.diff_summary(fixed_count, hidden) + "\n")
+            sys.stderr.write(diff.diff_summary(sum(counts.values()), hidden) + "\n")
         return EXIT_FINDINGS if current != data and not ns.exit_zero else EXIT_OK
     if hasattr(sys.stdout, "buffer"):
         sys.stdout.flush()
@@ -292,7 +297,6 @@ def _fix_stdin(ns: argparse.Namespace, options: LintOptions) -> int:
         sys.stdout.buffer.flush()
     else:
         sys.stdout.write(current.decode("utf-8", "replace"))
-    result = lint_bytes(current, name, options)
     if not ns.quiet:
         sys.stderr.write(text.format_diagnostics(result.diagnostics))
     return _status(ns, result, None)

@@ -77,16 +77,17 @@ def published(result: LintResult) -> list[Published]:
     """Every edge of ``result`` once, in the order first met (entry points first), with
     the entry points that publish it."""
     entries = entry_points(result)
-    order = entries + [i for i in range(len(result.trees)) if i not in set(entries)]
+    is_entry = set(entries)
+    order = entries + [i for i in range(len(result.trees)) if i not in is_entry]
     found: dict[Identity, tuple[TfEdge, list[str]]] = {}
     for index in order:
         tree = result.trees[index]
-        is_entry = index in entries
+        entry = index in is_entry
         for edge in tree_edges(tree):
             identity = edge_identity(edge)
             if identity not in found:
                 found[identity] = (edge, [tree.root])
-            elif is_entry and tree.root not in found[identity][1]:
+            elif entry and tree.root not in found[identity][1]:
                 found[identity][1].append(tree.root)
     return [Published(edge, tuple(roots)) for edge, roots in found.values()]
 
