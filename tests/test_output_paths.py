@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from launch_linter.cli import main
-from launch_linter.workspace.paths import shown_path
+from launch_linter.model.paths import shown_path
 
 ROBOT = ('<launch>\n  <include file="$(dirname)/part.launch"/>\n</launch>\n')
 PART = ('<launch>\n  <node pkg="tf" type="static_transform_publisher" name="a" '

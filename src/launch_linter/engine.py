@@ -14,6 +14,7 @@ from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
 from launch_linter.model.included import cause
 from launch_linter.model.launch import FileRecord, FileStatus, LaunchTree
+from launch_linter.model.paths import shown_path
 from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
@@ -44,7 +45,6 @@ from launch_linter.workspace.packages import (
     nearest_package_xml,
     package_ros_version,
 )
-from launch_linter.workspace.paths import shown_path
 
 if TYPE_CHECKING:
     # Imported where a file is linted (``_front_ends``): a run whose results are all in

@@ -22,11 +22,11 @@ from launch_linter.commands.options import (
 )
 from launch_linter.engine import LintOptions, LintResult, lint_bytes
 from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.model.paths import shown_path
 from launch_linter.report import json_report, text
 from launch_linter.report.escape import printable
 from launch_linter.results_cache import ResultsCache
 from launch_linter.workspace.config import Config
-from launch_linter.workspace.paths import shown_path
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

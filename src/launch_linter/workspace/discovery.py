@@ -23,10 +23,10 @@ from collections.abc import Iterator, Sequence
 from typing import Callable
 
 from launch_linter.model.globs import Glob, fnmatch_glob
+from launch_linter.model.paths import shown_path
 from launch_linter.model.record import Record, _set
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
-from launch_linter.workspace.paths import shown_path
 
 LAUNCH_SUFFIXES = (
     ".launch",
