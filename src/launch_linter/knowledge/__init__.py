@@ -26,7 +26,8 @@ ROS1_DISTROS = ("kinetic", "lunar", "melodic", "noetic")
 """ROS 1 distributions in release order (``ros1_tf2_from`` names one)."""
 MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
 ANY = "*"
-_PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
+PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
+"""A ``{param}`` in a frame template (the parameter's value stands there)."""
 _COMMIT = re.compile(r"^[0-9a-f]{40}$")
 
 SCALARS = (str, bool, int, float)
@@ -275,7 +276,7 @@ def _source(data: Any, where: str) -> Source:
 
 
 def _placeholders(template: str) -> list[str]:
-    return _PLACEHOLDER.findall(template)
+    return PLACEHOLDER.findall(template)
 
 
 def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:

@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import re
 
-from launch_linter.knowledge import EdgeSpec, Entry
+from launch_linter.knowledge import PLACEHOLDER, EdgeSpec, Entry
 from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 
 MAX_TEMPLATE_DEPTH = 4
-_PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 _TRUE = ("true", "1", "yes", "on")
 _FALSE = ("false", "0", "no", "off", "")
 
@@ -97,7 +96,7 @@ class Parameters:
                 return ""
             return value
 
-        filled = _PLACEHOLDER.sub(replace, template)
+        filled = PLACEHOLDER.sub(replace, template)
         return None if unknown else filled
 
     def holds(self, condition: str) -> bool | None:
@@ -179,6 +178,6 @@ def frames_named(entry: Entry, node: NodeRecord, templates: tuple[str, ...],
     for template in templates:
         frame = params.fill(template)
         if frame:
-            names = _PLACEHOLDER.findall(template)
+            names = PLACEHOLDER.findall(template)
             out.append((frame, names[0] if len(names) == 1 else template))
     return out

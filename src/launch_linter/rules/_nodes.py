@@ -5,9 +5,7 @@ publishes ``/joint_states`` (without which robot_state_publisher sends no movabl
 
 from __future__ import annotations
 
-import re
-
-from launch_linter.knowledge import Entry, KnowledgeBase
+from launch_linter.knowledge import PLACEHOLDER, Entry, KnowledgeBase
 from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
@@ -17,9 +15,15 @@ from launch_linter.rules._api import Finding, RuleContext
 
 STATIC_PUBLISHERS = frozenset({"tf", "tf2_ros"})
 """Packages whose static_transform_publisher the tree already reads as launch edges."""
-_PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 JOINT_STATE_CONTROLLERS = ("joint_state_broadcaster/JointStateBroadcaster",
                            "joint_state_controller/JointStateController")
+AUTHORITIES = ("localization", "odometry")
+"""The roles whose edge REP 105 gives to one node alone (``frame_authority``'s)."""
+
+
+def program_of(node: NodeRecord) -> str:
+    """How a message names a launched node's program: its plugin, else package/executable."""
+    return node.plugin or f"{node.package}/{node.executable}"
 
 
 class NodeEdge(Record):
@@ -57,9 +61,8 @@ class NodeEdge(Record):
         return Location(self.node.path, self.node.line, self.node.column)
 
     def describe(self) -> str:
-        shown = self.node.plugin or f"{self.node.package}/{self.node.executable}"
         what = "Gazebo plugin" if self.node.kind == "gazebo_plugin" else "node"
-        return f"{what} {shown} ({self.node.path}:{self.node.line})"
+        return f"{what} {program_of(self.node)} ({self.node.path}:{self.node.line})"
 
 
 class Lookup(Record):
@@ -114,13 +117,27 @@ class NodeView(Record):
         return (self.unknown + self.unsure)[0] if self.unknown or self.unsure else None
 
 
-def entry_of(context: RuleContext, node: NodeRecord) -> Entry | None:
-    base = context.knowledge
+def _lookup(base: KnowledgeBase, node: NodeRecord) -> Entry | None:
     if node.kind == "controller":
         return base.plugin("controller", node.plugin or "", node.ros)
     if node.plugin is not None:
         return base.plugin(node.kind, node.plugin, node.ros)
     return base.node(node.package, node.executable, node.ros)
+
+
+def _entries(context: RuleContext) -> dict[tuple[str, str | None, str, str, int | None],
+                                           Entry | None]:
+    return {}
+
+
+def entry_of(context: RuleContext, node: NodeRecord) -> Entry | None:
+    """The knowledge base's entry of ``node``, looked up once per tree for all the rules
+    (a plugin's lookup scans every entry)."""
+    known = context.derived(_entries)
+    key = (node.kind, node.plugin, node.package, node.executable, node.ros)
+    if key not in known:
+        known[key] = _lookup(context.knowledge, node)
+    return known[key]
 
 
 def _view(context: RuleContext) -> NodeView:
@@ -202,7 +219,7 @@ def frame_parameters(entry: Entry) -> list[str]:
     templates = [t for spec in entry.publishes for t in (spec.parent, spec.child)]
     for template in (templates + list(entry.looks_up) + list(entry.camera_frames)
                      + list(entry.header_frames)):
-        for name in _PLACEHOLDER.findall(template):
+        for name in PLACEHOLDER.findall(template):
             if name not in names:
                 names.append(name)
     return names

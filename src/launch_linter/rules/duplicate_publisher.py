@@ -57,14 +57,12 @@ from collections.abc import Iterator
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of, rivals
+from launch_linter.rules._nodes import AUTHORITIES, NodeEdge, finding_at_node, nodes_of, rivals
 from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "duplicate_publisher"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
-
-AUTHORITIES = ("localization", "odometry")
 
 
 def check(context: RuleContext) -> Iterator[Finding]:

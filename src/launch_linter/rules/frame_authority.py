@@ -52,14 +52,12 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import NodeEdge, nodes_of
+from launch_linter.rules._nodes import AUTHORITIES, NodeEdge, nodes_of, program_of
 from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "frame_authority"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
-
-AUTHORITIES = ("localization", "odometry")
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -77,11 +75,10 @@ def check(context: RuleContext) -> Iterator[Finding]:
             if node.condition.excludes(edge.condition):
                 continue
             what = node_edge.role
-            shown = node.plugin or f"{node.package}/{node.executable}"
             yield finding_on(
                 edge,
                 f"static '{edge.parent}' -> '{edge.child}' while the {what} node "
-                f"{shown} ({node.path}:{node.line}) publishes it; "
+                f"{program_of(node)} ({node.path}:{node.line}) publishes it; "
                 f"REP 105 gives this edge to {what} alone",
             )
             break

@@ -49,9 +49,10 @@ from collections.abc import Iterator
 
 from launch_linter.knowledge import ROS1_DISTROS, Entry
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node, frame_parameters
+from launch_linter.rules._nodes import entry_of, finding_at_node, frame_parameters, program_of
 
 ID = "frame_param_slash"
 CATEGORY = Category.TF
@@ -98,7 +99,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
 
 def _finding(entry: Entry, node: NodeRecord, name: str, value: str,
              level: Severity | None) -> Finding:
-    program = node.plugin or f"{node.package}/{node.executable}"
+    program = program_of(node)
     when = (f" (from {str(entry.ros1_tf2_from).capitalize()} on; set --ros-distro to know)"
             if level is Severity.INFO else "")
     if entry.prefix is not None and name == entry.prefix.param:
@@ -109,6 +110,4 @@ def _finding(entry: Entry, node: NodeRecord, name: str, value: str,
         what = (f"{program} parameter '{name}' is '{value}': tf2 frame ids cannot start "
                 f"with '/', so lookups of it fail{when}; write '{value.lstrip('/')}'")
     found = finding_at_node(node, what)
-    return found if level is None else Finding(
-        found.path, found.line, found.column, found.message, found.node, found.related,
-        severity=level)
+    return found if level is None else replace(found, severity=level)

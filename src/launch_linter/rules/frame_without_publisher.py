@@ -51,7 +51,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
-from launch_linter.rules._nodes import finding_at_node, nodes_of
+from launch_linter.rules._nodes import finding_at_node, nodes_of, program_of
 from launch_linter.rules._tree import edges_of
 
 ID = "frame_without_publisher"
@@ -73,21 +73,20 @@ def check(context: RuleContext) -> Iterator[Finding]:
         return
     opener = view.open_because
     if opener is not None:
-        shown = opener.plugin or f"{opener.package}/{opener.executable}"
         names = sorted({lookup.frame for lookup in missing})
         listed = ", ".join(summarised_lazily((f"'{n}'" for n in names), len(names)))
         first = missing[0].node
         yield finding_at_node(
             first,
             f"no publisher in this tree gives {listed}, which nodes look up; the tree is "
-            f"open: {shown} ({opener.path}:{opener.line}) may publish tf (the knowledge "
-            f"base does not tell its edges)",
+            f"open: {program_of(opener)} ({opener.path}:{opener.line}) may publish tf "
+            f"(the knowledge base does not tell its edges)",
         )
         return
     for lookup in missing:
-        program = lookup.node.plugin or f"{lookup.node.package}/{lookup.node.executable}"
         yield finding_at_node(
             lookup.node,
-            f"{program} looks up '{lookup.frame}' (parameter '{lookup.param}'), which no "
-            f"static transform, URDF joint or node of this tree publishes",
+            f"{program_of(lookup.node)} looks up '{lookup.frame}' (parameter "
+            f"'{lookup.param}'), which no static transform, URDF joint or node of this tree "
+            f"publishes",
         )

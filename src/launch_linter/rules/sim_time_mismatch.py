@@ -55,7 +55,7 @@ from launch_linter.knowledge.publish import truth
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord, spawns_into_simulator
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node
+from launch_linter.rules._nodes import entry_of, finding_at_node, program_of
 
 ID = "sim_time_mismatch"
 CATEGORY = Category.TF
@@ -90,7 +90,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if not together or not _wall_time(node):
             continue
         spawner = together[0]
-        program = node.plugin or f"{node.package}/{node.executable}"
+        program = program_of(node)
         how = ("is given use_sim_time false" if node.given(PARAMETER) is not None
                else "is not given use_sim_time")
         yield finding_at_node(
