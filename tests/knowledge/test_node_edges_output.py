@@ -41,3 +41,18 @@ def test_graph_draws_node_edges_dashed_and_labelled(tmp_path: Path) -> None:
     assert edge.dynamic and edge.label[0] == "node amcl/amcl"
     assert "1 node-published edge" in graph.title
     assert "node amcl/amcl" in to_dot(graph)
+
+
+def test_transforms_text_keeps_a_frames_controls_inert(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # A frame parameter is a launch file's words: a newline or a terminal escape in it
+    # must not start a forged line or reach the terminal.
+    path = tmp_path / "a.launch"
+    path.write_text('<launch>\n<node pkg="amcl" type="amcl" name="amcl">'
+                    '<param name="base_frame_id" value="base&#10;x:1:1: \x85\u202e"/>'
+                    '</node>\n</launch>\n')
+    main(["transforms", str(path)])
+    lines = capsys.readouterr().out.splitlines()
+    (lookup,) = [line for line in lines if "(parameter base_frame_id)" in line]
+    assert "\\x0a" in lookup and "\x85" not in lookup and "\u202e" not in lookup
+    assert not any(line.startswith("x:1:1:") for line in lines)

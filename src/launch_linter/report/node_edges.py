@@ -10,7 +10,8 @@ from typing import Any
 from launch_linter.engine import LintResult
 from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.robot import NodeRecord
-from launch_linter.rules._nodes import Lookup, NodeEdge, NodeView, view_of
+from launch_linter.report.escape import printable
+from launch_linter.rules._nodes import Lookup, NodeEdge, NodeView, program_of, view_of
 
 
 def views(result: LintResult, knowledge: KnowledgeBase | None) -> Iterator[tuple[str, NodeView]]:
@@ -48,13 +49,10 @@ def document_part(result: LintResult, knowledge: KnowledgeBase | None) -> dict[s
     return {"node_edges": edges, "frame_consumers": consumers}
 
 
-def _program(node: NodeRecord) -> str:
-    return node.plugin or f"{node.package}/{node.executable}"
-
-
 def text_lines(result: LintResult, knowledge: KnowledgeBase | None) -> Iterator[str]:
     """``FILE:LINE:COL: node PROGRAM PARENT -> CHILD [role ...]`` and
-    ``FILE:LINE:COL: looks up FRAME (param NAME) PROGRAM``."""
+    ``FILE:LINE:COL: looks up FRAME (param NAME) PROGRAM``; each line through
+    :func:`printable` (frames, parameters and programs are a launch file's words)."""
     for _, view in views(result, knowledge):
         for edge in view.edges:
             node = edge.node
@@ -63,9 +61,9 @@ def text_lines(result: LintResult, knowledge: KnowledgeBase | None) -> Iterator[
                 extra.append("defaults assumed: a parameter file is not read")
             if not node.condition.always:
                 extra.append(f"when {node.condition.describe()}")
-            yield (f"{node.path}:{node.line}:{node.column}: node {_program(node)} "
-                   f"{edge.parent} -> {edge.child}  [{'; '.join(extra)}]")
+            yield printable(f"{node.path}:{node.line}:{node.column}: node {program_of(node)} "
+                            f"{edge.parent} -> {edge.child}  [{'; '.join(extra)}]")
         for lookup in view.lookups:
             node = lookup.node
-            yield (f"{node.path}:{node.line}:{node.column}: looks up {lookup.frame} "
-                   f"(parameter {lookup.param}) {_program(node)}")
+            yield printable(f"{node.path}:{node.line}:{node.column}: looks up {lookup.frame} "
+                            f"(parameter {lookup.param}) {program_of(node)}")
