@@ -202,6 +202,11 @@ class Ros2Loader(Ros2Runner):
             if isinstance(sub, Call) and sub.name == "command" and sub.args:
                 command = self._resolve(sub.args[0], scope, frame, where)
                 break
+            if (len(subs) == 1 and isinstance(sub, Call) and sub.name == "var"
+                    and len(sub.args) == 1):
+                # $(var x) of a <let> whose value is a command's output: that command.
+                name = resolved_text(self._resolve(sub.args[0], scope, frame, where))
+                command = None if name is None else scope.commands.get(name)
             if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
                 # open(path).read() or $(file-content path): a URDF file read as it is.
                 path = self._resolve(sub.args[0], scope, frame, where)

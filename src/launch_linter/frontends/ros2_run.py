@@ -59,6 +59,7 @@ from launch_linter.model.transform import (
     StaticTransform,
 )
 from launch_linter.resolve.ros2_substitution import (
+    Call,
     Ros2Scope,
     Subs,
     SubstitutionError,
@@ -100,10 +101,14 @@ class _Scope:
     parameters: list[tuple[str, str]] = field(default_factory=list)
     """What ``SetParameter`` gives every node launched after it here (a value under an
     unresolved condition is unknown)."""
+    commands: dict[str, Value] = field(default_factory=dict)
+    """The program a configuration's value is the output of (``<let name="x"
+    value="$(command 'xacro ...')"/>``): the command line, resolved where the ``let`` ran,
+    so that a robot description read through ``$(var x)`` is read as that xacro call."""
 
     def copy(self, condition: Condition) -> _Scope:
         return _Scope(dict(self.configs), dict(self.env), condition,
-                      parameters=list(self.parameters))
+                      parameters=list(self.parameters), commands=dict(self.commands))
 
 
 IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
@@ -353,6 +358,7 @@ class Ros2Runner:
         if not self._certain(scope, condition):
             value = (Hole(written, f"'{name}' is set under an unresolved condition"),)
         scope.configs[name] = value
+        scope.commands.pop(name, None)
 
     # -- actions -----------------------------------------------------------------------
     def _run(self, actions: tuple[Action, ...] | list[Action], scope: _Scope, frame: _Frame
@@ -433,6 +439,10 @@ class Ros2Runner:
             return
         value = self._resolve(action.value, scope, frame, action.where)
         self._set(scope, name, value, frame.condition, f"$(var {name})")
+        command = action.value[0] if len(action.value) == 1 else None
+        if (isinstance(command, Call) and command.name == "command" and command.args
+                and self._certain(scope, frame.condition)):
+            scope.commands[name] = self._resolve(command.args[0], scope, frame, action.where)
 
     def _set_env(self, action: SetEnv, scope: _Scope, frame: _Frame) -> None:
         name = self._name(action.name, scope, frame, action.where, "environment variable")

@@ -53,7 +53,10 @@ if typing.TYPE_CHECKING:
     from launch_linter.frontends.robot.xacro_values import XacroProblem
 
 RSP_PACKAGE = "robot_state_publisher"
-_XACRO_NAMED = re.compile(r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]""")
+_XACRO_NAMED = re.compile(
+    r"""(?:name\s*=\s*)?['"]xacro(?:\.py)?['"]|^\$\(find-exec\s+xacro(?:\.py)?\)$""")
+"""An unresolved word that names xacro: ``FindExecutable(name='xacro')`` (Python) or
+``$(find-exec xacro)`` (XML, YAML)."""
 MAX_DESCRIPTIONS_PER_TREE = 50
 MAX_EXPANSIONS_PER_FILE = 64
 """Expansions of one file kept with different args (a run's memory stays bounded)."""
@@ -140,7 +143,6 @@ def xacro_command(words: Sequence[Word], command: Value = ()) -> XacroCall | Non
     start = None
     for index, (text, resolved) in enumerate(words[:4]):
         base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
-        # An unresolved word that names xacro: FindExecutable(name='xacro') in ROS 2.
         named = not resolved and _XACRO_NAMED.search(text) is not None
         if base in ("xacro", "xacro.py") or named:
             start = index + 1

@@ -39,12 +39,13 @@ from launch_linter.frontends.ros2_python.values import (
     SubsVal,
     Unknown,
     XacroDocVal,
+    XacroParsedDoc,
     _as_subs,
     _Break,
     _Continue,
     _Return,
 )
-from launch_linter.frontends.ros2_python.xacro_call import DOCUMENT_TEXT
+from launch_linter.frontends.ros2_python.xacro_call import DOCUMENT_TEXT, document_text
 from launch_linter.resolve.bounded import PYTHON_MAX_CALL_DEPTH as MAX_CALL_DEPTH
 from launch_linter.resolve.bounded import PYTHON_MAX_ITEMS as MAX_ITEMS
 from launch_linter.resolve.bounded import PYTHON_MAX_TEXT as MAX_TEXT
@@ -199,6 +200,8 @@ class Calls(Expressions):
             return moveit.builder_method(self, target, name, args, kwargs, node)
         if isinstance(target, XacroDocVal) and name in DOCUMENT_TEXT:
             return target.text
+        if isinstance(target, XacroParsedDoc) and name in DOCUMENT_TEXT:
+            return document_text(self, target, node)
         if isinstance(target, OpenFile) and name == "read" and not args:
             return LazyStr((Call("file-content", (target.path,), self.segment(node)),))
         if isinstance(target, LazyStr) and target.path and not args:

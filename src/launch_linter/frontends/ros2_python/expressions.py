@@ -30,6 +30,7 @@ from launch_linter.frontends.ros2_python.values import (
     SubsVal,
     Unknown,
     XacroDocVal,
+    XacroParsedDoc,
     _as_subs,
     _OutOfSteps,
     _plain,
@@ -190,7 +191,7 @@ class Expressions(Evaluator):
         if isinstance(base, MoveItConfigsVal):
             return moveit.configs_attribute(self, base, name, node)
         if isinstance(base, (list, dict, str, SubsVal, LazyStr, LaunchDescriptionVal, ConfigsVal,
-                             OpenFile, MoveItBuilderVal, XacroDocVal)):
+                             OpenFile, MoveItBuilderVal, XacroDocVal, XacroParsedDoc)):
             return BoundMethod(base, name)
         if isinstance(base, LaunchObject) and base.name == "LaunchService" and (
             name == "include_launch_description"

@@ -93,6 +93,10 @@ class Interpreter(Calls):
             return self.ament(name, args, node)
         if dotted == "xacro.process_file":
             return xacro_call.process_file(self, args, kwargs, node)
+        if dotted == "xacro.parse":
+            return xacro_call.parse(self, args, kwargs, node)
+        if dotted == "xacro.process_doc":
+            return xacro_call.process_doc(self, args, kwargs, node)
         if root == "moveit_configs_utils" and name == "MoveItConfigsBuilder":
             return moveit.builder(self, args, kwargs, node)
         if root not in LAUNCH_ROOTS:

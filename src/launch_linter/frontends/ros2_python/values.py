@@ -92,6 +92,16 @@ class XacroDocVal:
     text: SubsVal
 
 
+@dataclass
+class XacroParsedDoc:
+    """``xacro.parse(open(path))``: the file's document, not yet expanded. It is mutable as
+    xacro's is: ``xacro.process_doc(doc, mappings=...)`` expands it in place, and only then
+    is its ``toxml()`` the description (``processed``, :mod:`.xacro_call`)."""
+
+    path: Subs
+    processed: object = None
+
+
 @dataclass(frozen=True)
 class SubsVal:
     """A launch substitution object (or a list of them): evaluated only when it runs."""
