@@ -177,6 +177,27 @@ def test_duplicate_node_names_are_a_roslaunch_error(tmp_path: Path) -> None:
     assert len(tree.transforms) == 3
 
 
+@pytest.mark.parametrize("conditions, reported", [
+    (('if="$(arg bswap)"', 'unless="$(arg bswap)"'), False),
+    (('if="$(arg bswap)"', 'if="$(arg other)"'), True),
+    (('', 'unless="$(arg bswap)"'), True),
+])
+def test_same_name_under_exclusive_conditions_is_no_duplicate(
+        tmp_path: Path, conditions: tuple[str, str], reported: bool) -> None:
+    # precision trial 3, fanuc_driver robot_state.launch: one node name, picked by
+    # if/unless="$(arg use_bswap)", was "multiple nodes named [/joint_state]".
+    first, second = conditions
+    tree = load(tmp_path, f"""
+        <launch>
+          <arg name="bswap"/><arg name="other"/>
+          <node {first} pkg="fanuc_driver" type="robot_state_bswap" name="joint_state"/>
+          <node {second} pkg="fanuc_driver" type="robot_state" name="joint_state"/>
+        </launch>""")
+    duplicates = messages(tree, "roslaunch_error")
+    assert duplicates == (["roslaunch file contains multiple nodes named [/joint_state]"]
+                          if reported else [])
+
+
 # --- includes ------------------------------------------------------------------------------
 
 

@@ -183,3 +183,26 @@ def test_two_parent_joints_in_one_description_say_which_one_kdl_keeps() -> None:
     (found,) = lint_urdf(text, "multiple_parents")
     assert "keeps one: 'c' under 'a' by joint 'z_first', the name that sorts last" \
         in found.message
+
+
+def _robot_group(ns: str, parent: str) -> str:
+    urdf = (f"&lt;robot name='{ns}'&gt;&lt;link name='{parent}'/&gt;&lt;link name='flange'/&gt;"
+            f"&lt;joint name='{parent}-flange' type='fixed'&gt;&lt;parent link='{parent}'/&gt;"
+            f"&lt;child link='flange'/&gt;&lt;/joint&gt;&lt;/robot&gt;")
+    return (f'<group ns="{ns}"><param name="robot_description" value="{urdf}"/>'
+            f'<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+            f'</group>')
+
+
+def test_two_robots_sharing_a_frame_name_are_left_to_robot_frame_collision() -> None:
+    # precision trial 3, ros-industrial fanuc tests/roslaunch_test.xml: each robot variant
+    # in its own namespace; 'flange' is under link_6 in one URDF and link_5 in the other.
+    options = LintOptions(package_paths=(),
+                          select=frozenset({RULE, "robot_frame_collision"}))
+    xml = f"<launch>{_robot_group('r1', 'link_6')}\n{_robot_group('r2', 'link_5')}</launch>"
+    found = lint_text(xml, "test.launch", options).diagnostics
+    assert [d.rule for d in found] == ["robot_frame_collision"]
+    # A static transform that gives 'flange' a third parent is still a second parent.
+    with_static = xml.replace("</launch>", "\n" + node("t", "base_link", "flange") + "</launch>")
+    found = lint_text(with_static, "test.launch", options).diagnostics
+    assert [d.rule for d in found].count(RULE) == 1

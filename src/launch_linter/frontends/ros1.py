@@ -60,6 +60,10 @@ from launch_linter.resolve.value import (
 )
 from launch_linter.resolve.xml_safe import Element, read_launch_bytes
 
+MAX_SAME_NAME = 64
+"""Nodes of one resolved name kept for comparison (a hostile file repeating one name
+costs a bounded look-up per node)."""
+
 
 class Ros1Loader(Ros1Tags):
     """Loads one root file (and its includes) into a :class:`LaunchTree`."""
@@ -113,7 +117,8 @@ class Ros1Loader(Ros1Tags):
         if "//" in ns:
             ns = _COLLAPSE_SLASHES.sub("/", ns)
         if not is_test and name_text and not ns_unresolved:
-            self._register_name(element, context, name_text, ns)
+            self._register_name(element, context, name_text, ns,
+                                _conjoin(context.condition, condition))
         if package_text is not None and type_text is not None:
             self._frame_node(element, context, condition, name_text, package_text, type_text,
                              None if ns_unresolved else ns)
@@ -167,12 +172,16 @@ class Ros1Loader(Ros1Tags):
             self._error(context, element, "cwd must be one of 'ROS_HOME', 'node'")
 
     def _register_name(self, element: Element, context: _Context, name: str,
-                       namespace: str) -> None:
-        """roslaunch refuses two nodes with the same resolved name in one launch tree."""
+                       namespace: str, condition: Condition) -> None:
+        """roslaunch refuses two nodes with the same resolved name in one launch tree;
+        two under conditions that exclude each other (``if="$(arg a)"`` and
+        ``unless="$(arg a)"``) are never launched together."""
         resolved_name = ns_join(namespace, name)
-        first = self.node_names.get(resolved_name)
+        earlier = self.node_names.setdefault(resolved_name, [])
+        first = next((e for e in earlier if not e[2].excludes(condition)), None)
+        if len(earlier) < MAX_SAME_NAME:
+            earlier.append((context.filename, element, condition))
         if first is None:
-            self.node_names[resolved_name] = (context.filename, element)
             return
         where = Location(self._display(first[0]), first[1].line, first[1].column)
         self._report(

@@ -212,8 +212,8 @@ class Ros1Base:
         """Why some parameters set beside the nodes could not be read."""
         self.anon = _AnonNames()
         self.root_display = ""
-        self.node_names: dict[str, tuple[str, Element]] = {}
-        """Resolved node name -> (file, element) of its first node."""
+        self.node_names: dict[str, list[tuple[str, Element, Condition]]] = {}
+        """Resolved node name -> (file, element, presence condition) of its nodes so far."""
         self._displays: dict[str, str] = {}
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None

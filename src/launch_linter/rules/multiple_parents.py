@@ -38,7 +38,10 @@ publishes `base_footprint -> laser`, or the two frames of one transform were swa
 ## Known problems
 URDF joints count when a `robot_state_publisher` of the same launch tree publishes the
 description (`robot_description` from xacro, a URDF file or literal text); a parent given
-by a node that publishes tf at run time (odometry, localization) is not seen.
+by a node that publishes tf at run time (odometry, localization) is not seen. When the
+tree's robot_state_publishers run in several namespaces (several robots), two robot
+descriptions that give one frame name different parents are left to
+`robot_frame_collision` (the robots share frame names; a prefix fixes it, not the URDF).
 """
 from __future__ import annotations
 
@@ -47,6 +50,7 @@ import itertools
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.robot import DescriptionSource
 from launch_linter.rules._api import (
     MAX_RELATED,
     Finding,
@@ -74,15 +78,18 @@ class _Parents:
         known = self.edges.setdefault(edge.parent, [])
         if not known and not edge.condition.always:
             self.conditional_firsts += 1
-        if all(other.condition != edge.condition for _, other in known):
+        if all(other.condition != edge.condition or _robot(other) != _robot(edge)
+               for _, other in known):
             known.append((position, edge))
 
-    def rivals(self, edge: Edge) -> tuple[list[tuple[str, Edge]], int, bool]:
+    def rivals(self, edge: Edge, robots_apart: bool
+               ) -> tuple[list[tuple[str, Edge]], int, bool]:
         """The first edge of each other parent that can coexist with ``edge`` (only the
         first ``MAX_RELATED`` of them: what a finding shows), in the order in which they
-        come, how many there are, and whether any has a condition."""
+        come, how many there are, and whether any has a condition. With ``robots_apart``
+        the joints of another robot description are not rivals (:func:`_other_robot`)."""
         parent = edge.parent
-        if edge.condition.always:
+        if edge.condition.always and not robots_apart:
             # Every edge coexists with this one: each other parent's first edge is its
             # rival, in the order the parents came; no need to look at all of them.
             count = len(self.edges) - (parent in self.edges)
@@ -95,7 +102,8 @@ class _Parents:
         for other_parent, known in self.edges.items():
             if other_parent == parent:
                 continue
-            first = next(((i, e) for i, e in known if coexist(e, edge)), None)
+            first = next(((i, e) for i, e in known if coexist(e, edge)
+                          and not (robots_apart and _other_robot(e, edge))), None)
             if first is not None:
                 found.append((first[0], other_parent, first[1]))
         found.sort(key=lambda item: item[0])
@@ -103,8 +111,30 @@ class _Parents:
         return [(p, e) for _, p, e in found[:MAX_RELATED]], len(found), conditional
 
 
+def _robot(edge: Edge) -> DescriptionSource | None:
+    """The robot description an edge's URDF joint comes from (None: a launch transform)."""
+    return None if edge.joint is None else edge.joint.source
+
+
+def _other_robot(a: Edge, b: Edge) -> bool:
+    """Two URDF joints of different robot descriptions."""
+    return a.joint is not None and b.joint is not None and a.joint.source != b.joint.source
+
+
+def _robots_apart(context: RuleContext) -> bool:
+    """Whether the tree's robot_state_publishers run in more than one namespace (or in one
+    the linter cannot resolve): then each publishes its own namespace's description, and
+    a frame that two descriptions give different parents is a frame name two robots share,
+    robot_frame_collision's finding (fixed by a prefix, not in either URDF), not a URDF
+    frame with two parents."""
+    publishers = [n for n in context.tree.nodes if n.package == "robot_state_publisher"]
+    namespaces = {n.namespace for n in publishers}
+    return len(publishers) > 1 and (len(namespaces) > 1 or None in namespaces)
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     edges = edges_of(context)
+    robots_apart = _robots_apart(context)
     # Only a frame that is the child of two edges may have two parents (most are of one).
     counts = collections.Counter(edge.child for edge in edges)
     by_child: dict[str, _Parents] = {}
@@ -113,7 +143,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if parent == child or counts[child] < 2:
             continue
         parents = by_child.setdefault(child, _Parents())
-        rivals, count, conditional = parents.rivals(edge)
+        rivals, count, conditional = parents.rivals(edge, robots_apart)
         parents.add(position, edge)
         if not count:
             continue
