@@ -81,6 +81,23 @@ def test_default_roots_without_a_workspace_are_the_package_parent(tmp_path: Path
     assert default_package_roots(str(robot / "a.launch")) == [str(tmp_path / "loose")]
 
 
+def test_default_roots_add_the_repository_that_holds_the_package(tmp_path: Path) -> None:
+    # precision trial 3, ros-industrial/fanuc: moveit_cfgs/<robot>_moveit_config finds
+    # <robot>_support at the repository's top (it was "not found under the package path").
+    (tmp_path / "repo" / ".git").mkdir(parents=True)
+    config = package(tmp_path / "repo" / "moveit_cfgs" / "robot_moveit_config", "cfg")
+    package(tmp_path / "repo" / "robot_support", "robot_support")
+    roots = default_package_roots(str(config / "a.launch"))
+    assert roots == [str(tmp_path / "repo" / "moveit_cfgs"), str(tmp_path / "repo")]
+    assert PackageIndex(roots).find("robot_support") == str(tmp_path / "repo" / "robot_support")
+    # A repository that is the package itself, or none within reach: the parent alone.
+    own = package(tmp_path / "own", "own")
+    (own / ".git").mkdir()
+    assert default_package_roots(str(own / "a.launch")) == [str(tmp_path)]
+    deep = package(tmp_path / "repo" / "a" / "b" / "c" / "d" / "deep", "deep")
+    assert default_package_roots(str(deep / "a.launch")) == [str(deep.parent)]
+
+
 def test_no_default_roots_outside_a_package(tmp_path: Path) -> None:
     assert default_package_roots(str(tmp_path / "a.launch")) == []
 

@@ -302,7 +302,10 @@ def default_package_roots(launch_file: str) -> list[str]:
     """The enclosing workspace of ``launch_file``: from the package that holds it (the
     nearest folder up with a ``package.xml``), walk up to a folder whose ``src/`` holds
     that package (a catkin/colcon workspace: the root is its ``src``); without one, the
-    package's parent folder is the root. A file outside any package has no roots."""
+    package's parent folder is the root, and then the repository that holds the package
+    a few folders further up (``repo/moveit_cfgs/<pkg>`` beside ``repo/<pkg>_support``:
+    cloned into a workspace's ``src``, all its packages are built together). A file
+    outside any package has no roots."""
     # os.path.realpath, not Path.resolve: on Python 3.8 resolve() leaves a reference cycle
     # (a recursive closure) behind for every call; os.path, not pathlib, which (with
     # urllib.parse) would be start-up time for every run.
@@ -329,7 +332,26 @@ def default_package_roots(launch_file: str) -> list[str]:
         if parent == directory:
             break
         directory = parent
-    return [os.path.dirname(package)]
+    return [os.path.dirname(package), *_repository_above(os.path.dirname(package))]
+
+
+MAX_REPOSITORY_DEPTH = 3
+"""Folders above a package's parent searched for its repository's ``.git`` (further up,
+a ``.git`` is more likely a home folder kept in git than the package's repository)."""
+
+
+def _repository_above(folder: str) -> list[str]:
+    """The folder above ``folder`` (not ``folder`` itself) that holds a ``.git``, when
+    there is one within ``MAX_REPOSITORY_DEPTH`` folders."""
+    directory = folder
+    for _ in range(MAX_REPOSITORY_DEPTH):
+        if reads.exists(os.path.join(directory, ".git")):
+            return [] if directory == folder else [directory]
+        parent = os.path.dirname(directory)
+        if parent == directory:
+            break
+        directory = parent
+    return []
 
 
 def nearest_package_xml(launch_file: str) -> str | None:
