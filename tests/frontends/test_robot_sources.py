@@ -36,6 +36,26 @@ def test_ros1_xacro_command(tmp_path: Path, command: str) -> None:
     assert "sonar" in {j.child for j in found.joints}
 
 
+@pytest.mark.parametrize("remap, ns, read", [
+    ('<remap from="robot_description" to="zed_description"/>', "zed", True),
+    ('<remap from="robot_description" to="/zed/zed_description"/>', "", True),
+    ("", "zed", False),  # no remap: robot_state_publisher reads robot_description
+    ('<remap from="robot_description" to="zed_description"/>', "other", False),
+])
+def test_ros1_description_read_through_a_remap(tmp_path: Path, remap: str, ns: str,
+                                               read: bool) -> None:
+    # precision trial 3, zed-ros-wrapper zed_camera.launch.xml: the description is the
+    # parameter <camera>_description, which robot_state_publisher reads by a remap.
+    node = ('<node pkg="robot_state_publisher" type="robot_state_publisher" '
+            f'name="zed_state_publisher">{remap}</node>')
+    text = (f'<launch><group ns="zed"><param name="zed_description" command="xacro {XACRO}"/>'
+            f'</group><group ns="{ns}">{node}</group></launch>' if ns else
+            f'<launch><group ns="zed"><param name="zed_description" command="xacro {XACRO}"/>'
+            f'</group>{node}</launch>')
+    found = tree(tmp_path, "a.launch", text)
+    assert bool(found.joints) is read and len(found.descriptions) == int(read)
+
+
 def test_ros1_arg_left_open_is_an_unknown_xacro_arg(tmp_path: Path) -> None:
     found = tree(tmp_path, "a.launch", f'<launch><arg name="l"/><param name="robot_description" '
                  f'command="xacro {XACRO} use_lidar:=$(arg l)"/>{RSP1}</launch>')

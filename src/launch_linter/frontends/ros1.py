@@ -22,6 +22,8 @@ from launch_linter.frontends.record import (
     transform_record,
     unresolved_message,
 )
+from launch_linter.frontends.robot.describe import RSP_PACKAGE
+from launch_linter.frontends.robot.sources import DESCRIPTION_PARAM
 from launch_linter.frontends.ros1_base import (
     _NODE_LATE_ATTRS,
     MAX_FILES_PER_TREE,
@@ -122,6 +124,8 @@ class Ros1Loader(Ros1Tags):
         if package_text is not None and type_text is not None:
             self._frame_node(element, context, condition, name_text, package_text, type_text,
                              None if ns_unresolved else ns)
+            if package_text == RSP_PACKAGE and not ns_unresolved:
+                self._description_remap(element, context, ns)
         if is_test or package is None or node_type is None:
             return
         if type_text is not None and type_text != STATIC_TF_TYPE:
@@ -132,6 +136,18 @@ class Ros1Loader(Ros1Tags):
             return
         self._transform(element, context, condition, name_value or (), ns, ns_unresolved,
                         package, node_type, late.get("args", ()))
+
+    def _description_remap(self, element: Element, context: _Context, ns: str) -> None:
+        """``<remap from="robot_description" to="X"/>`` in a robot_state_publisher: it reads
+        its description from the parameter X (resolved in the node's namespace)."""
+        for sub in element.children:
+            if sub.tag.lower() != "remap" or self._condition(sub, context) is None:
+                continue
+            source, target = (self._resolve(sub, end, context) for end in ("from", "to"))
+            source_text = None if source is None else resolved_text(source)
+            target_text = None if target is None else resolved_text(target)
+            if target_text and source_text in (DESCRIPTION_PARAM, "/" + DESCRIPTION_PARAM):
+                self.remapped_descriptions.append(ns_join(ns, target_text))
 
     def _node_children(self, element: Element, context: _Context, param_anon: dict[str, str],
                        env_anon: dict[str, str]) -> None:

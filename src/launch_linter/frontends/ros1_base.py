@@ -202,6 +202,11 @@ class Ros1Base:
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
         self.descriptions: list[DescriptionSource] = []
+        self.other_descriptions: dict[str, list[DescriptionSource]] = {}
+        """Descriptions in parameters of other names, by full name: a robot_state_publisher
+        reads one through ``<remap from="robot_description" to="..."/>``."""
+        self.remapped_descriptions: list[str] = []
+        """The full parameter names robot_state_publishers read their description from."""
         self.nodes: list[NodeRecord] = []
         self.node_params: list[tuple[str, str]] = []
         """Parameters set beside the nodes (``NODE/param``, ``<rosparam>`` files): full
@@ -327,7 +332,9 @@ class Ros1Base:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
-            descriptions=tuple(self.descriptions),
+            descriptions=(*self.descriptions, *(
+                source for name in dict.fromkeys(self.remapped_descriptions)
+                for source in self.other_descriptions.get(name, ()))),
             nodes=tuple(with_node_params(self.nodes, self.node_params, self.params_unread,
                                           self.tf_prefixes)),
         )

@@ -41,6 +41,9 @@ from launch_linter.resolve import reads
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element
 
+MAX_OTHER_DESCRIPTIONS = 256
+"""Parameters of other names kept as possible descriptions (bounded per tree)."""
+
 
 class Ros1Tags(Ros1Base):
     """The tags of a launch file, walked in order as roslaunch does."""
@@ -230,6 +233,13 @@ class Ros1Tags(Ros1Base):
             if written is not None:
                 sources["value"] = written
             self._description(element, context, _conjoin(context.condition, condition), sources)
+        elif sources and anon is None and not context.ns_unresolved:
+            # A command or file under another name: a description if a robot_state_publisher
+            # reads it by a remap of robot_description (known once the tree is read).
+            full = resolved_text(name_value)
+            if full:
+                self._other_description(element, context, _conjoin(context.condition, condition),
+                                        sources, ns_join(context.ns, full))
         elif "/" in name_text and anon is None:
             # ``<param name="hector_mapping/pub_map_odom_transform" .../>`` beside the node.
             full = resolved_text(name_value)
@@ -257,6 +267,15 @@ class Ros1Tags(Ros1Base):
                                  element.column, condition, os.path.dirname(context.filename))
         if source is not None:
             self.descriptions.append(source)
+
+    def _other_description(self, element: Element, context: _Context, condition: Condition,
+                           values: dict[str, Value], name: str) -> None:
+        if len(self.other_descriptions) >= MAX_OTHER_DESCRIPTIONS:
+            return
+        source = from_ros1_param(values, self._display(context.filename), element.line,
+                                 element.column, condition, os.path.dirname(context.filename))
+        if source is not None:
+            self.other_descriptions.setdefault(name, []).append(source)
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str,
