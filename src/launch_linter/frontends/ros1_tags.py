@@ -229,17 +229,12 @@ class Ros1Tags(Ros1Base):
             return
         name_value = ((name_text.strip(),) if "$" not in name_text
                       else self._substitute(name_text.strip(), element, "name", context, anon))
+        described = False
         if DESCRIPTION_PARAM in name_text and is_description_name(resolved_text(name_value)):
             if written is not None:
                 sources["value"] = written
             self._description(element, context, _conjoin(context.condition, condition), sources)
-        elif sources and anon is None and not context.ns_unresolved:
-            # A command or file under another name: a description if a robot_state_publisher
-            # reads it by a remap of robot_description (known once the tree is read).
-            full = resolved_text(name_value)
-            if full:
-                self._other_description(element, context, _conjoin(context.condition, condition),
-                                        sources, ns_join(context.ns, full))
+            described = True
         elif "/" in name_text and anon is None:
             # ``<param name="hector_mapping/pub_map_odom_transform" .../>`` beside the node.
             full = resolved_text(name_value)
@@ -253,6 +248,13 @@ class Ros1Tags(Ros1Base):
             text = None if written is None else resolved_text(written)
             scope = None if context.ns_unresolved else context.ns
             self.tf_prefixes.append((scope, UNKNOWN_VALUE if text is None else text))
+        if sources and not described and anon is None and not context.ns_unresolved:
+            # A command or file under another name: a description if a robot_state_publisher
+            # reads it by a remap of robot_description (known once the tree is read).
+            full = resolved_text(name_value)
+            if full:
+                self._other_description(element, context, _conjoin(context.condition, condition),
+                                        sources, ns_join(context.ns, full))
         param_type = attrib.get("type")
         if written is not None and param_type is not None:
             value = resolved_text(written)
