@@ -202,9 +202,9 @@ class Ros1Base:
         self.comments: list[Comment] = []
         self.element_lines: list[tuple[str, int]] = []
         self.descriptions: list[DescriptionSource] = []
-        self.other_descriptions: dict[str, list[DescriptionSource]] = {}
-        """Descriptions in parameters of other names, by full name: a robot_state_publisher
-        reads one through ``<remap from="robot_description" to="..."/>``."""
+        self.other_descriptions: list[tuple[str, DescriptionSource]] = []
+        """Descriptions in parameters of other names, with the full name: a
+        robot_state_publisher reads one through ``<remap from="robot_description" to=...>``."""
         self.remapped_descriptions: list[str] = []
         """The full parameter names robot_state_publishers read their description from."""
         self.nodes: list[NodeRecord] = []
@@ -324,6 +324,7 @@ class Ros1Base:
         return self._tree(FileStatus.OK)
 
     def _tree(self, status: FileStatus) -> LaunchTree:
+        remapped = set(self.remapped_descriptions)
         return LaunchTree(
             root=self.root_display,
             status=status,
@@ -333,8 +334,7 @@ class Ros1Base:
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
             descriptions=(*self.descriptions, *(
-                source for name in dict.fromkeys(self.remapped_descriptions)
-                for source in self.other_descriptions.get(name, ()))),
+                source for name, source in self.other_descriptions if name in remapped)),
             nodes=tuple(with_node_params(self.nodes, self.node_params, self.params_unread,
                                           self.tf_prefixes)),
         )

@@ -277,7 +277,7 @@ class Ros1Tags(Ros1Base):
         source = from_ros1_param(values, self._display(context.filename), element.line,
                                  element.column, condition, os.path.dirname(context.filename))
         if source is not None:
-            self.other_descriptions.setdefault(name, []).append(source)
+            self.other_descriptions.append((name, source))
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str,
