@@ -77,6 +77,19 @@ def _undeclared_reads() -> str:
     return f"<launch>{declared}{reads}{ros2_node()}</launch>"
 
 
+def _same_names() -> str:
+    # 20,000 robot_state_publishers of one name under exclusive conditions, each reading a
+    # description by a remap, and 20,000 parameters of that remapped name: the duplicate
+    # name check and the remapped descriptions stay bounded.
+    params = "".join(f'<param name="desc" textfile="/nonexistent/{i}.urdf"/>'
+                     for i in range(20_000))
+    nodes = "".join(f'<node if="$(eval arg(\'v\') == \'{i}\')" pkg="robot_state_publisher" '
+                    f'type="robot_state_publisher" name="rsp">'
+                    f'<remap from="robot_description" to="desc"/></node>'
+                    for i in range(20_000))
+    return f'<launch><arg name="v"/>{params}{nodes}{node("n")}</launch>'
+
+
 def _many_includes(folder: Path) -> str:
     _write(folder, "included/leaf.launch",
            "<launch>" + '<arg name="x" default="1"/>' * 3000 + node("leaf") + "</launch>")
@@ -275,6 +288,7 @@ CASES: dict[str, Case] = {
     "doubling_args": Case("work", _text("doubling_args.launch", _doubling_args()), "longer than"),
     "doubling_let": Case("work", _text("doubling_let.launch.xml", _doubling_let()), "longer than"),
     "many_includes": Case("work", _many_includes, "work budget"),
+    "same_names": Case("work", _text("same_names.launch", _same_names())),
     "undeclared_reads": Case("work", _text("undeclared.launch.xml", _undeclared_reads()),
                              "does not exist"),
     "eval_growth": Case("work", _text("eval_growth.launch", _eval_growth())),
