@@ -52,7 +52,7 @@ from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node, frame_parameters, program_of
+from launch_linter.rules._nodes import entry_of, finding_at_param, frame_parameters, program_of
 
 ID = "frame_param_slash"
 CATEGORY = Category.TF
@@ -61,7 +61,7 @@ EXAMPLE_PATH = "example.launch.xml"
 
 
 def _slashed(entry: Entry, node: NodeRecord) -> Iterator[tuple[str, str]]:
-    names = frame_parameters(entry)
+    names = frame_parameters(entry, node)
     if entry.prefix is not None and entry.prefix.param not in names:
         names.append(entry.prefix.param)
     for name in names:
@@ -109,5 +109,5 @@ def _finding(entry: Entry, node: NodeRecord, name: str, value: str,
     else:
         what = (f"{program} parameter '{name}' is '{value}': tf2 frame ids cannot start "
                 f"with '/', so lookups of it fail{when}; write '{value.lstrip('/')}'")
-    found = finding_at_node(node, what)
+    found = finding_at_param(node, name, what)
     return found if level is None else replace(found, severity=level)
