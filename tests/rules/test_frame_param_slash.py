@@ -129,3 +129,18 @@ def test_a_costmap_observation_source_sensor_frame_is_a_frame_it_looks_up(
     assert levels(tmp_path, "s.launch", unlisted, "melodic") == []
     # Kinetic's costmaps resolved frames with tf 1, which accepts the slash.
     assert levels(tmp_path, "s.launch", fault, "kinetic") == []
+
+
+COB = ('<launch>\n<node pkg="cob_collision_velocity_filter" type="collision_velocity_filter"'
+       ' name="collision_velocity_filter">\n<rosparam ns="anti_collision_costmap">'
+       'global_frame: {frame}\nrobot_base_frame: base_footprint\n</rosparam>\n</node>\n'
+       '</launch>\n')
+
+
+def test_the_costmap_cob_collision_velocity_filter_runs(tmp_path: Path) -> None:
+    """cob_collision_velocity_filter runs a Costmap2DROS 'anti_collision_costmap' on tf2
+    from Melodic on (cob_control melodic_dev)."""
+    assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "melodic") == [
+        (RULE, 2, "warning")]
+    assert levels(tmp_path, "c.launch", COB.format(frame="base_link"), "melodic") == []
+    assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "kinetic") == []
