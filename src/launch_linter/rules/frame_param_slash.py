@@ -2,8 +2,8 @@
 
 ## What it does
 Reports a frame parameter given to a node (`global_frame`, `odom_frame_id`,
-`base_link_frame`, a map's `frame_id`, … as the knowledge base names them,
-docs/knowledge.md) whose value starts with `/`, and a frame prefix that does
+`base_link_frame`, a map's `frame_id`, a costmap observation source's `sensor_frame`, … as
+the knowledge base names them, docs/knowledge.md) whose value starts with `/`, and a frame prefix that does
 (robot_state_publisher's `frame_prefix`: every frame it publishes then starts with `/`).
 ROS 2 nodes are checked unless their source strips the slash. A ROS 1 node is checked
 only where the knowledge base says from which release its frames reach tf2 as written
@@ -39,8 +39,9 @@ slam_toolbox and robot_localization on tf2 do not, nor a `frame_prefix` built as
 ```
 
 ## Known problems
-The finding is at the node's launch element even when the value comes from a parameter
-file (the linter does not keep where in the file each parameter was written).
+The finding is at the ROS 1 `<param>` that sets the value; a value from a parameter file
+or from ROS 2 parameters is reported at the node's launch element (the linter does not
+keep where in the file each parameter was written).
 """
 
 from __future__ import annotations
