@@ -3,8 +3,9 @@
 ## What it does
 Reports a frame parameter given to a node (`global_frame`, `odom_frame_id`,
 `base_link_frame`, a map's `frame_id`, a costmap observation source's `sensor_frame`, … as
-the knowledge base names them, docs/knowledge.md) whose value starts with `/`, and a frame prefix that does
-(robot_state_publisher's `frame_prefix`: every frame it publishes then starts with `/`).
+the knowledge base names them, docs/knowledge.md) whose value starts with `/`, and a frame
+prefix that does (robot_state_publisher's `frame_prefix`: every frame it publishes then
+starts with `/`).
 ROS 2 nodes are checked unless their source strips the slash. A ROS 1 node is checked
 only where the knowledge base says from which release its frames reach tf2 as written
 (move_base's costmaps and map_server from Melodic; Kinetic's costmaps resolved the slash
