@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Callable, List, Tuple
 
 from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.rules import duplicate_publisher
 
 RULE = "duplicate_publisher"
 Lint = Callable[..., List[Tuple[str, int]]]
@@ -68,3 +69,37 @@ def test_exclusive_conditions_and_unknown_parameters_are_silent(lint: Lint) -> N
            '<node pkg="slam_toolbox" type="async_slam_toolbox_node" name="slam">'
            '<param name="odom_frame" value="$(arg f)"/></node></launch>')
     assert lint(xml, RULE) == []
+
+
+def _run(launch: Path) -> list[tuple[str, str]]:
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    return [(d.severity.value, d.message) for d in lint_paths([str(launch)], options).diagnostics]
+
+
+def test_proven_when_every_parameter_source_was_read(tmp_path: Path) -> None:
+    """Both nodes known and every parameter source read: the finding says so and is at
+    the rule's level."""
+    (tmp_path / "ekf.yaml").write_text("world_frame: map\n")
+    launch = tmp_path / "nav.launch"
+    launch.write_text('<launch><node pkg="amcl" type="amcl" name="amcl"/>\n'
+                      '<node pkg="robot_localization" type="ekf_localization_node" '
+                      'name="ekf_map"><rosparam command="load" file="$(dirname)/ekf.yaml"/>'
+                      '</node></launch>\n')
+    [(level, message)] = _run(launch)
+    assert message.endswith("(both publishers known and their parameters read)")
+    assert level == duplicate_publisher.SEVERITY.value
+
+
+def test_not_proven_when_a_parameter_file_was_not_read(tmp_path: Path) -> None:
+    """amcl's parameter file is missing: tf_broadcast may be set there, so the finding is
+    info and names the file and the parameter left at its default."""
+    launch = tmp_path / "nav.launch"
+    launch.write_text('<launch><node pkg="amcl" type="amcl" name="amcl">'
+                      '<rosparam command="load" file="$(dirname)/missing.yaml"/></node>\n'
+                      '<node pkg="robot_localization" type="ekf_localization_node" '
+                      'name="ekf_map"><param name="world_frame" value="map"/></node>'
+                      '</launch>\n')
+    [(level, message)] = _run(launch)
+    assert level == "info"
+    assert "not proven: amcl/amcl" in message
+    assert "'tf_broadcast'" in message and "missing.yaml" in message

@@ -54,15 +54,60 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from launch_linter.knowledge import PLACEHOLDER
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import AUTHORITIES, NodeEdge, finding_at_node, nodes_of, rivals
+from launch_linter.rules._nodes import (AUTHORITIES, NodeEdge, finding_at_node, nodes_of,
+                                        program_of, rivals)
 from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "duplicate_publisher"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
+MAX_NAMED_PARAMETERS = 4
+PROVEN = "both publishers known and their parameters read"
+"""Said at the end of a proven finding (the rule's level); an unproven one says instead
+which parameter file was not read and is reported at info."""
+
+
+def _switches(edge: NodeEdge) -> list[str]:
+    """The parameters that decide whether and what ``edge`` publishes: its conditions'
+    names and the frame parameters of its templates, in the knowledge base's order."""
+    names: list[str] = []
+    spec = edge.spec
+    if spec is None:
+        return names
+    words = [w for c in spec.when for part in c.lstrip("!").split("==")
+             for w in part.split("|")]
+    words += PLACEHOLDER.findall(spec.parent) + PLACEHOLDER.findall(spec.child)
+    for name in words:
+        if name and name not in names:
+            names.append(name)
+    return names
+
+
+def unproven(edge: NodeEdge) -> str | None:
+    """Why ``edge`` is not proven (None when it is): it rests on defaults that a parameter
+    file of the node the linter did not read may change; names the file and parameters."""
+    if not edge.assumed:
+        return None
+    node = edge.node
+    defaults = [n for n in _switches(edge) if node.given(n) is None][:MAX_NAMED_PARAMETERS]
+    what = ", ".join(f"'{n}'" for n in defaults) or "its parameters"
+    why = node.unread[0] if node.unread else "a parameter source was not read"
+    return (f"{program_of(node)} ({node.path}:{node.line}) is assumed to keep its default "
+            f"{what}: {why}")
+
+
+def _evidence(found: Finding, *edges: NodeEdge) -> Finding:
+    """``found`` with its proof said: proven at the rule's level, else info naming what
+    was not read."""
+    reasons = [r for r in (unproven(e) for e in edges) if r is not None]
+    if not reasons:
+        return replace(found, message=f"{found.message} ({PROVEN})")
+    return replace(found, message=f"{found.message} (not proven: {'; '.join(reasons)})",
+                   severity=Severity.INFO)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -76,30 +121,30 @@ def check(context: RuleContext) -> Iterator[Finding]:
         other = next((e for e in earlier if rivals(e, node_edge)), None)
         earlier.append(node_edge)
         if other is not None:
-            yield finding_at_node(
+            yield _evidence(finding_at_node(
                 node_edge.node,
                 f"'{node_edge.parent}' -> '{node_edge.child}' is published by "
                 f"{node_edge.describe()} and by {other.describe()}; tf2 keeps whichever "
                 f"arrives last: switch one of them off",
                 (other.location,),
-            )
+            ), node_edge, other)
     for edge in edges_of(context):
         for node_edge in by_edge.get((edge.parent, edge.child), ()):
             if node_edge.node.condition.excludes(edge.condition):
                 continue
             if edge.joint is not None:
-                yield finding_at_node(
+                yield _evidence(finding_at_node(
                     node_edge.node,
                     f"'{edge.parent}' -> '{edge.child}' is published by "
                     f"{node_edge.describe()} and by the {edge.describe()} that "
                     f"robot_state_publisher sends; tf2 keeps whichever arrives last",
                     (edge.location,),
-                )
+                ), node_edge)
             elif node_edge.role not in AUTHORITIES:
                 found = finding_on(
                     edge,
                     f"static '{edge.parent}' -> '{edge.child}' while {node_edge.describe()} "
                     f"publishes it; tf2 keeps whichever arrives last",
                 )
-                yield replace(found, related=(node_edge.location,))
+                yield _evidence(replace(found, related=(node_edge.location,)), node_edge)
             break
