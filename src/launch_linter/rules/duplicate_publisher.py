@@ -58,8 +58,14 @@ from launch_linter.knowledge import PLACEHOLDER
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import (AUTHORITIES, NodeEdge, finding_at_node, nodes_of,
-                                        program_of, rivals)
+from launch_linter.rules._nodes import (
+    AUTHORITIES,
+    NodeEdge,
+    finding_at_node,
+    nodes_of,
+    program_of,
+    rivals,
+)
 from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "duplicate_publisher"
