@@ -134,12 +134,17 @@ class Entry(Record):
     ros1_tf2_from: str | None
     """ROS 1: the first distribution whose release hands the entry's frames to tf2 as
     written (a leading ``/`` then fails); None when not known to."""
+    inputs: tuple[str, ...]
+    """Parameters that give the node the input it needs before it publishes anything
+    (``#`` stands for a number: robot_localization's ``odom#``): with every parameter
+    source of the node read and none of them set, it publishes no edge."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
         "parameters", "publishes", "looks_up", "camera_frames", "strips_leading_slash",
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
+        "inputs",
     )
 
     def __init__(
@@ -166,6 +171,7 @@ class Entry(Record):
         origin: str,
         header_frames: tuple[str, ...] = (),
         ros1_tf2_from: str | None = None,
+        inputs: tuple[str, ...] = (),
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -189,6 +195,7 @@ class Entry(Record):
         _set(self, "origin", origin)
         _set(self, "header_frames", header_frames)
         _set(self, "ros1_tf2_from", ros1_tf2_from)
+        _set(self, "inputs", inputs)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -376,6 +383,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         origin=origin,
         header_frames=headers,
         ros1_tf2_from=tf2_from,
+        inputs=_texts(data.get("inputs"), f"{where}.inputs"),
     )
 
 
