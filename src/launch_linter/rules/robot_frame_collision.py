@@ -66,13 +66,16 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
+from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of
 
 ID = "robot_frame_collision"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
 PUBLISHER = "robot_state_publisher"
+REFUSED = "roslaunch_error"
 PREFIXES = {1: ("tf_prefix",), 2: ("frame_prefix",)}
 """The parameter that prefixes robot_state_publisher's frames, by ROS version: ROS 1 reads
 tf_prefix (found by searchParam), ROS 2 frame_prefix; each ignores the other's."""
@@ -85,7 +88,17 @@ def _prefixed(node: NodeRecord) -> bool:
 
 def check(context: RuleContext) -> Iterator[Finding]:
     tree = context.tree
-    publishers = [n for n in tree.nodes if n.package == PUBLISHER]
+    if tree.parse_check_only or any(p.rule == REFUSED for p in tree.problems):
+        # Not one running system: a test only parses the root, or roslaunch refuses the
+        # whole tree (that refusal is reported on its own).
+        return
+    yield from _descriptions(tree)
+    yield from _node_edges(context)
+
+
+def _descriptions(tree: LaunchTree) -> Iterator[Finding]:
+    """The same URDF frames from robot_state_publishers of different namespaces."""
+    publishers = [n for n in tree.nodes if n.package == PUBLISHER and n.kind == "node"]
     namespaces = {n.namespace for n in publishers}
     if len(publishers) < 2 or len(namespaces) < 2 or None in namespaces:
         return
@@ -118,3 +131,32 @@ def check(context: RuleContext) -> Iterator[Finding]:
                      f"namespaced: give each robot a frame_prefix (ROS 2) or tf_prefix "
                      f"(ROS 1)"),
         )
+
+
+def _node_edges(context: RuleContext) -> Iterator[Finding]:
+    """One edge, after each publisher's own prefix, from known nodes or simulator plugins
+    of different namespaces (one plugin block of a description spawned once per robot)."""
+    first: dict[tuple[str, str], NodeEdge] = {}
+    for edge in nodes_of(context).edges:
+        namespace = edge.node.namespace
+        if edge.assumed or namespace is None:
+            continue
+        key = (edge.parent, edge.child)
+        seen = first.get(key)
+        if seen is None:
+            first[key] = edge
+            continue
+        other = seen.node.namespace or ""
+        if (other.strip("/") == namespace.strip("/")
+                or seen.node.condition.excludes(edge.node.condition)):
+            continue
+        yield finding_at_node(
+            edge.node,
+            f"{edge.describe()} in namespace '{namespace}' publishes {edge.parent} -> "
+            f"{edge.child}, the same edge as {seen.describe()} in namespace '{other}': "
+            f"tf frames are not namespaced, so the robots overwrite each other's "
+            f"{edge.child}; give each robot its own frame names"
+            + (" (a tf_prefix set in the robot's namespace, where the plugin finds it)"
+               if edge.node.kind == "gazebo_plugin" and edge.node.ros == 1 else ""),
+            related=(seen.location,))
+        first[key] = edge
