@@ -131,3 +131,34 @@ def test_gazebo_plugins_find_tf_prefix_from_the_robot_namespace(tmp_path: Path) 
     both robots' plugins send odom -> base_footprint; set in the group, it prefixes both."""
     assert _simulation(tmp_path, "node") == [(RULE, "tb3.urdf", 4)]
     assert _simulation(tmp_path, "group") == []
+
+
+def test_frame_prefix_before_robot_state_publisher_2_5_is_no_prefix(tmp_path: Path) -> None:
+    """frame_prefix arrived in robot_state_publisher 2.5.0 (ros/robot_state_publisher#159):
+    on dashing or eloquent two namespaced publishers with it still collide."""
+    (tmp_path / "r.urdf").write_text(
+        "<robot name='r'><link name='base_link'/><link name='laser'/><joint name='j' "
+        "type='fixed'><parent link='base_link'/><child link='laser'/></joint></robot>")
+    robots = "".join(
+        f"Node(package='robot_state_publisher', executable='robot_state_publisher', "
+        f"namespace='{ns}', parameters=[{{'robot_description': open('{tmp_path}/r.urdf')"
+        f".read(), 'frame_prefix': '{ns}/'}}]),\n" for ns in ("r1", "r2"))
+    (tmp_path / "fleet.launch.py").write_text(
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+        f"def generate_launch_description():\n    return LaunchDescription([\n{robots}])\n")
+    for distro, expected in (("humble", 0), ("eloquent", 1)):
+        options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro=distro)
+        found = lint_paths([str(tmp_path / "fleet.launch.py")], options).diagnostics
+        assert len(found) == expected, distro
+
+
+def test_the_closest_tf_prefix_is_the_one_searchparam_finds() -> None:
+    from launch_linter.frontends.robot.describe import searched_tf_prefix
+    from launch_linter.model.robot import UNKNOWN_VALUE
+
+    set_in = [("/", "world"), ("/tb3_0/", "tb3_0"), ("/tb3_0/arm/", "arm")]
+    assert searched_tf_prefix("/tb3_0", set_in) == "tb3_0"
+    assert searched_tf_prefix("/tb3_0/arm", set_in) == "arm"
+    assert searched_tf_prefix("/tb3_1", set_in) == "world"
+    assert searched_tf_prefix("/tb3_10", set_in[1:]) == ""
+    assert searched_tf_prefix("/tb3_1", [(None, "x")]) == UNKNOWN_VALUE

@@ -5,7 +5,10 @@ Reports a launch tree with two or more robot descriptions published by
 `robot_state_publisher`s of different namespaces (the same robot launch file included once
 per robot, or two robots' files) when the descriptions share frame names and no
 `frame_prefix` (ROS 2) or `tf_prefix` (ROS 1) separates them. The finding is at the
-second description's launch element and names the shared frames.
+second description's launch element and names the shared frames. It also reports one edge
+sent by known nodes or simulator plugins of different namespaces after each one's own
+prefix (each robot's Gazebo diff-drive plugin sending `odom → base_footprint`), at the
+second publisher.
 
 ## Why is this bad?
 A namespace renames topics, not tf frames: every robot_state_publisher sends
@@ -53,12 +56,22 @@ the description.
 ```
 
 ## Known problems
-Reported at info: judged on too few real findings to set a warning (one, in husky's
-multi-robot simulation, which runs each robot under its own master through
-multimaster_launch: not a collision; docs/evaluation/tree_judged.jsonl). A prefix whose
-value the linter cannot resolve counts as a prefix (the rule stays silent). Only the
-parameter the node's ROS version reads counts: ROS 1 robot_state_publisher ignores a
-`frame_prefix` (ros/robot_state_publisher#192), ROS 2's has no `tf_prefix`.
+Reported at info: on 28 public multi-robot repositories nobody had used (simulations,
+fleets, multi-arm cells) it finds nothing; of the 18 findings judged so far, 17 were false
+(all of the two causes below, now silent) and one harmless: too few to set a warning
+(docs/evaluation/tree_judged.jsonl, docs/evaluation/multi-robot-trial.md). It says nothing
+about a tree roslaunch refuses (husky's multi-robot playpen passes an argument its spawn
+file no longer declares) or a root that its package only hands to
+`roslaunch_add_file_check` and never installs (abb's and universal_robot's
+`tests/roslaunch_test*.xml`: one group per launch file, only parsed). A prefix whose value
+the linter cannot resolve counts as a prefix (the rule stays silent). Only the parameter the
+node's ROS version reads counts: ROS 1 robot_state_publisher ignores a `frame_prefix`
+(ros/robot_state_publisher#192) and finds `tf_prefix` from its private namespace up; ROS 2's
+has no `tf_prefix`, and no `frame_prefix` before 2.5.0 (dashing, eloquent). ROS 1 gazebo_ros
+drive plugins (diff-drive, skid-steer, planar-move) prefix their `odom → base` edge with the
+`tf_prefix` found from the robot's namespace (theirs, else spawn_model's), not with one given
+to robot_state_publisher only; ROS 2 plugins prefix nothing. Robots started one launch
+command each (a spawn file run per robot) are separate trees: never compared.
 """
 
 from __future__ import annotations
@@ -81,8 +94,15 @@ PREFIXES = {1: ("tf_prefix",), 2: ("frame_prefix",)}
 tf_prefix (found by searchParam), ROS 2 frame_prefix; each ignores the other's."""
 
 
-def _prefixed(node: NodeRecord) -> bool:
+NO_FRAME_PREFIX = ("dashing", "eloquent")
+"""ROS 2 distributions whose robot_state_publisher has no ``frame_prefix`` (added in 2.5.0,
+ros/robot_state_publisher#159, backported to foxy in 2.4.5, August 2021)."""
+
+
+def _prefixed(node: NodeRecord, distro: str | None = None) -> bool:
     names = PREFIXES.get(node.ros or 0, ("tf_prefix", "frame_prefix"))
+    if node.ros == 2 and distro in NO_FRAME_PREFIX:
+        return False
     return any(node.given(p) not in (None, "") for p in names)
 
 
@@ -92,17 +112,17 @@ def check(context: RuleContext) -> Iterator[Finding]:
         # Not one running system: a test only parses the root, or roslaunch refuses the
         # whole tree (that refusal is reported on its own).
         return
-    yield from _descriptions(tree)
+    yield from _descriptions(tree, context.distro)
     yield from _node_edges(context)
 
 
-def _descriptions(tree: LaunchTree) -> Iterator[Finding]:
+def _descriptions(tree: LaunchTree, distro: str | None) -> Iterator[Finding]:
     """The same URDF frames from robot_state_publishers of different namespaces."""
     publishers = [n for n in tree.nodes if n.package == PUBLISHER and n.kind == "node"]
     namespaces = {n.namespace for n in publishers}
     if len(publishers) < 2 or len(namespaces) < 2 or None in namespaces:
         return
-    if any(_prefixed(n) for n in publishers):
+    if any(_prefixed(n, distro) for n in publishers):
         return
     by_source: dict[int, list[RobotJoint]] = {}
     sources: list[DescriptionSource] = []
