@@ -16,8 +16,9 @@ import os
 
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
-from launch_linter.workspace.cmake_install import MAX_CMAKE_BYTES, commands
 
+MAX_CMAKE_BYTES = 1024 * 1024
+"""The bound cmake_install puts on a CMakeLists.txt (not imported from it: see below)."""
 MAX_PACKAGE_DEPTH = 8
 """Folders walked up from a launch file to find its package.xml."""
 _CHECK_KEYWORDS = frozenset({"USE_TEST_DEPENDENCIES", "DEPENDENCIES"})
@@ -62,9 +63,16 @@ def only_parse_checked(path: str) -> bool:
         data = read_regular_file(os.path.join(folder, "CMakeLists.txt"), MAX_CMAKE_BYTES)
     except (OSError, NotRegularFile):
         return False
+    text = data.decode("utf-8", "replace")
+    if "roslaunch_add_file_check" not in text:
+        return False
+    # Imported only here: the CMake reader's install rules are dataclasses, which a run
+    # over launch files of packages without parse checks never needs (start-up time).
+    from launch_linter.workspace.cmake_install import commands
+
     relative = os.path.relpath(os.path.abspath(path), folder).replace(os.sep, "/")
     checked = False
-    for name, arguments, _line in commands(data.decode("utf-8", "replace")):
+    for name, arguments, _line in commands(text):
         texts = [a.text for a in arguments]
         if name == "roslaunch_add_file_check":
             for text in texts:
