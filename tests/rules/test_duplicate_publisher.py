@@ -117,3 +117,18 @@ def test_a_filter_given_no_input_publishes_nothing(lint: Lint) -> None:
     assert lint(fed, RULE) == []
     both = fed.replace('name="a"/>', 'name="a"><param name="imu0" value="imu"/></node>')
     assert lint(both, RULE) == [(RULE, 2)]
+
+
+def test_a_parse_check_aggregate_is_not_one_running_system(tmp_path: Path) -> None:
+    """seed_r7's tests/roslaunch_test_navigation.xml includes the mapping and the
+    localization bringups side by side only for roslaunch_add_file_check to parse them."""
+    (tmp_path / "package.xml").write_text("<package format='2'><name>nav</name></package>")
+    (tmp_path / "tests").mkdir()
+    root = tmp_path / "tests" / "check.launch"
+    root.write_text('<launch><node pkg="amcl" type="amcl" name="amcl"/>\n'
+                    '<node pkg="gmapping" type="slam_gmapping" name="gmapping"/></launch>\n')
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (tmp_path / "CMakeLists.txt").write_text("roslaunch_add_file_check(tests/check.launch)\n")
+    assert lint_paths([str(root)], options).diagnostics == ()
+    (tmp_path / "CMakeLists.txt").write_text("roslaunch_add_file_check(launch)\n")
+    assert [d.line for d in lint_paths([str(root)], options).diagnostics] == [2]
