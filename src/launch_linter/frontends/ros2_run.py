@@ -13,7 +13,6 @@ from typing import Any
 
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
-    STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
     Action,
     Component,
