@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import os
 import re
-import typing
 from collections.abc import Callable, Iterator, Mapping
 from typing import Optional, Tuple
 
@@ -292,7 +291,7 @@ def _replace_find(
     return parts
 
 
-class _ArgTexts(typing.Mapping[str, Optional[str]]):  # typing's: subscripted on 3.8
+class _ArgTexts(Mapping):  # type: ignore[type-arg]  # not subscripted: Python 3.8
     """The args as ``$(eval)`` sees them: each value's text, None where it has a hole.
 
     Worked out for the names an expression reads, not for every arg in scope at every
