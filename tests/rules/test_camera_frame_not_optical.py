@@ -69,3 +69,26 @@ def test_unjoined_frames_are_judged_by_name_and_movable_paths_not_at_all(
     assert run(tmp_path, movable) == []
     assert run(tmp_path, ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_imu_sensor.so",
                                       body="")) == []
+
+
+def test_a_sensor_pose_that_turns_the_camera_is_composed(tmp_path: Path) -> None:
+    """Gazebo renders along the x axis of the sensor's <pose> (then its <camera>'s pose)
+    in the link: a link stamped as the image frame is right when those poses turn the
+    camera so that the link is its optical frame (baxter's hand cameras)."""
+    posed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                         body="<frame_name>camera_link</frame_name>")
+    turned = posed.replace('type="depth">', 'type="depth"><pose>0 0 0 0 -1.5707963 '
+                           '1.5707963</pose>')
+    assert run(tmp_path, turned) == []
+    in_camera = posed.replace('type="depth">', 'type="depth"><camera><pose>0 0 0 0 '
+                              '-1.5707963 1.5707963</pose></camera>')
+    assert run(tmp_path, in_camera) == []
+    tilted = posed.replace('type="depth">', 'type="depth"><pose>0 0 0 0 -0.8 '
+                           '-1.5707963</pose>')
+    (found,) = run(tmp_path, tilted)
+    assert "which the sensor's <pose> does not turn into the optical frame" in found[1]
+    # A pose this reader cannot apply (SDF 1.7's relative_to) leaves the rotation unknown.
+    unknown = posed.replace('type="depth">', 'type="depth"><pose relative_to="x">0 0 0 '
+                            '0 0 0</pose>')
+    (by_name,) = run(tmp_path, unknown)
+    assert "whose name does not say optical" in by_name[1]

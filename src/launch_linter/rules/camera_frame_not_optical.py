@@ -68,6 +68,7 @@ holds no descriptions).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 from launch_linter.knowledge.publish import frames_named
@@ -85,6 +86,9 @@ EXAMPLE_PATH = "example.urdf"
 
 SENSOR_LINK = "gazebo_reference"
 """The parameter the description reader gives a plugin: the link of its ``<gazebo>``."""
+SENSOR_POSE = "gazebo_sensor_pose"
+"""The parameter it gives a sensor's plugin: the poses that turn the camera in that link
+(``frontends/robot/urdf.py``, ``SENSOR_POSE_PARAM``)."""
 OPTICAL = quaternion_from_ypr(-1.5707963267948966, 0.0, -1.5707963267948966)
 IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
 MAX_DEPTH = 64
@@ -155,6 +159,28 @@ def relative_rotation(body: str, frame: str, parents: dict[str, Edge]) -> Quater
     return _product(_inverse(body_rotation), frame_rotation)
 
 
+def camera_in_link(node: NodeRecord) -> Quaternion | None:
+    """The rotation of the rendering camera in its sensor's link: the sensor's ``<pose>``
+    then its camera's, as Gazebo composes them (identity without either); None when a pose
+    is not six known numbers."""
+    given = node.given(SENSOR_POSE)
+    if given is None:
+        return IDENTITY
+    rotation: Quaternion = IDENTITY
+    for pose in given.split(";"):
+        words = pose.split()
+        if len(words) != 6:
+            return None
+        try:
+            roll, pitch, yaw = (float(w) for w in words[3:])
+        except ValueError:
+            return None
+        if not all(math.isfinite(v) for v in (roll, pitch, yaw)):
+            return None
+        rotation = _product(rotation, quaternion_from_ypr(yaw, pitch, roll))
+    return rotation
+
+
 def _camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, str]]:
     entry = entry_of(context, node)
     if entry is None or not entry.camera_frames:
@@ -184,20 +210,31 @@ def check(context: RuleContext) -> Iterator[Finding]:
     parents = parents_of(edges_of(context))
     for node in plugins:
         body = node.given(SENSOR_LINK)
+        camera = camera_in_link(node)
         for frame, param in _camera_frames(context, node):
             frame = frame.lstrip("/")
-            rotation = None if body is None else relative_rotation(body, frame, parents)
-            if rotation is not None:
+            rotation = (None if body is None or camera is None
+                        else relative_rotation(body, frame, parents))
+            if rotation is not None and camera is not None:
+                rotation = _product(_inverse(camera), rotation)
                 if same_rotation(rotation, OPTICAL, 1e-3):
                     continue
-                what = ("its sensor link itself" if frame == body else
-                        f"not rotated from its sensor link '{body}' by the optical rotation")
+                turned = "" if camera == IDENTITY else " (and the sensor's <pose>)"
+                if frame == body:
+                    what = "its sensor link itself" + (
+                        ", which the sensor's <pose> does not turn into the optical frame"
+                        if turned else "")
+                else:
+                    what = (f"not rotated from its sensor link '{body}'{turned} by the "
+                            f"optical rotation")
+                axis = "the sensor's" if turned else "the link's"
+                base = f"the sensor's pose in '{body}'" if turned else f"'{body}'"
                 yield finding_at_node(
                     node,
                     f"camera plugin {node.plugin} stamps its images with '{frame}' "
-                    f"({param}), which is {what}: Gazebo renders along the link's x axis "
+                    f"({param}), which is {what}: Gazebo renders along {axis} x axis "
                     f"and fills the data z forward (REP 103); stamp them with a child "
-                    f"frame of '{body}' at rpy \"-pi/2 0 -pi/2\"",
+                    f"frame of {base} at rpy \"-pi/2 0 -pi/2\"",
                 )
             elif "optical" not in frame:
                 yield finding_at_node(

@@ -62,6 +62,10 @@ CATEGORY = Category.TF
 SEVERITY = Severity.INFO
 EXAMPLE_PATH = "example.launch.xml"
 PARAMETER = "use_sim_time"
+CONTROLLER_LOADERS = frozenset({"spawner", "spawner.py", "unspawner", "unspawner.py"})
+"""controller_manager's programs that only ask the manager to load or unload controllers
+(controller_manager/spawner.py, humble): the joint states are stamped by the manager's
+clock (inside the simulator with gazebo_ros2_control), never by theirs."""
 
 
 def _wall_time(node: NodeRecord) -> bool | None:
@@ -75,29 +79,78 @@ def _wall_time(node: NodeRecord) -> bool | None:
     return None if value is None else not value
 
 
+def _on_sim_time(node: NodeRecord) -> bool:
+    """Whether the launch gives ``node`` use_sim_time true (a value it resolved)."""
+    given = node.given(PARAMETER)
+    return given is not None and given != UNKNOWN_VALUE and truth(given) is True
+
+
+class _Source:
+    """What says the tree runs on simulated time: a spawner proves it (the simulator
+    publishes /clock); a node the launch puts on simulated time only says that its author
+    expects a /clock, so a node given use_sim_time false on purpose is not judged by it."""
+
+    def __init__(self, node: NodeRecord, how: str, proof: bool) -> None:
+        self.node = node
+        self.how = how
+        self.proof = proof
+
+
+def _clock_sources(nodes: tuple[NodeRecord, ...]) -> list[_Source]:
+    """The spawners first, then the ROS 2 nodes given use_sim_time true."""
+    spawners = [_Source(n, f"{n.package}/{n.executable} ({n.path}:{n.line}) spawns the "
+                           f"robot into a simulator that publishes /clock", True)
+                for n in nodes if spawns_into_simulator(n) and n.ros == 2]
+    on_sim = [_Source(n, f"{program_of(n)} ({n.path}:{n.line}) is given use_sim_time "
+                         f"true", False)
+              for n in nodes if n.kind == "node" and n.ros == 2 and _on_sim_time(n)]
+    return spawners + on_sim
+
+
+def _stamps_tf(context: RuleContext, node: NodeRecord) -> str | None:
+    """How ``node``'s clock reaches tf: it sends or looks up transforms, or it publishes
+    the /joint_states whose stamps robot_state_publisher gives the movable joints; None
+    when the knowledge base says neither."""
+    entry = entry_of(context, node)
+    if entry is None:
+        return None
+    if entry.publishes or entry.looks_up:
+        return "its tf stamps and lookups miss the simulated ones"
+    if node.executable in CONTROLLER_LOADERS:
+        return None
+    if entry.publishes_joint_states and any(
+            (e := entry_of(context, n)) is not None and e.publishes_description
+            for n in context.tree.nodes if n is not node):
+        return ("its /joint_states stamps become the stamps of the movable joints' "
+                "transforms that robot_state_publisher sends")
+    return None
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     nodes = context.tree.nodes
-    spawners = [n for n in nodes if spawns_into_simulator(n) and n.ros == 2]
-    if not spawners:
+    sources = _clock_sources(nodes)
+    if not sources:
         return
     for node in nodes:
         if node.kind != "node" or node.ros != 2 or spawns_into_simulator(node):
             continue
-        entry = entry_of(context, node)
-        if entry is None or not (entry.publishes or entry.looks_up):
+        if not _wall_time(node):
             continue
-        together = [s for s in spawners if not s.condition.excludes(node.condition)]
-        if not together or not _wall_time(node):
+        effect = _stamps_tf(context, node)
+        if effect is None:
             continue
-        spawner = together[0]
+        given = node.given(PARAMETER) is not None
+        source = next((s for s in sources if s.node is not node and (s.proof or not given)
+                       and not s.node.condition.excludes(node.condition)), None)
+        if source is None:
+            continue
         program = program_of(node)
-        how = ("is given use_sim_time false" if node.given(PARAMETER) is not None
-               else "is not given use_sim_time")
+        how = "is given use_sim_time false" if given else "is not given use_sim_time"
+        fix = ("set use_sim_time to true" if source.proof else
+               "give both the same use_sim_time (true where a simulator or a bag "
+               "publishes /clock)")
         yield finding_at_node(
             node,
-            f"{program} {how}: it runs on wall time while {spawner.package}/"
-            f"{spawner.executable} ({spawner.path}:{spawner.line}) spawns the robot into "
-            f"a simulator that publishes /clock; its tf stamps and lookups miss the "
-            f"simulated ones: set use_sim_time to true",
-            related=(Location(spawner.path, spawner.line, spawner.column),),
+            f"{program} {how}: it runs on wall time while {source.how}; {effect}: {fix}",
+            related=(Location(source.node.path, source.node.line, source.node.column),),
         )

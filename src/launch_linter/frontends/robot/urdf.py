@@ -136,6 +136,10 @@ SENSOR_LINK_PARAM = "gazebo_reference"
 """The parameter a plugin's record gives the link of its ``<gazebo reference=...>``: a
 sensor plugin's default frame (gazebo_ros's SensorFrameID) and the body its sensor looks
 out of."""
+SENSOR_POSE_PARAM = "gazebo_sensor_pose"
+"""The parameter a sensor plugin's record gives the pose of the camera in its link: the
+``<sensor><pose>`` and the ``<camera><pose>`` inside it, as Gazebo composes them
+(sensor's then camera's), each ``x y z roll pitch yaw``, joined by ``;``."""
 MAX_PLUGINS = 200
 
 
@@ -154,15 +158,36 @@ def _ros_of(plugin: ExpandedNode) -> int | None:
     return 1 if tags & ROS1_PLUGIN_TAGS else None
 
 
-def _plugin_elements(gazebo: ExpandedNode) -> list[ExpandedNode]:
-    """The plugins of a ``<gazebo>`` block: its own and its sensors'."""
-    found: list[ExpandedNode] = []
+def _plugin_elements(gazebo: ExpandedNode) -> list[tuple[ExpandedNode, ExpandedNode | None]]:
+    """The plugins of a ``<gazebo>`` block, its own and its sensors', each with its
+    sensor (None for the block's own)."""
+    found: list[tuple[ExpandedNode, ExpandedNode | None]] = []
     for child in gazebo.children:
         if child.tag == "plugin":
-            found.append(child)
+            found.append((child, None))
         elif child.tag == "sensor":
-            found.extend(p for p in child.children if p.tag == "plugin")
+            found.extend((p, child) for p in child.children if p.tag == "plugin")
     return found
+
+
+def _pose_text(element: ExpandedNode) -> str:
+    """An SDF ``<pose>`` as its six numbers' text; UNKNOWN_VALUE when its text is not
+    known or it has attributes (``relative_to``, ``degrees``) this reader does not apply."""
+    if element.text is None or element.attrib:
+        return UNKNOWN_VALUE
+    return element.text
+
+
+def _sensor_pose(sensor: ExpandedNode) -> str | None:
+    """The poses that place a sensor's camera in its link (:data:`SENSOR_POSE_PARAM`);
+    None when the sensor gives none."""
+    poses = [_pose_text(child) for child in sensor.children if child.tag == "pose"]
+    for camera in sensor.children:
+        if camera.tag == "camera":
+            poses.extend(_pose_text(c) for c in camera.children if c.tag == "pose")
+    if not poses:
+        return None
+    return UNKNOWN_VALUE if UNKNOWN_VALUE in poses else ";".join(poses)
 
 
 def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
@@ -178,13 +203,16 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
         if gazebo.tag != "gazebo":
             continue
         reference = gazebo.attrib.get("reference")
-        for plugin in _plugin_elements(gazebo):
+        for plugin, sensor in _plugin_elements(gazebo):
             filename = plugin.attrib.get("filename")
             if not filename or "filename" in plugin.unknown:
                 continue
             params: list[tuple[str, str]] = []
             if reference and "reference" not in gazebo.unknown:
                 params.append((SENSOR_LINK_PARAM, reference))
+            pose = None if sensor is None else _sensor_pose(sensor)
+            if pose is not None:
+                params.append((SENSOR_POSE_PARAM, pose))
             namespace: str | None = "/"
             for child in plugin.children:
                 inner = child.children if child.tag == "ros" else [child]
@@ -223,7 +251,7 @@ def literal_root(text: str, path: str, line: int, own_lines: bool = False
         node.text = element.text.strip()
         # Only joints and Gazebo plugins, with their children, matter; the rest of the
         # tree is not copied.
-        if element.tag in ("robot", "joint", "gazebo", "sensor", "plugin", "ros"):
+        if element.tag in ("robot", "joint", "gazebo", "sensor", "camera", "plugin", "ros"):
             node.children = [convert(child) for child in element.children]
         return node
 
