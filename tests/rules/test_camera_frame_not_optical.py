@@ -92,3 +92,12 @@ def test_a_sensor_pose_that_turns_the_camera_is_composed(tmp_path: Path) -> None
                             '0 0 0</pose>')
     (by_name,) = run(tmp_path, unknown)
     assert "whose name does not say optical" in by_name[1]
+
+
+def test_a_multicamera_with_posed_cameras_is_not_guessed(tmp_path: Path) -> None:
+    posed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_multicamera.so",
+                         body="<frameName>camera_link_optical</frameName>")
+    two = posed.replace('type="depth">', 'type="depth"><camera name="l"><pose>0 0.1 0 0 0 '
+                        '0</pose></camera><camera name="r"><pose>0 -0.1 0 0 0 0</pose>'
+                        '</camera>')
+    assert run(tmp_path, two) == []

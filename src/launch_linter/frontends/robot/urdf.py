@@ -56,6 +56,15 @@ def _condition(marks: tuple[str, ...]) -> Condition:
     return Condition(literals)
 
 
+LEGACY_INSERT = "insert_block"
+"""An ``insert_block`` written without the ``xacro:`` prefix: xacro before 1.14 (ROS
+Melodic and older) inserted the block, 1.14 and later keep the element as it is (xacro
+CHANGELOG 1.14.0, "Require all xacro commands to be prefixed with 'xacro:'")."""
+LEGACY_INSERT_REASON = ("the joint's <origin> is an <insert_block> without the xacro: "
+                        "prefix: xacro before 1.14 (Melodic and older) inserts it, later "
+                        "versions drop it")
+
+
 def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
               outer: Condition) -> list[RobotJoint]:
     """The joints directly under ``<robot>``, as edges of the tf tree."""
@@ -83,6 +92,10 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
         origin = _first(joint, "origin")
         xyz, why_xyz = _vector(origin, "xyz")
         rpy, why_rpy = _vector(origin, "rpy")
+        if origin is None and _first(joint, LEGACY_INSERT) is not None:
+            xyz = rpy = None
+            unresolved.extend(("translation", "rotation"))
+            reasons.append(LEGACY_INSERT_REASON)
         if why_xyz is not None:
             unresolved.append("translation")
             reasons.append(why_xyz)
@@ -139,7 +152,9 @@ out of."""
 SENSOR_POSE_PARAM = "gazebo_sensor_pose"
 """The parameter a sensor plugin's record gives the pose of the camera in its link: the
 ``<sensor><pose>`` and the ``<camera><pose>`` inside it, as Gazebo composes them
-(sensor's then camera's), each ``x y z roll pitch yaw``, joined by ``;``."""
+(sensor's then camera's: gazebo-classic gazebo/sensors/CameraSensor.cc and
+DepthCameraSensor.cc, ``Init``, commit 00eaa74), each ``x y z roll pitch yaw``, joined
+by ``;``."""
 MAX_PLUGINS = 200
 
 
@@ -182,12 +197,16 @@ def _sensor_pose(sensor: ExpandedNode) -> str | None:
     """The poses that place a sensor's camera in its link (:data:`SENSOR_POSE_PARAM`);
     None when the sensor gives none."""
     poses = [_pose_text(child) for child in sensor.children if child.tag == "pose"]
-    for camera in sensor.children:
-        if camera.tag == "camera":
-            poses.extend(_pose_text(c) for c in camera.children if c.tag == "pose")
+    cameras = [child for child in sensor.children if child.tag == "camera"]
+    for camera in cameras:
+        poses.extend(_pose_text(c) for c in camera.children if c.tag == "pose")
     if not poses:
         return None
-    return UNKNOWN_VALUE if UNKNOWN_VALUE in poses else ";".join(poses)
+    # A multicamera's cameras each have their own pose: which one a frame is for is not
+    # known here.
+    if UNKNOWN_VALUE in poses or len(cameras) > 1:
+        return UNKNOWN_VALUE
+    return ";".join(poses)
 
 
 def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
