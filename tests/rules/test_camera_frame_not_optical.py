@@ -94,10 +94,35 @@ def test_a_sensor_pose_that_turns_the_camera_is_composed(tmp_path: Path) -> None
     assert "whose name does not say optical" in by_name[1]
 
 
-def test_a_multicamera_with_posed_cameras_is_not_guessed(tmp_path: Path) -> None:
+def test_a_multicamera_turns_as_its_cameras_when_they_agree(tmp_path: Path) -> None:
     posed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_multicamera.so",
                          body="<frameName>camera_link_optical</frameName>")
-    two = posed.replace('type="depth">', 'type="depth"><camera name="l"><pose>0 0.1 0 0 0 '
-                        '0</pose></camera><camera name="r"><pose>0 -0.1 0 0 0 0</pose>'
-                        '</camera>')
-    assert run(tmp_path, two) == []
+    pair = ('type="depth"><camera name="l"><pose>0 0.1 0 0 0 0</pose></camera>'
+            '<camera name="r"><pose>0 -0.1 0 {} 0 0</pose></camera>')
+    side_by_side = posed.replace('type="depth">', pair.format(0))
+    (found,) = run(tmp_path, side_by_side.replace("camera_link_optical</frameName>",
+                                                  "camera_link</frameName>"))
+    assert "its sensor link itself" in found[1]
+    assert run(tmp_path, side_by_side) == []
+    turned_apart = posed.replace('type="depth">', pair.format(0.5)).replace(
+        "camera_link_optical</frameName>", "camera_link</frameName>")
+    (by_name,) = run(tmp_path, turned_apart)
+    assert "whose name does not say optical" in by_name[1]
+
+
+def test_a_proven_rotation_warns_and_a_name_alone_informs(tmp_path: Path) -> None:
+    """The rotation over fixed joints is proof (warning); a frame that no fixed path joins
+    to the sensor's link is judged by its name only, which a package publishing an optical
+    frame under another name defeats (info)."""
+    path = tmp_path / "robot.urdf"
+
+    def levels(text: str) -> list[str]:
+        path.write_text(text)
+        options = LintOptions(package_paths=(), select=frozenset({RULE}))
+        return [d.severity.value for d in lint_paths([str(path)], options).diagnostics]
+
+    proven = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body="")
+    assert levels(proven) == ["warning"]
+    named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                         body="<frame_name>head_rgb_frame</frame_name>")
+    assert levels(named) == ["info"]

@@ -197,16 +197,35 @@ def _sensor_pose(sensor: ExpandedNode) -> str | None:
     """The poses that place a sensor's camera in its link (:data:`SENSOR_POSE_PARAM`);
     None when the sensor gives none."""
     poses = [_pose_text(child) for child in sensor.children if child.tag == "pose"]
+    turns = {_turn(_pose_text(pose)) for child in sensor.children if child.tag == "camera"
+             for pose in child.children if pose.tag == "pose"}
     cameras = [child for child in sensor.children if child.tag == "camera"]
-    for camera in cameras:
-        poses.extend(_pose_text(c) for c in camera.children if c.tag == "pose")
-    if not poses:
+    if any(not any(c.tag == "pose" for c in camera.children) for camera in cameras):
+        turns.add((0.0, 0.0, 0.0))
+    if not poses and turns <= {(0.0, 0.0, 0.0)}:
         return None
-    # A multicamera's cameras each have their own pose: which one a frame is for is not
-    # known here.
-    if UNKNOWN_VALUE in poses or len(cameras) > 1:
+    # A multicamera's cameras each have their own pose: their rotation is the camera's
+    # when they all agree (a stereo pair side by side), unknown otherwise.
+    turn = next(iter(turns), None) if len(turns) == 1 else None
+    if UNKNOWN_VALUE in poses or (turns and turn is None):
         return UNKNOWN_VALUE
+    if turn is not None:
+        poses.append(f"0 0 0 {turn[0]} {turn[1]} {turn[2]}")
     return ";".join(poses)
+
+
+def _turn(pose: str) -> tuple[float, float, float] | None:
+    """A pose's roll, pitch and yaw; None when it is not six finite numbers."""
+    words = pose.split()
+    if len(words) != 6:
+        return None
+    try:
+        roll, pitch, yaw = (float(w) for w in words[3:])
+    except ValueError:
+        return None
+    if not all(math.isfinite(v) for v in (roll, pitch, yaw)):
+        return None
+    return (roll, pitch, yaw)
 
 
 def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
