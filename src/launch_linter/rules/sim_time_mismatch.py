@@ -11,6 +11,10 @@ runs on simulated time when it spawns a robot into Gazebo (`gazebo_ros spawn_ent
 `ros_gz_sim create`: the simulator publishes `/clock`), or when it gives another ROS 2 node
 use_sim_time true; that second evidence judges only nodes not given use_sim_time at all
 (a node given false on purpose may be the right one: which clock is wrong is not known).
+joint_state_publisher stamps `/joint_states` with its own clock (joint_state_publisher.py,
+ros2 05a9679, `timer_callback`) and robot_state_publisher sends the movable joints with
+that stamp (robot_state_publisher.cpp, rolling 01a7be1, `publishTransforms(...,
+state->header.stamp)`).
 Nodes whose parameters are not all read and nodes under a condition that excludes the
 evidence's are left out, and so is robot_state_publisher itself: it stamps movable joints
 with the stamps of the `/joint_states` it reads, and fixed joints go to `/tf_static`,
@@ -72,9 +76,10 @@ SEVERITY = Severity.INFO
 EXAMPLE_PATH = "example.launch.xml"
 PARAMETER = "use_sim_time"
 CONTROLLER_LOADERS = frozenset({"spawner", "spawner.py", "unspawner", "unspawner.py"})
-"""controller_manager's programs that only ask the manager to load or unload controllers
-(controller_manager/spawner.py, humble): the joint states are stamped by the manager's
-clock (inside the simulator with gazebo_ros2_control), never by theirs."""
+"""controller_manager's programs that only ask the manager to load, configure, switch or
+unload controllers (ros-controls/ros2_control controller_manager/controller_manager/
+spawner.py, commit 05ec1bd: service calls only): the joint states are stamped by the
+manager's clock (inside the simulator with gazebo_ros2_control), never by theirs."""
 
 
 def _wall_time(node: NodeRecord) -> bool | None:
