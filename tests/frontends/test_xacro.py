@@ -195,6 +195,11 @@ def test_an_unprefixed_insert_block_leaves_the_origin_unknown(tmp_path: Path) ->
     (found,) = joints(run(tmp_path, legacy))
     assert found.rpy is None and found.unresolved == ("translation", "rotation")
     assert "xacro before 1.14" in found.reasons[0]
+    source = DescriptionSource("x.launch", 1, 1, DescriptionKind.XACRO, "r.xacro")
+    noetic = run(tmp_path, legacy).root
+    assert noetic is not None
+    (dropped,) = joints_of(noetic, source, str, Condition(), distro_known=True)
+    assert dropped.rpy == (0.0, 0.0, 0.0) and dropped.unresolved == ()
     prefixed = macro.format(joint("a", "b", '<xacro:insert_block name="o"/>'))
     (inserted,) = joints(run(tmp_path, prefixed))
     assert inserted.rpy == (1.0, 0.0, 0.0) and inserted.unresolved == ()

@@ -50,11 +50,12 @@ ROS 1 is left out: there `/use_sim_time` is one global parameter, which gazebo_r
 `empty_world.launch` sets true by default, and that include is usually not followed
 (gazebo_ros is not in the workspace). A simulator started by a separate launch file, or
 `ros2 bag play --clock` in a terminal, is not seen: the rule then stays silent.
-Reported at info: no finding on the 804 ROS 2 files of the corpus; on 73 whole public
+Reported at info: no finding on the 804 ROS 2 files of the corpus; on 78 whole public
 repositories (robot descriptions with Gazebo cameras, ROS 1 and ROS 2 simulation
-stacks) 2 findings, both
-true (gcamp_ros2_basic's joint_state_publisher beside a spawned robot, nav2's localization
-system test's amcl), too few for a warning (docs/evaluation/tree_judged.jsonl). The
+stacks) 5 findings, all
+true (joint_state_publisher beside a spawned robot in two course repositories, an EKF whose
+parameter file sets use_sim_time false in lidarbot's two simulation launches, nav2's
+localization system test's amcl), too few for a warning (docs/evaluation/tree_judged.jsonl). The
 evidence of a node on simulated time first gave 19 false findings there, all fixed: 18 on
 controller spawners, 1 on a ros2_control_node given use_sim_time false on purpose in a
 real-robot launch whose included controller launch defaults to true.

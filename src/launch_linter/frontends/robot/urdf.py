@@ -57,17 +57,20 @@ def _condition(marks: tuple[str, ...]) -> Condition:
 
 
 LEGACY_INSERT = "insert_block"
-"""An ``insert_block`` written without the ``xacro:`` prefix: xacro before 1.14 (ROS
-Melodic and older) inserted the block, 1.14 and later keep the element as it is (xacro
-CHANGELOG 1.14.0, "Require all xacro commands to be prefixed with 'xacro:'")."""
+"""An ``insert_block`` written without the ``xacro:`` prefix, left as an element by an
+expansion for an unknown distribution: xacro before 1.14 (ROS Melodic and older) inserts
+the block, 1.14 and later keep the element as it is (xacro CHANGELOG 1.14.0, "Require all
+xacro commands to be prefixed with 'xacro:'")."""
 LEGACY_INSERT_REASON = ("the joint's <origin> is an <insert_block> without the xacro: "
                         "prefix: xacro before 1.14 (Melodic and older) inserts it, later "
-                        "versions drop it")
+                        "versions drop it (--ros-distro decides)")
 
 
 def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
-              outer: Condition) -> list[RobotJoint]:
-    """The joints directly under ``<robot>``, as edges of the tf tree."""
+              outer: Condition, distro_known: bool = False) -> list[RobotJoint]:
+    """The joints directly under ``<robot>``, as edges of the tf tree. ``distro_known``:
+    the target distribution is known, so the expansion read unprefixed xacro tags as its
+    xacro does (``xacro_values.legacy_tags``); not known, such an origin is unknown."""
     out: list[RobotJoint] = []
     if root.tag != "robot":
         return out
@@ -92,7 +95,7 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
         origin = _first(joint, "origin")
         xyz, why_xyz = _vector(origin, "xyz")
         rpy, why_rpy = _vector(origin, "rpy")
-        if origin is None and _first(joint, LEGACY_INSERT) is not None:
+        if origin is None and not distro_known and _first(joint, LEGACY_INSERT) is not None:
             xyz = rpy = None
             unresolved.extend(("translation", "rotation"))
             reasons.append(LEGACY_INSERT_REASON)
