@@ -65,14 +65,15 @@ cameras turn differently leave the rotation unknown: judged by the name only, at
 A joint whose origin is an `<insert_block>` without the `xacro:` prefix has an unknown
 origin unless `--ros-distro` says which xacro reads it (before 1.14, Melodic and older,
 it inserts the block; later versions drop it).
-Judged on 78 whole public repositories (robot descriptions with Gazebo cameras, simulation
-stacks; docs/evaluation/tree_judged.jsonl): the proven-rotation findings are 19 true and 1
-harmless of 20 (95%; with rotors_simulator's one judged before); 10 false ones before two
+Judged on 88 whole public repositories (robot descriptions with Gazebo cameras, simulation
+stacks; docs/evaluation/tree_judged.jsonl): the proven-rotation findings are 20 true and 1
+harmless of 21 (95%; with rotors_simulator's one judged before); 10 false ones before two
 fixes (the sensor's and camera's `<pose>` not read: baxter's hand cameras; an Indigo xacro
-macro's unprefixed `<insert_block>`: mastering_ros); 4 of the 20, all true, are from
-repositories fetched after those fixes. The name-only findings are 7 true of 15 (with
-rotors' 2; hsr_description's 8 name optical frames that its stack publishes elsewhere
-`*_rgb_frame`, `*_camera_frame`): info. None on the corpus (it holds no descriptions).
+macro's unprefixed `<insert_block>`: mastering_ros); 5 of the 21, all true, are from
+repositories fetched after those fixes. The name-only findings are 9 true of 19 (with
+rotors' 2; hsr_description's 8 name optical frames that its stack publishes elsewhere,
+`*_rgb_frame`, `*_camera_frame`; tianracer's 2 name its optical frame without the
+description's prefix): info. None on the corpus (it holds no descriptions).
 """
 
 from __future__ import annotations
