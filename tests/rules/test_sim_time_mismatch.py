@@ -107,9 +107,15 @@ def test_a_controller_spawner_stamps_nothing(tmp_path: Path) -> None:
     assert run(tmp_path, "d.launch.py", manager) == [(RULE, 7)]
 
 
-def test_a_node_given_wall_time_on_purpose_is_not_judged_by_another_nodes_clock(
+def test_two_nodes_given_contradicting_clocks_are_said_to_disagree(
         tmp_path: Path) -> None:
     """bumperbot's real-robot launch gives ros2_control_node use_sim_time false while an
-    included controller launch defaults to true: which one is wrong is not known."""
+    included controller launch defaults to true: which one is wrong is not known, that
+    they disagree is."""
     text = JSP.format(rsp="True", jsp=", parameters=[{'use_sim_time': False}]")
-    assert run(tmp_path, "d.launch.py", text) == []
+    path = tmp_path / "d.launch.py"
+    path.write_text(text)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(path)], options).diagnostics
+    assert found.line == 7 and "is given use_sim_time false" in found.message
+    assert "give both the same use_sim_time" in found.message

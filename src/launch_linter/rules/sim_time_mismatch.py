@@ -9,8 +9,9 @@ whose stamps robot_state_publisher gives the movable joints (joint_state_publish
 robot_state_publisher in the tree; controller_manager's spawners stamp nothing). The tree
 runs on simulated time when it spawns a robot into Gazebo (`gazebo_ros spawn_entity.py`,
 `ros_gz_sim create`: the simulator publishes `/clock`), or when it gives another ROS 2 node
-use_sim_time true; that second evidence judges only nodes not given use_sim_time at all
-(a node given false on purpose may be the right one: which clock is wrong is not known).
+use_sim_time true; that second evidence says only that the two clocks disagree (a node
+given false on purpose may be the right one, as in a real-robot launch whose included
+controller launch defaults to true), and the message says so.
 joint_state_publisher stamps `/joint_states` with its own clock (joint_state_publisher.py,
 ros2 05a9679, `timer_callback`) and robot_state_publisher sends the movable joints with
 that stamp (robot_state_publisher.cpp, rolling 01a7be1, `publishTransforms(...,
@@ -52,13 +53,15 @@ ROS 1 is left out: there `/use_sim_time` is one global parameter, which gazebo_r
 `ros2 bag play --clock` in a terminal, is not seen: the rule then stays silent.
 Reported at info: no finding on the 804 ROS 2 files of the corpus; on 88 whole public
 repositories (robot descriptions with Gazebo cameras, ROS 1 and ROS 2 simulation
-stacks) 5 findings, all
+stacks) 6 findings, all
 true (joint_state_publisher beside a spawned robot in two course repositories, an EKF whose
 parameter file sets use_sim_time false in lidarbot's two simulation launches, nav2's
-localization system test's amcl), too few for a warning (docs/evaluation/tree_judged.jsonl). The
-evidence of a node on simulated time first gave 19 false findings there, all fixed: 18 on
-controller spawners, 1 on a ros2_control_node given use_sim_time false on purpose in a
-real-robot launch whose included controller launch defaults to true.
+localization system test's amcl, a real-robot launch whose included controller launch
+defaults to sim time), too few for a warning (docs/evaluation/tree_judged.jsonl). The
+evidence of a node on simulated time first gave 18 false findings there, on controller
+spawners (fixed), and one whose advice was wrong (set true on a ros2_control_node given
+false in a real-robot launch, whose included controller launch wrongly defaults to true:
+the message now says the clocks disagree and either may be wrong).
 """
 
 from __future__ import annotations
@@ -102,8 +105,8 @@ def _on_sim_time(node: NodeRecord) -> bool:
 
 class _Source:
     """What says the tree runs on simulated time: a spawner proves it (the simulator
-    publishes /clock); a node the launch puts on simulated time only says that its author
-    expects a /clock, so a node given use_sim_time false on purpose is not judged by it."""
+    publishes /clock: the node on wall time is the wrong one); a node the launch puts on
+    simulated time says only that the two clocks disagree (either may be the wrong one)."""
 
     def __init__(self, node: NodeRecord, how: str, proof: bool) -> None:
         self.node = node
@@ -155,7 +158,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if effect is None:
             continue
         given = node.given(PARAMETER) is not None
-        source = next((s for s in sources if s.node is not node and (s.proof or not given)
+        source = next((s for s in sources if s.node is not node
                        and not s.node.condition.excludes(node.condition)), None)
         if source is None:
             continue
