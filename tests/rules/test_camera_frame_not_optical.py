@@ -123,6 +123,10 @@ def test_a_proven_rotation_warns_and_a_name_alone_informs(tmp_path: Path) -> Non
 
     proven = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body="")
     assert levels(proven) == ["warning"]
+    # The study profile keeps the level the rule had when it was fixed.
+    study = LintOptions(package_paths=(), select=frozenset({RULE}), profile="study")
+    (kept,) = lint_paths([str(path)], study).diagnostics
+    assert kept.severity.value == "info"
     named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
                          body="<frame_name>head_rgb_frame</frame_name>")
     assert levels(named) == ["info"]
