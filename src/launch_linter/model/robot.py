@@ -179,6 +179,8 @@ class NodeRecord(Record):
     some of its parameters could not be read (a parameter file not found or not parsed):
     a parameter it does not set then has no known value. ``namespace`` is the node's
     namespace (None when unresolved); ``ros`` the ROS version of the launch file.
+    ``param_lines`` says where a parameter was set, when the front-end knows it: ``(name,
+    path, line, column)`` (a ROS 1 ``<param>`` inside the node's element).
     """
 
     path: str
@@ -194,10 +196,11 @@ class NodeRecord(Record):
     unread: tuple[str, ...]
     namespace: str | None
     ros: int | None
+    param_lines: tuple[tuple[str, str, int, int], ...]
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros",
+        "plugin", "unread", "namespace", "ros", "param_lines",
     )
 
     def __init__(
@@ -215,6 +218,7 @@ class NodeRecord(Record):
         unread: tuple[str, ...] = (),
         namespace: str | None = "/",
         ros: int | None = None,
+        param_lines: tuple[tuple[str, str, int, int], ...] = (),
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -229,6 +233,7 @@ class NodeRecord(Record):
         _set(self, "unread", unread)
         _set(self, "namespace", namespace)
         _set(self, "ros", ros)
+        _set(self, "param_lines", param_lines)
 
     def given(self, name: str) -> str | None:
         """The value of the parameter ``name`` exactly as the node is given it (the last
@@ -237,6 +242,15 @@ class NodeRecord(Record):
         for key, value in self.params:
             if key == name:
                 found = value
+        return found
+
+    def where_set(self, name: str) -> tuple[str, int, int] | None:
+        """Where the parameter ``name`` was last set (path, line, column), None when the
+        front-end does not know."""
+        found = None
+        for key, path, line, column in self.param_lines:
+            if key == name:
+                found = (path, line, column)
         return found
 
     def param(self, name: str) -> str | None:
