@@ -119,3 +119,13 @@ def test_two_nodes_given_contradicting_clocks_are_said_to_disagree(
     (found,) = lint_paths([str(path)], options).diagnostics
     assert found.line == 7 and "is given use_sim_time false" in found.message
     assert "give both the same use_sim_time" in found.message
+
+
+def test_rviz_looks_up_at_its_own_clock(tmp_path: Path) -> None:
+    """navigation2#4274: rviz2 without use_sim_time beside a spawned robot."""
+    text = ('<launch><node pkg="gazebo_ros" exec="spawn_entity.py" args="-topic x"/>\n'
+            '<node pkg="rviz2" exec="rviz2" name="rviz2"{}/>\n</launch>\n')
+    assert run(tmp_path, "v.launch.xml", text.format("")) == [(RULE, 2)]
+    fixed = text.format('><param name="use_sim_time" value="true"/></node')
+    assert run(tmp_path, "v.launch.xml", fixed.replace('/>\n</launch>', '>\n</launch>')
+               ) == []

@@ -4,7 +4,8 @@
 Reports a ROS 2 node whose clock reaches tf and that runs on wall time, `use_sim_time`
 neither given nor set by `SetParameter`, or given false, in a launch tree that runs on
 simulated time. The clock reaches tf when the node sends or looks up transforms (as the
-knowledge base knows it, docs/knowledge.md), or when it publishes the `/joint_states`
+knowledge base knows it, docs/knowledge.md; RViz looks up its displays' frames at its
+clock's now()), or when it publishes the `/joint_states`
 whose stamps robot_state_publisher gives the movable joints (joint_state_publisher, with a
 robot_state_publisher in the tree; controller_manager's spawners stamp nothing). The tree
 runs on simulated time when it spawns a robot into Gazebo (`gazebo_ros spawn_entity.py`,
@@ -53,11 +54,12 @@ ROS 1 is left out: there `/use_sim_time` is one global parameter, which gazebo_r
 `ros2 bag play --clock` in a terminal, is not seen: the rule then stays silent.
 Reported at info: no finding on the 804 ROS 2 files of the corpus; on 88 whole public
 repositories (robot descriptions with Gazebo cameras, ROS 1 and ROS 2 simulation
-stacks) 6 findings, all
-true (joint_state_publisher beside a spawned robot in two course repositories, an EKF whose
-parameter file sets use_sim_time false in lidarbot's two simulation launches, nav2's
-localization system test's amcl, a real-robot launch whose included controller launch
-defaults to sim time), too few for a warning (docs/evaluation/tree_judged.jsonl). The
+stacks) 16 findings, all
+true (rviz2 without use_sim_time in 10 simulation launches, joint_state_publisher beside a
+spawned robot in two course repositories, an EKF whose parameter file sets use_sim_time
+false in lidarbot's two simulation launches, nav2's localization system test's amcl, a
+real-robot launch whose included controller launch defaults to sim time), too few for a
+warning (docs/evaluation/tree_judged.jsonl). The
 evidence of a node on simulated time first gave 18 false findings there, on controller
 spawners (fixed), and one whose advice was wrong (set true on a ros2_control_node given
 false in a real-robot launch, whose included controller launch wrongly defaults to true:
@@ -134,6 +136,8 @@ def _stamps_tf(context: RuleContext, node: NodeRecord) -> str | None:
         return None
     if entry.publishes or entry.looks_up:
         return "its tf stamps and lookups miss the simulated ones"
+    if entry.tf_listener:
+        return "it looks transforms up at its own clock's time, which the simulated ones miss"
     if node.executable in CONTROLLER_LOADERS:
         return None
     if entry.publishes_joint_states and any(
