@@ -65,7 +65,7 @@ cameras turn differently leave the rotation unknown: judged by the name only, at
 A joint whose origin is an `<insert_block>` without the `xacro:` prefix has an unknown
 origin unless `--ros-distro` says which xacro reads it (before 1.14, Melodic and older,
 it inserts the block; later versions drop it).
-Judged on 88 whole public repositories (robot descriptions with Gazebo cameras, simulation
+Judged on 94 whole public repositories (robot descriptions with Gazebo cameras, simulation
 stacks; docs/evaluation/tree_judged.jsonl): the proven-rotation findings are 20 true and 1
 harmless of 21 (95%; with rotors_simulator's one judged before); 10 false ones before two
 fixes (the sensor's and camera's `<pose>` not read: baxter's hand cameras; an Indigo xacro
