@@ -35,6 +35,7 @@ from launch_linter.frontends.ros1_names import (
     make_global_ns,
     ns_join,
 )
+from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
 from launch_linter.resolve import reads
@@ -256,7 +257,8 @@ class Ros1Tags(Ros1Base):
         source = from_ros1_param(values, self._display(context.filename), element.line,
                                  element.column, condition, os.path.dirname(context.filename))
         if source is not None:
-            self.descriptions.append(source)
+            namespace = None if context.ns_unresolved else context.ns
+            self.descriptions.append(replace(source, namespace=namespace))
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str,

@@ -58,10 +58,13 @@ class DescriptionSource(Record):
     open_file: tuple[str, str, str] | None
     """When ``file`` is unknown only because an environment variable in its name is not
     given: (the path before it, the text after it, the variable's name)."""
+    namespace: str | None
+    """The ROS 1 namespace the ``robot_description`` parameter is set in (``/r1/``), where
+    a spawner finds it by its relative name; None when unknown or not ROS 1."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args", "open_file",
+        "open_args", "open_file", "namespace",
     )
 
     def __init__(
@@ -78,6 +81,7 @@ class DescriptionSource(Record):
         reason: str | None = None,
         open_args: bool = False,
         open_file: tuple[str, str, str] | None = None,
+        namespace: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -91,6 +95,7 @@ class DescriptionSource(Record):
         _set(self, "reason", reason)
         _set(self, "open_args", open_args)
         _set(self, "open_file", open_file)
+        _set(self, "namespace", namespace)
 
 
 class RobotJoint(Record):

@@ -104,6 +104,9 @@ class XacroProblem(Record):
         _set(self, "conditions", conditions)
 
 
+TF_PREFIX_PARAM = "tf_prefix"
+"""The parameter a ROS 1 simulated plugin's record gives the ``tf_prefix`` it finds from its
+robot namespace (set by the launch tree, not in the plugin block; ``describe``)."""
 PLUGIN_TEXT_TAGS = frozenset({
     # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
     "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",
