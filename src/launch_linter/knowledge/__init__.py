@@ -135,19 +135,24 @@ class Entry(Record):
     """ROS 1: the first distribution whose release hands the entry's frames to tf2 as
     written (a leading ``/`` then fails); None when not known to."""
     looks_up_listed: tuple[tuple[str, str], ...]
-    tf_listener: bool
-    """It looks up transforms at its own clock's time between frames its own configuration
-    names, not a parameter (RViz's fixed frame and displays): its clock matters to tf."""
     """``(list, frame)`` pairs: each item of a parameter named like ``list`` (``*`` is any
     one name) names a sub-namespace whose ``frame`` parameter the node looks up (a
     costmap's observation sources and their ``sensor_frame``)."""
+    inputs: tuple[str, ...]
+    """Parameters that give the node the input it needs before it publishes anything
+    (``#`` stands for a number: robot_localization's ``odom#``): with every parameter
+    source of the node read and none of them set, it publishes no edge."""
+    tf_listener: bool
+    """It looks up transforms at its own clock's time between frames its own configuration
+    names, not a parameter (RViz's fixed frame and displays): its clock matters to tf."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
         "parameters", "publishes", "looks_up", "camera_frames", "strips_leading_slash",
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
-        "looks_up_listed", "tf_listener",
+        "looks_up_listed",
+        "inputs", "tf_listener",
     )
 
     def __init__(
@@ -175,6 +180,7 @@ class Entry(Record):
         header_frames: tuple[str, ...] = (),
         ros1_tf2_from: str | None = None,
         looks_up_listed: tuple[tuple[str, str], ...] = (),
+        inputs: tuple[str, ...] = (),
         tf_listener: bool = False,
     ) -> None:
         _set(self, "id", id)
@@ -200,6 +206,7 @@ class Entry(Record):
         _set(self, "header_frames", header_frames)
         _set(self, "ros1_tf2_from", ros1_tf2_from)
         _set(self, "looks_up_listed", looks_up_listed)
+        _set(self, "inputs", inputs)
         _set(self, "tf_listener", tf_listener)
 
     def default(self, name: str) -> object:
@@ -396,6 +403,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         header_frames=headers,
         ros1_tf2_from=tf2_from,
         looks_up_listed=listed_pairs,
+        inputs=_texts(data.get("inputs"), f"{where}.inputs"),
         tf_listener=bool(data.get("tf_listener", False)),
     )
 

@@ -32,7 +32,9 @@ _LAUNCH_EQUALS = re.compile(
 _EVAL = re.compile(r"\$\(eval\s+(.*)\)", re.DOTALL)
 _XACRO = re.compile(r"xacro:\$\{(.*)\}", re.DOTALL)
 _QUOTED = re.compile(r"""(['"])(.*)\1""", re.DOTALL)
-_LIST_ITEM = re.compile(r"""\s*(('[^'\\]*'|"[^"\\]*")|([A-Za-z_]\w*))\s*(?:,|$)""")
+_LIST_ITEM = re.compile(
+    r"""\s*(('[^'\\]*'|"[^"\\]*")|(LaunchConfiguration\(\s*(?:'\w+'|"\w+")\s*\)|[A-Za-z_]\w*))"""
+    r"""\s*(?:,|$)""")
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 _SUBJECT_FORMS = (
     (re.compile(r"""^arg\((['"])(\w+)\1\)$"""), "{}"),
@@ -88,7 +90,8 @@ def truth_test(text: str) -> Test | None:
 
 def _joined(items: str) -> str:
     """The text a ``PythonExpression([...])`` list makes: its string pieces joined, each
-    variable (a ``LaunchConfiguration``) standing as its name."""
+    variable (a ``LaunchConfiguration``) standing as its name, and a
+    ``LaunchConfiguration('x')`` written in the list as itself."""
     pieces: list[str] = []
     for match in _LIST_ITEM.finditer(items):
         text, name = match.group(2), match.group(3)
