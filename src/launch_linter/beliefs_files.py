@@ -7,6 +7,7 @@ import os
 import re
 
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 
 BUNDLED = "beliefs-bundled.json"
@@ -51,11 +52,14 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
         try:
             # The package data sits beside this module (importlib.resources.files needs 3.9).
             path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
-            with open(path, encoding="utf-8") as handle:
-                text = handle.read()
+            with open(path, "rb") as handle:
+                content = handle.read()
         except OSError as exc:
             raise BeliefsNotFound(f"the {spec} beliefs file is not installed: {exc}") from None
-        return BeliefSet.from_json(json.loads(text), spec, min_z)
+        # Decoded when a rule first reads it; until then the digest of its bytes stands
+        # for it in the results cache's key.
+        return BeliefSet.stored(spec, min_z, reads.digest(content), lambda: BeliefSet.from_json(
+            json.loads(content.decode("utf-8")), spec, min_z))
     try:
         raw = read_regular_file(spec, MAX_BELIEFS_BYTES + 1)
     except OSError as exc:

@@ -24,6 +24,7 @@ from enum import Enum
 from typing import Any, List, Optional, Tuple
 
 from launch_linter.model import record
+from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
     Applicability,
     Belief,
@@ -90,6 +91,9 @@ def canonical(value: Any) -> Any:
         return ["float", repr(value)]
     if isinstance(value, Enum):
         return [type(value).__name__, canonical(value.value)]
+    if isinstance(value, BeliefSet) and value.origin is not None:
+        # A stored set by what it is decoded from, left undecoded (``BeliefSet.stored``).
+        return ["StoredBeliefSet", value.source, canonical(value.min_z), value.origin]
     if isinstance(value, record.Record):
         return [type(value).__name__, [[name, canonical(getattr(value, name))]
                                        for name in record.compared_fields(value)]]
@@ -283,6 +287,7 @@ class ResultsCache:
         self._entries: dict[str, Any] = {}
         self._groups: dict[str, Any] = {}
         self._discovery: Any = None
+        self._derived: dict[str, Any] = {}
         self._group_names: dict[int, tuple[reads.ReadLog, str]] = {}
         self._changed = False
         self._freshness = reads.Freshness(read_regular_file)
@@ -324,6 +329,9 @@ class ResultsCache:
         if isinstance(entries, dict) and isinstance(groups, dict):
             self._entries, self._groups = entries, groups
             self._discovery = document.get("discovery")
+            derived = document.get("derived")
+            if isinstance(derived, dict):
+                self._derived = derived
 
     def discovered(self, question: object,
                    discover: Callable[[], list[InputFile]]) -> list[InputFile]:
@@ -354,6 +362,17 @@ class ResultsCache:
             return None
         return [InputFile(_str(path), _str(display))
                 for path, display in (_list(i, 2) for i in _list(stored.get("inputs")))]
+
+    def count(self, name: str, compute: Callable[[], int]) -> int:
+        """A count that the run key decides (``compute()`` gives it), kept with the key:
+        the number of beliefs the JSON report states, which would otherwise mean decoding
+        the beliefs file on every run."""
+        known = self._derived.get(name)
+        if isinstance(known, int) and not isinstance(known, bool) and known >= 0:
+            return known
+        self._derived[name] = value = compute()
+        self._changed = True
+        return value
 
     def refresh(self) -> None:
         """Forget which stamps were found to hold: a new run looks at the files again (a
@@ -439,7 +458,8 @@ class ResultsCache:
                 for name in entry.get("groups", ()) if isinstance(name, str)}
         document = {"format": FORMAT, "key": self.key,
                     "groups": {n: s for n, s in self._groups.items() if n in used},
-                    "entries": self._entries, "discovery": self._discovery}
+                    "entries": self._entries, "discovery": self._discovery,
+                    "derived": self._derived}
         text = json.dumps(document, separators=(",", ":")).encode("utf-8")
         try:
             if len(text) > MAX_CACHE_BYTES:

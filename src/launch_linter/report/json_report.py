@@ -35,7 +35,7 @@ def _check_head(beliefs: BeliefSet, version: str) -> dict[str, Any]:
         "beliefs": {
             "source": beliefs.source,
             "min_z": beliefs.min_z,
-            "count": len(beliefs.beliefs),
+            "count": beliefs.count,
         },
     }
 
