@@ -15,7 +15,6 @@ from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.report.escape import json_escaped, json_safe
-from launch_linter.report.published import published
 
 JSON_VERSION = 1
 
@@ -134,6 +133,8 @@ def joint_json(root: str, j: RobotJoint) -> dict[str, Any]:
 def transforms_document(result: LintResult) -> dict[str, Any]:
     """Each edge once (see :mod:`launch_linter.report.published`): ``root`` is the first
     tree it was found in, ``entry_points`` every entry point that publishes it."""
+    from launch_linter.report.published import published  # transforms only, not check
+
     transforms: list[dict[str, Any]] = []
     joints: list[dict[str, Any]] = []
     for item in published(result):
