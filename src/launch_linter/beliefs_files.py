@@ -24,6 +24,13 @@ _JSON_STRING = re.compile(r'"(?:[^"\\]|\\.)*"')
 _JSON_BRACKETS = re.compile(r"[\[\]{}]")
 
 
+def data_folder() -> str:
+    """Where the package data sits, beside this module (importlib.resources.files needs
+    3.9); asked at each read (a standalone linter has no ``__file__``: it answers the
+    reads itself)."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
+
+
 class BeliefsNotFound(ValueError):
     """The named beliefs cannot be read."""
 
@@ -50,9 +57,7 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
     if spec in ("bundled", "study"):
         name = BUNDLED if spec == "bundled" else STUDY
         try:
-            # The package data sits beside this module (importlib.resources.files needs 3.9).
-            path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
-            with open(path, "rb") as handle:
+            with open(os.path.join(data_folder(), name), "rb") as handle:
                 content = handle.read()
         except OSError as exc:
             raise BeliefsNotFound(f"the {spec} beliefs file is not installed: {exc}") from None

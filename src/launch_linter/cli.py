@@ -12,10 +12,13 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 from types import ModuleType
-from typing import Any
 
 from launch_linter import __version__
 from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError, check_numbers
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
 
 CORE_COMMANDS = ("check", "transforms", "rules", "explain")
 """The core commands, in help order; their modules (which import the engine) are

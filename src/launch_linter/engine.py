@@ -5,7 +5,6 @@ from __future__ import annotations
 import contextlib
 import os
 from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
@@ -17,7 +16,7 @@ from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve import reads
-from launch_linter.results_cache import Linted, ResultsCache, lint_with_cache
+from launch_linter.results_cache import ResultsCache, lint_with_cache
 from launch_linter.rules._catalog import CATALOG, CATEGORY_OF, RULE_IDS
 from launch_linter.rules._profiles import STUDY_SEVERITY
 from launch_linter.suppressions import (
@@ -29,13 +28,15 @@ from launch_linter.suppressions import (
 from launch_linter.workspace.discovery import (
     MAX_DISCOVERED_FILES,
     Exclusions,
-    Ignored,
     InputFile,
     discover,
 )
-from launch_linter.workspace.environment import Place, built_beside
+from launch_linter.workspace.environment import built_beside
 
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
+    from typing import Dict, Optional, Tuple
+
     # Imported where a file is linted: a run whose results are all in the results cache
     # reads no launch file and runs no rule; the front-ends were a fifth of start-up, the
     # rules, the knowledge base and the package index another eighth.
@@ -43,8 +44,11 @@ if TYPE_CHECKING:
     from launch_linter.frontends.robot.describe import RobotCache
     from launch_linter.frontends.ros1 import LoadOptions
     from launch_linter.knowledge import KnowledgeBase
+    from launch_linter.results_cache import Linted
     from launch_linter.rules import Rule
     from launch_linter.rules._api import Finding
+    from launch_linter.workspace.discovery import Ignored
+    from launch_linter.workspace.environment import Place
     from launch_linter.workspace.packages import PackageIndex
 
 __all__ = [
@@ -194,9 +198,10 @@ PACKAGE_DECIDES_SUFFIXES = (".xml",)
 content: ROS 1 files left in migrated ament packages are common."""
 
 
-Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
-"""Each ``package.xml``'s ROS version, with what reading it read (``reads.remembered``)."""
 if TYPE_CHECKING:
+    Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
+    """Each ``package.xml``'s ROS version, with what reading it read
+    (``reads.remembered``)."""
     Packages = Dict[Tuple[str, ...], Tuple[PackageIndex, reads.ReadLog]]
     """Package indexes by roots, and by folder (see ``load_options_for``)."""
 
@@ -327,9 +332,10 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Recorded = Tuple[Linted, Optional[reads.ReadLog]]
-"""A file linted (its tree, None when not kept and there is no directive; its record and
-diagnostics) and, when asked, the log of what linting it read."""
+if TYPE_CHECKING:
+    Recorded = Tuple[Linted, Optional[reads.ReadLog]]
+    """A file linted (its tree, None when not kept and there is no directive; its record
+    and diagnostics) and, when asked, the log of what linting it read."""
 
 
 def _directives_only(tree: LaunchTree) -> LaunchTree | None:

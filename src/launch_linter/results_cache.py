@@ -21,7 +21,6 @@ import json
 import os
 from collections.abc import Callable, Iterable
 from enum import Enum
-from typing import Any, List, Optional, Tuple
 
 from launch_linter.model import record
 from launch_linter.model.beliefs import BeliefSet
@@ -51,7 +50,11 @@ _GITIGNORE = "# Created by launch-linter: the results cache, never committed.\n*
 _CACHEDIR_TAG = ("Signature: 8a477f597d28d172789f06886806bc55\n"
                  "# This file marks the results cache of launch-linter.\n")
 
-Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any, List, Optional, Tuple
+
+    Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
 
 _CODEC_FIELDS: dict[type[record.Record], tuple[str, ...]] = {
     Diagnostic: ("rule", "category", "severity", "path", "line", "column", "message", "node",

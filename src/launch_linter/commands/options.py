@@ -6,7 +6,6 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from typing import TYPE_CHECKING
 
 from launch_linter import __version__
 from launch_linter.beliefs_files import BeliefsNotFound
@@ -17,11 +16,13 @@ from launch_linter.model.beliefs import BeliefSet
 from launch_linter.results_cache import ResultsCache, results_cache_folder
 from launch_linter.rules._profiles import PROFILES
 from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
-from launch_linter.workspace.discovery import Exclusions, Ignored
+from launch_linter.workspace.discovery import Exclusions
 from launch_linter.workspace.environment import environment_places
 
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
     from launch_linter.knowledge import KnowledgeBase
+    from launch_linter.workspace.discovery import Ignored
 
 
 def split_ids(values: list[str] | None) -> list[str]:

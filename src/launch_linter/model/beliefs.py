@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from typing import Any
 
 from launch_linter.model.diagnostic import Belief
 from launch_linter.model.record import Record, _set
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
 
 BELIEF_FORMAT = "launch-linter-beliefs/1"
 BELIEF_CLASSES = (

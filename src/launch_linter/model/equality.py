@@ -17,10 +17,13 @@ that is not boolean: launch then refuses the truth test).
 from __future__ import annotations
 
 import re
-import typing
 
-Test = typing.Tuple[str, str, bool]
-"""(normalised subject, constant, True for ``==`` / False for ``!=``)."""
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Tuple
+
+    Test = Tuple[str, str, bool]
+    """(normalised subject, constant, True for ``==`` / False for ``!=``)."""
 
 MAX_TEXT = 500
 TRUTH = "\x00truth"

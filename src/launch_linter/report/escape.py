@@ -11,7 +11,10 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
 
 # The patterns are compiled on first use (``re`` keeps them): their character classes
 # reach past U+00FF, and compiling the three took 2 ms, a twentieth of a cached run's

@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Mapping
-from typing import Any, TextIO
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
@@ -15,6 +14,10 @@ from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.report.escape import json_escaped, json_safe
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any, TextIO
 
 JSON_VERSION = 1
 

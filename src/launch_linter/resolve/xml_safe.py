@@ -16,10 +16,13 @@ import re
 import stat
 from collections.abc import Collection, Iterator, Mapping
 from contextlib import contextmanager
-from typing import BinaryIO
 from xml.parsers import expat
 
 from launch_linter.resolve import reads
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import BinaryIO
 
 MAX_BYTES = 8 * 1024 * 1024
 MAX_DEPTH = 200

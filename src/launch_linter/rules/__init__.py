@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 from types import ModuleType
-from typing import TYPE_CHECKING, Any
 
 from launch_linter.rules._catalog import RULE_IDS
 
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
+    from typing import Any
+
     from launch_linter.rules._api import Rule, RuleContext
 
     RULE_MODULES: tuple[ModuleType, ...]

@@ -20,7 +20,6 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterator, Sequence
-from typing import Callable
 
 from launch_linter.model.globs import Glob, fnmatch_glob
 from launch_linter.model.paths import shown_path
@@ -52,8 +51,12 @@ WORKSPACE_FOLDERS = ("build", "install", "log", "devel", "devel_isolated", "buil
 WORKSPACE_MARKERS = ("COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE")
 MAX_DISCOVERED_FILES = 200_000
 
-Ignored = Callable[[str, bool], bool]
-"""``ignored(absolute_path, is_folder)``: True to leave the path out."""
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Callable
+
+    Ignored = Callable[[str, bool], bool]
+    """``ignored(absolute_path, is_folder)``: True to leave the path out."""
 
 # The patterns that sniff a file's content are text, compiled on first use (``re`` keeps
 # them): a run whose folder walk the results cache answers reads no file's content.
