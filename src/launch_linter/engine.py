@@ -37,9 +37,8 @@ TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/perf
 if TYPE_CHECKING:
     from typing import Dict, Optional, Tuple
 
-    # Imported where a file is linted: a run whose results are all in the results cache
-    # reads no launch file and runs no rule; the front-ends were a fifth of start-up, the
-    # rules, the knowledge base and the package index another eighth.
+    # Imported where a file is linted: a run the results cache answers reads no launch
+    # file and runs no rule (front-ends, rules, knowledge, packages: a third of start-up).
     from launch_linter.frontends import python_trees
     from launch_linter.frontends.robot.describe import RobotCache
     from launch_linter.frontends.ros1 import LoadOptions
@@ -200,8 +199,7 @@ content: ROS 1 files left in migrated ament packages are common."""
 
 if TYPE_CHECKING:
     Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
-    """Each ``package.xml``'s ROS version, with what reading it read
-    (``reads.remembered``)."""
+    """Each ``package.xml``'s ROS version, with what reading it read (``remembered``)."""
     Packages = Dict[Tuple[str, ...], Tuple[PackageIndex, reads.ReadLog]]
     """Package indexes by roots, and by folder (see ``load_options_for``)."""
 
