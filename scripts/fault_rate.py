@@ -7,7 +7,12 @@ case is *found* when a warning or error lands on one of its locations, and the f
 version is *silent* when linting it gives no warning or error at all. ``expected_miss``
 in case.json names why the linter cannot find it yet (the test marks those xfail).
 
-    python scripts/fault_rate.py            # per-class table and the list of cases
+``holdout: true`` marks the hold-out set: faults collected after the rules, chosen before
+the linter was run on them (docs/evaluation/fault_rate.md); their rate is reported apart
+from the benchmark the rules were built alongside.
+
+    python scripts/fault_rate.py            # per-class tables (benchmark, hold-out) and cases
+    python scripts/fault_rate.py --holdout  # the hold-out set only
     python scripts/fault_rate.py --json     # one record per case
 """
 
@@ -38,6 +43,7 @@ class Outcome:
     """Rules that report at the fault's line at info only."""
     fixed_loud: tuple[str, ...]
     expected_miss: str | None
+    holdout: bool
 
     @property
     def passed(self) -> bool:
@@ -53,11 +59,21 @@ def case_folders() -> list[Path]:
     return sorted(p for p in CASES.iterdir() if (p / "case.json").is_file())
 
 
+def _shown(path: str, folder: Path) -> str:
+    """The diagnostic's file as case.json names it: relative to the case's fault/ or fixed/
+    folder (a location may sit in a subfolder), else its bare name."""
+    try:
+        return Path(path).resolve().relative_to(folder.resolve()).as_posix()
+    except ValueError:
+        return Path(path).name
+
+
 def _lint(folder: Path, entry: str, case: dict[str, Any]) -> list[tuple[str, int, str, str]]:
     options = LintOptions(package_paths=(), args=dict(case.get("args", {})),
                           ros_distro=case.get("ros_distro"))
     result = lint_paths([str(folder / entry)], options)
-    return [(Path(d.path).name, d.line, d.rule, d.severity.value) for d in result.diagnostics]
+    return [(_shown(d.path, folder), d.line, d.rule, d.severity.value)
+            for d in result.diagnostics]
 
 
 def run_case(folder: Path) -> Outcome:
@@ -73,25 +89,14 @@ def run_case(folder: Path) -> Outcome:
     fixed_loud = tuple(sorted(f"{name}:{line} {rule}" for name, line, rule, level in fixed
                               if level in LOUD))
     return Outcome(folder.name, case["class"], case["source"], bool(at_fault), at_fault,
-                   quiet, fixed_loud, case.get("expected_miss"))
+                   quiet, fixed_loud, case.get("expected_miss"), bool(case.get("holdout")))
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--json", action="store_true", help="one JSON record per case")
-    args = parser.parse_args(argv)
-    outcomes = [run_case(folder) for folder in case_folders()]
-    if args.json:
-        for o in outcomes:
-            print(json.dumps({"case": o.case, "class": o.klass, "source": o.source,
-                              "found": o.found, "rules": list(o.rules_at_fault),
-                              "info_rules": list(o.quiet_at_fault),
-                              "fixed_loud": list(o.fixed_loud),
-                              "expected_miss": o.expected_miss}))
-        return 0
+def _table(title: str, outcomes: list[Outcome]) -> None:
     by_class: dict[str, list[Outcome]] = {}
     for o in outcomes:
         by_class.setdefault(o.klass, []).append(o)
+    print(title)
     print(f"{'class':32} found  fixed-silent  both")
     for klass in sorted(by_class):
         group = by_class[klass]
@@ -106,14 +111,41 @@ def main(argv: list[str] | None = None) -> int:
     quiet = sum(1 for o in outcomes if not o.found and o.quiet_at_fault)
     print(f"not found at warning/error but reported at the fault's line at info: {quiet}")
     print()
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--json", action="store_true", help="one JSON record per case")
+    parser.add_argument("--holdout", action="store_true", help="the hold-out set only")
+    args = parser.parse_args(argv)
+    folders = case_folders()
+    if args.holdout:
+        folders = [f for f in folders if load_case(f).get("holdout")]
+    outcomes = [run_case(folder) for folder in folders]
+    if args.json:
+        for o in outcomes:
+            print(json.dumps({"case": o.case, "class": o.klass, "source": o.source,
+                              "holdout": o.holdout, "found": o.found,
+                              "rules": list(o.rules_at_fault),
+                              "info_rules": list(o.quiet_at_fault),
+                              "fixed_loud": list(o.fixed_loud),
+                              "expected_miss": o.expected_miss}))
+        return 0
+    benchmark = [o for o in outcomes if not o.holdout]
+    holdout = [o for o in outcomes if o.holdout]
+    if benchmark:
+        _table("benchmark (built alongside the rules)", benchmark)
+    if holdout:
+        _table("hold-out (chosen before measuring)", holdout)
     for o in outcomes:
         mark = "ok  " if o.passed else "MISS"
         why = f"  [{o.expected_miss}]" if o.expected_miss and not o.passed else ""
         loud = f"  fixed still reports {', '.join(o.fixed_loud)}" if o.fixed_loud else ""
         if not o.found and o.quiet_at_fault:
             loud += f"  (info: {', '.join(o.quiet_at_fault)})"
-        print(f"{mark} {o.case:34} {','.join(o.rules_at_fault) or '-':24}{loud}{why}")
-        print(f"     {o.source}")
+        tag = "H " if o.holdout else "  "
+        print(f"{mark}{tag}{o.case:34} {','.join(o.rules_at_fault) or '-':24}{loud}{why}")
+        print(f"       {o.source}")
     return 0
 
 

@@ -77,3 +77,30 @@ def test_under_an_undecided_condition_it_is_info(tmp_path: Path) -> None:
     assert found.severity.value == "info"
     (found,) = lint_loaded(tmp_path, text, RULE, "x:=true")
     assert found.severity.value == "error"
+
+
+def test_a_description_only_a_spawner_reads_is_expanded_for_refusals(tmp_path: Path) -> None:
+    # roslaunch runs the xacro command when it loads the file, publisher or not.
+    (found,) = lint_loaded(tmp_path, robot(link("a") + "\n<xacro:wheeel/>"), RULE,
+                           publisher=False)
+    assert found.severity.value == "error" and found.line == 3
+    assert "the launch stops before any node starts" in found.message
+
+
+def test_without_a_publisher_a_correct_description_says_nothing(tmp_path: Path) -> None:
+    text = robot(WHEEL + '<xacro:wheel side="l"><origin/></xacro:wheel>' + link("x"))
+    assert lint_loaded(tmp_path, text, RULE, publisher=False) == ()
+    # Nor do the structure rules: nothing publishes the description.
+    assert lint_loaded(tmp_path, robot(link("a") + link("b")), "urdf_root",
+                       publisher=False) == ()
+
+
+def test_a_macro_parameter_is_evaluated_at_the_call(tmp_path: Path) -> None:
+    # xacro evaluates a call's parameters at once (eval_text in handle_macro_call): an
+    # undeclared arg there stops it, whether or not the body uses the parameter.
+    macro = '<xacro:macro name="m" params="name"><link name="x"/></xacro:macro>'
+    (found,) = lint_loaded(tmp_path, robot(macro + '\n<xacro:m name="$(arg nope)"/>'), RULE)
+    assert found.line == 3 and "$(arg nope)" in found.message
+    declared = '<xacro:arg name="nope" default="a"/>'
+    assert lint_loaded(tmp_path, robot(declared + macro + '<xacro:m name="$(arg nope)"/>'),
+                       RULE) == ()

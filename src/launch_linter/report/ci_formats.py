@@ -17,7 +17,6 @@ identical ones.
 from __future__ import annotations
 
 import hashlib
-import json
 import os
 import re
 import xml.etree.ElementTree as ET
@@ -25,7 +24,8 @@ from collections.abc import Iterable
 
 from launch_linter.engine import LintResult
 from launch_linter.model.diagnostic import Diagnostic, Severity
-from launch_linter.report.escape import json_escaped, json_safe, printable
+from launch_linter.report.escape import printable
+from launch_linter.report.json_report import dumps
 
 # Messages name other findings' places ("at line 18", "(robot.launch:18)"): they move too.
 _LINE_REFERENCE = re.compile(r"\blines? \d+|:\d+(?::\d+)?\b")
@@ -107,5 +107,4 @@ def gitlab(diagnostics: Iterable[Diagnostic]) -> str:
             "severity": GITLAB_SEVERITIES[diagnostic.severity],
             "location": {"path": path, "lines": {"begin": max(diagnostic.line, 1)}},
         })
-    return json_escaped(json.dumps(json_safe(issues), indent=2, ensure_ascii=False,
-                                   allow_nan=False)) + "\n"
+    return dumps(issues) + "\n"

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import os
 from typing import Any
 from urllib.parse import quote
@@ -11,7 +10,8 @@ from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Fix, Location, Severity
 from launch_linter.model.included import included_from
-from launch_linter.report.escape import json_escaped, json_safe, printable
+from launch_linter.report.escape import printable
+from launch_linter.report.json_report import dumps
 from launch_linter.rules import RULES, Rule
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -24,8 +24,7 @@ def render(fmt: str, result: LintResult, beliefs: BeliefSet, version: str) -> st
     """``result`` as ``sarif`` (a JSON document) or ``github`` (one command per line)."""
     if fmt == "sarif":
         document = sarif_document(result, beliefs, version)
-        return json_escaped(json.dumps(json_safe(document), indent=2, ensure_ascii=False,
-                                       allow_nan=False)) + "\n"
+        return dumps(document) + "\n"
     if fmt == "github":
         return "".join(github_command(d) + "\n" for d in result.diagnostics)
     raise ValueError(f"unknown format {fmt!r}")

@@ -159,7 +159,9 @@ def _encoder() -> json.JSONEncoder:
     return json.JSONEncoder(indent=2, ensure_ascii=False, allow_nan=False, default=str)
 
 
-def dumps(document: dict[str, Any]) -> str:
+def dumps(document: Any) -> str:
+    """``document`` as indented JSON that every reader takes and no terminal acts on (see
+    ``report.escape``); the one encoding of every JSON-type output (json, SARIF, GitLab)."""
     return json_escaped(_encoder().encode(json_safe(document)))
 
 

@@ -59,6 +59,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("xacro_unused_block", Category.TF),
     ("rounded_pi", Category.TF),
     ("ros2_undeclared_arg", Category.LAUNCH),
+    ("py_name_error", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

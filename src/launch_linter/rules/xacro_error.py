@@ -6,7 +6,9 @@ own), each element the real xacro stops on: a call of a macro no `xacro:macro` d
 macro call without a parameter that has no default or with one the macro does not have,
 blocks that do not match the macro's block parameters, an `insert_block` of an undefined
 block, and a `$(arg x)` that no `xacro:arg` declares and the xacro call does not give.
-It is an error when a launch file loads the description; info when it sits under an
+It is an error when a launch file loads the description (with or without a
+robot_state_publisher: roslaunch runs a `<param command="xacro ...">` when it loads the
+file, for a Gazebo spawner as much as for robot_state_publisher); info when it sits under an
 undecided `xacro:if` and in a `.xacro` file linted on its own (it may be a part that its
 includer completes). When an include could not be read or a directive is not supported
 before it (the macro or arg may be defined there), or the xacro call has unresolved words
@@ -57,7 +59,12 @@ EXAMPLE_PATH = "example.urdf.xacro"
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    # Without a robot_state_publisher the description is a spawner's or a controller
+    # manager's: the failed command stops the launch all the same.
+    publisher = any(node.package == "robot_state_publisher" for node in context.tree.nodes)
     for robot in robots_of(context):
+        effect = ("robot_state_publisher publishes nothing" if publisher or robot.standalone
+                  else "the launch stops before any node starts")
         for fault in robot.faults:
             if fault.kind is not FaultKind.REFUSED:
                 continue
@@ -68,7 +75,6 @@ def check(context: RuleContext) -> Iterator[Finding]:
             # so that the two are one finding, at the level of the launch file's.
             yield Finding(fault.path, fault.line, 1,
                           f"xacro stops here{when} ({fault.message}): the xacro command "
-                          f"fails, so robot_description is not set and "
-                          f"robot_state_publisher publishes nothing",
+                          f"fails, so robot_description is not set and {effect}",
                           severity=(Severity.INFO if robot.standalone or fault.conditions
                                     else None))

@@ -216,9 +216,9 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     if not tree.descriptions:
         return tree
     publishes = any(node.package == RSP_PACKAGE for node in tree.nodes)
-    if not publishes:
-        return tree
     cache = cache if cache is not None else RobotCache()
+    if not publishes:
+        return _refusals(tree, packages, cache, display, env)
     # The expansions a tree needs share one budget; a reused expansion costs nothing.
     budget = Budget()
     joints: list[RobotJoint] = []
@@ -258,6 +258,24 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found),
                    nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))
+
+
+def _refusals(tree: LaunchTree, packages: PackageIndex, cache: RobotCache,
+              display: Callable[[str], str], env: dict[str, str]) -> LaunchTree:
+    """A tree with descriptions but no robot_state_publisher (a spawner's only, say):
+    roslaunch still runs each ``<param command="xacro ...">`` when it loads the file and
+    stops when xacro fails, so a description xacro refuses is kept, without joints or
+    plugins (nothing publishes or spawns it), for ``xacro_error``; nothing else is said."""
+    budget = Budget()
+    refused: list[RobotModel] = []
+    for source in tree.descriptions[:MAX_DESCRIPTIONS_PER_TREE]:
+        if source.kind is not DescriptionKind.XACRO or source.file is None:
+            continue
+        robot, _ = read_description(source, packages, cache, display, env, budget=budget)
+        if robot is not None and any(f.kind is FaultKind.REFUSED and f.proven
+                                     for f in robot.faults):
+            refused.append(replace(robot, joints=(), plugins=()))
+    return replace(tree, robots=tuple(refused)) if refused else tree
 
 
 def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]

@@ -60,6 +60,8 @@ from launch_linter.frontends.robot.xacro_values import (
     _Table,
     _Unknown,
     _unquoted,
+    legacy_tag,
+    legacy_tags,
 )
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
@@ -88,10 +90,12 @@ class XacroExpander:
         self.locate = locate
         """Where a missing file is installed from (a share path to its source file)."""
         self.env = dict(env or {})
+        self._legacy = legacy_tags(self.env)
+        """Whether unprefixed xacro tags are read (the target distribution's xacro)."""
         self.budget = budget
         """The launch tree's budget, charged with every unit of work besides MAX_WORK."""
         self._args_read: set[str] = set()
-        self._env_read: set[str] = set()
+        self._env_read: set[str] = {"ROS_DISTRO"}
         self._cut_by_budget = False
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
@@ -357,6 +361,8 @@ class XacroExpander:
             self._charge()
             self._path, self._line = path, element.line
             tag = element.tag
+            if not tag.startswith(_PREFIX) and self._legacy and legacy_tag(element, table):
+                tag = _PREFIX + tag
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
@@ -616,6 +622,8 @@ class XacroExpander:
         try:
             value, data = self._text_or_data(text, table)
             return _Property(None, value, data=data)
+        except _Refused:
+            raise  # evaluated at once, as xacro's eval_text in handle_macro_call: it stops
         except _Unknown as unknown:
             return _Property(None, None, unknown.reason)
 
@@ -635,15 +643,6 @@ def expand(path: str, args: Mapping[str, str | None],
 
 
 __all__ = [
-    "MAX_FILES",
-    "MAX_INCLUDE_DEPTH",
-    "MAX_MACRO_DEPTH",
-    "MAX_OUTPUT_ELEMENTS",
-    "MAX_TEXT",
-    "MAX_WORK",
-    "ExpandedNode",
-    "Expansion",
-    "XacroExpander",
-    "XacroProblem",
-    "expand",
+    "MAX_FILES", "MAX_INCLUDE_DEPTH", "MAX_MACRO_DEPTH", "MAX_OUTPUT_ELEMENTS", "MAX_TEXT",
+    "MAX_WORK", "ExpandedNode", "Expansion", "XacroExpander", "XacroProblem", "expand",
 ]

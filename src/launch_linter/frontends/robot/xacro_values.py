@@ -4,6 +4,7 @@ and its tables of properties, macros and blocks with their scoping."""
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 
 from launch_linter.model.record import MutableRecord, Record, _set
 from launch_linter.resolve.xml_safe import Element
@@ -248,6 +249,33 @@ class _Block(MutableRecord):
         self.path = path
         self.content_only = content_only
         self.scope = scope
+
+
+LEGACY_DISTROS = frozenset({"hydro", "indigo", "jade", "kinetic", "lunar", "melodic",
+                            "dashing", "eloquent"})
+"""Distributions whose xacro also reads xacro tags written without the ``xacro:`` prefix
+(``allow_non_prefixed_tags`` true unless ``--xacro-ns``, with a deprecation warning):
+ros/xacro melodic-devel e2ba976 and dashing-devel 5671b7d, ``src/xacro/__init__.py``
+``check_deprecated_tag``, ``is_include``, ``handle_macro_call``. Noetic's (7045754) and
+the ros2 branch's (9d05b0e) read only prefixed tags."""
+LEGACY_DIRECTIVES = frozenset({"arg", "property", "macro", "if", "unless", "insert_block"})
+
+
+def legacy_tags(env: Mapping[str, str]) -> bool:
+    """Whether the target distribution (``--ros-distro``, else ``$ROS_DISTRO``) is one of
+    the :data:`LEGACY_DISTROS`. Not known, tags are read as Noetic's and ROS 2's xacro
+    reads them: a legacy xacro would also take any element named like a macro (a Gazebo
+    ``<noise>`` beside a ``noise`` macro) for a call."""
+    return env.get("ROS_DISTRO") in LEGACY_DISTROS
+
+
+def legacy_tag(element: Element, table: _Table) -> bool:
+    """Whether a legacy xacro reads the unprefixed ``element`` as a xacro tag: a
+    directive, an ``<include>`` without element children (Gazebo's ``<include><uri>`` is
+    not xacro's), or the call of a macro defined by then."""
+    if element.tag == "include":
+        return not element.children
+    return element.tag in LEGACY_DIRECTIVES or table.find_macro(element.tag) is not None
 
 
 class _Table:

@@ -10,6 +10,7 @@ from typing import Any
 
 from launch_linter.frontends.ros2_python import moveit
 from launch_linter.frontends.ros2_python.evaluator import Evaluator, _performed
+from launch_linter.frontends.ros2_python.names import PYTHON_BUILTINS
 from launch_linter.frontends.ros2_python.values import (
     _COMPARE,
     BUILTINS,
@@ -103,6 +104,13 @@ class Expressions(Evaluator):
                 return "__launch__"
             if name in BUILTINS:
                 return Builtin(name)
+            if (self.bound is not None and not self.branches and name not in self.bound
+                    and name not in PYTHON_BUILTINS):
+                self.problem("py_name_error", node,
+                             f"name '{name}' is bound nowhere in this file (no assignment, "
+                             f"import, def or parameter) and is no builtin: Python raises "
+                             f"\"NameError: name '{name}' is not defined\" here and ros2 "
+                             f"launch stops")
             return self.unknown(node, f"name '{name}' is not known here")
         handler = _EXPRESSIONS.get(kind)
         if handler is None:

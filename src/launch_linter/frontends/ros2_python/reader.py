@@ -12,6 +12,7 @@ from io import BytesIO
 from launch_linter.frontends import python_trees
 from launch_linter.frontends.ros2_actions import Action, FileRead, Problem, Unfollowed, Where
 from launch_linter.frontends.ros2_python.launch_api import Interpreter
+from launch_linter.frontends.ros2_python.names import bound_names
 from launch_linter.frontends.ros2_python.values import (
     Env,
     FuncVal,
@@ -88,7 +89,7 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         if comments else ()
     )
     interpreter = Interpreter(path, source, environ=dict(environ or {}),
-                              installed=installed)
+                              installed=installed, bound=bound_names(tree))
     actions = _launch_description(interpreter, tree)
     if budget is not None:
         # The interpreter's own step limit bounds one file; the root file's budget bounds
