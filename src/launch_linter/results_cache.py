@@ -19,6 +19,7 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import sys
 from collections.abc import Callable, Iterable
 from enum import Enum
 
@@ -112,8 +113,17 @@ def canonical(value: Any) -> Any:
 
 def tool_stamp(version: str) -> list[object]:
     """The version, and the names, sizes and modification times of the package's files:
-    an installed release never changes them, a development checkout does with each edit."""
-    package = os.path.dirname(os.path.abspath(__file__))
+    an installed release never changes them, a development checkout does with each edit.
+    A standalone linter's modules have no files (no ``__file__``): the script that embeds
+    them, and the beliefs, stands for them; without one, no cache (``OSError``)."""
+    here = globals().get("__file__")
+    if here is None:
+        script = getattr(sys.modules.get("__main__"), "__file__", None)
+        if not isinstance(script, str):
+            raise OSError("no file holds the linter's code")
+        info = os.stat(script)
+        return [version, [os.path.abspath(script), info.st_size, info.st_mtime_ns]]
+    package = os.path.dirname(os.path.abspath(here))
     stamp: list[object] = [version]
     pending = [package]
     while pending:
