@@ -12,7 +12,7 @@ the linter was run on them (docs/evaluation/fault_rate.md); their rate is report
 from the benchmark the rules were built alongside.
 
     python scripts/fault_rate.py            # per-class tables (benchmark, hold-out) and cases
-    python scripts/fault_rate.py --holdout  # the hold-out set only
+    python scripts/fault_rate.py --holdout  # the hold-out set only (all batches, then each)
     python scripts/fault_rate.py --json     # one record per case
 """
 
@@ -44,6 +44,8 @@ class Outcome:
     fixed_loud: tuple[str, ...]
     expected_miss: str | None
     holdout: bool
+    batch: int
+    """The hold-out batch (1 when case.json names none); 0 outside the hold-out set."""
 
     @property
     def passed(self) -> bool:
@@ -89,7 +91,8 @@ def run_case(folder: Path) -> Outcome:
     fixed_loud = tuple(sorted(f"{name}:{line} {rule}" for name, line, rule, level in fixed
                               if level in LOUD))
     return Outcome(folder.name, case["class"], case["source"], bool(at_fault), at_fault,
-                   quiet, fixed_loud, case.get("expected_miss"), bool(case.get("holdout")))
+                   quiet, fixed_loud, case.get("expected_miss"), bool(case.get("holdout")),
+                   int(case.get("batch", 1)) if case.get("holdout") else 0)
 
 
 def _table(title: str, outcomes: list[Outcome]) -> None:
@@ -125,7 +128,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.json:
         for o in outcomes:
             print(json.dumps({"case": o.case, "class": o.klass, "source": o.source,
-                              "holdout": o.holdout, "found": o.found,
+                              "holdout": o.holdout, "batch": o.batch, "found": o.found,
                               "rules": list(o.rules_at_fault),
                               "info_rules": list(o.quiet_at_fault),
                               "fixed_loud": list(o.fixed_loud),
@@ -137,13 +140,15 @@ def main(argv: list[str] | None = None) -> int:
         _table("benchmark (built alongside the rules)", benchmark)
     if holdout:
         _table("hold-out (chosen before measuring)", holdout)
+        for batch in sorted({o.batch for o in holdout}):
+            _table(f"hold-out batch {batch}", [o for o in holdout if o.batch == batch])
     for o in outcomes:
         mark = "ok  " if o.passed else "MISS"
         why = f"  [{o.expected_miss}]" if o.expected_miss and not o.passed else ""
         loud = f"  fixed still reports {', '.join(o.fixed_loud)}" if o.fixed_loud else ""
         if not o.found and o.quiet_at_fault:
             loud += f"  (info: {', '.join(o.quiet_at_fault)})"
-        tag = "H " if o.holdout else "  "
+        tag = f"H{o.batch}" if o.holdout else "  "
         print(f"{mark}{tag}{o.case:34} {','.join(o.rules_at_fault) or '-':24}{loud}{why}")
         print(f"       {o.source}")
     return 0

@@ -39,6 +39,11 @@ CASES = [
     ('<link name="$(arg tool)"/>', "Undefined substitution argument", "$(arg tool)"),
     ('<xacro:macro name="m" params=""><xacro:insert_block name="b"/></xacro:macro><xacro:m/>',
      "Undefined block", "undefined block 'b'"),
+    ('<xacro:property name="" value="0.36"/>', "Property names must be valid python "
+     "identifiers", "property names must be valid Python identifiers"),
+    ('<xacro:property name="class" value="0.36"/>', "Property names must be valid python "
+     "identifiers", "property names must be valid Python identifiers"),
+    ('<xacro:property name="wheel_gap" value="0.36"/>', None, None),
     ('<xacro:wheel side="l"><origin xyz="1 0 0"/></xacro:wheel>', None, None),
     ('<xacro:arg name="tool" default="t"/><link name="$(arg tool)"/>', None, None),
 ]

@@ -41,6 +41,8 @@ def test_every_bundled_entry_is_well_formed_and_cites_a_read_source() -> None:
     ({"kind": "robot"}, "kind"),
     ({"ros1_tf2_from": "hydro"}, "ros1_tf2_from"),
     ({"header_frames": ["{nope}"]}, "nope"),
+    ({"looks_up_listed": [{"list": "costmap/observation_sources"}]}, "looks_up_listed"),
+    ({"looks_up_listed": "costmap/observation_sources"}, "looks_up_listed"),
 ])
 def test_a_malformed_entry_is_refused_with_its_fault(fault: dict[str, object],
                                                       message: str) -> None:

@@ -92,3 +92,55 @@ def test_a_frame_prefix_that_is_a_slash(tmp_path: Path) -> None:
     assert levels(tmp_path, "rsp.launch.py", fixed) == []
     prefixed = launch.replace("default=''", "default='robot1'")
     assert levels(tmp_path, "rsp.launch.py", prefixed) == []
+
+
+def test_the_finding_is_on_the_param_line_that_sets_the_frame(tmp_path: Path) -> None:
+    # The <param> that writes the slash, not the node's element two lines above it.
+    ros1 = ('<launch>\n<node pkg="map_server" type="map_server" name="m"\n'
+            '      args="map.yaml">\n  <param name="frame_id" value="/eng2/7f"/>\n'
+            '</node>\n</launch>\n')
+    assert levels(tmp_path, "m.launch", ros1, "noetic") == [(RULE, 4, "warning")]
+    # Set in a parameter file, the line in the file is not known: the node's element.
+    assert levels(tmp_path, "m.launch", MOVE_BASE, "noetic") == [(RULE, 2, "warning")]
+
+
+SOURCES = ('<launch>\n<node pkg="move_base" type="move_base" name="move_base">\n'
+           '<rosparam ns="global_costmap">observation_sources: scan bump\n'
+           'scan: {{sensor_frame: {scan}, data_type: LaserScan}}\n'
+           'bump: {{data_type: PointCloud2}}\n</rosparam>\n'
+           '<param name="local_costmap/obstacle_layer/observation_sources" value="scan"/>\n'
+           '<param name="local_costmap/obstacle_layer/scan/sensor_frame" value="{local}"/>\n'
+           '</node>\n</launch>\n')
+
+
+def test_a_costmap_observation_source_sensor_frame_is_a_frame_it_looks_up(
+        tmp_path: Path) -> None:
+    """Each source an obstacle layer lists (at the costmap's level, pre-Hydro, or in a
+    layer's namespace) is a namespace whose sensor_frame the observations are
+    transformed from in tf2 (costmap_2d observation_buffer.cpp, Melodic on)."""
+    fault = SOURCES.format(scan="/base_laser_link", local="/base_laser_link")
+    assert levels(tmp_path, "s.launch", fault, "melodic") == [
+        (RULE, 2, "warning"), (RULE, 8, "warning")]
+    fixed = SOURCES.format(scan="base_laser_link", local="base_laser_link")
+    assert levels(tmp_path, "s.launch", fixed, "melodic") == []
+    # A frame under a name no observation_sources lists is not read by the costmap.
+    unlisted = fixed.replace('value="scan"/>', 'value="other"/>').replace(
+        'scan/sensor_frame" value="base_laser_link"', 'scan/sensor_frame" value="/x"')
+    assert levels(tmp_path, "s.launch", unlisted, "melodic") == []
+    # Kinetic's costmaps resolved frames with tf 1, which accepts the slash.
+    assert levels(tmp_path, "s.launch", fault, "kinetic") == []
+
+
+COB = ('<launch>\n<node pkg="cob_collision_velocity_filter" type="collision_velocity_filter"'
+       ' name="collision_velocity_filter">\n<rosparam ns="anti_collision_costmap">'
+       'global_frame: {frame}\nrobot_base_frame: base_footprint\n</rosparam>\n</node>\n'
+       '</launch>\n')
+
+
+def test_the_costmap_cob_collision_velocity_filter_runs(tmp_path: Path) -> None:
+    """cob_collision_velocity_filter runs a Costmap2DROS 'anti_collision_costmap' on tf2
+    from Melodic on (cob_control melodic_dev)."""
+    assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "melodic") == [
+        (RULE, 2, "warning")]
+    assert levels(tmp_path, "c.launch", COB.format(frame="base_link"), "melodic") == []
+    assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "kinetic") == []

@@ -32,3 +32,20 @@ def test_an_unknown_node_opens_the_tree_once() -> None:
     ((_, severity, message),) = found(xml)
     assert severity == Severity.INFO and "my_driver/driver" in message
     assert "'base_link'" in message
+
+
+def test_a_costmap_sensor_frame_nothing_publishes_is_reported_at_its_param() -> None:
+    """A costmap observation source's sensor_frame is a frame move_base looks up; the
+    finding is on the <param> that names it."""
+    laser = ('<node pkg="tf2_ros" type="static_transform_publisher" name="laser" '
+             'args="0 0 0 0 0 0 base_link base_laser_link"/>')
+    xml = ('<launch>' + laser + '\n<node pkg="tf2_ros" type="static_transform_publisher" '
+           'name="b" args="0 0 0 0 0 0 map odom"/><node pkg="tf2_ros" '
+           'type="static_transform_publisher" name="c" args="0 0 0 0 0 0 odom base_link"/>\n'
+           '<node pkg="move_base" type="move_base" name="move_base">\n'
+           '<param name="global_costmap/observation_sources" value="scan"/>\n'
+           '<param name="global_costmap/scan/sensor_frame" value="base_laser"/>\n'
+           '</node></launch>')
+    ((line, severity, message),) = found(xml)
+    assert (line, severity) == (5, Severity.INFO) and "'base_laser'" in message
+    assert found(xml.replace('value="base_laser"', 'value="base_laser_link"')) == []

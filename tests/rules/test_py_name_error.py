@@ -79,3 +79,20 @@ def generate_launch_description():
     return ld
 """
     assert _lint(tmp_path, body) == []
+
+
+def test_builtins_are_those_of_every_python_ros2_runs_on_not_the_running_one() -> None:
+    # Read from the linter's data, not from the running interpreter's ``dir(builtins)``:
+    # under Python 3.8 the names 3.10-3.13 added would otherwise be false NameErrors.
+    from launch_linter.frontends.ros2_python.names import PYTHON_BUILTINS
+    newer = {"aiter", "anext", "EncodingWarning", "ExceptionGroup", "BaseExceptionGroup",
+             "PythonFinalizationError"}
+    assert newer <= PYTHON_BUILTINS
+    assert {"print", "len", "__file__", "__name__"} <= PYTHON_BUILTINS
+    assert "decalre_cmd" not in PYTHON_BUILTINS
+
+
+@pytest.mark.parametrize("use", ["anext(iter([]), None)", "ExceptionGroup('x', [ValueError()])"])
+def test_a_builtin_of_a_newer_python_is_silent(tmp_path: Path, use: str) -> None:
+    body = f"\ndef generate_launch_description():\n    {use}\n    return LaunchDescription()\n"
+    assert _lint(tmp_path, body) == []

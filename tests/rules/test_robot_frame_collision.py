@@ -53,3 +53,112 @@ def test_a_ros2_frame_prefix_given_to_ros1_publishers_is_no_prefix(tmp_path: Pat
         robot.replace("<launch>\n", '<launch>\n<arg name="p"/>').replace("frame_prefix",
                                                                          "tf_prefix"))
     assert lint_paths([str(tmp_path / "fleet.launch")], options).diagnostics == ()
+
+
+def test_a_tree_roslaunch_refuses_runs_no_robot(tmp_path: Path) -> None:
+    """husky's multi_husky_playpen.launch passes ``multimaster`` to a spawn file that no
+    longer declares it: roslaunch refuses the tree, so no two robots run."""
+    fleet = ('<launch><group ns="r1"><include file="$(dirname)/robot.launch"/></group>'
+             '<group ns="r2"><include file="$(dirname)/robot.launch">{}</include></group>'
+             '</launch>')
+    assert run(tmp_path, fleet.format("")) == [(RULE, "robot.launch", 2)]
+    assert run(tmp_path, fleet.format('<arg name="multimaster" value="true"/>')) == []
+
+
+def _package(tmp_path: Path, cmake: str) -> Path:
+    (tmp_path / "package.xml").write_text("<package format='2'><name>cell</name></package>")
+    (tmp_path / "CMakeLists.txt").write_text(cmake)
+    (tmp_path / "tests").mkdir()
+    return tmp_path / "tests" / "fleet.launch"
+
+
+def test_a_parse_check_aggregate_is_not_one_system(tmp_path: Path) -> None:
+    """abb's tests/roslaunch_test_*.xml: one group per launch file, only parsed by
+    roslaunch_add_file_check and never installed."""
+    (tmp_path / "robot.launch").write_text(ROBOT)
+    fleet = ('<launch><group ns="a"><include file="$(dirname)/../robot.launch"/></group>'
+             '<group ns="b"><include file="$(dirname)/../robot.launch"/></group></launch>')
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    checked = ("roslaunch_add_file_check(tests/fleet.launch USE_TEST_DEPENDENCIES)\n"
+               "install(DIRECTORY launch urdf DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})\n")
+    root = _package(tmp_path, checked)
+    root.write_text(fleet)
+    assert lint_paths([str(root)], options).diagnostics == ()
+    for cmake in ("roslaunch_add_file_check(launch)\n",
+                  checked.replace("launch urdf", "launch tests urdf")):
+        (tmp_path / "CMakeLists.txt").write_text(cmake)
+        found = lint_paths([str(root)], options).diagnostics
+        assert [(d.rule, Path(d.path).name) for d in found] == [(RULE, "robot.launch")]
+
+
+PLUGIN_ROBOT = """<robot name="tb3">
+  <link name="base_footprint"/><link name="base_link"/>
+  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_link"/></joint>
+  <gazebo><plugin name="drive" filename="libgazebo_ros_diff_drive.so">
+    <odometryFrame>odom</odometryFrame><robotBaseFrame>base_footprint</robotBaseFrame>
+    <publishOdomTF>true</publishOdomTF>
+  </plugin></gazebo>
+</robot>
+"""
+SIM_ROBOT = """  <group ns="{ns}">
+    {group_prefix}
+    <param name="robot_description" textfile="$(dirname)/tb3.urdf"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp">
+      {node_prefix}
+    </node>
+    <node pkg="gazebo_ros" type="spawn_model" name="spawn" args="-urdf -model {ns}
+      -param robot_description"/>
+  </group>
+"""
+
+
+def _simulation(tmp_path: Path, where: str) -> list[tuple[str, str, int]]:
+    (tmp_path / "tb3.urdf").write_text(PLUGIN_ROBOT)
+    robots = []
+    for ns in ("tb3_0", "tb3_1"):
+        prefix = f'<param name="tf_prefix" value="{ns}"/>'
+        robots.append(SIM_ROBOT.format(ns=ns, group_prefix=prefix if where == "group" else "",
+                                       node_prefix=prefix if where == "node" else ""))
+    (tmp_path / "sim.launch").write_text("<launch>\n" + "".join(robots) + "</launch>\n")
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(tmp_path / "sim.launch")], options).diagnostics
+    return [(d.rule, Path(d.path).name, d.line) for d in found]
+
+
+def test_gazebo_plugins_find_tf_prefix_from_the_robot_namespace(tmp_path: Path) -> None:
+    """turtlebot3_simulations c75c07e: a tf_prefix private to robot_state_publisher is not
+    the one the diff-drive plugin finds from the robot's namespace (spawn_model's), so
+    both robots' plugins send odom -> base_footprint; set in the group, it prefixes both."""
+    assert _simulation(tmp_path, "node") == [(RULE, "tb3.urdf", 4)]
+    assert _simulation(tmp_path, "group") == []
+
+
+def test_frame_prefix_before_robot_state_publisher_2_5_is_no_prefix(tmp_path: Path) -> None:
+    """frame_prefix arrived in robot_state_publisher 2.5.0 (ros/robot_state_publisher#159):
+    on dashing or eloquent two namespaced publishers with it still collide."""
+    (tmp_path / "r.urdf").write_text(
+        "<robot name='r'><link name='base_link'/><link name='laser'/><joint name='j' "
+        "type='fixed'><parent link='base_link'/><child link='laser'/></joint></robot>")
+    robots = "".join(
+        f"Node(package='robot_state_publisher', executable='robot_state_publisher', "
+        f"namespace='{ns}', parameters=[{{'robot_description': open('{tmp_path}/r.urdf')"
+        f".read(), 'frame_prefix': '{ns}/'}}]),\n" for ns in ("r1", "r2"))
+    (tmp_path / "fleet.launch.py").write_text(
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+        f"def generate_launch_description():\n    return LaunchDescription([\n{robots}])\n")
+    for distro, expected in (("humble", 0), ("eloquent", 1)):
+        options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro=distro)
+        found = lint_paths([str(tmp_path / "fleet.launch.py")], options).diagnostics
+        assert len(found) == expected, distro
+
+
+def test_the_closest_tf_prefix_is_the_one_searchparam_finds() -> None:
+    from launch_linter.frontends.robot.describe import searched_tf_prefix
+    from launch_linter.model.robot import UNKNOWN_VALUE
+
+    set_in = [("/", "world"), ("/tb3_0/", "tb3_0"), ("/tb3_0/arm/", "arm")]
+    assert searched_tf_prefix("/tb3_0", set_in) == "tb3_0"
+    assert searched_tf_prefix("/tb3_0/arm", set_in) == "arm"
+    assert searched_tf_prefix("/tb3_1", set_in) == "world"
+    assert searched_tf_prefix("/tb3_10", set_in[1:]) == ""
+    assert searched_tf_prefix("/tb3_1", [(None, "x")]) == UNKNOWN_VALUE

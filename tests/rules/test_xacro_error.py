@@ -104,3 +104,13 @@ def test_a_macro_parameter_is_evaluated_at_the_call(tmp_path: Path) -> None:
     declared = '<xacro:arg name="nope" default="a"/>'
     assert lint_loaded(tmp_path, robot(declared + macro + '<xacro:m name="$(arg nope)"/>'),
                        RULE) == ()
+
+
+def test_a_property_name_that_is_no_python_identifier(tmp_path: Path) -> None:
+    # xacro's is_valid_name refuses '' and keywords; a plain name is fine.
+    (found,) = lint_loaded(tmp_path, robot(link("a") + '\n<xacro:property name="" value="1"/>'),
+                           RULE)
+    assert found.severity.value == "error" and found.line == 3
+    assert "property names must be valid Python identifiers: ''" in found.message
+    assert lint_loaded(tmp_path, robot(link("a") + '<xacro:property name="gap" value="1"/>'),
+                       RULE) == ()

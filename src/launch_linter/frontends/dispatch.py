@@ -52,5 +52,6 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
     tree = loader.load(path, data)
     if tree.descriptions:
         tree = attach_robot(tree, options.packages, options.robots, options.display_path,
-                            dict(options.env), loader.include_sites)
+                            dict(options.env), loader.include_sites,
+                            loader.tf_prefixes if isinstance(loader, Ros1Loader) else ())
     return tree

@@ -23,7 +23,7 @@ from launch_linter.model.launch import (
     may_hold_directive,
 )
 from launch_linter.model.paths import shown_path
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _set, replace
 from launch_linter.model.robot import DescriptionSource, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition, ConditionLiteral, StaticTransform
 from launch_linter.resolve.substitution import (
@@ -34,6 +34,7 @@ from launch_linter.resolve.substitution import (
 )
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
+from launch_linter.workspace.launch_checks import only_parse_checked
 from launch_linter.workspace.packages import PackageIndex
 
 STATIC_TF_TYPE = "static_transform_publisher"
@@ -316,7 +317,10 @@ class Ros1Base:
         except BudgetExceeded as exc:
             self._report("unresolved", self._path, self._element or root,
                          exc.message)
-        return self._tree(FileStatus.OK)
+        tree = self._tree(FileStatus.OK)
+        if tree.nodes and only_parse_checked(absolute):
+            tree = replace(tree, parse_check_only=True)
+        return tree
 
     def _tree(self, status: FileStatus) -> LaunchTree:
         return LaunchTree(

@@ -35,6 +35,7 @@ from launch_linter.frontends.ros1_names import (
     make_global_ns,
     ns_join,
 )
+from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
 from launch_linter.resolve import reads
@@ -256,7 +257,8 @@ class Ros1Tags(Ros1Base):
         source = from_ros1_param(values, self._display(context.filename), element.line,
                                  element.column, condition, os.path.dirname(context.filename))
         if source is not None:
-            self.descriptions.append(source)
+            namespace = None if context.ns_unresolved else context.ns
+            self.descriptions.append(replace(source, namespace=namespace))
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str,
@@ -266,6 +268,8 @@ class Ros1Tags(Ros1Base):
         them matter."""
         params: list[tuple[str, str]] = []
         unread: list[str] = []
+        lines: list[tuple[str, str, int, int]] = []
+        path = self._display(context.filename)
         for sub in element.children:
             if sub.tag == "param":
                 key = sub.attrib.get("name")
@@ -283,15 +287,16 @@ class Ros1Tags(Ros1Base):
                         resolved if resolved is not None else self._resolve_text(
                             value, sub, "value", context, dict(context.anon)))
                 params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
+                lines.append((key.lstrip("~"), path, sub.line, sub.column))
             elif sub.tag == "rosparam":
                 found, why = self._rosparam_values(sub, context)
                 params.extend(found)
                 if why:
                     unread.append(why)
         self.nodes.append(NodeRecord(
-            self._display(context.filename), element.line, element.column, package,
+            path, element.line, element.column, package,
             executable, name, tuple(params), _conjoin(context.condition, condition),
-            unread=tuple(unread), namespace=namespace, ros=1,
+            unread=tuple(unread), namespace=namespace, ros=1, param_lines=tuple(lines),
         ))
 
     def _rosparam_values(self, element: Element, context: _Context

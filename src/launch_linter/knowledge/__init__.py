@@ -134,12 +134,17 @@ class Entry(Record):
     ros1_tf2_from: str | None
     """ROS 1: the first distribution whose release hands the entry's frames to tf2 as
     written (a leading ``/`` then fails); None when not known to."""
+    looks_up_listed: tuple[tuple[str, str], ...]
+    """``(list, frame)`` pairs: each item of a parameter named like ``list`` (``*`` is any
+    one name) names a sub-namespace whose ``frame`` parameter the node looks up (a
+    costmap's observation sources and their ``sensor_frame``)."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
         "parameters", "publishes", "looks_up", "camera_frames", "strips_leading_slash",
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
+        "looks_up_listed",
     )
 
     def __init__(
@@ -166,6 +171,7 @@ class Entry(Record):
         origin: str,
         header_frames: tuple[str, ...] = (),
         ros1_tf2_from: str | None = None,
+        looks_up_listed: tuple[tuple[str, str], ...] = (),
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -189,6 +195,7 @@ class Entry(Record):
         _set(self, "origin", origin)
         _set(self, "header_frames", header_frames)
         _set(self, "ros1_tf2_from", ros1_tf2_from)
+        _set(self, "looks_up_listed", looks_up_listed)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -360,6 +367,13 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
     tf2_from = data.get("ros1_tf2_from")
     if tf2_from is not None and tf2_from not in ROS1_DISTROS:
         raise KnowledgeError(f"{where}.ros1_tf2_from must be one of {', '.join(ROS1_DISTROS)}")
+    listed = data.get("looks_up_listed", [])
+    if not isinstance(listed, list) or not all(isinstance(item, dict) for item in listed):
+        raise KnowledgeError(f"{where}.looks_up_listed must be a list of objects")
+    listed_pairs = tuple(
+        (_text(item.get("list"), f"{where}.looks_up_listed[{i}].list"),
+         _text(item.get("frame"), f"{where}.looks_up_listed[{i}].frame"))
+        for i, item in enumerate(listed))
     return Entry(
         id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
         plugins=plugins, filenames=filenames, types=types,
@@ -376,6 +390,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         origin=origin,
         header_frames=headers,
         ros1_tf2_from=tf2_from,
+        looks_up_listed=listed_pairs,
     )
 
 

@@ -169,6 +169,34 @@ def _frame(text: str | None) -> str | None:
     return text[1:] if text.startswith("/") else text
 
 
+def listed_parameters(entry: Entry, node: NodeRecord) -> list[str]:
+    """The parameters of ``node`` that name frames through a list (``looks_up_listed``):
+    for each parameter given that is named like a list pattern, each whitespace-separated
+    item of its value names a sub-namespace beside it, whose frame parameter is one
+    (``global_costmap/observation_sources: scan`` names
+    ``global_costmap/scan/sensor_frame``)."""
+    separator = "." if node.ros == 2 else "/"
+    out: list[str] = []
+    for pattern, frame in entry.looks_up_listed:
+        wanted = pattern.split("/")
+        for name, value in node.params:
+            parts = name.split(separator)
+            if value == UNKNOWN_VALUE or len(parts) != len(wanted) or not all(
+                    w in ("*", p) for w, p in zip(wanted, parts)):
+                continue
+            for item in value.split():
+                named = separator.join([*parts[:-1], item, frame])
+                if named not in out:
+                    out.append(named)
+    return out
+
+
+def lookup_templates(entry: Entry, node: NodeRecord) -> tuple[str, ...]:
+    """The frames ``node`` looks up, as templates: the entry's ``looks_up`` and one
+    ``{param}`` per parameter a list names (:func:`listed_parameters`)."""
+    return entry.looks_up + tuple("{" + name + "}" for name in listed_parameters(entry, node))
+
+
 def frames_named(entry: Entry, node: NodeRecord, templates: tuple[str, ...],
                  assume: bool = False) -> list[tuple[str, str]]:
     """The known frames that ``templates`` (``looks_up``, ``camera_frames``) name, as

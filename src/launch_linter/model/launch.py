@@ -137,10 +137,13 @@ class LaunchTree(Record):
     that a robot_state_publisher of the tree publishes, for the URDF structure rules."""
     undeclared: tuple[UndeclaredUse, ...]
     """ROS 2 launch configurations read where nothing declares, sets or passes them."""
+    parse_check_only: bool
+    """The root is proven to be only an input of ``roslaunch_add_file_check`` (parsed by a
+    test, never started): not one running system (``workspace/launch_checks.py``)."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
-        "descriptions", "nodes", "joints", "robots", "undeclared",
+        "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
     )
 
     def __init__(
@@ -157,6 +160,7 @@ class LaunchTree(Record):
         joints: tuple[RobotJoint, ...] = (),
         robots: tuple[RobotModel, ...] = (),
         undeclared: tuple[UndeclaredUse, ...] = (),
+        parse_check_only: bool = False,
     ) -> None:
         _set(self, "root", root)
         _set(self, "status", status)
@@ -170,3 +174,4 @@ class LaunchTree(Record):
         _set(self, "joints", joints)
         _set(self, "robots", robots)
         _set(self, "undeclared", undeclared)
+        _set(self, "parse_check_only", parse_check_only)

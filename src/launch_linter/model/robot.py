@@ -58,10 +58,13 @@ class DescriptionSource(Record):
     open_file: tuple[str, str, str] | None
     """When ``file`` is unknown only because an environment variable in its name is not
     given: (the path before it, the text after it, the variable's name)."""
+    namespace: str | None
+    """The ROS 1 namespace the ``robot_description`` parameter is set in (``/r1/``), where
+    a spawner finds it by its relative name; None when unknown or not ROS 1."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args", "open_file",
+        "open_args", "open_file", "namespace",
     )
 
     def __init__(
@@ -78,6 +81,7 @@ class DescriptionSource(Record):
         reason: str | None = None,
         open_args: bool = False,
         open_file: tuple[str, str, str] | None = None,
+        namespace: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -91,6 +95,7 @@ class DescriptionSource(Record):
         _set(self, "reason", reason)
         _set(self, "open_args", open_args)
         _set(self, "open_file", open_file)
+        _set(self, "namespace", namespace)
 
 
 class RobotJoint(Record):
@@ -179,6 +184,8 @@ class NodeRecord(Record):
     some of its parameters could not be read (a parameter file not found or not parsed):
     a parameter it does not set then has no known value. ``namespace`` is the node's
     namespace (None when unresolved); ``ros`` the ROS version of the launch file.
+    ``param_lines`` says where a parameter was set, when the front-end knows it: ``(name,
+    path, line, column)`` (a ROS 1 ``<param>`` inside the node's element).
     """
 
     path: str
@@ -194,10 +201,11 @@ class NodeRecord(Record):
     unread: tuple[str, ...]
     namespace: str | None
     ros: int | None
+    param_lines: tuple[tuple[str, str, int, int], ...]
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros",
+        "plugin", "unread", "namespace", "ros", "param_lines",
     )
 
     def __init__(
@@ -215,6 +223,7 @@ class NodeRecord(Record):
         unread: tuple[str, ...] = (),
         namespace: str | None = "/",
         ros: int | None = None,
+        param_lines: tuple[tuple[str, str, int, int], ...] = (),
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -229,6 +238,7 @@ class NodeRecord(Record):
         _set(self, "unread", unread)
         _set(self, "namespace", namespace)
         _set(self, "ros", ros)
+        _set(self, "param_lines", param_lines)
 
     def given(self, name: str) -> str | None:
         """The value of the parameter ``name`` exactly as the node is given it (the last
@@ -237,6 +247,15 @@ class NodeRecord(Record):
         for key, value in self.params:
             if key == name:
                 found = value
+        return found
+
+    def where_set(self, name: str) -> tuple[str, int, int] | None:
+        """Where the parameter ``name`` was last set (path, line, column), None when the
+        front-end does not know."""
+        found = None
+        for key, path, line, column in self.param_lines:
+            if key == name:
+                found = (path, line, column)
         return found
 
     def param(self, name: str) -> str | None:

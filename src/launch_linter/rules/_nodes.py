@@ -6,7 +6,13 @@ publishes ``/joint_states`` (without which robot_state_publisher sends no movabl
 from __future__ import annotations
 
 from launch_linter.knowledge import PLACEHOLDER, Entry, KnowledgeBase
-from launch_linter.knowledge.publish import PublishedEdge, frames_named, published
+from launch_linter.knowledge.publish import (
+    PublishedEdge,
+    frames_named,
+    listed_parameters,
+    lookup_templates,
+    published,
+)
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.record import Record, _set
@@ -175,7 +181,7 @@ def _view(context: RuleContext) -> NodeView:
                 edges.append(NodeEdge(edge.signature[0], edge.signature[1], edge.role,
                                       node, entry, edge.signature not in proven))
         lookups.extend(Lookup(f, p, node, entry)
-                       for f, p in frames_named(entry, node, entry.looks_up))
+                       for f, p in frames_named(entry, node, lookup_templates(entry, node)))
         cameras.extend(Lookup(f, p, node, entry)
                        for f, p in frames_named(entry, node, entry.camera_frames))
     return NodeView(tuple(edges), tuple(lookups), tuple(cameras), tuple(unknown),
@@ -206,15 +212,27 @@ def finding_at_node(node: NodeRecord, message: str,
                    node=node.name, related=related)
 
 
+def finding_at_param(node: NodeRecord, name: str, message: str) -> Finding:
+    """A finding at the line that sets the node's parameter ``name`` (a ``<param>`` inside
+    the node's element), with the node's element as related; at the node's element when
+    the front-end does not know where the parameter was set (a parameter file)."""
+    where = node.where_set(name)
+    if where is None:
+        return finding_at_node(node, message)
+    path, line, column = where
+    return Finding(path=path, line=line, column=column, message=message, node=node.name,
+                   related=(Location(node.path, node.line, node.column),))
+
+
 def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
     """The node side of one tree, outside a rule run (``transforms``, ``graph``)."""
     return nodes_of(RuleContext(tree, knowledge=knowledge))
 
 
-def frame_parameters(entry: Entry) -> list[str]:
+def frame_parameters(entry: Entry, node: NodeRecord | None = None) -> list[str]:
     """The parameters of ``entry`` that name frames: those in its published edges, its
     lookups, its camera frames and the frames it stamps on its data (a parameter used only
-    as a switch is not one)."""
+    as a switch is not one); with ``node``, also those its list parameters name."""
     names: list[str] = []
     templates = [t for spec in entry.publishes for t in (spec.parent, spec.child)]
     for template in (templates + list(entry.looks_up) + list(entry.camera_frames)
@@ -222,4 +240,6 @@ def frame_parameters(entry: Entry) -> list[str]:
         for name in PLACEHOLDER.findall(template):
             if name not in names:
                 names.append(name)
+    if node is not None:
+        names.extend(n for n in listed_parameters(entry, node) if n not in names)
     return names

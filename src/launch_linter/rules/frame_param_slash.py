@@ -2,9 +2,10 @@
 
 ## What it does
 Reports a frame parameter given to a node (`global_frame`, `odom_frame_id`,
-`base_link_frame`, a map's `frame_id`, … as the knowledge base names them,
-docs/knowledge.md) whose value starts with `/`, and a frame prefix that does
-(robot_state_publisher's `frame_prefix`: every frame it publishes then starts with `/`).
+`base_link_frame`, a map's `frame_id`, a costmap observation source's `sensor_frame`, … as
+the knowledge base names them, docs/knowledge.md) whose value starts with `/`, and a frame
+prefix that does (robot_state_publisher's `frame_prefix`: every frame it publishes then
+starts with `/`).
 ROS 2 nodes are checked unless their source strips the slash. A ROS 1 node is checked
 only where the knowledge base says from which release its frames reach tf2 as written
 (move_base's costmaps and map_server from Melodic; Kinetic's costmaps resolved the slash
@@ -39,8 +40,9 @@ slam_toolbox and robot_localization on tf2 do not, nor a `frame_prefix` built as
 ```
 
 ## Known problems
-The finding is at the node's launch element even when the value comes from a parameter
-file (the linter does not keep where in the file each parameter was written).
+The finding is at the ROS 1 `<param>` that sets the value; a value from a parameter file
+or from ROS 2 parameters is reported at the node's launch element (the linter does not
+keep where in the file each parameter was written).
 """
 
 from __future__ import annotations
@@ -52,7 +54,7 @@ from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node, frame_parameters, program_of
+from launch_linter.rules._nodes import entry_of, finding_at_param, frame_parameters, program_of
 
 ID = "frame_param_slash"
 CATEGORY = Category.TF
@@ -61,7 +63,7 @@ EXAMPLE_PATH = "example.launch.xml"
 
 
 def _slashed(entry: Entry, node: NodeRecord) -> Iterator[tuple[str, str]]:
-    names = frame_parameters(entry)
+    names = frame_parameters(entry, node)
     if entry.prefix is not None and entry.prefix.param not in names:
         names.append(entry.prefix.param)
     for name in names:
@@ -109,5 +111,5 @@ def _finding(entry: Entry, node: NodeRecord, name: str, value: str,
     else:
         what = (f"{program} parameter '{name}' is '{value}': tf2 frame ids cannot start "
                 f"with '/', so lookups of it fail{when}; write '{value.lstrip('/')}'")
-    found = finding_at_node(node, what)
+    found = finding_at_param(node, name, what)
     return found if level is None else replace(found, severity=level)

@@ -51,7 +51,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
-from launch_linter.rules._nodes import finding_at_node, nodes_of, program_of
+from launch_linter.rules._nodes import finding_at_node, finding_at_param, nodes_of, program_of
 from launch_linter.rules._tree import edges_of
 
 ID = "frame_without_publisher"
@@ -84,8 +84,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         )
         return
     for lookup in missing:
-        yield finding_at_node(
-            lookup.node,
+        yield finding_at_param(
+            lookup.node, lookup.param,
             f"{program_of(lookup.node)} looks up '{lookup.frame}' (parameter "
             f"'{lookup.param}'), which no static transform, URDF joint or node of this tree "
             f"publishes",

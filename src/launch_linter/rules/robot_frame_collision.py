@@ -5,7 +5,10 @@ Reports a launch tree with two or more robot descriptions published by
 `robot_state_publisher`s of different namespaces (the same robot launch file included once
 per robot, or two robots' files) when the descriptions share frame names and no
 `frame_prefix` (ROS 2) or `tf_prefix` (ROS 1) separates them. The finding is at the
-second description's launch element and names the shared frames.
+second description's launch element and names the shared frames. It also reports one edge
+sent by known nodes or simulator plugins of different namespaces after each one's own
+prefix (each robot's Gazebo diff-drive plugin sending `odom → base_footprint`), at the
+second publisher.
 
 ## Why is this bad?
 A namespace renames topics, not tf frames: every robot_state_publisher sends
@@ -53,12 +56,22 @@ the description.
 ```
 
 ## Known problems
-Reported at info: judged on too few real findings to set a warning (one, in husky's
-multi-robot simulation, which runs each robot under its own master through
-multimaster_launch: not a collision; docs/evaluation/tree_judged.jsonl). A prefix whose
-value the linter cannot resolve counts as a prefix (the rule stays silent). Only the
-parameter the node's ROS version reads counts: ROS 1 robot_state_publisher ignores a
-`frame_prefix` (ros/robot_state_publisher#192), ROS 2's has no `tf_prefix`.
+Reported at info: on 28 public multi-robot repositories nobody had used (simulations,
+fleets, multi-arm cells) it finds nothing; of the 18 findings judged so far, 17 were false
+(all of the two causes below, now silent) and one harmless: too few to set a warning
+(docs/evaluation/tree_judged.jsonl, docs/evaluation/multi-robot-trial.md). It says nothing
+about a tree roslaunch refuses (husky's multi-robot playpen passes an argument its spawn
+file no longer declares) or a root that its package only hands to
+`roslaunch_add_file_check` and never installs (abb's and universal_robot's
+`tests/roslaunch_test*.xml`: one group per launch file, only parsed). A prefix whose value
+the linter cannot resolve counts as a prefix (the rule stays silent). Only the parameter the
+node's ROS version reads counts: ROS 1 robot_state_publisher ignores a `frame_prefix`
+(ros/robot_state_publisher#192) and finds `tf_prefix` from its private namespace up; ROS 2's
+has no `tf_prefix`, and no `frame_prefix` before 2.5.0 (dashing, eloquent). ROS 1 gazebo_ros
+drive plugins (diff-drive, skid-steer, planar-move) prefix their `odom → base` edge with the
+`tf_prefix` found from the robot's namespace (theirs, else spawn_model's), not with one given
+to robot_state_publisher only; ROS 2 plugins prefix nothing. Robots started one launch
+command each (a spawn file run per robot) are separate trees: never compared.
 """
 
 from __future__ import annotations
@@ -66,30 +79,50 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
+from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of
 
 ID = "robot_frame_collision"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
 PUBLISHER = "robot_state_publisher"
+REFUSED = "roslaunch_error"
 PREFIXES = {1: ("tf_prefix",), 2: ("frame_prefix",)}
 """The parameter that prefixes robot_state_publisher's frames, by ROS version: ROS 1 reads
 tf_prefix (found by searchParam), ROS 2 frame_prefix; each ignores the other's."""
 
 
-def _prefixed(node: NodeRecord) -> bool:
+NO_FRAME_PREFIX = ("dashing", "eloquent")
+"""ROS 2 distributions whose robot_state_publisher has no ``frame_prefix`` (added in 2.5.0,
+ros/robot_state_publisher#159, backported to foxy in 2.4.5, August 2021)."""
+
+
+def _prefixed(node: NodeRecord, distro: str | None = None) -> bool:
     names = PREFIXES.get(node.ros or 0, ("tf_prefix", "frame_prefix"))
+    if node.ros == 2 and distro in NO_FRAME_PREFIX:
+        return False
     return any(node.given(p) not in (None, "") for p in names)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
     tree = context.tree
-    publishers = [n for n in tree.nodes if n.package == PUBLISHER]
+    if tree.parse_check_only or any(p.rule == REFUSED for p in tree.problems):
+        # Not one running system: a test only parses the root, or roslaunch refuses the
+        # whole tree (that refusal is reported on its own).
+        return
+    yield from _descriptions(tree, context.distro)
+    yield from _node_edges(context)
+
+
+def _descriptions(tree: LaunchTree, distro: str | None) -> Iterator[Finding]:
+    """The same URDF frames from robot_state_publishers of different namespaces."""
+    publishers = [n for n in tree.nodes if n.package == PUBLISHER and n.kind == "node"]
     namespaces = {n.namespace for n in publishers}
     if len(publishers) < 2 or len(namespaces) < 2 or None in namespaces:
         return
-    if any(_prefixed(n) for n in publishers):
+    if any(_prefixed(n, distro) for n in publishers):
         return
     by_source: dict[int, list[RobotJoint]] = {}
     sources: list[DescriptionSource] = []
@@ -118,3 +151,32 @@ def check(context: RuleContext) -> Iterator[Finding]:
                      f"namespaced: give each robot a frame_prefix (ROS 2) or tf_prefix "
                      f"(ROS 1)"),
         )
+
+
+def _node_edges(context: RuleContext) -> Iterator[Finding]:
+    """One edge, after each publisher's own prefix, from known nodes or simulator plugins
+    of different namespaces (one plugin block of a description spawned once per robot)."""
+    first: dict[tuple[str, str], NodeEdge] = {}
+    for edge in nodes_of(context).edges:
+        namespace = edge.node.namespace
+        if edge.assumed or namespace is None:
+            continue
+        key = (edge.parent, edge.child)
+        seen = first.get(key)
+        if seen is None:
+            first[key] = edge
+            continue
+        other = seen.node.namespace or ""
+        if (other.strip("/") == namespace.strip("/")
+                or seen.node.condition.excludes(edge.node.condition)):
+            continue
+        yield finding_at_node(
+            edge.node,
+            f"{edge.describe()} in namespace '{namespace}' publishes {edge.parent} -> "
+            f"{edge.child}, the same edge as {seen.describe()} in namespace '{other}': "
+            f"tf frames are not namespaced, so the robots overwrite each other's "
+            f"{edge.child}; give each robot its own frame names"
+            + (" (a tf_prefix set in the robot's namespace, where the plugin finds it)"
+               if edge.node.kind == "gazebo_plugin" and edge.node.ros == 1 else ""),
+            related=(seen.location,))
+        first[key] = edge

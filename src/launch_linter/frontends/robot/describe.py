@@ -20,7 +20,7 @@ from launch_linter.frontends.params import (
     ros2_file_params,
 )
 from launch_linter.frontends.robot.alternatives import alternatives
-from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED
+from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED, TF_PREFIX_PARAM
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
@@ -207,12 +207,14 @@ def literal_kind(text: str) -> bool:
 
 def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | None,
                  display: Callable[[str], str], env: dict[str, str],
-                 sites: Mapping[str, Location] | None = None) -> LaunchTree:
+                 sites: Mapping[str, Location] | None = None,
+                 tf_prefixes: Sequence[tuple[str | None, str]] = ()) -> LaunchTree:
     """The tree with the joints of the descriptions that a robot_state_publisher of the
     tree publishes (in ROS 1 a ``robot_description`` parameter without one is not
     published by this tree), and an ``unresolved`` diagnostic per problem; one about a
     description an included file gives names that file's include (``sites``: each
-    included file's first include, by the file's shown path)."""
+    included file's first include, by the file's shown path; ``tf_prefixes``: the ROS 1
+    ``tf_prefix`` parameters set in a namespace, which simulated plugins find)."""
     if not tree.descriptions:
         return tree
     publishes = any(node.package == RSP_PACKAGE for node in tree.nodes)
@@ -255,9 +257,10 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         problems_found = [problem if problem.path not in sites
                           else through_include(problem, sites[problem.path])
                           for problem in problems_found]
+    plugins = simulated_plugins(tree.nodes, robots, tf_prefixes)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found),
-                   nodes=tree.nodes + tuple(simulated_plugins(tree.nodes, robots)))
+                   nodes=tree.nodes + tuple(plugins))
 
 
 def _refusals(tree: LaunchTree, packages: PackageIndex, cache: RobotCache,
@@ -278,13 +281,15 @@ def _refusals(tree: LaunchTree, packages: PackageIndex, cache: RobotCache,
     return replace(tree, robots=tuple(refused)) if refused else tree
 
 
-def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]
+def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel],
+                      tf_prefixes: Sequence[tuple[str | None, str]] = ()
                       ) -> list[NodeRecord]:
     """The Gazebo plugins of the descriptions, when the tree spawns a description into a
     simulator (a description only published by robot_state_publisher, as on the real
     robot, runs no plugin). Each runs under its description's condition and, when every
     spawner is conditional, the first spawner's; a ros2_control plugin's controller
-    parameter file gives its controllers."""
+    parameter file gives its controllers. A ROS 1 plugin gets its robot namespace and
+    the ``tf_prefix`` found from there (``tf_prefixes``: those set in a namespace)."""
     spawners = [n for n in nodes if spawns_into_simulator(n)]
     if not spawners:
         return []
@@ -297,9 +302,53 @@ def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel]
             plugin = replace(plugin, ros=ros if ros is not None else plugin.ros,
                              condition=plugin.condition if condition is None
                              else plugin.condition & condition)
+            if plugin.ros == 1:
+                plugin = _ros1_robot_namespace(plugin, robot.source, spawners, tf_prefixes)
             out.append(plugin)
             out.extend(_simulated_controllers(plugin))
     return out
+
+
+def _ros1_robot_namespace(plugin: NodeRecord, source: DescriptionSource,
+                          spawners: Sequence[NodeRecord],
+                          tf_prefixes: Sequence[tuple[str | None, str]]) -> NodeRecord:
+    """A ROS 1 plugin with the namespace its node handle runs in and the ``tf_prefix``
+    gazebo_plugins find there (``tf::getPrefixParam``, a ``searchParam``): its own
+    ``<robotNamespace>``, else the one ``spawn_model`` writes into it (``-robot_namespace``,
+    by default the spawner's namespace, where it reads the description parameter by its
+    relative name). Unknown (no prefix assumed) when no spawner runs in the namespace of
+    the description's parameter."""
+    namespace: str | None = plugin.namespace
+    if plugin.given("robotNamespace") is None:
+        namespace = None
+        if source.namespace is not None:
+            here = source.namespace.strip("/")
+            if any(s.namespace is not None and s.namespace.strip("/") == here
+                   for s in spawners if s.package == "gazebo_ros"):
+                namespace = "/" + here
+    prefix = (UNKNOWN_VALUE if namespace is None
+              else searched_tf_prefix(namespace, tf_prefixes))
+    return replace(plugin, namespace=namespace, params=(*plugin.params, (TF_PREFIX_PARAM, prefix)))
+
+
+def searched_tf_prefix(namespace: str, tf_prefixes: Sequence[tuple[str | None, str]]
+                       ) -> str:
+    """The ``tf_prefix`` that ``tf::getPrefixParam`` (a ``searchParam``) finds from
+    ``namespace`` up: the one set in the closest enclosing namespace, the last one set
+    there; ``UNKNOWN_VALUE`` when one whose namespace is unresolved could be it, '' when
+    none is set."""
+    inside = namespace.strip("/")
+    found, depth = "", -1
+    for scope, value in tf_prefixes:
+        if scope is None:
+            return UNKNOWN_VALUE
+        outer = scope.strip("/")
+        if outer and inside != outer and not inside.startswith(outer + "/"):
+            continue
+        level = outer.count("/") + 1 if outer else 0
+        if level >= depth:
+            found, depth = value, level
+    return found
 
 
 _ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",

@@ -192,6 +192,11 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                     if element.tag in ("namespace", "robotNamespace"):
                         namespace = (None if element.text is None
                                      else "/" + element.text.strip("/"))
+                        if element.tag == "robotNamespace":
+                            # Kept as a parameter too: a ROS 1 spawner writes its own
+                            # namespace only into plugins that name none.
+                            params.append((element.tag, UNKNOWN_VALUE if element.text is None
+                                           else element.text))
                     elif element.tag in PLUGIN_TEXT_TAGS:
                         params.append((element.tag, UNKNOWN_VALUE if element.text is None
                                        else element.text))

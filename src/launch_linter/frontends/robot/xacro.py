@@ -29,7 +29,6 @@ from collections.abc import Callable, Mapping
 from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
 from launch_linter.frontends.robot.xacro_values import (
     _GLOB,
-    _IDENTIFIER,
     _MATH_PREFIX,
     _PARAM,
     _PREFIX,
@@ -62,6 +61,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _unquoted,
     legacy_tag,
     legacy_tags,
+    valid_name,
 )
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
@@ -448,8 +448,8 @@ class XacroExpander:
     def _property(self, element: Element, path: str, table: _Table) -> None:
         attrib = element.attrib
         name = self.evaluate_text(attrib.get("name", ""), table)
-        if not _IDENTIFIER.match(name):
-            raise _Unknown(f"property name {name!r} is not a valid identifier")
+        if not valid_name(name):
+            raise _Refused(f"property names must be valid Python identifiers: {name!r}")
         target = table
         scope = attrib.get("scope")
         if scope == "parent" and table.parent is not None:

@@ -3,7 +3,9 @@ and its tables of properties, macros and blocks with their scoping."""
 
 from __future__ import annotations
 
+import keyword
 import re
+import unicodedata
 from collections.abc import Mapping
 
 from launch_linter.model.record import MutableRecord, Record, _set
@@ -25,9 +27,16 @@ _PREFIX = "xacro:"
 # xacro's lexer: ``$${``/``$$(`` escapes, ``${expr}``, and ``$(...)`` whose words may hold
 # ``${expr}`` (evaluated first, as xacro does).
 _TOKEN = re.compile(r"\$\$[{(]|\$\{[^}]*\}|\$\((?:[^$)]|\$\{[^}]*\})*\)")
-_IDENTIFIER = re.compile(r"[A-Za-z_]\w*\Z")
 _MATH_PREFIX = re.compile(r"\bmath\.")
 _GLOB = re.compile(r"[*?\[]")
+
+
+def valid_name(name: str) -> bool:
+    """Whether xacro takes ``name`` for a property: a Python identifier that parses as
+    itself (no keyword, already in NFKC form), as xacro's ``is_valid_name`` checks (it
+    refuses any other name, ``''`` included)."""
+    return (name.isidentifier() and not keyword.iskeyword(name)
+            and unicodedata.normalize("NFKC", name) == name)
 
 
 class _Abort(Exception):
@@ -95,6 +104,9 @@ class XacroProblem(Record):
         _set(self, "conditions", conditions)
 
 
+TF_PREFIX_PARAM = "tf_prefix"
+"""The parameter a ROS 1 simulated plugin's record gives the ``tf_prefix`` it finds from its
+robot namespace (set by the launch tree, not in the plugin block; ``describe``)."""
 PLUGIN_TEXT_TAGS = frozenset({
     # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
     "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",

@@ -1,0 +1,89 @@
+"""Launch files that a catkin package only hands to ``roslaunch_add_file_check``.
+
+``roslaunch_add_file_check(FILE)`` makes a test that loads ``FILE`` with roslaunch's
+parser and never starts it. Packages write aggregates for it (abb's
+``tests/roslaunch_test_*.xml``: one ``<group ns>`` per launch file of the package, each
+only to be parsed): such a file is not one running system, so robots of its groups do
+not share a tf tree. A file counts as one only with proof: its package's
+``CMakeLists.txt`` (read as text, never run) names it in ``roslaunch_add_file_check``
+and installs nothing it lies in (no ``install(DIRECTORY|FILES ...)`` argument names the
+file or a folder above it, and no argument is left unresolved).
+"""
+
+from __future__ import annotations
+
+import os
+
+from launch_linter.resolve import reads
+from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+
+MAX_CMAKE_BYTES = 1024 * 1024
+"""The bound cmake_install puts on a CMakeLists.txt (not imported from it: see below)."""
+MAX_PACKAGE_DEPTH = 8
+"""Folders walked up from a launch file to find its package.xml."""
+_CHECK_KEYWORDS = frozenset({"USE_TEST_DEPENDENCIES", "DEPENDENCIES"})
+_INSTALL_LISTS = frozenset({"DIRECTORY", "FILES", "PROGRAMS"})
+
+
+def _package_folder(path: str) -> str | None:
+    folder = os.path.dirname(os.path.abspath(path))
+    for _ in range(MAX_PACKAGE_DEPTH):
+        manifest = os.path.join(folder, "package.xml")
+        reads.note_path(manifest)
+        if os.path.isfile(manifest):
+            return folder
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            return None
+        folder = parent
+    return None
+
+
+def _installed_items(texts: list[str]) -> list[str]:
+    """The files and folders an ``install`` call names: the words after ``DIRECTORY``,
+    ``FILES`` or ``PROGRAMS`` up to the next keyword (``DESTINATION``, ``PATTERN``...)."""
+    items: list[str] = []
+    taking = False
+    for text in texts:
+        if text in _INSTALL_LISTS:
+            taking = True
+        elif text.isupper() and text.replace("_", "").isalpha():
+            taking = False
+        elif taking:
+            items.append(text)
+    return items
+
+
+def only_parse_checked(path: str) -> bool:
+    """Whether the launch file ``path`` is proven to be only a parse-check input."""
+    folder = _package_folder(path)
+    if folder is None:
+        return False
+    try:
+        data = read_regular_file(os.path.join(folder, "CMakeLists.txt"), MAX_CMAKE_BYTES)
+    except (OSError, NotRegularFile):
+        return False
+    text = data.decode("utf-8", "replace")
+    if "roslaunch_add_file_check" not in text:
+        return False
+    # Imported only here: the CMake reader's install rules are dataclasses, which a run
+    # over launch files of packages without parse checks never needs (start-up time).
+    from launch_linter.workspace.cmake_install import commands
+
+    relative = os.path.relpath(os.path.abspath(path), folder).replace(os.sep, "/")
+    checked = False
+    for name, arguments, _line in commands(text):
+        texts = [a.text for a in arguments]
+        if name == "roslaunch_add_file_check":
+            for text in texts:
+                if text in _CHECK_KEYWORDS:
+                    break
+                checked = checked or os.path.normpath(text).replace(os.sep, "/") == relative
+        elif name == "install":
+            for text in _installed_items(texts):
+                if "$" in text or "*" in text:
+                    return False
+                named = os.path.normpath(text).replace(os.sep, "/").strip("/")
+                if named and (relative == named or relative.startswith(named + "/")):
+                    return False
+    return checked
