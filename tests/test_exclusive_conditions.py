@@ -139,3 +139,32 @@ def test_one_program_under_two_unrelated_conditions_runs_twice(tmp_path: Path) -
     assert len(lint_paths([str(path)], options).diagnostics) == 1
     path.write_text(launch("IfCondition(PythonExpression(['not ', a]))"))
     assert lint_paths([str(path)], options).diagnostics == ()
+
+
+def test_a_launch_configuration_written_inside_the_expression_list(tmp_path: Path) -> None:
+    """realsense-ros's rs_launch.py: ``PythonExpression([LaunchConfiguration('config_file'),
+    " == ''"])`` and ``" != ''"`` choose one of two driver nodes; an undeclared
+    ``config_file`` leaves both unresolved, and they are still alternatives."""
+    assert equality_test("""PythonExpression([LaunchConfiguration('f'), " == ''"])""") == (
+        "f", "", True)
+    assert equality_test("""PythonExpression([LaunchConfiguration("f"), " != 'x'"])""") == (
+        "f", "x", False)
+
+    def launch(operator: str) -> str:
+        return ("from launch import LaunchDescription\n"
+                "from launch.conditions import IfCondition\n"
+                "from launch.substitutions import LaunchConfiguration, PythonExpression\n"
+                "from launch_ros.actions import Node\n"
+                "def generate_launch_description():\n"
+                "    return LaunchDescription([\n"
+                "        Node(package='nav2_amcl', executable='amcl', condition=IfCondition(\n"
+                "            PythonExpression([LaunchConfiguration('f'), \" == ''\"]))),\n"
+                "        Node(package='nav2_amcl', executable='amcl', condition=IfCondition(\n"
+                f"            PythonExpression([LaunchConfiguration('f'), \" {operator} ''\"]))),\n"
+                "    ])\n")
+    path = tmp_path / "a.launch.py"
+    options = LintOptions(package_paths=(), select=frozenset({"duplicate_publisher"}))
+    path.write_text(launch("!="))
+    assert lint_paths([str(path)], options).diagnostics == ()
+    path.write_text(launch("=="))
+    assert len(lint_paths([str(path)], options).diagnostics) == 1

@@ -30,6 +30,7 @@ ROS1 = """<launch>
   {spawn}
   <node pkg="robot_localization" type="ekf_localization_node" name="ekf">
     <param name="base_link_frame" value="base_footprint"/>
+    <param name="odom0" value="odom"/>
   </node>
 </launch>
 """

@@ -95,9 +95,27 @@ def test_defaults_parameters_and_switches() -> None:
 
 
 def test_robot_localization_publishes_by_its_world_frame() -> None:
-    assert edges(node("robot_localization", "ekf_localization_node")) == [("odom", "base_link")]
     assert edges(node("robot_localization", "ekf_localization_node",
-                      ("world_frame", "map"))) == [("map", "odom")]
+                      ("odom0", "odom"))) == [("odom", "base_link")]
+    assert edges(node("robot_localization", "ekf_localization_node",
+                      ("world_frame", "map"), ("imu0", "imu"))) == [("map", "odom")]
+
+
+def test_robot_localization_without_an_input_publishes_nothing() -> None:
+    """The filter sends its transform only once a measurement initialized it, and it
+    measures only the topics odom0, imu0... name: with every parameter read and none
+    given, no edge; with its parameter file unread, the input may be there."""
+    assert edges(node("robot_localization", "ekf_localization_node")) == []
+    assert edges(node("robot_localization", "ekf_localization_node",
+                      ("world_frame", "odom"), ("odom_topic", "odom"))) == []
+    assert edges(node("robot_localization", "ekf_localization_node",
+                      ("twist12", "cmd"))) == [("odom", "base_link")]
+    record = node("robot_localization", "ekf_node", ("world_frame", "odom"),
+                  unread=("file not read",), ros=2)
+    entry = bundled().node("robot_localization", "ekf_node", 2)
+    assert entry is not None
+    assert [(e.parent, e.child) for e in published(entry, record, assume=True)[0]] == [
+        ("odom", "base_link")]
 
 
 def test_unread_parameters_leave_defaults_unknown() -> None:

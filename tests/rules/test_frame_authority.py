@@ -34,7 +34,8 @@ def test_publish_tf_false_is_no_authority(lint: Lint) -> None:
 
 def test_robot_localization_map_world_frame(lint: Lint) -> None:
     xml = (f'<launch><node pkg="robot_localization" type="ekf_localization_node" name="ekf">'
-           f'<param name="world_frame" value="map"/></node>\n{MAP_ODOM}</launch>')
+           f'<param name="world_frame" value="map"/><param name="odom0" value="odom"/></node>\n'
+           f'{MAP_ODOM}</launch>')
     assert lint(xml, RULE) == [(RULE, 2)]
 
 
@@ -88,7 +89,7 @@ def test_filter_without_world_frame_in_the_launch_file_is_left_out(lint: Lint) -
 
 def test_filter_with_world_frame_odom_owns_odom_base(lint: Lint) -> None:
     xml = ('<launch><node pkg="robot_localization" type="ekf_localization_node" name="ekf">'
-           '<param name="world_frame" value="odom"/></node>\n'
+           '<param name="world_frame" value="odom"/><param name="imu0" value="imu"/></node>\n'
            '<node pkg="tf2_ros" type="static_transform_publisher" name="t" '
            'args="0 0 0 0 0 0 odom base_link"/></launch>')
     assert lint(xml, RULE) == [(RULE, 2)]

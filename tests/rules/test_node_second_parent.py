@@ -14,11 +14,11 @@ def test_ekf_base_link_under_the_urdf_footprint(lint: Lint) -> None:
             "&lt;/robot&gt;")
     fault = (f'<launch><param name="robot_description" value="{urdf}"/>'
              '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>\n'
-             '<node pkg="robot_localization" type="ekf_localization_node" name="ekf"/>'
-             '</launch>')
+             '<node pkg="robot_localization" type="ekf_localization_node" name="ekf">'
+             '<param name="odom0" value="odom"/></node></launch>')
     assert lint(fault, RULE) == [(RULE, 2)]
-    fixed = fault.replace('name="ekf"/>', 'name="ekf"><param name="base_link_frame" '
-                                          'value="base_footprint"/></node>')
+    fixed = fault.replace('name="ekf">', 'name="ekf"><param name="base_link_frame" '
+                                         'value="base_footprint"/>')
     assert lint(fixed, RULE) == []
 
 
@@ -33,7 +33,8 @@ def test_a_static_map_to_base_beside_localization_and_odometry(lint: Lint) -> No
 
 
 def test_two_nodes_giving_one_frame_two_parents(lint: Lint) -> None:
-    xml = ('<launch><node pkg="robot_localization" type="ekf_localization_node" name="a"/>\n'
+    xml = ('<launch><node pkg="robot_localization" type="ekf_localization_node" name="a">'
+           '<param name="odom0" value="odom"/></node>\n'
            '<node pkg="rf2o_laser_odometry" type="rf2o_laser_odometry_node" name="rf2o">'
            '<param name="odom_frame_id" value="odom_laser"/></node></launch>')
     assert lint(xml, RULE) == [(RULE, 2)]

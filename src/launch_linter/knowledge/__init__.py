@@ -138,6 +138,10 @@ class Entry(Record):
     """``(list, frame)`` pairs: each item of a parameter named like ``list`` (``*`` is any
     one name) names a sub-namespace whose ``frame`` parameter the node looks up (a
     costmap's observation sources and their ``sensor_frame``)."""
+    inputs: tuple[str, ...]
+    """Parameters that give the node the input it needs before it publishes anything
+    (``#`` stands for a number: robot_localization's ``odom#``): with every parameter
+    source of the node read and none of them set, it publishes no edge."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -145,6 +149,7 @@ class Entry(Record):
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
+        "inputs",
     )
 
     def __init__(
@@ -172,6 +177,7 @@ class Entry(Record):
         header_frames: tuple[str, ...] = (),
         ros1_tf2_from: str | None = None,
         looks_up_listed: tuple[tuple[str, str], ...] = (),
+        inputs: tuple[str, ...] = (),
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -196,6 +202,7 @@ class Entry(Record):
         _set(self, "header_frames", header_frames)
         _set(self, "ros1_tf2_from", ros1_tf2_from)
         _set(self, "looks_up_listed", looks_up_listed)
+        _set(self, "inputs", inputs)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -391,6 +398,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         header_frames=headers,
         ros1_tf2_from=tf2_from,
         looks_up_listed=listed_pairs,
+        inputs=_texts(data.get("inputs"), f"{where}.inputs"),
     )
 
 

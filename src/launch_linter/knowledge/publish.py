@@ -141,6 +141,8 @@ def published(entry: Entry, node: NodeRecord, assume: bool = False
     """The edges ``node`` publishes (frames None where unknown), and the edges it may
     publish: those whose conditions are unknown. With ``assume``, the entry's defaults
     stand for parameters that an unread parameter file may set."""
+    if not has_input(entry, node):
+        return [], []
     params = Parameters(entry, node, assume)
     prefix = params.prefix()
     sure: list[PublishedEdge] = []
@@ -160,6 +162,23 @@ def published(entry: Entry, node: NodeRecord, assume: bool = False
             child = None if child is None else prefix + child
         sure.append(PublishedEdge(parent, child, spec.role, spec))
     return sure, maybe
+
+
+def _is_input(pattern: str, name: str) -> bool:
+    if pattern.endswith("#"):
+        stem = pattern[:-1]
+        return name.startswith(stem) and name[len(stem):].isdigit()
+    return name == pattern
+
+
+def has_input(entry: Entry, node: NodeRecord) -> bool:
+    """False when the node provably lacks the input it needs before publishing (every
+    parameter source read, none of ``entry.inputs`` set): robot_localization's filter
+    publishes nothing before its first measurement, and it measures only the topics its
+    ``odom0``, ``imu0``... parameters name."""
+    if not entry.inputs or node.unread or entry.parameters_elsewhere:
+        return True
+    return any(_is_input(pattern, key) for key, _ in node.params for pattern in entry.inputs)
 
 
 def _frame(text: str | None) -> str | None:

@@ -36,7 +36,9 @@ _LAUNCH_EQUALS = r"""LaunchConfiguration(Not)?Equals\(\s*(['"])(\w+)\2\s*,\s*(['
 _EVAL = r"(?s)\$\(eval\s+(.*)\)"
 _XACRO = r"(?s)xacro:\$\{(.*)\}"
 _QUOTED = r"""(?s)(['"])(.*)\1"""
-_LIST_ITEM = r"""\s*(('[^'\\]*'|"[^"\\]*")|([A-Za-z_]\w*))\s*(?:,|$)"""
+_LIST_ITEM = (
+    r"""\s*(('[^'\\]*'|"[^"\\]*")|(LaunchConfiguration\(\s*(?:'\w+'|"\w+")\s*\)|[A-Za-z_]\w*))"""
+    r"""\s*(?:,|$)""")
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _SUBJECT_FORMS = (
     (r"""^arg\((['"])(\w+)\1\)$""", "{}"),
@@ -92,7 +94,8 @@ def truth_test(text: str) -> Test | None:
 
 def _joined(items: str) -> str:
     """The text a ``PythonExpression([...])`` list makes: its string pieces joined, each
-    variable (a ``LaunchConfiguration``) standing as its name."""
+    variable (a ``LaunchConfiguration``) standing as its name, and a
+    ``LaunchConfiguration('x')`` written in the list as itself."""
     pieces: list[str] = []
     for match in re.finditer(_LIST_ITEM, items):
         text, name = match.group(2), match.group(3)

@@ -5,7 +5,7 @@ publishes ``/joint_states`` (without which robot_state_publisher sends no movabl
 
 from __future__ import annotations
 
-from launch_linter.knowledge import PLACEHOLDER, Entry, KnowledgeBase
+from launch_linter.knowledge import PLACEHOLDER, EdgeSpec, Entry, KnowledgeBase
 from launch_linter.knowledge.publish import (
     PublishedEdge,
     frames_named,
@@ -43,8 +43,10 @@ class NodeEdge(Record):
     assumed: bool
     """The edge rests on defaults that an unread parameter file of the node may change:
     enough for a warning measured on real files, never for an error."""
+    spec: EdgeSpec | None
+    """The knowledge base's edge it comes from (its switches and frame parameters)."""
 
-    __slots__ = ("parent", "child", "role", "node", "entry", "assumed")
+    __slots__ = ("parent", "child", "role", "node", "entry", "assumed", "spec")
 
     def __init__(
         self,
@@ -54,6 +56,7 @@ class NodeEdge(Record):
         node: NodeRecord,
         entry: Entry,
         assumed: bool = False,
+        spec: EdgeSpec | None = None,
     ) -> None:
         _set(self, "parent", parent)
         _set(self, "child", child)
@@ -61,6 +64,7 @@ class NodeEdge(Record):
         _set(self, "node", node)
         _set(self, "entry", entry)
         _set(self, "assumed", assumed)
+        _set(self, "spec", spec)
 
     @property
     def location(self) -> Location:
@@ -179,7 +183,7 @@ def _view(context: RuleContext) -> NodeView:
         for edge in assumed:
             if edge.signature is not None:
                 edges.append(NodeEdge(edge.signature[0], edge.signature[1], edge.role,
-                                      node, entry, edge.signature not in proven))
+                                      node, entry, edge.signature not in proven, edge.spec))
         lookups.extend(Lookup(f, p, node, entry)
                        for f, p in frames_named(entry, node, lookup_templates(entry, node)))
         cameras.extend(Lookup(f, p, node, entry)

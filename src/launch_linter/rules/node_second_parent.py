@@ -18,7 +18,9 @@ wrong frame: it must be the root of the robot's description (often `base_footpri
 ## Example
 ```xml
 <launch>
-  <node pkg="robot_localization" type="ekf_localization_node" name="ekf"/>
+  <node pkg="robot_localization" type="ekf_localization_node" name="ekf">
+    <param name="odom0" value="wheel/odom"/>
+  </node>
   <node pkg="tf2_ros" type="static_transform_publisher" name="footprint"
         args="0 0 0 0 0 0 base_footprint base_link"/>
 </launch>
@@ -28,6 +30,7 @@ wrong frame: it must be the root of the robot's description (often `base_footpri
 ```xml
 <launch>
   <node pkg="robot_localization" type="ekf_localization_node" name="ekf">
+    <param name="odom0" value="wheel/odom"/>
     <param name="base_link_frame" value="base_footprint"/>
   </node>
   <node pkg="tf2_ros" type="static_transform_publisher" name="footprint"
