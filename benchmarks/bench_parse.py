@@ -35,10 +35,13 @@ process).
 ``--repeat N`` runs only that pass, N times after one warm-up pass, and prints nothing: for
 an instruction counter, which the machine's load does not move (docs/performance.md):
 
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null \\
+    PYTHONHASHSEED=0 valgrind --tool=callgrind --callgrind-out-file=/dev/null \\
         python benchmarks/bench_parse.py --every 8 --repeat 1 --format ros1 --measure read
 
-and again with ``--repeat 3``: half the difference is one pass.
+and again with ``--repeat 3``: half the difference is one pass. The fixed hash seed keeps
+the work of two runs the same (set and dict order, hash collisions), and the bytecode must
+be compiled before the first of them (``python -m compileall src benchmarks``), or its
+compilation is subtracted from the pass.
 """
 
 from __future__ import annotations

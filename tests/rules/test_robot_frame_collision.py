@@ -25,10 +25,36 @@ def run(tmp_path: Path, fleet: str) -> list[tuple[str, str, int]]:
 def test_two_namespaced_robots_without_a_prefix(tmp_path: Path) -> None:
     fault = ('<launch><group ns="r1"><include file="$(dirname)/robot.launch"/></group>'
              '<group ns="r2"><include file="$(dirname)/robot.launch"/></group></launch>')
-    assert run(tmp_path, fault) == [(RULE, "robot.launch", 2)]
+    # At the second robot's publisher (line 3), where the prefix is missing.
+    assert run(tmp_path, fault) == [(RULE, "robot.launch", 3)]
     fixed = fault.replace('<group ns="r1">', '<group ns="r1"><param name="tf_prefix" '
                                              'value="r1"/>')
     assert run(tmp_path, fixed) == []
+
+
+def test_the_finding_names_the_description_beside_its_publisher(tmp_path: Path) -> None:
+    fault = ('<launch><group ns="r1"><include file="$(dirname)/robot.launch"/></group>'
+             '<group ns="r2"><include file="$(dirname)/robot.launch"/></group></launch>')
+    (tmp_path / "robot.launch").write_text(ROBOT)
+    (tmp_path / "fleet.launch").write_text(fault)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(tmp_path / "fleet.launch")], options).diagnostics
+    assert found.severity.name == "ERROR"
+    assert [(Path(r.path).name, r.line) for r in found.related] == [("robot.launch", 2)]
+
+
+def test_a_description_read_by_no_one_publisher_stays_at_its_param(tmp_path: Path) -> None:
+    """Two publishers in the namespace the description is set in: which one reads it is
+    not one answer, so the finding stays at the description."""
+    robot = ROBOT.replace('name="rsp"/>', 'name="rsp"/>\n<node pkg="robot_state_publisher" '
+                                          'type="robot_state_publisher" name="rsp2"/>')
+    (tmp_path / "robot.launch").write_text(robot)
+    fleet = ('<launch><group ns="r1"><include file="$(dirname)/robot.launch"/></group>'
+             '<group ns="r2"><include file="$(dirname)/robot.launch"/></group></launch>')
+    (tmp_path / "fleet.launch").write_text(fleet)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(tmp_path / "fleet.launch")], options).diagnostics
+    assert [(Path(d.path).name, d.line) for d in found] == [("robot.launch", 2)]
 
 
 def test_one_robot_is_silent(tmp_path: Path) -> None:
@@ -61,7 +87,7 @@ def test_a_tree_roslaunch_refuses_runs_no_robot(tmp_path: Path) -> None:
     fleet = ('<launch><group ns="r1"><include file="$(dirname)/robot.launch"/></group>'
              '<group ns="r2"><include file="$(dirname)/robot.launch">{}</include></group>'
              '</launch>')
-    assert run(tmp_path, fleet.format("")) == [(RULE, "robot.launch", 2)]
+    assert run(tmp_path, fleet.format("")) == [(RULE, "robot.launch", 3)]
     assert run(tmp_path, fleet.format('<arg name="multimaster" value="true"/>')) == []
 
 

@@ -42,6 +42,9 @@ from launch_linter.resolve import reads
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element
 
+_PARAM_SOURCES = ("textfile", "binfile", "command")
+"""Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
+
 
 class Ros1Tags(Ros1Base):
     """The tags of a launch file, walked in order as roslaunch does."""
@@ -212,12 +215,13 @@ class Ros1Tags(Ros1Base):
             self._child_values[element] = written
         count = int(written is not None)
         sources: dict[str, Value] = {}
-        for key in ("textfile", "binfile", "command"):
-            text = attrib.get(key)
-            if text is not None:
-                count += 1
-                sources[key] = (self._substitute(text, element, key, context, anon)
-                                if "$" in text else (text,))
+        if not attrib.keys().isdisjoint(_PARAM_SOURCES):  # most have a value only
+            for key in _PARAM_SOURCES:
+                text = attrib.get(key)
+                if text is not None:
+                    count += 1
+                    sources[key] = (self._substitute(text, element, key, context, anon)
+                                    if "$" in text else (text,))
         if count != 1:
             self._error(context, element,
                         "<param> tag must have one and only one of value/textfile/binfile.")
@@ -239,7 +243,8 @@ class Ros1Tags(Ros1Base):
                 always = _conjoin(context.condition, condition).always
                 self.node_params.append((full, text if text is not None and always
                                          else UNKNOWN_VALUE))
-        elif name_text.strip() in ("tf_prefix", "~tf_prefix") and anon is None:
+        elif ("tf_prefix" in name_text and name_text.strip() in ("tf_prefix", "~tf_prefix")
+              and anon is None):
             # robot_state_publisher finds tf_prefix by searchParam, from its namespace up.
             text = None if written is None else resolved_text(written)
             scope = None if context.ns_unresolved else context.ns

@@ -17,6 +17,19 @@ from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Value
 
+STATIC_TF_EXECUTABLE = "static_transform_publisher"
+STATIC_TF_PACKAGE = "tf2_ros"
+
+
+def may_publish_static_tf(package: object, executable: object) -> bool:
+    """Whether a node whose package and executable evaluate to these values may be a
+    static transform publisher: False only when one of them is known text naming another
+    program (what :func:`launch_linter.frontends.ros2_run._is_static_tf` decides after
+    resolution, decided early for what only such a node needs)."""
+    if isinstance(executable, str) and executable != STATIC_TF_EXECUTABLE:
+        return False
+    return not (isinstance(package, str) and package != STATIC_TF_PACKAGE)
+
 
 @dataclass(frozen=True)
 class Where:

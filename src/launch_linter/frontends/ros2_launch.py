@@ -44,6 +44,8 @@ from launch_linter.frontends.robot.sources import (
     is_description_name,
 )
 from launch_linter.frontends.ros2_actions import (
+    STATIC_TF_EXECUTABLE,
+    STATIC_TF_PACKAGE,
     Component,
     Params,
     ParamsFile,
@@ -56,8 +58,6 @@ from launch_linter.frontends.ros2_run import (
     MAX_FILES_PER_TREE,
     MAX_INCLUDE_DEPTH,
     NAMESPACE_KEY,
-    STATIC_TF_EXECUTABLE,
-    STATIC_TF_PACKAGE,
     STATIC_TF_PLUGIN,
     Ros2Runner,
     _Frame,

@@ -13,6 +13,7 @@ from typing import Any
 
 from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
+    STATIC_TF_PACKAGE,
     Action,
     Component,
     DeclareArg,
@@ -78,8 +79,6 @@ from launch_linter.resolve.value import (
 )
 from launch_linter.resolve.xml_safe import read_launch_bytes
 
-STATIC_TF_EXECUTABLE = "static_transform_publisher"
-STATIC_TF_PACKAGE = "tf2_ros"
 STATIC_TF_PLUGIN = "tf2_ros::StaticTransformBroadcasterNode"
 MAX_INCLUDE_DEPTH = 32
 MAX_FILES_PER_TREE = 2_000

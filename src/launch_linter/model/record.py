@@ -58,6 +58,8 @@ class Record:
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
+        if "_sealed_as" in cls.__dict__:
+            return  # an open twin (see ``_open``): its class's fields, never seen outside
         private = cls.__dict__.get("_private", ())
         cls._fields = tuple(n for n in cls.__dict__.get("__slots__", ()) if n not in private)
         compared = cls.__dict__.get("_compared", cls._fields)
@@ -123,6 +125,31 @@ class OrderedRecord(Record):
         if other.__class__ is self.__class__:
             return bool(self._key(self) >= self._key(other))
         return NotImplemented
+
+
+def _open(record: Record) -> None:
+    """Lets ``__init__`` assign the fields of a frozen record as plain attributes, until
+    :func:`_seal`: the record is meanwhile an instance of its class's open twin (the same
+    slots, ``object``'s ``__setattr__``).
+
+    For the records made by the thousand per file (a node, a static transform): thirteen
+    or twenty-six ``_set`` calls (each a call of ``object.__setattr__``) cost three to five
+    times what two changes of class and plain assignments do."""
+    cls = type(record)
+    twin = cls.__dict__.get("_open_twin")
+    if twin is None:
+        twin = type(cls.__name__, (cls,), {
+            "__slots__": (), "__module__": cls.__module__, "__qualname__": cls.__qualname__,
+            "__setattr__": object.__setattr__, "__delattr__": object.__delattr__,
+            "_sealed_as": cls,
+        })
+        type.__setattr__(cls, "_open_twin", twin)
+    _set(record, "__class__", twin)
+
+
+def _seal(record: Record) -> None:
+    """Gives back to a record opened by :func:`_open` its own (frozen) class."""
+    record.__class__ = record._sealed_as  # type: ignore[attr-defined]
 
 
 def replace(record: T, **changes: Any) -> T:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from enum import Enum
 
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.transform import Condition
 
 UNKNOWN_VALUE = "\x00unknown"
@@ -225,20 +225,22 @@ class NodeRecord(Record):
         ros: int | None = None,
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
     ) -> None:
-        _set(self, "path", path)
-        _set(self, "line", line)
-        _set(self, "column", column)
-        _set(self, "package", package)
-        _set(self, "executable", executable)
-        _set(self, "name", name)
-        _set(self, "params", params)
-        _set(self, "condition", Condition() if condition is None else condition)
-        _set(self, "kind", kind)
-        _set(self, "plugin", plugin)
-        _set(self, "unread", unread)
-        _set(self, "namespace", namespace)
-        _set(self, "ros", ros)
-        _set(self, "param_lines", param_lines)
+        _open(self)  # made for every launched node: see _open
+        self.path = path
+        self.line = line
+        self.column = column
+        self.package = package
+        self.executable = executable
+        self.name = name
+        self.params = params
+        self.condition = Condition() if condition is None else condition
+        self.kind = kind
+        self.plugin = plugin
+        self.unread = unread
+        self.namespace = namespace
+        self.ros = ros
+        self.param_lines = param_lines
+        _seal(self)
 
     def given(self, name: str) -> str | None:
         """The value of the parameter ``name`` exactly as the node is given it (the last

@@ -8,7 +8,7 @@ from collections.abc import Iterable, Mapping
 from enum import Enum
 
 from launch_linter.model.equality import equality_test, exclusive, truth_test
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _open, _seal, _set
 
 TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
@@ -320,32 +320,34 @@ class StaticTransform(Record):
         launch_format: LaunchFormat = LaunchFormat.ROS1_XML,
         arg_issues: tuple[ArgIssue, ...] = (),
     ) -> None:
-        _set(self, "path", path)
-        _set(self, "line", line)
-        _set(self, "column", column)
-        _set(self, "root", root)
-        _set(self, "included_from", included_from)
-        _set(self, "name", name)
-        _set(self, "namespace", namespace)
-        _set(self, "package", package)
-        _set(self, "executable", executable)
-        _set(self, "args_written", args_written)
-        _set(self, "args", args)
-        _set(self, "tokens", tokens)
-        _set(self, "parent_written", parent_written)
-        _set(self, "child_written", child_written)
-        _set(self, "translation", translation)
-        _set(self, "rotation", rotation)
-        _set(self, "period_ms", period_ms)
-        _set(self, "form", form)
-        _set(self, "arity_issue", arity_issue)
-        _set(self, "number_issues", number_issues)
-        _set(self, "condition", Condition() if condition is None else condition)
-        _set(self, "unresolved", unresolved)
-        _set(self, "unresolved_reasons", unresolved_reasons)
-        _set(self, "ros_version", ros_version)
-        _set(self, "launch_format", launch_format)
-        _set(self, "arg_issues", arg_issues)
+        _open(self)  # made for every static transform publisher: see _open
+        self.path = path
+        self.line = line
+        self.column = column
+        self.root = root
+        self.included_from = included_from
+        self.name = name
+        self.namespace = namespace
+        self.package = package
+        self.executable = executable
+        self.args_written = args_written
+        self.args = args
+        self.tokens = tokens
+        self.parent_written = parent_written
+        self.child_written = child_written
+        self.translation = translation
+        self.rotation = rotation
+        self.period_ms = period_ms
+        self.form = form
+        self.arity_issue = arity_issue
+        self.number_issues = number_issues
+        self.condition = Condition() if condition is None else condition
+        self.unresolved = unresolved
+        self.unresolved_reasons = unresolved_reasons
+        self.ros_version = ros_version
+        self.launch_format = launch_format
+        self.arg_issues = arg_issues
+        _seal(self)
 
     def is_unresolved(self, *fields: Field) -> bool:
         """True when any of ``fields`` could not be resolved."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from typing import Optional, Tuple
 
 from launch_linter.model.budget import Budget
@@ -291,6 +291,31 @@ def _replace_find(
     return parts
 
 
+class _ArgTexts(Mapping):  # type: ignore[type-arg]  # not subscripted: Python 3.8
+    """The args as ``$(eval)`` sees them: each value's text, None where it has a hole.
+
+    Worked out for the names an expression reads, not for every arg in scope at every
+    ``$(eval)`` (a file with a hundred args and a hundred evals read each arg a hundred
+    times)."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: Mapping[str, Value]) -> None:
+        self._values = values
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._values
+
+    def __getitem__(self, name: str) -> str | None:
+        return resolved_text(self._values[name])
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+
 def _evaluate(expression: str, whole: str, scope: SubstitutionScope) -> Value:
     if "__" in expression:
         raise SubstitutionError("$(eval ...) may not contain double underscore expressions")
@@ -299,7 +324,7 @@ def _evaluate(expression: str, whole: str, scope: SubstitutionScope) -> Value:
     from launch_linter.resolve import safe_eval
 
     eval_scope = safe_eval.EvalScope(
-        args={name: resolved_text(v) for name, v in scope.args.items()},
+        args=_ArgTexts(scope.args),
         env=scope.env,
         find=scope.find,
         anon=scope.anon,

@@ -86,6 +86,8 @@ def resolved_text(value: Value) -> str | None:
 
 
 def holes(value: Value) -> tuple[Hole, ...]:
+    if len(value) == 1 and type(value[0]) is str:  # resolved text, most values
+        return ()
     return tuple(p for p in value if isinstance(p, Hole))
 
 

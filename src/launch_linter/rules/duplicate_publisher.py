@@ -47,11 +47,14 @@ switches their publishing read (set in the launch and parameter files the linter
 left at the node's documented default with no unread parameter source). A finding that
 rests on a default an unread parameter file may change (PyYAML absent, a file missing, an
 unresolved substitution, parameters built in Python) is reported at info and names the
-node, the parameters and the file. The rule itself stays at info: on 95 whole public
-repositories (2,196 launch files) it gave 24 findings; the proven ones were 10 true of 14,
-and 10 of 10 once the false and harmless causes found there were fixed: too few to say
-90% (docs/evaluation/duplicate_publisher.md). The corpus's 5,518 distinct files give 1
-finding (true). A root that only ``roslaunch_add_file_check`` parses is not one running
+node, the parameters and the file. A proven finding is an error: the tree the robot runs
+is wrong (one edge with two values), and proof is what the severity policy asks of an
+error. On 95 whole public repositories (2,196 launch files) the rule gave 24 findings;
+the proven ones were 10 true of 14, and 10 of 10 once the false and harmless causes found
+there were fixed (a filter with no input publishes nothing; realsense's alternative
+drivers; a root only ``roslaunch_add_file_check`` parses)
+(docs/evaluation/duplicate_publisher.md). The corpus's 5,518 distinct files give 1 finding
+(true). A root that only ``roslaunch_add_file_check`` parses is not one running
 system and is left out.
 """
 
@@ -75,7 +78,7 @@ from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "duplicate_publisher"
 CATEGORY = Category.TF
-SEVERITY = Severity.INFO
+SEVERITY = Severity.ERROR
 MAX_NAMED_PARAMETERS = 4
 PROVEN = "both publishers known and their parameters read"
 """Said at the end of a proven finding (the rule's level); an unproven one says instead

@@ -56,10 +56,15 @@ the description.
 ```
 
 ## Known problems
-Reported at info: on 28 public multi-robot repositories nobody had used (simulations,
-fleets, multi-arm cells) it finds nothing; of the 18 findings judged so far, 17 were false
-(all of the two causes below, now silent) and one harmless: too few to set a warning
-(docs/evaluation/tree_judged.jsonl, docs/evaluation/multi-robot-trial.md). It says nothing
+An error: robots overwriting each other's frames is a wrong tree, and the finding needs
+proof (both descriptions read, every prefix parameter read; a prefix whose value the
+linter cannot resolve counts as a prefix). Its false findings judged so far (17 of 18)
+had the two causes below, now silent; on 38 whole public multi-robot repositories nobody
+had used it then found nothing, the prefixes being right
+(docs/evaluation/tree_judged.jsonl, docs/evaluation/multi-robot-trial.md). Two
+publishers of one edge written as two launch elements are `duplicate_publisher`'s; this
+rule takes the edge of one element run once per robot (a spawn file included per robot,
+a plugin in the description each robot spawns). It says nothing
 about a tree roslaunch refuses (husky's multi-robot playpen passes an argument its spawn
 file no longer declares) or a root that its package only hands to
 `roslaunch_add_file_check` and never installs (abb's and universal_robot's
@@ -78,7 +83,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
@@ -86,7 +91,7 @@ from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of
 
 ID = "robot_frame_collision"
 CATEGORY = Category.TF
-SEVERITY = Severity.INFO
+SEVERITY = Severity.ERROR
 PUBLISHER = "robot_state_publisher"
 REFUSED = "roslaunch_error"
 PREFIXES = {1: ("tf_prefix",), 2: ("frame_prefix",)}
@@ -143,14 +148,30 @@ def _descriptions(tree: LaunchTree, distro: str | None) -> Iterator[Finding]:
         source = sources[index]
         names = sorted({j.child for j in shared if j.child is not None})
         listed = ", ".join(summarised_lazily((f"'{n}'" for n in names), len(names)))
-        yield Finding(
-            path=source.path, line=source.line, column=source.column,
-            message=(f"this robot description publishes {listed} under the same names as "
-                     f"the one at {sources[0].path}:{sources[0].line}, from "
-                     f"robot_state_publishers in different namespaces; tf frames are not "
-                     f"namespaced: give each robot a frame_prefix (ROS 2) or tf_prefix "
-                     f"(ROS 1)"),
-        )
+        message = (f"this robot description publishes {listed} under the same names as "
+                   f"the one at {sources[0].path}:{sources[0].line}, from "
+                   f"robot_state_publishers in different namespaces; tf frames are not "
+                   f"namespaced: give each robot a frame_prefix (ROS 2) or tf_prefix "
+                   f"(ROS 1)")
+        publisher = _publisher_of(source, publishers)
+        if publisher is None:
+            yield Finding(path=source.path, line=source.line, column=source.column,
+                          message=message)
+        else:
+            # At the publisher, where the prefix is missing; the description beside it.
+            yield finding_at_node(publisher, message,
+                                  related=(Location(source.path, source.line, source.column),))
+
+
+def _publisher_of(source: DescriptionSource,
+                  publishers: list[NodeRecord]) -> NodeRecord | None:
+    """The one robot_state_publisher that reads ``source`` by its relative name (a ROS 1
+    ``robot_description`` set in the publisher's namespace); None when not one."""
+    if source.namespace is None:
+        return None
+    found = [n for n in publishers
+             if (n.namespace or "").strip("/") == source.namespace.strip("/")]
+    return found[0] if len(found) == 1 else None
 
 
 def _node_edges(context: RuleContext) -> Iterator[Finding]:
@@ -167,8 +188,9 @@ def _node_edges(context: RuleContext) -> Iterator[Finding]:
             first[key] = edge
             continue
         other = seen.node.namespace or ""
-        if (other.strip("/") == namespace.strip("/")
+        if (other.strip("/") == namespace.strip("/") or seen.location != edge.location
                 or seen.node.condition.excludes(edge.node.condition)):
+            # Two elements publishing one edge are duplicate_publisher's finding.
             continue
         yield finding_at_node(
             edge.node,

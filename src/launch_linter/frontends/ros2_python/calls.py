@@ -80,6 +80,8 @@ class Calls(Expressions):
                 kwargs.update({str(k): v for k, v in value.items()})
             else:
                 kwargs[keyword.arg] = value
+        if type(function) is ModuleVal:  # most calls: the launch library, os, ament
+            return self.library(function, args, kwargs, node)
         if isinstance(function, Unknown):
             return self.unknown(node, f"calls {function.text}, which is unknown")
         if isinstance(function, FuncVal):
@@ -92,8 +94,6 @@ class Calls(Expressions):
             return self.method(function, args, kwargs, node)
         if isinstance(function, Builtin):
             return self.builtin(function.name, args, node)
-        if isinstance(function, ModuleVal):
-            return self.library(function, args, kwargs, node)
         return self.unknown(node, "calls something that is not a function")
 
     def call_function(self, function: FuncVal, args: list[object], kwargs: dict[str, object],

@@ -109,7 +109,12 @@ class Evaluator:
         # Columns are UTF-8 byte offsets (character offsets too in ASCII text, most
         # files); three lines are plenty for a short excerpt.
         text: str
-        if self.ascii:
+        if self.ascii and last - 1 == first:
+            # One line (most excerpts): what ``_one_line`` makes of it, without the list.
+            line = self.lines[first][getattr(node, "col_offset", 0):
+                                     getattr(node, "end_col_offset", None)]
+            text = " ".join(line.split())
+        elif self.ascii:
             lines = self.lines[first:min(last, first + 3)]
             if last - 1 < first + 3:
                 lines[-1] = lines[-1][:getattr(node, "end_col_offset", None)]

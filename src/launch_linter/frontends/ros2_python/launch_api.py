@@ -30,6 +30,7 @@ from launch_linter.frontends.ros2_actions import (
     Unfollowed,
     Uses,
     Where,
+    may_publish_static_tf,
     ros2_run,
     shell_reads_as_words,
 )
@@ -161,15 +162,19 @@ class Interpreter(Calls):
             self.problem("ros2_removed_keyword", node, ", ".join(
                 f"{k}= (now {_LEGACY_NODE_KEYWORDS[k]}=)" for k in legacy))
         executable = pick("executable", "node_executable")
+        package = kwargs.get("package")
+        # The arguments as written are shown only for a static transform publisher.
+        args_written = (self.segment(_keyword(node, "arguments") or node)
+                        if may_publish_static_tf(package, executable) else "")
         return RunNode(
             where=self.where(node),
             condition=self.condition(kwargs, node),
-            package=self.optional_subs(kwargs.get("package"), node, "package"),
+            package=self.optional_subs(package, node, "package"),
             executable=self.optional_subs(executable, node, "executable"),
             name=self.optional_subs(pick("name", "node_name"), node, "name"),
             namespace=self.optional_subs(pick("namespace", "node_namespace"), node, "namespace"),
             arguments=items,
-            args_written=self.segment(_keyword(node, "arguments") or node),
+            args_written=args_written,
             unknown=unknown,
             parameters=self.parameters(kwargs.get("parameters"), node),
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),

@@ -304,6 +304,8 @@ def performed(values: list[object]) -> tuple[Subs, ...]:
     while pending and looked < MAX_PERFORMED_ITEMS:
         value = pending.pop()
         looked += 1
+        if type(value) is str:  # most items: plain text holds no substitution
+            continue
         if isinstance(value, SubsVal):
             found.append(value.subs)
         elif isinstance(value, (list, tuple, dict)):
