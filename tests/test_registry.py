@@ -173,3 +173,14 @@ def test_fix_kind_is_documented(rule: Rule) -> None:
         return
     section = rule.doc.split("## Fix", 1)[1]
     assert section.strip().lower().startswith(rule.fix.value)
+
+
+@pytest.mark.parametrize("rule_id", ["camera_frame_not_optical", "duplicate_publisher",
+                                     "robot_frame_collision", "sim_time_mismatch"])
+def test_rules_raised_after_the_study_profile_keep_info_there(rule_id: str) -> None:
+    """The study profile reproduces the levels of its time: rules added at info and raised
+    later from their judged samples stay at info there."""
+    study = {r.id: r for r in rules_for_profile("study")}[rule_id]
+    default = {r.id: r for r in rules_for_profile("default")}[rule_id]
+    assert study.severity is Severity.INFO
+    assert default.severity is not Severity.INFO

@@ -358,6 +358,63 @@ def test_a_run_answered_by_the_cache_loads_no_front_end(workspace: Path) -> None
     assert loaded[1].strip() == "[]"
 
 
+def test_a_cached_run_keys_on_the_beliefs_file_without_decoding_it(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The bundled beliefs enter the run key as the digest of their file: a run the cache
+    answers never decodes them (the JSON report's count is kept with the key), and a
+    changed file is another key, whose count is that of the new file."""
+    from launch_linter import beliefs_files
+    from launch_linter.model.beliefs import BeliefSet
+
+    tmp_data = workspace / "data"
+    tmp_data.mkdir()
+    bundled = Path(beliefs_files.data_folder()) / beliefs_files.BUNDLED
+    document = json.loads(bundled.read_text(encoding="utf-8"))
+    (tmp_data / beliefs_files.BUNDLED).write_text(json.dumps(document), encoding="utf-8")
+    monkeypatch.setattr(beliefs_files, "data_folder", lambda: str(tmp_data))
+
+    def count() -> int:
+        assert main(["check", "--format", "json", "src"]) == 1
+        return int(json.loads(capsys.readouterr().out)["beliefs"]["count"])
+
+    first = count()
+    assert first > 0
+    with monkeypatch.context() as patched:
+        def refuse(*args: object, **kwargs: object) -> BeliefSet:
+            raise AssertionError("the beliefs were decoded")
+
+        patched.setattr(BeliefSet, "from_json", staticmethod(refuse))
+        assert count() == first  # answered by the cache: nothing decoded
+        # A changed beliefs file is another run key: linted again, so decoded.
+        document["beliefs"] = [*document["beliefs"][:-1],
+                               dict(document["beliefs"][0], z=99.0, n=7)]
+        (tmp_data / beliefs_files.BUNDLED).write_text(json.dumps(document), encoding="utf-8")
+        patched.delenv("LAUNCH_LINTER_DEBUG", raising=False)
+        assert main(["check", "--format", "json", "src"]) == 2  # an internal error
+        assert "the beliefs were decoded" in capsys.readouterr().err
+    assert count() == len(BeliefSet.from_json(document, "bundled", 1.0).beliefs)
+    assert len(list((workspace / ".launch-linter-cache").glob("results-*.json"))) == 2
+
+
+def test_stored_beliefs_are_keyed_by_their_origin_and_threshold() -> None:
+    from launch_linter.beliefs_files import load_beliefs
+
+    def key(beliefs: object) -> str:
+        return results_cache.run_key(__version__, replace(OPTIONS, beliefs=beliefs), None, "/")
+
+    bundled = load_beliefs("bundled", 1.0)
+    assert bundled.origin is not None
+    assert key(bundled) == key(load_beliefs("bundled", 1.0))
+    assert key(bundled) != key(load_beliefs("bundled", 2.0))
+    assert key(bundled) != key(load_beliefs("study", 1.0))
+    # Decoding changes nothing the set says, nor its key.
+    decoded = load_beliefs("bundled", 1.0)
+    assert decoded.beliefs == bundled.beliefs and decoded.p0 == bundled.p0
+    assert decoded == bundled and key(decoded) == key(bundled)
+    assert decoded.count == len(decoded.beliefs)
+
+
 def test_a_launch_file_named_by_a_new_file_is_linted_again(
     workspace: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

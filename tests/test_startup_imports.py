@@ -104,6 +104,43 @@ def test_check_of_one_ros1_file_imports_nothing_heavy(tmp_path: Path) -> None:
     assert _heavy(modules) == []
 
 
+# Imports a run answered by the results cache never needs (issue 24): no rule runs, no
+# package is looked up, no help is printed, the bundled beliefs are not decoded.
+NOT_WHEN_CACHED = (
+    "launch_linter.rules._api",  # the rules' API: rules/__init__ gives it lazily
+    "launch_linter.rules._tree",
+    "launch_linter.knowledge",
+    "launch_linter.workspace.packages",
+    "launch_linter.report.published",  # the transforms command's
+    "launch_linter.workspace.toml_fallback",  # only without a TOML parser (3.8, 3.10)
+    "typing",  # annotations and aliases only, under TYPE_CHECKING
+    "shutil",  # argparse measures the terminal only to format help
+)
+
+
+def _brought_by_argparse() -> set[str]:
+    """What importing argparse alone imports (3.8's argparse imports shutil itself)."""
+    probe = "import sys; b = set(sys.modules); import argparse; print(sorted(set(sys.modules) - b))"
+    done = subprocess.run([sys.executable, "-I", "-c", probe], capture_output=True, text=True,
+                          check=True, timeout=60)
+    return set(json.loads(done.stdout.replace("'", '"')))
+
+
+def test_a_run_answered_by_the_cache_imports_only_what_it_uses(tmp_path: Path) -> None:
+    (tmp_path / "base.launch").write_text(LAUNCH, encoding="utf-8")
+    for _ in range(2):  # the first run writes the cache
+        status, modules = _imported(["check", "--format", "json", "base.launch"], tmp_path,
+                                    cache=True)
+        assert status == 0
+    assert "launch_linter.results_cache" in modules  # the probe saw the run's imports
+    unwanted = set(NOT_WHEN_CACHED) - _brought_by_argparse()
+    assert sorted(unwanted & modules) == []
+    # The text report too (it states no count of beliefs).
+    status, modules = _imported(["check", "base.launch"], tmp_path, cache=True)
+    status, modules = _imported(["check", "base.launch"], tmp_path, cache=True)
+    assert sorted(unwanted & modules) == []
+
+
 def test_check_of_a_folder_without_ignore_files_imports_nothing_heavy(tmp_path: Path) -> None:
     if any((folder / ".gitignore").exists() for folder in tmp_path.parents):
         pytest.skip("a folder above the temporary one has a .gitignore, which is read")

@@ -1,9 +1,10 @@
 """Launch-Linter: find mistakes in the static transforms that ROS launch files declare."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
+    from typing import Any
+
     from launch_linter.engine import LintOptions, LintResult, lint_paths, lint_text
     from launch_linter.model import Diagnostic, StaticTransform
 

@@ -7,6 +7,7 @@ import os
 import re
 
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
+from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import read_regular_file
 
 BUNDLED = "beliefs-bundled.json"
@@ -21,6 +22,13 @@ MAX_JSON_DEPTH = 64
 
 _JSON_STRING = re.compile(r'"(?:[^"\\]|\\.)*"')
 _JSON_BRACKETS = re.compile(r"[\[\]{}]")
+
+
+def data_folder() -> str:
+    """Where the package data sits, beside this module (importlib.resources.files needs
+    3.9); asked at each read (a standalone linter has no ``__file__``: it answers the
+    reads itself)."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
 
 
 class BeliefsNotFound(ValueError):
@@ -49,13 +57,14 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
     if spec in ("bundled", "study"):
         name = BUNDLED if spec == "bundled" else STUDY
         try:
-            # The package data sits beside this module (importlib.resources.files needs 3.9).
-            path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
-            with open(path, encoding="utf-8") as handle:
-                text = handle.read()
+            with open(os.path.join(data_folder(), name), "rb") as handle:
+                content = handle.read()
         except OSError as exc:
             raise BeliefsNotFound(f"the {spec} beliefs file is not installed: {exc}") from None
-        return BeliefSet.from_json(json.loads(text), spec, min_z)
+        # Decoded when a rule first reads it; until then the digest of its bytes stands
+        # for it in the results cache's key.
+        return BeliefSet.stored(spec, min_z, reads.digest(content), lambda: BeliefSet.from_json(
+            json.loads(content.decode("utf-8")), spec, min_z))
     try:
         raw = read_regular_file(spec, MAX_BELIEFS_BYTES + 1)
     except OSError as exc:

@@ -16,6 +16,10 @@ from types import ModuleType
 from launch_linter import __version__
 from launch_linter.commands.common import EXIT_OK, EXIT_USAGE, UsageError, check_numbers
 
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
+
 CORE_COMMANDS = ("check", "transforms", "rules", "explain")
 """The core commands, in help order; their modules (which import the engine) are
 imported only when a parser is built for them, so ``--version`` alone imports none."""
@@ -85,15 +89,45 @@ def _core_only(argv: Sequence[str] | None) -> bool:
     return args == ["--version"] or _named_command(args) is not None
 
 
+class HelpFormatter(argparse.HelpFormatter):
+    """argparse's own, which measures the terminal only when it formats something.
+
+    ``add_argument`` makes a formatter for every argument, only to check its metavar, and
+    measuring the terminal imports ``shutil`` (with its compression modules): a tenth of
+    the start-up of a run answered by the results cache, which prints no help."""
+
+    def __init__(self, prog: str, *args: Any, **kwargs: Any) -> None:
+        self._arguments = (prog, args, kwargs)
+
+    def __getattr__(self, name: str) -> Any:
+        # Called only for an attribute not set yet: the base class's, which it sets as it
+        # starts (measuring the terminal), so it starts now.
+        if name.startswith("__") or "_prog" in self.__dict__:
+            raise AttributeError(name)
+        prog, args, kwargs = self.__dict__["_arguments"]
+        super().__init__(prog, *args, **kwargs)
+        return getattr(self, name)
+
+
+class ArgumentParser(argparse.ArgumentParser):
+    """A parser, and its subcommands' parsers, with :class:`HelpFormatter` by default."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs.setdefault("formatter_class", HelpFormatter)
+        super().__init__(*args, **kwargs)
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The parser for ``argv``: that of the core command it names (the others' parsers
     are start-up time for nothing), else every command's."""
-    parser = argparse.ArgumentParser(
+    parser = ArgumentParser(
         prog="launch-linter",
         description="Find mistakes in the static transforms of ROS launch files.",
     )
     parser.add_argument("--version", action="version", version=f"launch-linter {__version__}")
-    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    # ``prog`` given (the usage argparse would format from the parser, which has no
+    # positional argument before the command): formatting it measures the terminal.
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", prog=parser.prog)
     if argv is not None and _core_only(argv):
         # The named command's parser alone; none for ``--version``, which argparse prints
         # before any command is read.

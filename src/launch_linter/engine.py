@@ -5,10 +5,7 @@ from __future__ import annotations
 import contextlib
 import os
 from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING, Dict, Optional, Tuple
 
-from launch_linter import rules as registry
-from launch_linter.knowledge import KnowledgeBase, bundled
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import Diagnostic, Problem, Severity
 from launch_linter.model.distro import uses_flags
@@ -19,12 +16,9 @@ from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.resolve import reads
-from launch_linter.results_cache import Linted, ResultsCache, lint_with_cache
-from launch_linter.rules import Rule, RuleContext
-from launch_linter.rules._api import Finding, finding_of
+from launch_linter.results_cache import ResultsCache, lint_with_cache
 from launch_linter.rules._catalog import CATALOG, CATEGORY_OF, RULE_IDS
 from launch_linter.rules._profiles import STUDY_SEVERITY
-from launch_linter.rules._tree import with_macro_definitions
 from launch_linter.suppressions import (
     UNUSED_ID,
     PathIgnore,
@@ -34,24 +28,27 @@ from launch_linter.suppressions import (
 from launch_linter.workspace.discovery import (
     MAX_DISCOVERED_FILES,
     Exclusions,
-    Ignored,
     InputFile,
     discover,
 )
-from launch_linter.workspace.environment import Place, built_beside
-from launch_linter.workspace.packages import (
-    PackageIndex,
-    default_package_roots,
-    nearest_package_xml,
-    package_ros_version,
-)
+from launch_linter.workspace.environment import built_beside
 
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
-    # Imported where a file is linted (``_front_ends``): a run whose results are all in
-    # the results cache reads no launch file, and the front-ends are a fifth of start-up.
+    from typing import Dict, Optional, Tuple
+
+    # Imported where a file is linted: a run the results cache answers reads no launch
+    # file and runs no rule (front-ends, rules, knowledge, packages: a third of start-up).
     from launch_linter.frontends import python_trees
     from launch_linter.frontends.robot.describe import RobotCache
     from launch_linter.frontends.ros1 import LoadOptions
+    from launch_linter.knowledge import KnowledgeBase
+    from launch_linter.results_cache import Linted
+    from launch_linter.rules import Rule
+    from launch_linter.rules._api import Finding
+    from launch_linter.workspace.discovery import Ignored
+    from launch_linter.workspace.environment import Place
+    from launch_linter.workspace.packages import PackageIndex
 
 __all__ = [
     "AUTO_JOBS",
@@ -176,8 +173,10 @@ def _display_function(item: InputFile) -> object:
 
 
 def selected_rules(options: LintOptions) -> tuple[Rule, ...]:
+    from launch_linter.rules import RULES
+
     selected = selected_ids(options)
-    return tuple(r for r in registry.RULES if r.id in selected)
+    return tuple(r for r in RULES if r.id in selected)
 
 
 def selected_ids(options: LintOptions) -> frozenset[str]:
@@ -198,10 +197,11 @@ PACKAGE_DECIDES_SUFFIXES = (".xml",)
 content: ROS 1 files left in migrated ament packages are common."""
 
 
-Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
-"""Each ``package.xml``'s ROS version, with what reading it read (``reads.remembered``)."""
-Packages = Dict[Tuple[str, ...], Tuple[PackageIndex, reads.ReadLog]]
-"""Package indexes by roots, and by folder (see ``load_options_for``)."""
+if TYPE_CHECKING:
+    Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
+    """Each ``package.xml``'s ROS version, with what reading it read (``remembered``)."""
+    Packages = Dict[Tuple[str, ...], Tuple[PackageIndex, reads.ReadLog]]
+    """Package indexes by roots, and by folder (see ``load_options_for``)."""
 
 
 def ros_version_for(path: str, options: LintOptions, cache: Versions) -> int | None:
@@ -210,6 +210,8 @@ def ros_version_for(path: str, options: LintOptions, cache: Versions) -> int | N
         return options.ros
     if not path.lower().endswith(PACKAGE_DECIDES_SUFFIXES):
         return None
+    from launch_linter.workspace.packages import nearest_package_xml, package_ros_version
+
     manifest = nearest_package_xml(path)
     if manifest is None:
         return None
@@ -223,6 +225,8 @@ def load_options_for(
     """How to load ``item``. ``cache``, ``robots`` and ``versions`` (each package.xml's ROS
     version) are shared by the files of one run, so each is worked out once (and each
     file depends on what working it out read: ``reads.remembered``)."""
+    from launch_linter.workspace.packages import default_package_roots
+
     if options.package_paths is not None:
         index = _package_index(tuple(options.package_paths), cache, options.environment)
     else:
@@ -253,6 +257,8 @@ def _package_index(roots: tuple[str, ...], cache: Packages,
                    environment: tuple[Place, ...] = ()) -> PackageIndex:
     """The index of ``roots``, then their workspace's build output, then ``environment``
     (the order of ``workspace.environment``)."""
+    from launch_linter.workspace.packages import PackageIndex
+
     places = (*built_beside(roots), *environment)
     key = (*roots, *(f"{kind}:{folder}" for kind, folder in places))
     return reads.remembered(cache, key, lambda: PackageIndex(list(roots), places))
@@ -260,6 +266,10 @@ def _package_index(roots: tuple[str, ...], cache: Packages,
 
 def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) -> list[Diagnostic]:
     """Run ``rules`` on one tree; each finding becomes a diagnostic stamped by its rule."""
+    from launch_linter.knowledge import bundled
+    from launch_linter.rules import RuleContext
+    from launch_linter.rules._tree import with_macro_definitions
+
     context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options),
                           options.knowledge if options.knowledge is not None else bundled())
     return with_macro_definitions(
@@ -306,8 +316,12 @@ def finish_diagnostics(
         ran=ran,
         report_unused=UNUSED_ID in ran,
     )
-    # The rules themselves (their modules) only when a directive went unused.
-    stamped = [_stamp(registry.RULES_BY_ID[UNUSED_ID], finding_of(u), options) for u in unused]
+    stamped = []
+    if unused:  # the rules themselves (their modules) only when a directive went unused
+        from launch_linter.rules import RULES_BY_ID
+        from launch_linter.rules._api import finding_of
+
+        stamped = [_stamp(RULES_BY_ID[UNUSED_ID], finding_of(u), options) for u in unused]
     out = [
         d
         for d in (*kept, *stamped)
@@ -316,9 +330,10 @@ def finish_diagnostics(
     return tuple(sorted(out, key=lambda d: d.sort_key))
 
 
-Recorded = Tuple[Linted, Optional[reads.ReadLog]]
-"""A file linted (its tree, None when not kept and there is no directive; its record and
-diagnostics) and, when asked, the log of what linting it read."""
+if TYPE_CHECKING:
+    Recorded = Tuple[Linted, Optional[reads.ReadLog]]
+    """A file linted (its tree, None when not kept and there is no directive; its record
+    and diagnostics) and, when asked, the log of what linting it read."""
 
 
 def _directives_only(tree: LaunchTree) -> LaunchTree | None:
@@ -341,8 +356,11 @@ def internal_error_tree(item: InputFile, what: str, line: int = 1) -> LaunchTree
 
 def _internal_error(item: InputFile, what: str, line: int = 1) -> Linted:
     """A failed file as linted: its problem stated as a diagnostic whatever was selected."""
+    from launch_linter.rules import RULES_BY_ID
+    from launch_linter.rules._api import finding_of
+
     tree = internal_error_tree(item, what, line)
-    rule = registry.RULES_BY_ID["parse_error"]
+    rule = RULES_BY_ID["parse_error"]
     found = [rule.diagnostic(finding_of(p)) for p in tree.problems]
     return tree, _file_record(item, tree), found
 

@@ -19,11 +19,12 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import sys
 from collections.abc import Callable, Iterable
 from enum import Enum
-from typing import Any, List, Optional, Tuple
 
 from launch_linter.model import record
+from launch_linter.model.beliefs import BeliefSet
 from launch_linter.model.diagnostic import (
     Applicability,
     Belief,
@@ -50,7 +51,11 @@ _GITIGNORE = "# Created by launch-linter: the results cache, never committed.\n*
 _CACHEDIR_TAG = ("Signature: 8a477f597d28d172789f06886806bc55\n"
                  "# This file marks the results cache of launch-linter.\n")
 
-Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any, List, Optional, Tuple
+
+    Linted = Tuple[Optional[LaunchTree], FileRecord, List[Diagnostic]]
 
 _CODEC_FIELDS: dict[type[record.Record], tuple[str, ...]] = {
     Diagnostic: ("rule", "category", "severity", "path", "line", "column", "message", "node",
@@ -90,6 +95,9 @@ def canonical(value: Any) -> Any:
         return ["float", repr(value)]
     if isinstance(value, Enum):
         return [type(value).__name__, canonical(value.value)]
+    if isinstance(value, BeliefSet) and value.origin is not None:
+        # A stored set by what it is decoded from, left undecoded (``BeliefSet.stored``).
+        return ["StoredBeliefSet", value.source, canonical(value.min_z), value.origin]
     if isinstance(value, record.Record):
         return [type(value).__name__, [[name, canonical(getattr(value, name))]
                                        for name in record.compared_fields(value)]]
@@ -105,8 +113,17 @@ def canonical(value: Any) -> Any:
 
 def tool_stamp(version: str) -> list[object]:
     """The version, and the names, sizes and modification times of the package's files:
-    an installed release never changes them, a development checkout does with each edit."""
-    package = os.path.dirname(os.path.abspath(__file__))
+    an installed release never changes them, a development checkout does with each edit.
+    A standalone linter's modules have no files (no ``__file__``): the script that embeds
+    them, and the beliefs, stands for them; without one, no cache (``OSError``)."""
+    here = globals().get("__file__")
+    if here is None:
+        script = getattr(sys.modules.get("__main__"), "__file__", None)
+        if not isinstance(script, str):
+            raise OSError("no file holds the linter's code")
+        info = os.stat(script)
+        return [version, [os.path.abspath(script), info.st_size, info.st_mtime_ns]]
+    package = os.path.dirname(os.path.abspath(here))
     stamp: list[object] = [version]
     pending = [package]
     while pending:
@@ -283,6 +300,7 @@ class ResultsCache:
         self._entries: dict[str, Any] = {}
         self._groups: dict[str, Any] = {}
         self._discovery: Any = None
+        self._derived: dict[str, Any] = {}
         self._group_names: dict[int, tuple[reads.ReadLog, str]] = {}
         self._changed = False
         self._freshness = reads.Freshness(read_regular_file)
@@ -324,6 +342,9 @@ class ResultsCache:
         if isinstance(entries, dict) and isinstance(groups, dict):
             self._entries, self._groups = entries, groups
             self._discovery = document.get("discovery")
+            derived = document.get("derived")
+            if isinstance(derived, dict):
+                self._derived = derived
 
     def discovered(self, question: object,
                    discover: Callable[[], list[InputFile]]) -> list[InputFile]:
@@ -354,6 +375,17 @@ class ResultsCache:
             return None
         return [InputFile(_str(path), _str(display))
                 for path, display in (_list(i, 2) for i in _list(stored.get("inputs")))]
+
+    def count(self, name: str, compute: Callable[[], int]) -> int:
+        """A count that the run key decides (``compute()`` gives it), kept with the key:
+        the number of beliefs the JSON report states, which would otherwise mean decoding
+        the beliefs file on every run."""
+        known = self._derived.get(name)
+        if isinstance(known, int) and not isinstance(known, bool) and known >= 0:
+            return known
+        self._derived[name] = value = compute()
+        self._changed = True
+        return value
 
     def refresh(self) -> None:
         """Forget which stamps were found to hold: a new run looks at the files again (a
@@ -439,7 +471,8 @@ class ResultsCache:
                 for name in entry.get("groups", ()) if isinstance(name, str)}
         document = {"format": FORMAT, "key": self.key,
                     "groups": {n: s for n, s in self._groups.items() if n in used},
-                    "entries": self._entries, "discovery": self._discovery}
+                    "entries": self._entries, "discovery": self._discovery,
+                    "derived": self._derived}
         text = json.dumps(document, separators=(",", ":")).encode("utf-8")
         try:
             if len(text) > MAX_CACHE_BYTES:

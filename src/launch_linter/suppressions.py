@@ -30,10 +30,9 @@ from launch_linter.model.record import Record, _set
 
 UNUSED_ID = "unused_suppression"
 PREFIX = DIRECTIVE_MARKER
-_DIRECTIVE = re.compile(
-    r"launch-linter:\s*(?P<kind>disable-file|disable)\s*=\s*"
-    r"(?P<ids>[A-Za-z0-9_.-]+(?:\s*,\s*[A-Za-z0-9_.-]+)*)(?P<rest>.*)",
-    re.DOTALL,
+_DIRECTIVE = (  # compiled on first use (``re`` keeps it): most files have no directive
+    r"(?s)launch-linter:\s*(?P<kind>disable-file|disable)\s*=\s*"
+    r"(?P<ids>[A-Za-z0-9_.-]+(?:\s*,\s*[A-Za-z0-9_.-]+)*)(?P<rest>.*)"
 )
 
 
@@ -142,7 +141,7 @@ def parse_directives(trees: Iterable[LaunchTree]) -> tuple[list[Directive], list
             text = _directive_text(comment.text)
             if not text.startswith(PREFIX):
                 continue
-            match = _DIRECTIVE.fullmatch(text)
+            match = re.fullmatch(_DIRECTIVE, text)
             if match is None or (match["rest"] and not match["rest"][0].isspace()):
                 malformed[Malformed(comment.path, comment.line, text)] = None
                 continue

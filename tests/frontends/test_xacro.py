@@ -183,3 +183,23 @@ def test_quoted_defaults_call_and_namespaced_includes(tmp_path: Path) -> None:
     origins = {name: [c.attrib["xyz"] for c in j.children if c.tag == "origin"]
                for name, j in joints.items()}
     assert origins == {"lidar_joint": ["0.1 0 0.2"], "imu_joint": ["1 2 3"]}
+
+
+def test_an_unprefixed_insert_block_leaves_the_origin_unknown(tmp_path: Path) -> None:
+    """xacro before 1.14 inserted <insert_block> written without the prefix, later
+    versions keep it as a literal element: the joint's origin depends on the version
+    (mastering_ros's xtion macro, written for Indigo)."""
+    macro = ('<xacro:macro name="m" params="*o">{}</xacro:macro>'
+             '<xacro:m><origin rpy="1 0 0"/></xacro:m>')
+    legacy = macro.format(joint("a", "b", '<insert_block name="o"/>'))
+    (found,) = joints(run(tmp_path, legacy))
+    assert found.rpy is None and found.unresolved == ("translation", "rotation")
+    assert "xacro before 1.14" in found.reasons[0]
+    source = DescriptionSource("x.launch", 1, 1, DescriptionKind.XACRO, "r.xacro")
+    noetic = run(tmp_path, legacy).root
+    assert noetic is not None
+    (dropped,) = joints_of(noetic, source, str, Condition(), distro_known=True)
+    assert dropped.rpy == (0.0, 0.0, 0.0) and dropped.unresolved == ()
+    prefixed = macro.format(joint("a", "b", '<xacro:insert_block name="o"/>'))
+    (inserted,) = joints(run(tmp_path, prefixed))
+    assert inserted.rpy == (1.0, 0.0, 0.0) and inserted.unresolved == ()

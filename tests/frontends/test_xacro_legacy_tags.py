@@ -56,3 +56,16 @@ def test_a_legacy_xacro_takes_an_element_named_like_a_macro_for_a_call(
     body = '<include filename="parts.xacro"/>\n<link name="a"/>\n<wheel/>'
     assert _lint(tmp_path, body, "melodic", "xacro_error") == ["error"]
     assert _lint(tmp_path, body, "noetic", "xacro_error") == []
+
+
+@pytest.mark.parametrize(("distro", "expected"), [("kinetic", []), ("noetic", ["warning"])])
+def test_an_unprefixed_insert_block_inserts_the_block_for_a_legacy_xacro(
+        tmp_path: Path, distro: str, expected: list[str]) -> None:
+    """mastering_ros's Indigo xtion macro inserts its optical origin unprefixed: a legacy
+    xacro inserts it (no unused block), Noetic's drops it."""
+    body = ('<xacro:macro name="cam" params="*optical">'
+            '<joint name="j" type="fixed"><parent link="a"/><child link="b"/>'
+            '<insert_block name="optical"/></joint></xacro:macro>'
+            '<link name="a"/><link name="b"/>'
+            '<xacro:cam><origin rpy="-1.57 0 -1.57"/></xacro:cam>')
+    assert _lint(tmp_path, body, distro, "xacro_unused_block") == expected

@@ -230,3 +230,22 @@ def test_too_old_a_python_is_told_so(standalone: Generated) -> None:
     assert python is not None
     done = run_standalone(standalone.path, [CLEAN], python=python)
     assert done.returncode == 2 and "needs Python 3.8 or newer" in done.stderr
+
+
+def test_the_results_cache_works_in_a_standalone_linter(
+    standalone: Generated, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Its modules have no ``__file__``: the script stamps the tool in the cache's key (a
+    run with the cache was an internal error)."""
+    from launch_linter.commands.options import NO_CACHE_VARIABLE
+
+    monkeypatch.delenv(NO_CACHE_VARIABLE, raising=False)
+    shutil.copy(FIXTURES / "implied.launch", tmp_path / "implied.launch")
+    runs = [run_standalone(standalone.path, ["--format", "json", "implied.launch"], tmp_path)
+            for _ in range(2)]
+    assert [run.returncode for run in runs] == [1, 1], runs[0].stderr
+    assert runs[0].stdout == runs[1].stdout
+    assert list((tmp_path / ".launch-linter-cache").glob("results-*.json"))
+    monkeypatch.setenv(NO_CACHE_VARIABLE, "1")
+    plain = run_standalone(standalone.path, ["--format", "json", "implied.launch"], tmp_path)
+    assert plain.stdout == runs[0].stdout

@@ -69,3 +69,64 @@ def test_unjoined_frames_are_judged_by_name_and_movable_paths_not_at_all(
     assert run(tmp_path, movable) == []
     assert run(tmp_path, ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_imu_sensor.so",
                                       body="")) == []
+
+
+def test_a_sensor_pose_that_turns_the_camera_is_composed(tmp_path: Path) -> None:
+    """Gazebo renders along the x axis of the sensor's <pose> (then its <camera>'s pose)
+    in the link: a link stamped as the image frame is right when those poses turn the
+    camera so that the link is its optical frame (baxter's hand cameras)."""
+    posed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                         body="<frame_name>camera_link</frame_name>")
+    turned = posed.replace('type="depth">', 'type="depth"><pose>0 0 0 0 -1.5707963 '
+                           '1.5707963</pose>')
+    assert run(tmp_path, turned) == []
+    in_camera = posed.replace('type="depth">', 'type="depth"><camera><pose>0 0 0 0 '
+                              '-1.5707963 1.5707963</pose></camera>')
+    assert run(tmp_path, in_camera) == []
+    tilted = posed.replace('type="depth">', 'type="depth"><pose>0 0 0 0 -0.8 '
+                           '-1.5707963</pose>')
+    (found,) = run(tmp_path, tilted)
+    assert "which the sensor's <pose> does not turn into the optical frame" in found[1]
+    # A pose this reader cannot apply (SDF 1.7's relative_to) leaves the rotation unknown.
+    unknown = posed.replace('type="depth">', 'type="depth"><pose relative_to="x">0 0 0 '
+                            '0 0 0</pose>')
+    (by_name,) = run(tmp_path, unknown)
+    assert "whose name does not say optical" in by_name[1]
+
+
+def test_a_multicamera_turns_as_its_cameras_when_they_agree(tmp_path: Path) -> None:
+    posed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_multicamera.so",
+                         body="<frameName>camera_link_optical</frameName>")
+    pair = ('type="depth"><camera name="l"><pose>0 0.1 0 0 0 0</pose></camera>'
+            '<camera name="r"><pose>0 -0.1 0 {} 0 0</pose></camera>')
+    side_by_side = posed.replace('type="depth">', pair.format(0))
+    (found,) = run(tmp_path, side_by_side.replace("camera_link_optical</frameName>",
+                                                  "camera_link</frameName>"))
+    assert "its sensor link itself" in found[1]
+    assert run(tmp_path, side_by_side) == []
+    turned_apart = posed.replace('type="depth">', pair.format(0.5)).replace(
+        "camera_link_optical</frameName>", "camera_link</frameName>")
+    (by_name,) = run(tmp_path, turned_apart)
+    assert "whose name does not say optical" in by_name[1]
+
+
+def test_a_proven_rotation_warns_and_a_name_alone_informs(tmp_path: Path) -> None:
+    """The rotation over fixed joints is proof (warning); a frame that no fixed path joins
+    to the sensor's link is judged by its name only, which a package publishing an optical
+    frame under another name defeats (info)."""
+    path = tmp_path / "robot.urdf"
+
+    def levels(text: str) -> list[str]:
+        path.write_text(text)
+        options = LintOptions(package_paths=(), select=frozenset({RULE}))
+        return [d.severity.value for d in lint_paths([str(path)], options).diagnostics]
+
+    proven = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body="")
+    assert levels(proven) == ["warning"]
+    # The study profile keeps the level the rule had when it was fixed.
+    study = LintOptions(package_paths=(), select=frozenset({RULE}), profile="study")
+    (kept,) = lint_paths([str(path)], study).diagnostics
+    assert kept.severity.value == "info"
+    named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                         body="<frame_name>head_rgb_frame</frame_name>")
+    assert levels(named) == ["info"]

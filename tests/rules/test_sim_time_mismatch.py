@@ -68,3 +68,64 @@ def test_ros1_is_left_out(tmp_path: Path) -> None:
     ros1 = ('<launch><node pkg="gazebo_ros" type="spawn_model" name="s" args="-urdf"/>'
             '<node pkg="amcl" type="amcl" name="amcl"/></launch>')
     assert run(tmp_path, "a.launch", ros1) == []
+
+
+JSP = ("from launch import LaunchDescription\n"
+       "from launch_ros.actions import Node\n"
+       "def generate_launch_description():\n"
+       "    return LaunchDescription([\n"
+       "        Node(package='robot_state_publisher', executable='robot_state_publisher',\n"
+       "             parameters=[{{'use_sim_time': {rsp}}}]),\n"
+       "        Node(package='joint_state_publisher', executable='joint_state_publisher'"
+       "{jsp}),\n"
+       "    ])\n")
+
+
+def test_a_node_on_sim_time_is_a_clock_source_and_joint_states_reach_tf(
+        tmp_path: Path) -> None:
+    """create3_sim#203: robot_state_publisher on simulated time, joint_state_publisher on
+    wall time: the wheels' transforms carry wall-clock stamps."""
+    fault = JSP.format(rsp="True", jsp="")
+    assert run(tmp_path, "d.launch.py", fault) == [(RULE, 7)]
+    fixed = JSP.format(rsp="True", jsp=", parameters=[{'use_sim_time': True}]")
+    assert run(tmp_path, "d.launch.py", fixed) == []
+    # Both on wall time: nothing says a clock runs; without robot_state_publisher the
+    # joint states reach no transform.
+    assert run(tmp_path, "d.launch.py", JSP.format(rsp="False", jsp="")) == []
+    alone = fault.replace("robot_state_publisher", "demo_nodes_cpp")
+    assert run(tmp_path, "d.launch.py", alone) == []
+
+
+def test_a_controller_spawner_stamps_nothing(tmp_path: Path) -> None:
+    """controller_manager's spawner only asks the manager (in the simulator) to load a
+    controller: its own clock reaches no stamp."""
+    text = JSP.format(rsp="True", jsp="").replace(
+        "package='joint_state_publisher', executable='joint_state_publisher'",
+        "package='controller_manager', executable='spawner', arguments=['joint_broad']")
+    assert run(tmp_path, "d.launch.py", text) == []
+    manager = text.replace("executable='spawner'", "executable='ros2_control_node'")
+    assert run(tmp_path, "d.launch.py", manager) == [(RULE, 7)]
+
+
+def test_two_nodes_given_contradicting_clocks_are_said_to_disagree(
+        tmp_path: Path) -> None:
+    """bumperbot's real-robot launch gives ros2_control_node use_sim_time false while an
+    included controller launch defaults to true: which one is wrong is not known, that
+    they disagree is."""
+    text = JSP.format(rsp="True", jsp=", parameters=[{'use_sim_time': False}]")
+    path = tmp_path / "d.launch.py"
+    path.write_text(text)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(path)], options).diagnostics
+    assert found.line == 7 and "is given use_sim_time false" in found.message
+    assert "give both the same use_sim_time" in found.message
+
+
+def test_rviz_looks_up_at_its_own_clock(tmp_path: Path) -> None:
+    """navigation2#4274: rviz2 without use_sim_time beside a spawned robot."""
+    text = ('<launch><node pkg="gazebo_ros" exec="spawn_entity.py" args="-topic x"/>\n'
+            '<node pkg="rviz2" exec="rviz2" name="rviz2"{}/>\n</launch>\n')
+    assert run(tmp_path, "v.launch.xml", text.format("")) == [(RULE, 2)]
+    fixed = text.format('><param name="use_sim_time" value="true"/></node')
+    assert run(tmp_path, "v.launch.xml", fixed.replace('/>\n</launch>', '>\n</launch>')
+               ) == []

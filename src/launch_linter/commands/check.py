@@ -323,6 +323,10 @@ def run(ns: argparse.Namespace) -> int:
     # located, and locating reads each file as it is now, which the cache has just
     # found unchanged since the findings were made.
     cache = results_cache(ns, options, config)
+    if cache is not None and ns.format == "json":
+        # The report states the count of beliefs: kept with the run key, whose beliefs
+        # part is the digest of their file, so that a cached run need not decode it.
+        options.beliefs.know_count(cache.count("beliefs", lambda: options.beliefs.count))
     try:
         if ns.diff:
             return _print_diff(ns, options, config, cache)

@@ -12,13 +12,17 @@ from launch_linter.beliefs_files import BeliefsNotFound
 from launch_linter.beliefs_files import load_beliefs as _load
 from launch_linter.commands.common import UsageError
 from launch_linter.engine import AUTO_JOBS, LintOptions, LintResult, lint_bytes, lint_paths
-from launch_linter.knowledge import KnowledgeBase, KnowledgeError, bundled, load
 from launch_linter.model.beliefs import BeliefSet
 from launch_linter.results_cache import ResultsCache, results_cache_folder
 from launch_linter.rules._profiles import PROFILES
 from launch_linter.workspace.config import Config, ConfigError, check_rule_ids, config_for
-from launch_linter.workspace.discovery import Exclusions, Ignored
+from launch_linter.workspace.discovery import Exclusions
 from launch_linter.workspace.environment import environment_places
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from launch_linter.knowledge import KnowledgeBase
+    from launch_linter.workspace.discovery import Ignored
 
 
 def split_ids(values: list[str] | None) -> list[str]:
@@ -208,6 +212,8 @@ def load_knowledge(files: tuple[str, ...]) -> KnowledgeBase | None:
     first); None when there are none."""
     if not files:
         return None
+    from launch_linter.knowledge import KnowledgeError, bundled, load
+
     base = bundled()
     try:
         for path in files:

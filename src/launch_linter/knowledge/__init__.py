@@ -142,6 +142,9 @@ class Entry(Record):
     """Parameters that give the node the input it needs before it publishes anything
     (``#`` stands for a number: robot_localization's ``odom#``): with every parameter
     source of the node read and none of them set, it publishes no edge."""
+    tf_listener: bool
+    """It looks up transforms at its own clock's time between frames its own configuration
+    names, not a parameter (RViz's fixed frame and displays): its clock matters to tf."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -149,7 +152,7 @@ class Entry(Record):
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
-        "inputs",
+        "inputs", "tf_listener",
     )
 
     def __init__(
@@ -178,6 +181,7 @@ class Entry(Record):
         ros1_tf2_from: str | None = None,
         looks_up_listed: tuple[tuple[str, str], ...] = (),
         inputs: tuple[str, ...] = (),
+        tf_listener: bool = False,
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -203,6 +207,7 @@ class Entry(Record):
         _set(self, "ros1_tf2_from", ros1_tf2_from)
         _set(self, "looks_up_listed", looks_up_listed)
         _set(self, "inputs", inputs)
+        _set(self, "tf_listener", tf_listener)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -399,6 +404,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         ros1_tf2_from=tf2_from,
         looks_up_listed=listed_pairs,
         inputs=_texts(data.get("inputs"), f"{where}.inputs"),
+        tf_listener=bool(data.get("tf_listener", False)),
     )
 
 

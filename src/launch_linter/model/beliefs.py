@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
-from typing import Any
+from collections.abc import Callable, Mapping
 
 from launch_linter.model.diagnostic import Belief
 from launch_linter.model.record import Record, _set
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
 
 BELIEF_FORMAT = "launch-linter-beliefs/1"
 BELIEF_CLASSES = (
@@ -40,9 +43,12 @@ class BeliefSet(Record):
     beliefs: tuple[Belief, ...]
     p0: float
     _index: dict[str, dict[tuple[str, ...] | str, tuple[Belief, ...]]]
+    _decode: Callable[[], BeliefSet] | None
+    _origin: str | None
+    _count: int | None
 
-    __slots__ = ("source", "min_z", "beliefs", "p0", "_index")
-    _private = ("_index",)
+    __slots__ = ("source", "min_z", "beliefs", "p0", "_index", "_decode", "_origin", "_count")
+    _private = ("_index", "_decode", "_origin", "_count")
 
     def __init__(
         self,
@@ -56,6 +62,58 @@ class BeliefSet(Record):
         _set(self, "beliefs", beliefs)
         _set(self, "p0", p0)
         _set(self, "_index", {})
+        _set(self, "_decode", None)
+        _set(self, "_origin", None)
+        _set(self, "_count", None)
+
+    @staticmethod
+    def stored(source: str, min_z: float, origin: str,
+               decode: Callable[[], BeliefSet]) -> BeliefSet:
+        """The set ``decode()`` gives, decoded when ``beliefs`` or ``p0`` is first read.
+        ``origin`` names the content it is decoded from (a digest of the file's bytes):
+        the results cache keys a run on it, so a run answered by the cache never decodes
+        the bundled file (a 260 KB JSON document, a twentieth of the start-up)."""
+        stored = BeliefSet.__new__(BeliefSet)
+        _set(stored, "source", source)
+        _set(stored, "min_z", min_z)
+        _set(stored, "_index", {})
+        _set(stored, "_decode", decode)
+        _set(stored, "_origin", origin)
+        _set(stored, "_count", None)
+        return stored
+
+    def __getattr__(self, name: str) -> Any:
+        # Called only for an attribute not found: ``beliefs`` and ``p0`` of a stored set
+        # not decoded yet (their slots are empty until then).
+        try:
+            decode = object.__getattribute__(self, "_decode")
+        except AttributeError:
+            decode = None
+        if decode is None or name not in ("beliefs", "p0"):
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        decoded = decode()
+        _set(self, "beliefs", decoded.beliefs)
+        _set(self, "p0", decoded.p0)
+        _set(self, "_decode", None)
+        return getattr(self, name)
+
+    @property
+    def origin(self) -> str | None:
+        """What a stored set is decoded from (None: a set built in memory)."""
+        return self._origin
+
+    @property
+    def count(self) -> int:
+        """How many beliefs: without decoding a stored set when the count is known."""
+        if self._decode is not None and self._count is not None:
+            return self._count
+        return len(self.beliefs)
+
+    def know_count(self, count: int) -> None:
+        """Tell a stored set not decoded yet its count (remembered for its ``origin`` and
+        ``min_z`` by the results cache)."""
+        if self._decode is not None:
+            _set(self, "_count", count)
 
     @staticmethod
     def empty(source: str = "none") -> BeliefSet:

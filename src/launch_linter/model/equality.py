@@ -17,35 +17,39 @@ that is not boolean: launch then refuses the truth test).
 from __future__ import annotations
 
 import re
-import typing
 
-Test = typing.Tuple[str, str, bool]
-"""(normalised subject, constant, True for ``==`` / False for ``!=``)."""
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Tuple
+
+    Test = Tuple[str, str, bool]
+    """(normalised subject, constant, True for ``==`` / False for ``!=``)."""
 
 MAX_TEXT = 500
 TRUTH = "\x00truth"
 """The constant of a truth test: (subject, TRUTH, True) holds when the value is true."""
 _TRUE_WORDS = ("true", "1")
 _FALSE_WORDS = ("false", "0")
-_LAUNCH_EQUALS = re.compile(
-    r"""LaunchConfiguration(Not)?Equals\(\s*(['"])(\w+)\2\s*,\s*(['"])(.*?)\4\s*\)""")
-_EVAL = re.compile(r"\$\(eval\s+(.*)\)", re.DOTALL)
-_XACRO = re.compile(r"xacro:\$\{(.*)\}", re.DOTALL)
-_QUOTED = re.compile(r"""(['"])(.*)\1""", re.DOTALL)
-_LIST_ITEM = re.compile(
+# Patterns as text, compiled on first use and kept by ``re``: compiling the thirteen at
+# import took 1.7 ms, a twentieth of a start-up that often never needs them.
+_LAUNCH_EQUALS = r"""LaunchConfiguration(Not)?Equals\(\s*(['"])(\w+)\2\s*,\s*(['"])(.*?)\4\s*\)"""
+_EVAL = r"(?s)\$\(eval\s+(.*)\)"
+_XACRO = r"(?s)xacro:\$\{(.*)\}"
+_QUOTED = r"""(?s)(['"])(.*)\1"""
+_LIST_ITEM = (
     r"""\s*(('[^'\\]*'|"[^"\\]*")|(LaunchConfiguration\(\s*(?:'\w+'|"\w+")\s*\)|[A-Za-z_]\w*))"""
     r"""\s*(?:,|$)""")
-_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _SUBJECT_FORMS = (
-    (re.compile(r"""^arg\((['"])(\w+)\1\)$"""), "{}"),
-    (re.compile(r"""^\$\((?:var|arg)\s+(\w+)\)$"""), "{}"),
-    (re.compile(r"""^(?:opt)?env\((['"])(\w+)\1(?:,.*)?\)$"""), "env:{}"),
-    (re.compile(r"""^\$\((?:opt)?env\s+(\w+)(?:\s.*)?\)$"""), "env:{}"),
-    (re.compile(r"""^LaunchConfiguration\((['"])(\w+)\1\)$"""), "{}"),
+    (r"""^arg\((['"])(\w+)\1\)$""", "{}"),
+    (r"""^\$\((?:var|arg)\s+(\w+)\)$""", "{}"),
+    (r"""^(?:opt)?env\((['"])(\w+)\1(?:,.*)?\)$""", "env:{}"),
+    (r"""^\$\((?:opt)?env\s+(\w+)(?:\s.*)?\)$""", "env:{}"),
+    (r"""^LaunchConfiguration\((['"])(\w+)\1\)$""", "{}"),
     # nav2_common's LaunchConfigAsBool: a launch configuration read as a boolean.
-    (re.compile(r"""^LaunchConfigAsBool\((['"])(\w+)\1\)$"""), "{}"),
+    (r"""^LaunchConfigAsBool\((['"])(\w+)\1\)$""", "{}"),
 )
-_NOT = re.compile(r"^not\s*(?:\((.*)\)|(.*))$", re.DOTALL)
+_NOT = r"(?s)^not\s*(?:\((.*)\)|(.*))$"
 
 
 def equality_test(text: str) -> Test | None:
@@ -53,13 +57,13 @@ def equality_test(text: str) -> Test | None:
     if len(text) > MAX_TEXT:
         return None
     text = text.strip()
-    match = _LAUNCH_EQUALS.fullmatch(text)
+    match = re.fullmatch(_LAUNCH_EQUALS, text)
     if match:
         return match.group(3), match.group(5), match.group(1) is None
     if text.startswith("PythonExpression([") and text.endswith("])"):
         return _comparison(_joined(text[len("PythonExpression(["):-2]))
     for form in (_EVAL, _XACRO):
-        match = form.fullmatch(text)
+        match = re.fullmatch(form, text)
         if match:
             return _comparison(_unquote(match.group(1).strip()))
     return None
@@ -75,14 +79,14 @@ def truth_test(text: str) -> Test | None:
     if text.startswith("PythonExpression([") and text.endswith("])"):
         expression = _joined(text[len("PythonExpression(["):-2])
     else:
-        match = _EVAL.fullmatch(text)
+        match = re.fullmatch(_EVAL, text)
         if match:
             expression = _unquote(match.group(1).strip())
     if expression is None:
         name = _subject(text)
         return None if name is None else (name, TRUTH, True)
     expression = expression.strip()
-    negated = _NOT.fullmatch(expression)
+    negated = re.fullmatch(_NOT, expression)
     inner = expression if negated is None else (negated.group(1) or negated.group(2) or "")
     name = _subject(inner.strip())
     return None if name is None else (name, TRUTH, negated is None)
@@ -93,7 +97,7 @@ def _joined(items: str) -> str:
     variable (a ``LaunchConfiguration``) standing as its name, and a
     ``LaunchConfiguration('x')`` written in the list as itself."""
     pieces: list[str] = []
-    for match in _LIST_ITEM.finditer(items):
+    for match in re.finditer(_LIST_ITEM, items):
         text, name = match.group(2), match.group(3)
         pieces.append(text[1:-1] if text is not None else name)
     return "".join(pieces)
@@ -101,7 +105,7 @@ def _joined(items: str) -> str:
 
 def _unquote(expression: str) -> str:
     """ROS 2 writes ``$(eval '...')`` with the expression quoted (inner quotes escaped)."""
-    quoted = _QUOTED.fullmatch(expression)
+    quoted = re.fullmatch(_QUOTED, expression)
     if quoted and "\\" + quoted.group(1) in quoted.group(2):
         return quoted.group(2).replace("\\" + quoted.group(1), quoted.group(1))
     return expression
@@ -121,10 +125,10 @@ def _comparison(expression: str) -> Test | None:
 
 
 def _constant(text: str) -> str | None:
-    quoted = _QUOTED.fullmatch(text)
+    quoted = re.fullmatch(_QUOTED, text)
     if quoted and "$" not in quoted.group(2) and quoted.group(1) not in quoted.group(2):
         return quoted.group(2)
-    if _NUMBER.fullmatch(text):
+    if re.fullmatch(_NUMBER, text):
         return repr(float(text))
     if text in ("True", "False", "true", "false"):
         return text.lower()
@@ -132,12 +136,12 @@ def _constant(text: str) -> str | None:
 
 
 def _subject(text: str) -> str | None:
-    quoted = _QUOTED.fullmatch(text)
+    quoted = re.fullmatch(_QUOTED, text)
     if quoted:
         text = quoted.group(2).strip()
     compact = re.sub(r"\s+", "", text) if "$(" not in text else text.strip()
     for pattern, spelling in _SUBJECT_FORMS:
-        match = pattern.fullmatch(compact)
+        match = re.fullmatch(pattern, compact)
         if match:
             return spelling.format(match.group(match.lastindex or 1))
     if re.fullmatch(r"[A-Za-z_]\w*", compact):

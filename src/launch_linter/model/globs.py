@@ -20,15 +20,18 @@ Three dialects, one matcher:
 
 from __future__ import annotations
 
-import typing
 from functools import lru_cache
 
 _LITERAL, _ONE, _STAR, _ANY, _FOLDERS, _CLASS = range(6)
 _SKIPPABLE = (_STAR, _ANY, _FOLDERS)
 
-_Class = typing.Tuple[bool, str, typing.Tuple[typing.Tuple[str, str], ...]]
-"""(negated, characters, ranges) of a ``[...]`` class."""
-_Token = typing.Tuple[int, str, typing.Optional[_Class]]
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Optional, Tuple
+
+    _Class = Tuple[bool, str, Tuple[Tuple[str, str], ...]]
+    """(negated, characters, ranges) of a ``[...]`` class."""
+    _Token = Tuple[int, str, Optional[_Class]]
 
 
 class Glob:

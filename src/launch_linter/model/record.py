@@ -17,12 +17,15 @@ some are left out of equality or are worked out later, names the compared ones i
 from __future__ import annotations
 
 from operator import attrgetter
-from typing import Any, Callable, ClassVar, TypeVar
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any, Callable, ClassVar, TypeVar
+
+    T = TypeVar("T")
 
 _set = object.__setattr__
 """Sets a slot of a frozen record (its own ``__setattr__`` refuses): for ``__init__``."""
-
-T = TypeVar("T")
 
 
 class FrozenInstanceError(AttributeError):

@@ -7,8 +7,12 @@ import math
 from collections.abc import Iterable, Mapping
 from enum import Enum
 
-from launch_linter.model.equality import Test, equality_test, exclusive, truth_test
+from launch_linter.model.equality import equality_test, exclusive, truth_test
 from launch_linter.model.record import Record, _open, _seal, _set
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from launch_linter.model.equality import Test
 
 NULL_TOLERANCE = 1e-9
 

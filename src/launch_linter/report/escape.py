@@ -11,11 +11,20 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
+
+# The patterns are compiled on first use (``re`` keeps them): their character classes
+# reach past U+00FF, and compiling the three took 2 ms, a twentieth of a cached run's
+# start-up, which never needs them. Each function first asks ``str.isprintable`` or
+# ``str.isascii`` (C speed, no pattern): every character the patterns match is one that
+# ``isprintable`` refuses, and every one but DEL is outside ASCII.
 
 # C0 and C1 controls, DEL, the line and paragraph separators, the bidirectional overrides
 # and isolates (which reorder what a terminal shows), and lone surrogates.
-_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
+_UNSAFE = "[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]"
 
 
 def _escape(match: re.Match[str]) -> str:
@@ -26,13 +35,13 @@ def _escape(match: re.Match[str]) -> str:
 def printable(text: str) -> str:
     """``text`` with every control, separator, bidi override and lone surrogate shown as a
     ``\\xNN``/``\\uNNNN`` escape: one line, safe for a terminal, encodable as UTF-8."""
-    if _UNSAFE.search(text) is None:
+    if text.isprintable():
         return text
-    return _UNSAFE.sub(_escape, text)
+    return re.sub(_UNSAFE, _escape, text)
 
 
-_SURROGATE = re.compile("[\ud800-\udfff]")
-_RAW_IN_JSON = re.compile("[\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+_SURROGATE = "[\ud800-\udfff]"
+_RAW_IN_JSON = "[\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]"
 """What ``json`` leaves raw with ``ensure_ascii=False`` that a reader's terminal or editor
 would act on (C1 controls, separators, bidi overrides); C0 controls it escapes itself."""
 
@@ -40,9 +49,9 @@ would act on (C1 controls, separators, bidi overrides); C0 controls it escapes i
 def json_escaped(text: str) -> str:
     """JSON text with those characters as ``\\uNNNN`` escapes: the same document for a
     JSON reader, inert for a person reading it (only strings can hold them)."""
-    if _RAW_IN_JSON.search(text) is None:
+    if text.isascii() and "\x7f" not in text:
         return text
-    return _RAW_IN_JSON.sub(lambda match: f"\\u{ord(match.group()):04x}", text)
+    return re.sub(_RAW_IN_JSON, lambda match: f"\\u{ord(match.group()):04x}", text)
 
 
 
@@ -51,7 +60,9 @@ def json_safe(value: Any) -> Any:
     that the document is valid JSON and encodable as UTF-8. Documents are shallow: the
     recursion follows our own structure, not the input's."""
     if isinstance(value, str):
-        return value if _SURROGATE.search(value) is None else _SURROGATE.sub(_escape, value)
+        if value.isprintable():
+            return value
+        return re.sub(_SURROGATE, _escape, value)
     if isinstance(value, float):
         return value if math.isfinite(value) else None
     if isinstance(value, dict):

@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Mapping
-from typing import Any, TextIO
 
 from launch_linter.engine import LintResult
 from launch_linter.model.beliefs import BeliefSet
@@ -15,7 +14,10 @@ from launch_linter.model.launch import FileRecord
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
 from launch_linter.report.escape import json_escaped, json_safe
-from launch_linter.report.published import published
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any, TextIO
 
 JSON_VERSION = 1
 
@@ -35,7 +37,7 @@ def _check_head(beliefs: BeliefSet, version: str) -> dict[str, Any]:
         "beliefs": {
             "source": beliefs.source,
             "min_z": beliefs.min_z,
-            "count": len(beliefs.beliefs),
+            "count": beliefs.count,
         },
     }
 
@@ -134,6 +136,8 @@ def joint_json(root: str, j: RobotJoint) -> dict[str, Any]:
 def transforms_document(result: LintResult) -> dict[str, Any]:
     """Each edge once (see :mod:`launch_linter.report.published`): ``root`` is the first
     tree it was found in, ``entry_points`` every entry point that publishes it."""
+    from launch_linter.report.published import published  # transforms only, not check
+
     transforms: list[dict[str, Any]] = []
     joints: list[dict[str, Any]] = []
     for item in published(result):

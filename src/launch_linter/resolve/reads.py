@@ -29,27 +29,29 @@ import stat
 import time
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
-from typing import Hashable, Optional, Tuple, TypeVar
 
 FILE = "f"
 FOLDER = "d"
 OTHER = "o"
 ABSENT = "-"
 
-Stamp = Tuple[str, int, int, Optional[str]]
-"""``(kind, size, mtime_ns, digest)`` of a path. ``size`` is -1 when only the kind was
-looked at (a probe, or a folder); ``mtime_ns`` is -1 when it was not looked at and 0 when
-it cannot vouch for the content (the file changed less than ``SETTLE_NS`` before it was
-read: a later write within the same clock tick would leave it unchanged), so the content
-is compared; ``digest`` is the BLAKE2b of the content read (of a folder: of its listing),
-None when not all of it was (or only the kind was looked at)."""
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Hashable, Optional, Tuple, TypeVar
+
+    _T = TypeVar("_T")
+    _K = TypeVar("_K", bound=Hashable)
+    Stamp = Tuple[str, int, int, Optional[str]]
+    """``(kind, size, mtime_ns, digest)`` of a path. ``size`` is -1 when only the kind was
+    looked at (a probe, or a folder); ``mtime_ns`` is -1 when it was not looked at and 0 when
+    it cannot vouch for the content (the file changed less than ``SETTLE_NS`` before it was
+    read: a later write within the same clock tick would leave it unchanged), so the content
+    is compared; ``digest`` is the BLAKE2b of the content read (of a folder: of its listing),
+    None when not all of it was (or only the kind was looked at)."""
 
 SETTLE_NS = 2_000_000_000
 """A modification time this close to the read is not trusted to reveal a later change
 (file systems stamp times in ticks of up to 2 s on FAT, a few ms on ext4)."""
-
-_T = TypeVar("_T")
-_K = TypeVar("_K", bound=Hashable)
 
 
 class ReadLog:

@@ -16,10 +16,13 @@ import re
 import stat
 from collections.abc import Collection, Iterator, Mapping
 from contextlib import contextmanager
-from typing import BinaryIO
 from xml.parsers import expat
 
 from launch_linter.resolve import reads
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import BinaryIO
 
 MAX_BYTES = 8 * 1024 * 1024
 MAX_DEPTH = 200
@@ -164,14 +167,14 @@ def read_regular_file(path: str, limit: int) -> bytes:
         os.close(descriptor)
 
 
-_DECLARATION = re.compile(
-    rb"""\s*<\?xml\s[^>]{0,200}?encoding\s*=\s*["']([^"'>]{0,60})["']""")
+_DECLARATION = rb"""\s*<\?xml\s[^>]{0,200}?encoding\s*=\s*["']([^"'>]{0,60})["']"""
+"""Compiled on first use (``re`` keeps it): most runs never read an XML declaration."""
 
 
 def declared_encoding(data: bytes) -> str:
     """The encoding an XML declaration names, as text ("" when none is found)."""
     start = 3 if data.startswith(b"\xef\xbb\xbf") else 0
-    found = _DECLARATION.match(data[start:start + 300])
+    found = re.match(_DECLARATION, data[start:start + 300])
     return found.group(1).decode("latin-1") if found else ""
 
 

@@ -3,18 +3,22 @@
 from __future__ import annotations
 
 from types import ModuleType
-from typing import TYPE_CHECKING, Any
 
-from launch_linter.rules._api import Rule, RuleContext, rule_from_module
 from launch_linter.rules._catalog import RULE_IDS
 
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
+    from typing import Any
+
+    from launch_linter.rules._api import Rule, RuleContext
+
     RULE_MODULES: tuple[ModuleType, ...]
     """The rule modules, in the rules table's order (``_catalog``)."""
     RULES: tuple[Rule, ...]
     RULES_BY_ID: dict[str, Rule]
 
 _LOADED = ("RULE_MODULES", "RULES", "RULES_BY_ID")
+_API = ("Rule", "RuleContext")
 
 
 def _load() -> None:
@@ -126,17 +130,26 @@ def _load() -> None:
         xacro_error,
         xacro_unused_block,
     )}
+    from launch_linter.rules._api import rule_from_module
+
     ordered = tuple(modules[rule_id] for rule_id in RULE_IDS)
     rules = tuple(rule_from_module(module) for module in ordered)
     globals().update(RULE_MODULES=ordered, RULES=rules, RULES_BY_ID={r.id: r for r in rules})
 
 
 def __getattr__(name: str) -> Any:
-    """The rules, their modules imported on first use: a run answered by the results
-    cache runs no rule (``_catalog`` gives what it needs: the ids and categories)."""
+    """The rules, their modules and their API imported on first use: a run answered by
+    the results cache runs no rule (``_catalog`` gives what it needs: the ids and
+    categories)."""
     if name in _LOADED:
         _load()
         return globals()[name]
+    if name in _API:
+        from launch_linter.rules import _api
+
+        value = getattr(_api, name)
+        globals()[name] = value
+        return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 

@@ -14,7 +14,6 @@ import importlib
 import math
 import os
 from collections.abc import Iterable, Mapping, Sequence
-from typing import Any
 
 from launch_linter.model.diagnostic import Severity
 from launch_linter.model.paths import shown_path
@@ -22,7 +21,10 @@ from launch_linter.model.record import Record, _set
 from launch_linter.resolve.xml_safe import read_regular_file
 from launch_linter.rules._catalog import CATALOG, CATEGORY_NAMES, CATEGORY_OF
 from launch_linter.suppressions import PathIgnore
-from launch_linter.workspace.toml_fallback import NoTomlParser, loads_without_parser
+
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Any
 
 CONFIG_NAME = ".launch-linter.toml"
 PYPROJECT = "pyproject.toml"
@@ -304,6 +306,8 @@ def _read_toml(path: str) -> dict[str, Any]:
         raise ConfigError(f"{shown}: not valid TOML: {exc}") from None
     parser = _toml_parser()
     if parser is None:
+        from launch_linter.workspace.toml_fallback import NoTomlParser, loads_without_parser
+
         try:
             return loads_without_parser(text)
         except NoTomlParser as exc:

@@ -20,7 +20,6 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterator, Sequence
-from typing import Callable
 
 from launch_linter.model.globs import Glob, fnmatch_glob
 from launch_linter.model.paths import shown_path
@@ -52,19 +51,25 @@ WORKSPACE_FOLDERS = ("build", "install", "log", "devel", "devel_isolated", "buil
 WORKSPACE_MARKERS = ("COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE")
 MAX_DISCOVERED_FILES = 200_000
 
-Ignored = Callable[[str, bool], bool]
-"""``ignored(absolute_path, is_folder)``: True to leave the path out."""
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Callable
 
+    Ignored = Callable[[str, bool], bool]
+    """``ignored(absolute_path, is_folder)``: True to leave the path out."""
+
+# The patterns that sniff a file's content are text, compiled on first use (``re`` keeps
+# them): a run whose folder walk the results cache answers reads no file's content.
 # The first element of an XML document: after the declaration, comments, doctype and
 # processing instructions.
-_SPACE = re.compile(rb"\s*")
+_SPACE = rb"\s*"
 _PROLOGUE_PARTS = ((b"<?", b"?>"), (b"<!--", b"-->"), (b"<!DOCTYPE", b">"))
 MAX_SNIFF_BYTES = 1024 * 1024
 """How far into a ``.xml`` file discovery looks for its root element (licence headers and
 long comments come first in some files)."""
-_LAUNCH_ROOT = re.compile(rb"<launch[\s>/]")
-_PY_LAUNCH = re.compile(rb"^def generate_launch_description\s*\(", re.MULTILINE)
-_YAML_LAUNCH = re.compile(rb"(?:\xef\xbb\xbf)?(?:\s*#[^\n]*\n|\s*\n|---[^\n]*\n)*launch\s*:")
+_LAUNCH_ROOT = rb"<launch[\s>/]"
+_PY_LAUNCH = rb"(?m)^def generate_launch_description\s*\("
+_YAML_LAUNCH = rb"(?:\xef\xbb\xbf)?(?:\s*#[^\n]*\n|\s*\n|---[^\n]*\n)*launch\s*:"
 CONTENT_SUFFIXES = (".xml", ".test", ".py", ".yaml", ".yml")
 """Suffixes whose content decides: ``.test`` is a rostest file, a launch file with
 ``<test>`` elements when its root is ``<launch>``."""
@@ -96,7 +101,7 @@ def _root_offset(head: bytes) -> int | None:
     linear time, where a lazy regular expression would rescan the rest for each one."""
     position = 0
     while True:
-        position = _SPACE.match(head, position).end()  # type: ignore[union-attr]
+        position = re.compile(_SPACE).match(head, position).end()  # type: ignore[union-attr]
         for opener, closer in _PROLOGUE_PARTS:
             if head.startswith(opener, position):
                 end = head.find(closer, position + len(opener))
@@ -119,7 +124,7 @@ def has_launch_root(path: str) -> bool:
     if head.startswith(b"\xef\xbb\xbf"):
         head = head[3:]
     start = _root_offset(head)
-    return start is not None and _LAUNCH_ROOT.match(head, start) is not None
+    return start is not None and re.compile(_LAUNCH_ROOT).match(head, start) is not None
 
 
 def has_launch_content(path: str, name: str) -> bool:
@@ -133,8 +138,8 @@ def has_launch_content(path: str, name: str) -> bool:
     except (OSError, NotRegularFile):
         return False
     if name.endswith(".py"):
-        return _PY_LAUNCH.search(data) is not None
-    return _YAML_LAUNCH.match(data) is not None
+        return re.search(_PY_LAUNCH, data) is not None
+    return re.match(_YAML_LAUNCH, data) is not None
 
 
 def is_workspace_folder(directory: str, name: str) -> bool:

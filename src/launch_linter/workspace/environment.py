@@ -20,12 +20,15 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping, Sequence
-from typing import Tuple
 
 from launch_linter.resolve import reads
 
-Place = Tuple[str, str]
-"""(``prefix`` or ``source``, folder)."""
+TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
+if TYPE_CHECKING:
+    from typing import Tuple
+
+    Place = Tuple[str, str]
+    """(``prefix`` or ``source``, folder)."""
 
 PREFIX = "prefix"
 SOURCE = "source"

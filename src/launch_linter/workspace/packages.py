@@ -18,9 +18,10 @@ from typing import NamedTuple
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
 from launch_linter.workspace.discovery import walk
-from launch_linter.workspace.environment import PREFIX, Place
+from launch_linter.workspace.environment import PREFIX
 
 if typing.TYPE_CHECKING:
+    from launch_linter.workspace.environment import Place
     from launch_linter.workspace.install_rules import Layout
 
 MAX_DIRECTORIES = 50_000

@@ -441,7 +441,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             source, f"robot description {where} is SDF (<sdf> root, which "
                     f"robot_state_publisher reads through the sdformat_urdf plugin); "
                     f"its joints are not read"))
-    found = joints_of(root, source, display, source.condition)
+    found = joints_of(root, source, display, source.condition, bool(env.get("ROS_DISTRO")))
     plugins = plugins_of(root, display, source.condition, None)
     # After something not followed (an include not read, an unknown xacro arg), a joint's
     # unknown parent or origin may only follow from it: that is the cause already said.

@@ -56,9 +56,21 @@ def _condition(marks: tuple[str, ...]) -> Condition:
     return Condition(literals)
 
 
+LEGACY_INSERT = "insert_block"
+"""An ``insert_block`` written without the ``xacro:`` prefix, left as an element by an
+expansion for an unknown distribution: xacro before 1.14 (ROS Melodic and older) inserts
+the block, 1.14 and later keep the element as it is (xacro CHANGELOG 1.14.0, "Require all
+xacro commands to be prefixed with 'xacro:'")."""
+LEGACY_INSERT_REASON = ("the joint's <origin> is an <insert_block> without the xacro: "
+                        "prefix: xacro before 1.14 (Melodic and older) inserts it, later "
+                        "versions drop it (--ros-distro decides)")
+
+
 def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
-              outer: Condition) -> list[RobotJoint]:
-    """The joints directly under ``<robot>``, as edges of the tf tree."""
+              outer: Condition, distro_known: bool = False) -> list[RobotJoint]:
+    """The joints directly under ``<robot>``, as edges of the tf tree. ``distro_known``:
+    the target distribution is known, so the expansion read unprefixed xacro tags as its
+    xacro does (``xacro_values.legacy_tags``); not known, such an origin is unknown."""
     out: list[RobotJoint] = []
     if root.tag != "robot":
         return out
@@ -83,6 +95,10 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
         origin = _first(joint, "origin")
         xyz, why_xyz = _vector(origin, "xyz")
         rpy, why_rpy = _vector(origin, "rpy")
+        if origin is None and not distro_known and _first(joint, LEGACY_INSERT) is not None:
+            xyz = rpy = None
+            unresolved.extend(("translation", "rotation"))
+            reasons.append(LEGACY_INSERT_REASON)
         if why_xyz is not None:
             unresolved.append("translation")
             reasons.append(why_xyz)
@@ -136,6 +152,12 @@ SENSOR_LINK_PARAM = "gazebo_reference"
 """The parameter a plugin's record gives the link of its ``<gazebo reference=...>``: a
 sensor plugin's default frame (gazebo_ros's SensorFrameID) and the body its sensor looks
 out of."""
+SENSOR_POSE_PARAM = "gazebo_sensor_pose"
+"""The parameter a sensor plugin's record gives the pose of the camera in its link: the
+``<sensor><pose>`` and the ``<camera><pose>`` inside it, as Gazebo composes them
+(sensor's then camera's: gazebo-classic gazebo/sensors/CameraSensor.cc and
+DepthCameraSensor.cc, ``Init``, commit 00eaa74), each ``x y z roll pitch yaw``, joined
+by ``;``."""
 MAX_PLUGINS = 200
 
 
@@ -154,15 +176,59 @@ def _ros_of(plugin: ExpandedNode) -> int | None:
     return 1 if tags & ROS1_PLUGIN_TAGS else None
 
 
-def _plugin_elements(gazebo: ExpandedNode) -> list[ExpandedNode]:
-    """The plugins of a ``<gazebo>`` block: its own and its sensors'."""
-    found: list[ExpandedNode] = []
+def _plugin_elements(gazebo: ExpandedNode) -> list[tuple[ExpandedNode, ExpandedNode | None]]:
+    """The plugins of a ``<gazebo>`` block, its own and its sensors', each with its
+    sensor (None for the block's own)."""
+    found: list[tuple[ExpandedNode, ExpandedNode | None]] = []
     for child in gazebo.children:
         if child.tag == "plugin":
-            found.append(child)
+            found.append((child, None))
         elif child.tag == "sensor":
-            found.extend(p for p in child.children if p.tag == "plugin")
+            found.extend((p, child) for p in child.children if p.tag == "plugin")
     return found
+
+
+def _pose_text(element: ExpandedNode) -> str:
+    """An SDF ``<pose>`` as its six numbers' text; UNKNOWN_VALUE when its text is not
+    known or it has attributes (``relative_to``, ``degrees``) this reader does not apply."""
+    if element.text is None or element.attrib:
+        return UNKNOWN_VALUE
+    return element.text
+
+
+def _sensor_pose(sensor: ExpandedNode) -> str | None:
+    """The poses that place a sensor's camera in its link (:data:`SENSOR_POSE_PARAM`);
+    None when the sensor gives none."""
+    poses = [_pose_text(child) for child in sensor.children if child.tag == "pose"]
+    turns = {_turn(_pose_text(pose)) for child in sensor.children if child.tag == "camera"
+             for pose in child.children if pose.tag == "pose"}
+    cameras = [child for child in sensor.children if child.tag == "camera"]
+    if any(not any(c.tag == "pose" for c in camera.children) for camera in cameras):
+        turns.add((0.0, 0.0, 0.0))
+    if not poses and turns <= {(0.0, 0.0, 0.0)}:
+        return None
+    # A multicamera's cameras each have their own pose: their rotation is the camera's
+    # when they all agree (a stereo pair side by side), unknown otherwise.
+    turn = next(iter(turns), None) if len(turns) == 1 else None
+    if UNKNOWN_VALUE in poses or (turns and turn is None):
+        return UNKNOWN_VALUE
+    if turn is not None:
+        poses.append(f"0 0 0 {turn[0]} {turn[1]} {turn[2]}")
+    return ";".join(poses)
+
+
+def _turn(pose: str) -> tuple[float, float, float] | None:
+    """A pose's roll, pitch and yaw; None when it is not six finite numbers."""
+    words = pose.split()
+    if len(words) != 6:
+        return None
+    try:
+        roll, pitch, yaw = (float(w) for w in words[3:])
+    except ValueError:
+        return None
+    if not all(math.isfinite(v) for v in (roll, pitch, yaw)):
+        return None
+    return (roll, pitch, yaw)
 
 
 def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
@@ -178,13 +244,16 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
         if gazebo.tag != "gazebo":
             continue
         reference = gazebo.attrib.get("reference")
-        for plugin in _plugin_elements(gazebo):
+        for plugin, sensor in _plugin_elements(gazebo):
             filename = plugin.attrib.get("filename")
             if not filename or "filename" in plugin.unknown:
                 continue
             params: list[tuple[str, str]] = []
             if reference and "reference" not in gazebo.unknown:
                 params.append((SENSOR_LINK_PARAM, reference))
+            pose = None if sensor is None else _sensor_pose(sensor)
+            if pose is not None:
+                params.append((SENSOR_POSE_PARAM, pose))
             namespace: str | None = "/"
             for child in plugin.children:
                 inner = child.children if child.tag == "ros" else [child]
@@ -228,7 +297,7 @@ def literal_root(text: str, path: str, line: int, own_lines: bool = False
         node.text = element.text.strip()
         # Only joints and Gazebo plugins, with their children, matter; the rest of the
         # tree is not copied.
-        if element.tag in ("robot", "joint", "gazebo", "sensor", "plugin", "ros"):
+        if element.tag in ("robot", "joint", "gazebo", "sensor", "camera", "plugin", "ros"):
             node.children = [convert(child) for child in element.children]
         return node
 

@@ -496,10 +496,11 @@ class XacroExpander:
 
     def _inserts(self, element: Element, block: str) -> bool:
         """Whether ``element`` holds an ``insert_block`` that may insert ``block`` (one
-        whose name is an expression may)."""
+        whose name is an expression may; unprefixed too, for a legacy xacro)."""
+        tags = {_PREFIX + "insert_block"} | ({"insert_block"} if self._legacy else set())
         for child in element.children:
             self._charge()
-            if child.tag == _PREFIX + "insert_block":
+            if child.tag in tags:
                 name = child.attrib.get("name", "")
                 if name == block or "$" in name:
                     return True

@@ -117,6 +117,8 @@ PLUGIN_TEXT_TAGS = frozenset({
     # gz-sim systems (diff drive, odometry publisher) and gz_ros2_control.
     "frame_id", "child_frame_id", "tf_topic", "odom_frame", "odom_publish_frequency",
     "parameters", "controller_manager_name",
+    # A sensor's pose in its link (and its camera's in the sensor): where a camera looks.
+    "pose",
 })
 """The elements whose text the expander keeps: the parameters of the Gazebo plugins the
 knowledge base knows (tests/knowledge checks that every plugin entry's parameter is one)."""
