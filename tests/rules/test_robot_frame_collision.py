@@ -117,6 +117,28 @@ def test_a_parse_check_aggregate_is_not_one_system(tmp_path: Path) -> None:
         assert [(d.rule, Path(d.path).name) for d in found] == [(RULE, "robot.launch")]
 
 
+def test_a_literal_foreach_in_install_is_read(tmp_path: Path) -> None:
+    """abb_experimental's support packages install ``DIRECTORY ${dir}/`` inside
+    ``foreach(dir config launch meshes urdf)``: tests/ is not among them, so the checked
+    aggregate is still only parsed; with tests among the items it is installed."""
+    (tmp_path / "robot.launch").write_text(ROBOT)
+    fleet = ('<launch><group ns="a"><include file="$(dirname)/../robot.launch"/></group>'
+             '<group ns="b"><include file="$(dirname)/../robot.launch"/></group></launch>')
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    checked = ("roslaunch_add_file_check(tests/fleet.launch)\n"
+               "foreach(dir config launch meshes urdf)\n"
+               "  install(DIRECTORY ${dir}/ DESTINATION share/${dir})\n"
+               "endforeach()\n")
+    root = _package(tmp_path, checked)
+    root.write_text(fleet)
+    assert lint_paths([str(root)], options).diagnostics == ()
+    for cmake in (checked.replace("meshes urdf", "meshes tests urdf"),
+                  checked.replace("config launch meshes urdf", "IN LISTS folders")):
+        (tmp_path / "CMakeLists.txt").write_text(cmake)
+        found = lint_paths([str(root)], options).diagnostics
+        assert [(d.rule, Path(d.path).name) for d in found] == [(RULE, "robot.launch")]
+
+
 PLUGIN_ROBOT = """<robot name="tb3">
   <link name="base_footprint"/><link name="base_link"/>
   <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_link"/></joint>

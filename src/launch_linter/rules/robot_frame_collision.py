@@ -148,8 +148,15 @@ def _descriptions(tree: LaunchTree, distro: str | None) -> Iterator[Finding]:
         source = sources[index]
         names = sorted({j.child for j in shared if j.child is not None})
         listed = ", ".join(summarised_lazily((f"'{n}'" for n in names), len(names)))
+        earlier = sources[0]
+        if (earlier.path, earlier.line) == (source.path, source.line):
+            # One launch file included once per robot: name the other robot, not the line.
+            other = (f"this same description included for namespace '{earlier.namespace}'"
+                     if earlier.namespace else "this same description included again")
+        else:
+            other = f"the one at {earlier.path}:{earlier.line}"
         message = (f"this robot description publishes {listed} under the same names as "
-                   f"the one at {sources[0].path}:{sources[0].line}, from "
+                   f"{other}, from "
                    f"robot_state_publishers in different namespaces; tf frames are not "
                    f"namespaced: give each robot a frame_prefix (ROS 2) or tf_prefix "
                    f"(ROS 1)")

@@ -72,18 +72,48 @@ def only_parse_checked(path: str) -> bool:
 
     relative = os.path.relpath(os.path.abspath(path), folder).replace(os.sep, "/")
     checked = False
+    loops: list[tuple[str, list[str]]] = []
     for name, arguments, _line in commands(text):
         texts = [a.text for a in arguments]
-        if name == "roslaunch_add_file_check":
+        if name == "foreach":
+            loops.append(_loop(texts))
+        elif name == "endforeach":
+            if loops:
+                loops.pop()
+        elif name == "roslaunch_add_file_check":
             for text in texts:
                 if text in _CHECK_KEYWORDS:
                     break
                 checked = checked or os.path.normpath(text).replace(os.sep, "/") == relative
         elif name == "install":
             for text in _installed_items(texts):
-                if "$" in text or "*" in text:
-                    return False
-                named = os.path.normpath(text).replace(os.sep, "/").strip("/")
-                if named and (relative == named or relative.startswith(named + "/")):
-                    return False
+                for item in _expanded(text, loops):
+                    if "$" in item or "*" in item:
+                        return False
+                    named = os.path.normpath(item).replace(os.sep, "/").strip("/")
+                    if named and (relative == named or relative.startswith(named + "/")):
+                        return False
     return checked
+
+
+def _loop(texts: list[str]) -> tuple[str, list[str]]:
+    """A ``foreach(var item...)``: its variable and literal items. A loop over a list
+    variable, ``IN LISTS``, ``RANGE`` or an unresolved item has no items known here, so
+    ``${var}`` stays unresolved in its body."""
+    if not texts:
+        return ("", [])
+    variable, items = texts[0], texts[1:]
+    if any("$" in item or item in ("IN", "RANGE", "LISTS", "ITEMS") for item in items):
+        return (variable, [])
+    return (variable, items)
+
+
+def _expanded(text: str, loops: list[tuple[str, list[str]]]) -> list[str]:
+    """``text`` once per item of the innermost enclosing literal ``foreach`` whose
+    variable it names (``install(DIRECTORY ${dir}/ ...)`` inside ``foreach(dir config
+    launch urdf)``, abb's support packages); itself otherwise."""
+    for variable, items in reversed(loops):
+        reference = "${" + variable + "}"
+        if variable and items and reference in text:
+            return [text.replace(reference, item) for item in items]
+    return [text]
