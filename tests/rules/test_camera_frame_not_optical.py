@@ -44,6 +44,16 @@ def test_ros2_camera_on_its_sensor_link_by_default(tmp_path: Path) -> None:
     assert run(tmp_path, fixed) == []
 
 
+def test_a_sensor_on_a_link_the_robot_lacks_is_never_made(tmp_path: Path) -> None:
+    """unitree go1's <gazebo reference="depthCamera_link_left"> names no link of the
+    robot: Gazebo attaches the block to no link and makes no camera."""
+    fault = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body="")
+    assert len(run(tmp_path, fault)) == 1
+    absent = fault.replace('<gazebo reference="camera_link">',
+                           '<gazebo reference="camera_link_left">')
+    assert run(tmp_path, absent) == []
+
+
 def test_ros1_frame_name_that_lacks_the_optical_rotation(tmp_path: Path) -> None:
     body = "<frameName>camera_link_optical</frameName>"
     fault = ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_openni_kinect.so", body=body)

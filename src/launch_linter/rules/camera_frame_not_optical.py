@@ -200,12 +200,19 @@ def _camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, st
 
 def _plugins(context: RuleContext) -> list[NodeRecord]:
     """The plugins of every description the tree reads (spawned or not: the fault is the
-    description's), once each, in the tree's ROS version where the plugin does not say."""
+    description's), once each, in the tree's ROS version where the plugin does not say;
+    not a sensor's whose ``<gazebo reference>`` names no link of a complete description."""
     ros = next((n.ros for n in context.tree.nodes if n.ros is not None), None)
     seen: set[tuple[str, int]] = set()
     out: list[NodeRecord] = []
     for robot in context.tree.robots:
+        links = {e.name for e in robot.elements if e.kind == "link"}
         for plugin in robot.plugins:
+            reference = plugin.given(SENSOR_LINK)
+            if robot.complete and reference is not None and reference not in links:
+                # Gazebo attaches a <gazebo reference> block to the link of that name: with
+                # no such link (proven: the description is complete) no sensor is made.
+                continue
             if (plugin.path, plugin.line) not in seen:
                 seen.add((plugin.path, plugin.line))
                 out.append(plugin if plugin.ros is not None or ros is None
