@@ -14,29 +14,13 @@ from __future__ import annotations
 
 import os
 
-from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+from launch_linter.workspace.packages import nearest_package_xml
 
 MAX_CMAKE_BYTES = 1024 * 1024
 """The bound cmake_install puts on a CMakeLists.txt (not imported from it: see below)."""
-MAX_PACKAGE_DEPTH = 8
-"""Folders walked up from a launch file to find its package.xml."""
 _CHECK_KEYWORDS = frozenset({"USE_TEST_DEPENDENCIES", "DEPENDENCIES"})
 _INSTALL_LISTS = frozenset({"DIRECTORY", "FILES", "PROGRAMS"})
-
-
-def _package_folder(path: str) -> str | None:
-    folder = os.path.dirname(os.path.abspath(path))
-    for _ in range(MAX_PACKAGE_DEPTH):
-        manifest = os.path.join(folder, "package.xml")
-        reads.note_path(manifest)
-        if os.path.isfile(manifest):
-            return folder
-        parent = os.path.dirname(folder)
-        if parent == folder:
-            return None
-        folder = parent
-    return None
 
 
 def _installed_items(texts: list[str]) -> list[str]:
@@ -56,9 +40,10 @@ def _installed_items(texts: list[str]) -> list[str]:
 
 def only_parse_checked(path: str) -> bool:
     """Whether the launch file ``path`` is proven to be only a parse-check input."""
-    folder = _package_folder(path)
-    if folder is None:
+    manifest = nearest_package_xml(path)
+    if manifest is None:
         return False
+    folder = os.path.dirname(manifest)
     try:
         data = read_regular_file(os.path.join(folder, "CMakeLists.txt"), MAX_CMAKE_BYTES)
     except (OSError, NotRegularFile):
