@@ -70,9 +70,11 @@ class Evaluator:
     """The environment the run is told of (``--env``, and ``ROS_DISTRO`` from
     ``--ros-distro``): a Python comparison of one of its variables is decided, so that a
     branch for another distribution is not taken."""
-    bound: frozenset[str] | None = None
+    bound: Callable[[], frozenset[str] | None] | None = None
     """Every name the module binds anywhere (assignment, import, def, parameter, ...);
-    None when it may bind others unseen (a star import, ``exec``, ``globals()``)."""
+    None when it may bind others unseen (a star import, ``exec``, ``globals()``). Asked
+    only when a name is found nowhere in scope: walking the whole syntax tree costs more
+    than parsing it, and most files never need it."""
     installed: Callable[[], str | None] | None = None
     """Where the file is installed (``share/<pkg>/launch/...``, spelled through the
     package's source folder), which ``__file__`` names; None: where it is read from.

@@ -105,8 +105,9 @@ class Expressions(Evaluator):
                 return "__launch__"
             if name in BUILTINS:
                 return Builtin(name)
-            if (self.bound is not None and not self.branches and name not in self.bound
-                    and name not in PYTHON_BUILTINS):
+            bound = (None if self.bound is None or self.branches or name in PYTHON_BUILTINS
+                     else self.bound())
+            if bound is not None and name not in bound:
                 self.problem("py_name_error", node,
                              f"name '{name}' is bound nowhere in this file (no assignment, "
                              f"import, def or parameter) and is no builtin: Python raises "

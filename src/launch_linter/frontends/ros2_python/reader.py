@@ -89,7 +89,7 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         if comments else ()
     )
     interpreter = Interpreter(path, source, environ=dict(environ or {}),
-                              installed=installed, bound=bound_names(tree))
+                              installed=installed, bound=_once(bound_names, tree))
     actions = _launch_description(interpreter, tree)
     if budget is not None:
         # The interpreter's own step limit bounds one file; the root file's budget bounds
@@ -236,3 +236,16 @@ def _run_launch_description(interpreter: Interpreter, tree: ast.Module) -> tuple
         return (Unfollowed(Where(interpreter.path, result.line, 1),
                            f"the launch description is unknown: {result.describe()}"),)
     return interpreter.actions(result, node)
+
+
+def _once(function: Callable[[ast.Module], frozenset[str] | None],
+          tree: ast.Module) -> Callable[[], frozenset[str] | None]:
+    """``function(tree)``, computed on the first call and kept."""
+    kept: list[frozenset[str] | None] = []
+
+    def value() -> frozenset[str] | None:
+        if not kept:
+            kept.append(function(tree))
+        return kept[0]
+
+    return value
