@@ -96,3 +96,21 @@ def test_builtins_are_those_of_every_python_ros2_runs_on_not_the_running_one() -
 def test_a_builtin_of_a_newer_python_is_silent(tmp_path: Path, use: str) -> None:
     body = f"\ndef generate_launch_description():\n    {use}\n    return LaunchDescription()\n"
     assert _lint(tmp_path, body) == []
+
+
+def test_the_whole_tree_is_walked_only_for_a_name_found_nowhere(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Walking every node of the syntax tree costs more than parsing it: a file whose
+    names are all found in scope never pays for it."""
+    from launch_linter.frontends.ros2_python import names, reader
+
+    walked: list[object] = []
+
+    def counted(tree: object) -> object:
+        walked.append(tree)
+        return names.bound_names(tree)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(reader, "bound_names", counted)
+    assert _lint(tmp_path, RENAMED.replace("decalre_cmd", "declare_cmd")) == []
+    assert walked == []
+    assert _lint(tmp_path, RENAMED) != [] and len(walked) == 1
