@@ -227,6 +227,17 @@ def _exclude_backtracking(folder: Path) -> str:
     return str(sub)
 
 
+def _cmake_loop_installs(folder: Path) -> str:
+    """A package whose CMakeLists.txt (under its 1 MiB bound) names the launch file in
+    roslaunch_add_file_check and wraps 19,000 installs in one loop of 300,000 items: each
+    install expanded per item is 5.7 billion comparisons."""
+    package = _package(folder, "loops")
+    installs = "install(FILES ${d})\n" * 19_000
+    _write(package, "CMakeLists.txt", f"roslaunch_add_file_check(launch/robot.launch)\n"
+                                      f"foreach(d {'d ' * 300_000})\n{installs}endforeach()\n")
+    return _write(package, "launch/robot.launch", f"<launch>{node('n')}</launch>")
+
+
 THIRD_PASS: dict[str, Case] = {
     # Stopped by its own step bound, or on a slow machine by the tree's 5 s first.
     "xacro_doubling": Case("work", _xacro_doubling, "its joints are not read"),
@@ -250,4 +261,5 @@ THIRD_PASS: dict[str, Case] = {
     "gitignore_backtracking": Case("discovery", _gitignore_backtracking),
     "gitignore_folder_stars": Case("discovery", _gitignore_folder_stars),
     "exclude_backtracking": Case("discovery", _exclude_backtracking),
+    "cmake_loop_installs": Case("work", _cmake_loop_installs),
 }

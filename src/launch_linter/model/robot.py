@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from enum import Enum
 
 from launch_linter.model.record import Record, _open, _seal, _set
@@ -392,3 +393,18 @@ class RobotModel(Record):
     @property
     def links(self) -> tuple[RobotElement, ...]:
         return tuple(e for e in self.elements if e.kind == "link")
+
+
+def pose_turn(pose: str) -> tuple[float, float, float] | None:
+    """An SDF ``<pose>``'s roll, pitch and yaw (``x y z roll pitch yaw``); None when it is
+    not six finite numbers."""
+    words = pose.split()
+    if len(words) != 6:
+        return None
+    try:
+        roll, pitch, yaw = (float(w) for w in words[3:])
+    except ValueError:
+        return None
+    if not all(math.isfinite(v) for v in (roll, pitch, yaw)):
+        return None
+    return (roll, pitch, yaw)

@@ -78,13 +78,12 @@ description's prefix): info. None on the corpus (it holds no descriptions).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 
 from launch_linter.knowledge.publish import frames_named
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
-from launch_linter.model.robot import NodeRecord
+from launch_linter.model.robot import NodeRecord, pose_turn
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import entry_of, finding_at_node
 from launch_linter.rules._tree import Edge, Quaternion, edges_of, quaternion_from_ypr, same_rotation
@@ -178,15 +177,10 @@ def camera_in_link(node: NodeRecord) -> Quaternion | None:
         return IDENTITY
     rotation: Quaternion = IDENTITY
     for pose in given.split(";"):
-        words = pose.split()
-        if len(words) != 6:
+        turn = pose_turn(pose)
+        if turn is None:
             return None
-        try:
-            roll, pitch, yaw = (float(w) for w in words[3:])
-        except ValueError:
-            return None
-        if not all(math.isfinite(v) for v in (roll, pitch, yaw)):
-            return None
+        roll, pitch, yaw = turn
         rotation = _product(rotation, quaternion_from_ypr(yaw, pitch, roll))
     return rotation
 

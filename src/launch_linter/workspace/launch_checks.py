@@ -14,29 +14,19 @@ from __future__ import annotations
 
 import os
 
-from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+from launch_linter.workspace.packages import nearest_package_xml
 
 MAX_CMAKE_BYTES = 1024 * 1024
 """The bound cmake_install puts on a CMakeLists.txt (not imported from it: see below)."""
-MAX_PACKAGE_DEPTH = 8
-"""Folders walked up from a launch file to find its package.xml."""
+MAX_LOOP_DEPTH = 16
+"""Nested ``foreach`` loops followed; deeper, an install in them is not read (no proof)."""
+MAX_INSTALLED = 20_000
+"""Install items (after expanding loops) compared with the file: a file whose loops make
+more proves nothing (without the bound a 1 MiB file of one long loop around many installs
+is a billion comparisons)."""
 _CHECK_KEYWORDS = frozenset({"USE_TEST_DEPENDENCIES", "DEPENDENCIES"})
 _INSTALL_LISTS = frozenset({"DIRECTORY", "FILES", "PROGRAMS"})
-
-
-def _package_folder(path: str) -> str | None:
-    folder = os.path.dirname(os.path.abspath(path))
-    for _ in range(MAX_PACKAGE_DEPTH):
-        manifest = os.path.join(folder, "package.xml")
-        reads.note_path(manifest)
-        if os.path.isfile(manifest):
-            return folder
-        parent = os.path.dirname(folder)
-        if parent == folder:
-            return None
-        folder = parent
-    return None
 
 
 def _installed_items(texts: list[str]) -> list[str]:
@@ -56,9 +46,10 @@ def _installed_items(texts: list[str]) -> list[str]:
 
 def only_parse_checked(path: str) -> bool:
     """Whether the launch file ``path`` is proven to be only a parse-check input."""
-    folder = _package_folder(path)
-    if folder is None:
+    manifest = nearest_package_xml(path)
+    if manifest is None:
         return False
+    folder = os.path.dirname(manifest)
     try:
         data = read_regular_file(os.path.join(folder, "CMakeLists.txt"), MAX_CMAKE_BYTES)
     except (OSError, NotRegularFile):
@@ -73,9 +64,12 @@ def only_parse_checked(path: str) -> bool:
     relative = os.path.relpath(os.path.abspath(path), folder).replace(os.sep, "/")
     checked = False
     loops: list[tuple[str, list[str]]] = []
+    compared = 0
     for name, arguments, _line in commands(text):
         texts = [a.text for a in arguments]
         if name == "foreach":
+            if len(loops) >= MAX_LOOP_DEPTH:
+                return False
             loops.append(_loop(texts))
         elif name == "endforeach":
             if loops:
@@ -87,7 +81,11 @@ def only_parse_checked(path: str) -> bool:
                 checked = checked or os.path.normpath(text).replace(os.sep, "/") == relative
         elif name == "install":
             for text in _installed_items(texts):
-                for item in _expanded(text, loops):
+                items = _expanded(text, loops)
+                compared += len(items)
+                if compared > MAX_INSTALLED:
+                    return False
+                for item in items:
                     if "$" in item or "*" in item:
                         return False
                     named = os.path.normpath(item).replace(os.sep, "/").strip("/")

@@ -14,6 +14,7 @@ from launch_linter.model.robot import (
     NodeRecord,
     RobotElement,
     RobotJoint,
+    pose_turn,
 )
 from launch_linter.model.transform import Condition, ConditionLiteral
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml
@@ -200,7 +201,7 @@ def _sensor_pose(sensor: ExpandedNode) -> str | None:
     """The poses that place a sensor's camera in its link (:data:`SENSOR_POSE_PARAM`);
     None when the sensor gives none."""
     poses = [_pose_text(child) for child in sensor.children if child.tag == "pose"]
-    turns = {_turn(_pose_text(pose)) for child in sensor.children if child.tag == "camera"
+    turns = {pose_turn(_pose_text(pose)) for child in sensor.children if child.tag == "camera"
              for pose in child.children if pose.tag == "pose"}
     cameras = [child for child in sensor.children if child.tag == "camera"]
     if any(not any(c.tag == "pose" for c in camera.children) for camera in cameras):
@@ -215,20 +216,6 @@ def _sensor_pose(sensor: ExpandedNode) -> str | None:
     if turn is not None:
         poses.append(f"0 0 0 {turn[0]} {turn[1]} {turn[2]}")
     return ";".join(poses)
-
-
-def _turn(pose: str) -> tuple[float, float, float] | None:
-    """A pose's roll, pitch and yaw; None when it is not six finite numbers."""
-    words = pose.split()
-    if len(words) != 6:
-        return None
-    try:
-        roll, pitch, yaw = (float(w) for w in words[3:])
-    except ValueError:
-        return None
-    if not all(math.isfinite(v) for v in (roll, pitch, yaw)):
-        return None
-    return (roll, pitch, yaw)
 
 
 def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
