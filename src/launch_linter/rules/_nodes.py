@@ -95,7 +95,6 @@ class Lookup(Record):
 class NodeView(Record):
     edges: tuple[NodeEdge, ...]
     lookups: tuple[Lookup, ...]
-    cameras: tuple[Lookup, ...]
     unknown: tuple[NodeRecord, ...]
     """Nodes the knowledge base does not know: each may publish tf."""
     unsure: tuple[NodeRecord, ...]
@@ -103,20 +102,18 @@ class NodeView(Record):
     joint_states: bool
     """Whether a node the knowledge base knows publishes ``/joint_states``."""
 
-    __slots__ = ("edges", "lookups", "cameras", "unknown", "unsure", "joint_states")
+    __slots__ = ("edges", "lookups", "unknown", "unsure", "joint_states")
 
     def __init__(
         self,
         edges: tuple[NodeEdge, ...],
         lookups: tuple[Lookup, ...],
-        cameras: tuple[Lookup, ...],
         unknown: tuple[NodeRecord, ...],
         unsure: tuple[NodeRecord, ...],
         joint_states: bool,
     ) -> None:
         _set(self, "edges", edges)
         _set(self, "lookups", lookups)
-        _set(self, "cameras", cameras)
         _set(self, "unknown", unknown)
         _set(self, "unsure", unsure)
         _set(self, "joint_states", joint_states)
@@ -153,7 +150,6 @@ def entry_of(context: RuleContext, node: NodeRecord) -> Entry | None:
 def _view(context: RuleContext) -> NodeView:
     edges: list[NodeEdge] = []
     lookups: list[Lookup] = []
-    cameras: list[Lookup] = []
     unknown: list[NodeRecord] = []
     unsure: list[NodeRecord] = []
     joint_states = False
@@ -186,9 +182,7 @@ def _view(context: RuleContext) -> NodeView:
                                       node, entry, edge.signature not in proven, edge.spec))
         lookups.extend(Lookup(f, p, node, entry)
                        for f, p in frames_named(entry, node, lookup_templates(entry, node)))
-        cameras.extend(Lookup(f, p, node, entry)
-                       for f, p in frames_named(entry, node, entry.camera_frames))
-    return NodeView(tuple(edges), tuple(lookups), tuple(cameras), tuple(unknown),
+    return NodeView(tuple(edges), tuple(lookups), tuple(unknown),
                     tuple(unsure), joint_states)
 
 
