@@ -195,7 +195,7 @@ def listed_parameters(entry: Entry, node: NodeRecord) -> list[str]:
     (``global_costmap/observation_sources: scan`` names
     ``global_costmap/scan/sensor_frame``)."""
     separator = "." if node.ros == 2 else "/"
-    out: list[str] = []
+    out: dict[str, None] = {}  # ordered and without repeats: a list may be long
     for pattern, frame in entry.looks_up_listed:
         wanted = pattern.split("/")
         for name, value in node.params:
@@ -204,10 +204,8 @@ def listed_parameters(entry: Entry, node: NodeRecord) -> list[str]:
                     w in ("*", p) for w, p in zip(wanted, parts)):
                 continue
             for item in value.split():
-                named = separator.join([*parts[:-1], item, frame])
-                if named not in out:
-                    out.append(named)
-    return out
+                out[separator.join([*parts[:-1], item, frame])] = None
+    return list(out)
 
 
 def lookup_templates(entry: Entry, node: NodeRecord) -> tuple[str, ...]:

@@ -231,13 +231,11 @@ def frame_parameters(entry: Entry, node: NodeRecord | None = None) -> list[str]:
     """The parameters of ``entry`` that name frames: those in its published edges, its
     lookups, its camera frames and the frames it stamps on its data (a parameter used only
     as a switch is not one); with ``node``, also those its list parameters name."""
-    names: list[str] = []
+    names: dict[str, None] = {}  # ordered and without repeats
     templates = [t for spec in entry.publishes for t in (spec.parent, spec.child)]
     for template in (templates + list(entry.looks_up) + list(entry.camera_frames)
                      + list(entry.header_frames)):
-        for name in PLACEHOLDER.findall(template):
-            if name not in names:
-                names.append(name)
+        names.update(dict.fromkeys(PLACEHOLDER.findall(template)))
     if node is not None:
-        names.extend(n for n in listed_parameters(entry, node) if n not in names)
-    return names
+        names.update(dict.fromkeys(listed_parameters(entry, node)))
+    return list(names)
