@@ -147,8 +147,11 @@ def with_macro_definitions(tree: LaunchTree, found: list[Diagnostic]) -> list[Di
     for diagnostic in found:
         places = (Location(diagnostic.path, diagnostic.line, diagnostic.column),
                   *diagnostic.related)
-        more = [written[p] for p in places if p in written]
-        more = [m for i, m in enumerate(more) if m not in places and m not in more[:i]]
+        given = set(places)
+        # In order, without repeats and without the places already named: linear, since
+        # a frame's rivals (multiple_parents' related places) are as many as the input.
+        more = list(dict.fromkeys(written[p] for p in places
+                                  if p in written and written[p] not in given))
         if more:
             diagnostic = replace(diagnostic, related=(*diagnostic.related, *more))
         out.append(diagnostic)
