@@ -181,6 +181,30 @@ def test_a_required_argument_an_include_does_not_pass(load: Load) -> None:
     assert "missing required argument" in tree.problems[0].message
 
 
+def test_the_command_line_does_not_satisfy_an_included_required_argument(load: Load) -> None:
+    # launch/actions/include_launch_description.py (ros2/launch, dashing 2e12986 to rolling
+    # 02595ba): execute() compares the declared arguments only with the include's own
+    # launch_arguments, never with context.launch_configurations, where `ros2 launch`
+    # put the command line's values: the include still raises.
+    tree = load({
+        "a.launch.xml": launch('  <let name="robot" value="r"/>\n  <include file="b.launch.xml"/>'),
+        "b.launch.xml": launch('  <arg name="frame"/>'),
+    }, "a.launch.xml", args={"frame": "x"})
+    assert rules(tree) == [("roslaunch_error", 3)]
+
+
+def test_the_command_line_value_reaches_an_included_file(load: Load) -> None:
+    # DeclareLaunchArgument keeps a value already set (the command line's) over its default.
+    tree = load({
+        "a.launch.xml": launch('  <let name="robot" value="r"/>\n  <include file="b.launch.xml"/>'),
+        "b.launch.xml": launch(
+            '  <arg name="frame" default="d"/>\n'
+            f'  <node {TF} name="t" args="--frame-id $(var frame) --child-frame-id c"/>'),
+    }, "a.launch.xml", args={"frame": "x"})
+    assert rules(tree) == []
+    assert by_name(tree)["t"].parent == "x"
+
+
 def test_include_cycles_and_missing_files(load: Load) -> None:
     tree = load({
         "a.launch.xml": launch(
