@@ -304,6 +304,37 @@ _TRUE_WORDS = ("true", "1", "yes", "on")
 _FALSE_WORDS = ("false", "0", "no", "off")
 
 
+def _refusal(call: Call) -> str | None:
+    """Why launch refuses this one call (an unknown name, a wrong number of arguments),
+    or None."""
+    if call.name == "arg":
+        return ("ROS 1's '$(arg)' in a ROS 2 launch file: launch stops with 'Unknown "
+                "substitution: arg'; ROS 2 reads a launch argument with '$(var NAME)'")
+    if call.name not in _ARITY:
+        return f"unknown substitution '$({call.name})'"
+    low, high = _ARITY[call.name]
+    if not low <= len(call.args) <= high:
+        expected = str(low) if low == high else f"{low} to {high}"
+        return f"'$({call.name})' takes {expected} argument(s), not {len(call.args)}"
+    return None
+
+
+def first_refusal(subs: Subs) -> str | None:
+    """Why launch refuses these substitutions when it parses them, nested ones included,
+    or None: the frontend's parser instantiates every substitution of an attribute while
+    it parses the file (``instantiate_substitution`` raises 'Unknown substitution', a
+    substitution's ``parse`` a wrong argument count), before any action runs."""
+    pending: list[Subs] = [subs]
+    while pending:
+        for sub in pending.pop():
+            if isinstance(sub, Call):
+                refusal = _refusal(sub)
+                if refusal is not None:
+                    return refusal
+                pending.extend(sub.args)
+    return None
+
+
 def _hole(call: Call, reason: str) -> Value:
     return (Hole(call.written, reason),)
 
@@ -342,18 +373,9 @@ class _Resolver:
         return value if text is None else text
 
     def call(self, call: Call) -> Value:
-        if call.name == "arg":
-            raise SubstitutionError(
-                "ROS 1's '$(arg)' in a ROS 2 launch file: launch stops with 'Unknown "
-                "substitution: arg'; ROS 2 reads a launch argument with '$(var NAME)'")
-        if call.name not in _ARITY:
-            raise SubstitutionError(f"unknown substitution '$({call.name})'")
-        low, high = _ARITY[call.name]
-        if not low <= len(call.args) <= high:
-            expected = str(low) if low == high else f"{low} to {high}"
-            raise SubstitutionError(
-                f"'$({call.name})' takes {expected} argument(s), not {len(call.args)}"
-            )
+        refusal = _refusal(call)
+        if refusal is not None:
+            raise SubstitutionError(refusal)
         if call.name in _RUNTIME_ONLY:
             return _hole(call, _RUNTIME_ONLY[call.name])
         handler = getattr(self, "_" + call.name.replace("-", "_"))

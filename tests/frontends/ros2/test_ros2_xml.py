@@ -358,3 +358,41 @@ def test_executable_ros2_run_forms(load: Load, executable: str,
                                    expected: list[tuple[str, str]]) -> None:
     tree = load({"a.launch.xml": launch(f"  <executable {executable}/>")}, "a.launch.xml")
     assert [(t.parent, t.child) for t in tree.transforms] == expected
+
+
+def test_a_refused_substitution_is_reported_where_it_is_written(load: Load) -> None:
+    # launch's parser instantiates each substitution while it parses the file
+    # (launch/frontend/expose.py, instantiate_substitution: 'Unknown substitution'), so the
+    # fault is the attribute's, not the node's; each place that writes it is named once.
+    tree = load({"a.launch.xml": launch(
+        '  <arg name="params" default="p.yaml"/>\n'
+        '  <node pkg="demo" exec="talker" name="t">\n'
+        '    <param from="$(arg params)"/>\n'
+        '    <param name="a" value="$(var params x y)"/>\n'
+        '  </node>\n'
+        '  <node pkg="demo" exec="listener" name="l">\n'
+        '    <param from="$(arg params)"/>\n'
+        '  </node>')}, "a.launch.xml")
+    assert rules(tree) == [("roslaunch_error", 4), ("roslaunch_error", 5),
+                           ("roslaunch_error", 8)]
+    assert "'$(var)' takes 1 to 2 argument(s), not 3" in tree.problems[1].message
+
+
+def test_a_substitution_launch_knows_is_not_reported(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <arg name="params" default="p.yaml"/>\n'
+        '  <node pkg="demo" exec="talker" name="t">\n'
+        '    <param from="$(var params)"/>\n'
+        '  </node>')}, "a.launch.xml")
+    assert rules(tree) == []
+
+
+def test_a_refused_substitution_in_yaml_is_reported_at_its_entry(load: Load) -> None:
+    tree = load({"a.launch.yaml": (
+        "launch:\n"
+        "- node:\n"
+        "    pkg: demo\n"
+        "    exec: talker\n"
+        "    param:\n"
+        "    - from: $(arg params)\n")}, "a.launch.yaml")
+    assert rules(tree) == [("roslaunch_error", 6)]
