@@ -48,7 +48,9 @@ def test_python_parameter_read_never_declared_is_an_error(tmp_path: Path) -> Non
     ])
 """)
     ((name, line, level, message),) = _lint(tmp_path, {"a.launch.py": text}, "a.launch.py")
-    assert (name, line, level) == ("a.launch.py", 13, "error")
+    # At the LaunchConfiguration that names it (where a default or the right name is
+    # written), not at the Node that performs it: launch's error names no place.
+    assert (name, line, level) == ("a.launch.py", 11, "error")
     assert "launch configuration 'use_sim_time' does not exist" in message
     assert "a.launch.py" in message
 
@@ -266,7 +268,23 @@ def test_include_passing_its_own_read_does_not_declare_it(tmp_path: Path) -> Non
 """)
     files = {"inner.launch.xml": inner, "outer.launch.py": outer}
     ((name, line, level, _),) = _lint(tmp_path, files, "outer.launch.py")
-    assert (name, line, level) == ("outer.launch.py", 12, "error")
+    assert (name, line, level) == ("outer.launch.py", 14, "error")
+
+
+def test_one_python_launch_configuration_read_by_several_actions_is_one_finding(
+        tmp_path: Path) -> None:
+    text = _py("""    prefix = LaunchConfiguration('prefix')
+    return LaunchDescription([
+        DeclareLaunchArgument('gui'),
+        Node(package='foo', executable='a', name=prefix,
+             condition=IfCondition(LaunchConfiguration('gui'))),
+        Node(package='foo', executable='b', parameters=[{'frame': prefix}]),
+    ])
+""")
+    # One place: reported once, and for sure, since the second Node always runs.
+    assert [(name, line, level) for name, line, level, _ in
+            _lint(tmp_path, {"a.launch.py": text}, "a.launch.py")] == [
+        ("a.launch.py", 11, "error")]
 
 
 def test_only_what_was_not_followed_before_the_read_makes_it_an_info(tmp_path: Path) -> None:

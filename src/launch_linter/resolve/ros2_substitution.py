@@ -19,7 +19,7 @@ import os
 import re
 import shlex
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Tuple, Union
 
 from launch_linter.model.budget import Budget
@@ -56,6 +56,9 @@ class Call:
     name: str
     args: tuple[Subs, ...]
     written: str
+    at: tuple[int, int] | None = field(default=None, compare=False)
+    """(line, column) where the substitution is made, in the file of the action that
+    performs it (a Python ``LaunchConfiguration(...)``); None: the action's own place."""
 
 
 @dataclass(frozen=True)
@@ -93,10 +96,11 @@ class Ros2Scope:
     filename: str
     budget: Budget | None = None
     """The root file's work budget, charged before a value is built."""
-    missing: Callable[[str], None] | None = None
-    """Told the name of each launch configuration read without a default where none is
-    set: launch's ``LaunchConfiguration.perform`` raises "launch configuration '…' does not
-    exist" there (the loader decides whether anything could have set it)."""
+    missing: Callable[[str, tuple[int, int] | None], None] | None = None
+    """Told the name (and the call's ``at``) of each launch configuration read without a
+    default where none is set: launch's ``LaunchConfiguration.perform`` raises "launch
+    configuration '…' does not exist" there (the loader decides whether anything could
+    have set it)."""
 
 
 def literal(text: str) -> Subs:
@@ -392,7 +396,7 @@ class _Resolver:
         if len(call.args) == 2:
             return self.value(call.args[1])
         if self.scope.missing is not None:
-            self.scope.missing(name)
+            self.scope.missing(name, call.at)
         return _hole(
             call,
             f"launch argument '{name}' is not set (give it with --arg {name}:=VALUE)",
