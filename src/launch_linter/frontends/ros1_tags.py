@@ -48,6 +48,22 @@ _PARAM_SOURCES = ("textfile", "binfile", "command")
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
 
 
+
+def nodelet_type(package: str, executable: str, args: Value | None) -> str | None:
+    """The nodelet a ``nodelet nodelet`` process runs: ``load TYPE MANAGER`` loads TYPE
+    into the manager under the process's own node name, ``standalone TYPE`` runs it in
+    the process (ros/nodelet_core noetic-devel c7973f0, nodelet/src/nodelet.cpp 106-134,
+    322-343); its private parameters are the node element's. None for a manager, another
+    program, or arguments not known."""
+    if package != "nodelet" or executable != "nodelet" or args is None:
+        return None
+    text = resolved_text(args)
+    words = [] if text is None else text.split()
+    if (len(words) >= 3 and words[0] == "load") or (len(words) >= 2 and words[0] == "standalone"):
+        return words[1]
+    return None
+
+
 class Ros1Tags(Ros1Base):
     """The tags of a launch file, walked in order as roslaunch does."""
 
@@ -287,10 +303,10 @@ class Ros1Tags(Ros1Base):
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str,
-                    namespace: str | None) -> None:
+                    namespace: str | None, plugin: str | None = None) -> None:
         """Keep a launched node with the parameters it is given inside its element
         (``<param>``, ``<rosparam>`` text and files); the knowledge base tells which of
-        them matter."""
+        them matter. ``plugin``: the nodelet it runs (:func:`nodelet_type`)."""
         params: list[tuple[str, str]] = []
         unread: list[str] = []
         lines: list[tuple[str, str, int, int]] = []
@@ -322,6 +338,7 @@ class Ros1Tags(Ros1Base):
             path, element.line, element.column, package,
             executable, name, tuple(params), _conjoin(context.condition, condition),
             unread=tuple(unread), namespace=namespace, ros=1, param_lines=tuple(lines),
+            plugin=plugin,
         ))
 
     def _rosparam_values(self, element: Element, context: _Context
