@@ -18,9 +18,10 @@ from typing import Tuple, Union
 
 from launch_linter.engine import LintResult
 from launch_linter.model.launch import LaunchTree
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _set, replace
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.rules._prefixes import description_prefixes, prefixed
 
 TfEdge = Union[StaticTransform, RobotJoint]
 """A static transform of a launch file, or a URDF joint a robot_state_publisher publishes."""
@@ -41,12 +42,31 @@ def tree_edges(tree: LaunchTree) -> list[TfEdge]:
     reached twice with the same values is one edge)."""
     seen: set[Identity] = set()
     out: list[TfEdge] = []
-    every: list[TfEdge] = [*tree.transforms, *tree.joints]
+    every: list[TfEdge] = [*tree.transforms, *published_joints(tree)]
     for edge in every:
         identity = edge_identity(edge)
         if identity not in seen:
             seen.add(identity)
             out.append(edge)
+    return out
+
+
+def published_joints(tree: LaunchTree) -> list[RobotJoint]:
+    """The tree's URDF joints with the frames their robot_state_publisher sends: under its
+    prefix (one joint per publisher of the description); a joint whose prefix is unknown
+    as written."""
+    prefixes = description_prefixes(tree)
+    if not prefixes:
+        return list(tree.joints)
+    ros = next((n.ros for n in tree.nodes if n.ros is not None), None)
+    out: list[RobotJoint] = []
+    for joint in tree.joints:
+        for prefix in prefixes.get(id(joint.source), ("",)):
+            if not prefix or joint.parent is None or joint.child is None:
+                out.append(joint)
+            else:
+                out.append(replace(joint, parent=prefixed(prefix, joint.parent, ros),
+                                   child=prefixed(prefix, joint.child, ros)))
     return out
 
 

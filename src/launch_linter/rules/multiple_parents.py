@@ -171,11 +171,11 @@ def _kdl_keeps(edge: Edge, rivals: list[tuple[str, Edge]], context: RuleContext)
                             for _, r in rivals):
         return None
     kept = max((j for j in context.tree.joints
-                if j.source == joint.source and j.child == edge.child and j.parent is not None),
+                if j.source == joint.source and j.child == joint.child and j.parent is not None),
                key=lambda j: j.name, default=None)
     if kept is None:
         return None
-    return (f"robot_state_publisher (urdfdom, then KDL) keeps one: '{edge.child}' under "
+    return (f"robot_state_publisher (urdfdom, then KDL) keeps one: '{joint.child}' under "
             f"'{kept.parent}' by joint '{kept.name}', the name that sorts last")
 
 
