@@ -177,3 +177,46 @@ def test_kobuki_plugin_publishes_odometry_under_its_namespace_up_to_melodic(
     assert kobuki(tmp_path, on, "robot_1/map", "robot_1/base_footprint", "noetic") == []
     found = kobuki(tmp_path, on, "map", "base_footprint", "noetic")
     assert [rule for _, _, rule, _ in found] == ["node_second_parent"]
+
+
+TWO_ROBOTS = """<launch>
+  <param name="robot_description" textfile="$(dirname)/r.urdf"/>
+  <group ns="robot_0">
+    <param name="tf_prefix" value="robot_0"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  </group>
+  <group ns="robot_1">
+    <param name="tf_prefix" value="robot_1"/>
+    <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+  </group>
+</launch>
+"""
+FAULTY = """<robot name="r">
+  <link name="base_link"/><link name="camera_link"/><link name="other"/>
+  <joint name="camera_joint" type="fixed">
+    <parent link="base_link"/><child link="camera_link"/>
+    <origin xyz="0 0 0" rpy="0 0 3.14"/>
+  </joint>
+  <joint name="second" type="fixed">
+    <parent link="other"/><child link="camera_link"/>
+  </joint>
+</robot>
+"""
+
+
+def test_a_description_fault_is_one_finding_however_many_publishers_prefix_it(
+        tmp_path: Path) -> None:
+    """One description published under two prefixes (one robot_state_publisher per
+    robot, each finding the root description): its own faults are found once, under its
+    frames as written, as on the description alone."""
+    (tmp_path / "r.urdf").write_text(FAULTY)
+    (tmp_path / "a.launch").write_text(TWO_ROBOTS)
+    found = lint_paths([str(tmp_path / "a.launch")], LintOptions(package_paths=())).diagnostics
+    rules = sorted(d.rule for d in found if d.rule in ("rounded_pi", "multiple_parents"))
+    assert rules == ["multiple_parents", "rounded_pi"]
+    assert not [d for d in found if d.rule in rules
+                and ("robot_0" in d.message or "robot_1" in d.message)]
+    result = lint_paths([str(tmp_path / "a.launch")], LintOptions(package_paths=()))
+    edges = {(e.edge.parent, e.edge.child) for e in published(result)}
+    assert {("robot_0/base_link", "robot_0/camera_link"),
+            ("robot_1/base_link", "robot_1/camera_link")} <= edges

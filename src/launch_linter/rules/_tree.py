@@ -205,6 +205,33 @@ def edges_of(context: RuleContext) -> tuple[Edge, ...]:
     return context.derived(_published_edges)
 
 
+def _written(context: RuleContext) -> tuple[Edge, ...]:
+    seen: set[int] = set()
+    out: list[Edge] = []
+    for edge in edges_of(context):
+        if edge.joint is not None:
+            if id(edge.joint) in seen:
+                continue
+            seen.add(id(edge.joint))
+            edge = as_written(edge)
+        out.append(edge)
+    return tuple(out)
+
+
+def written_edges(context: RuleContext) -> tuple[Edge, ...]:
+    """The tree's edges with each URDF joint once, under its frames as the description
+    writes them: for the rules that judge a joint by its own values, or joints against
+    each other (one defect of the description, however many publishers prefix it, and
+    the same finding as on the description linted alone)."""
+    return context.derived(_written)
+
+
+def joints_only(edge: Edge, others: typing.Iterable[Edge]) -> bool:
+    """Whether a finding on ``edge`` against ``others`` is among URDF joints alone (found
+    on :func:`written_edges`, not again under each publisher's prefix)."""
+    return edge.joint is not None and all(other.joint is not None for other in others)
+
+
 def coexist(a: Edge, b: Edge) -> bool:
     return not a.condition.excludes(b.condition)
 
