@@ -227,9 +227,10 @@ def finding_at_param(node: NodeRecord, name: str, message: str) -> Finding:
                    related=(Location(node.path, node.line, node.column),))
 
 
-def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
-    """The node side of one tree, outside a rule run (``transforms``, ``graph``)."""
-    return nodes_of(RuleContext(tree, knowledge=knowledge))
+def view_of(tree: LaunchTree, knowledge: KnowledgeBase, distro: str | None = None) -> NodeView:
+    """The node side of one tree, outside a rule run (``transforms``, ``graph``), for the
+    target distribution ``distro`` where a prefix depends on it."""
+    return nodes_of(RuleContext(tree, knowledge=knowledge, distro=distro))
 
 
 def frame_parameters(entry: Entry, node: NodeRecord | None = None) -> list[str]:
