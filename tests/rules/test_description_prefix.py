@@ -220,3 +220,23 @@ def test_a_description_fault_is_one_finding_however_many_publishers_prefix_it(
     edges = {(e.edge.parent, e.edge.child) for e in published(result)}
     assert {("robot_0/base_link", "robot_0/camera_link"),
             ("robot_1/base_link", "robot_1/camera_link")} <= edges
+
+
+def test_searchparam_order_own_tf_prefix_then_the_closest_namespace(tmp_path: Path) -> None:
+    """robot_state_publisher's own ``tf_prefix`` wins over its group's, and a group's over
+    the root's, whatever the order of the ``<param>`` lines."""
+    (tmp_path / "r.urdf").write_text(URDF)
+    description = '<param name="robot_description" textfile="$(dirname)/r.urdf"/>'
+    rsp = '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp">{}</node>'
+    (tmp_path / "a.launch").write_text(f"""<launch>
+  <param name="tf_prefix" value="top"/>
+  <group ns="r1"><param name="tf_prefix" value="group"/>{description}
+    {rsp.format('<param name="tf_prefix" value="own"/>')}</group>
+  <group ns="r2">{description}{rsp.format('')}</group>
+  <group ns="r3"><group ns="inner">{description}{rsp.format('')}</group>
+    <param name="tf_prefix" value="three"/></group>
+</launch>
+""")
+    result = lint_paths([str(tmp_path / "a.launch")], LintOptions(package_paths=()))
+    children = sorted(e.edge.child for e in published(result))
+    assert children == ["own/base_link", "three/base_link", "top/base_link"]
