@@ -24,6 +24,9 @@ PUBLISHER = "robot_state_publisher"
 NO_FRAME_PREFIX = ("dashing", "eloquent")
 """ROS 2 distributions whose robot_state_publisher has no ``frame_prefix`` (added in 2.5.0,
 ros/robot_state_publisher#159, backported to foxy in 2.4.5, August 2021)."""
+MAX_PREFIXES = 64
+"""Prefixed copies of one description kept per tree (bounded work: one description
+published by thousands of robot_state_publishers gives the first 64 robots' frames)."""
 PREFIX_PARAMS = {1: "tf_prefix", 2: "frame_prefix"}
 """The parameter that prefixes robot_state_publisher's frames, by ROS version; each
 version ignores the other's (ros/robot_state_publisher#192)."""
@@ -65,29 +68,24 @@ def _inside(namespace: str, outer: str) -> bool:
     return not outer or namespace == outer or namespace.startswith(outer + "/")
 
 
-def readers(source: DescriptionSource, sources: list[DescriptionSource],
-            nodes: list[NodeRecord]) -> list[NodeRecord]:
-    """The robot_state_publishers of ``nodes`` that publish ``source``: the node given it
-    by name, else (ROS 1) those whose ``searchParam`` finds it first from their namespace
-    up; empty when the linter cannot tell."""
-    if source.node is not None:
-        return [n for n in nodes if n.name == source.node]
-    if source.namespace is None:
-        return []
-    mine = source.namespace.strip("/")
-    out: list[NodeRecord] = []
-    for node in nodes:
-        if node.namespace is None:
+def source_read_by(node: NodeRecord, sources: list[DescriptionSource]
+                   ) -> DescriptionSource | None:
+    """The description robot_state_publisher ``node`` publishes: the one given to it by
+    name, else (ROS 1) the one ``searchParam`` finds first from its namespace up (the
+    closest namespace around it); None when the linter cannot tell."""
+    named = next((s for s in sources if s.node is not None and s.node == node.name), None)
+    if named is not None or node.namespace is None:
+        return named
+    here = node.namespace.strip("/")
+    best: DescriptionSource | None = None
+    for source in sources:
+        if source.node is not None or source.namespace is None:
             continue
-        here = node.namespace.strip("/")
-        if not _inside(here, mine):
-            continue
-        closer = [s for s in sources if s.namespace is not None and s.node is None
-                  and len(s.namespace.strip("/")) > len(mine)
-                  and _inside(here, s.namespace.strip("/"))]
-        if not closer:
-            out.append(node)
-    return out
+        mine = source.namespace.strip("/")
+        if _inside(here, mine) and (best is None or len(mine) > len(
+                (best.namespace or "").strip("/"))):
+            best = source
+    return best
 
 
 def description_prefixes(tree: LaunchTree, distro: str | None = None
@@ -104,13 +102,17 @@ def description_prefixes(tree: LaunchTree, distro: str | None = None
     for joint in tree.joints:
         if not sources or sources[-1] is not joint.source:
             sources.append(joint.source)
+    # Each publisher once against each description (both bounded: descriptions by the
+    # tree's limit), not each description against every pair.
+    found: dict[int, dict[str | None, None]] = {}
+    for node in nodes:
+        source = source_read_by(node, sources)
+        if source is not None:
+            found.setdefault(id(source), {})[by_node[id(node)]] = None
+    alike = len(set(prefixes)) == 1
     out: dict[int, tuple[str | None, ...]] = {}
     for source in sources:
-        found = readers(source, sources, nodes)
-        if found:
-            out[id(source)] = tuple(dict.fromkeys(by_node[id(n)] for n in found))
-        elif len(set(prefixes)) == 1:
-            out[id(source)] = (prefixes[0],)
-        else:
-            out[id(source)] = (None,)
+        mine = found.get(id(source))
+        out[id(source)] = (tuple(mine)[:MAX_PREFIXES] if mine else (prefixes[0],) if alike
+                           else (None,))
     return out

@@ -14,9 +14,9 @@ from collections.abc import Sequence
 
 from launch_linter.frontends.params import ros1_controllers
 from launch_linter.frontends.robot.describe import (
+    SearchedPrefixes,
     Word,
     literal_kind,
-    searched_tf_prefix,
     xacro_command,
 )
 from launch_linter.model.record import replace
@@ -188,13 +188,14 @@ def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, st
             by_name.setdefault(part, []).append(("/".join(parts[i + 1:]), value))
     out: list[NodeRecord] = []
     managed = False
+    searched = SearchedPrefixes(tf_prefixes)
     for node in nodes:
         extra = tuple(by_name.get(node.name, ())) if node.name is not None else ()
-        if (node.package == "robot_state_publisher" and tf_prefixes
+        if (node.package == "robot_state_publisher" and searched
                 and node.given(TF_PREFIX) is None and all(k != TF_PREFIX for k, _ in extra)):
             # searchParam from the node's private namespace up: its own tf_prefix first,
             # else the one set in the closest namespace around it.
-            found = _searched(node.namespace, tf_prefixes)
+            found = _searched(node.namespace, searched)
             if found:
                 extra += ((TF_PREFIX, found),)
         if extra or unread:
@@ -207,14 +208,14 @@ def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, st
     return out
 
 
-def _searched(namespace: str | None, tf_prefixes: Sequence[tuple[str | None, str]]) -> str:
+def _searched(namespace: str | None, tf_prefixes: SearchedPrefixes) -> str:
     """The ``tf_prefix`` searchParam finds from ``namespace`` up (unknown when the
-    namespace is not resolved and one is set below the root)."""
+    namespace is not resolved, unless every one is set at the root)."""
     if namespace is None:
-        if any(scope is None or scope.strip("/") for scope, _ in tf_prefixes):
+        if tf_prefixes.unknown or set(tf_prefixes.by_scope) - {""}:
             return UNKNOWN_VALUE
         namespace = "/"
-    return searched_tf_prefix(namespace, tf_prefixes)
+    return tf_prefixes.find(namespace)
 
 
 def from_file_value(value: Value, path: str, line: int, column: int, condition: Condition,
