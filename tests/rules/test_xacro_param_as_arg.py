@@ -43,6 +43,17 @@ def test_an_arg_of_that_name_declared_still_leaves_the_parameter_ignored() -> No
     assert found.severity.value == "warning"
 
 
+def test_an_arg_the_body_declares_from_the_parameter_is_still_the_first_calls() -> None:
+    macro = ('<xacro:macro name="m" params="side">\n<xacro:arg name="side" default="${side}"/>\n'
+             '<link name="$(arg side)_wheel"/>\n</xacro:macro>\n'
+             '<xacro:m side="left"/><xacro:m side="right"/>')
+    (found,) = lint_urdf(robot(macro), RULE)
+    assert found.line == 4
+    # xacro would make left_wheel twice: the second call's 'right' is ignored.
+    (twice,) = lint_urdf(robot(macro), "urdf_duplicate_name")
+    assert "left_wheel" in twice.message
+
+
 def test_every_default_form_counts_and_block_parameters_do_not() -> None:
     for params in ("name parent:=base_link", "name parent:=^", "name parent:=^|base_link",
                    "name parent:='base_link'", "name parent=base_link"):

@@ -5,8 +5,10 @@ Reports, in the body of a `xacro:macro`, each `$(arg X)` where X is a parameter 
 macro (or of a macro it is defined in), with or without a default (`X:=v`, `X:=^`,
 `X:=^|v`), at the line the `$(arg X)` is written on. Block parameters (`*X`, `**X`) are
 not values and do not count; a `$(arg X)` in the `params` default of the outermost macro
-is read where the macro is called, as meant. It is found in every macro of the files a
-description reads, called or not. It is an error where xacro provably stops on it: a
+is read where the macro is called, as meant. A `<xacro:arg name="X" default="${X}"/>` in
+the body does not make it right: args are global and set once, so every later call gets
+the first call's value. It is found in every macro of the files a description reads,
+called or not. It is an error where xacro provably stops on it: a
 launch file loads the description, every word of its xacro call is known and none gives
 X, no `<xacro:arg name="X">` comes before the call, the macro is called and the branch
 holding the use is taken (`xacro_error` then leaves this refusal to this rule). Otherwise
