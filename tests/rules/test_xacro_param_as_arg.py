@@ -37,6 +37,21 @@ def test_read_with_the_parameter_or_an_arg_that_is_no_parameter_it_is_silent() -
     assert lint_urdf(robot(declared + camera("$(arg base)") + CALL), RULE) == ()
 
 
+def test_judged_true_one_call_given_the_parameter_and_another_the_arg() -> None:
+    """zitongbai/ur_project_ros2's ur_robotiq_rs macro (xacro_param_as_arg_judged.jsonl):
+    the arm gets ${sim_gazebo}, the gripper $(arg sim_gazebo)."""
+    macro = ('<xacro:arg name="sim_gazebo" default="true"/>\n'
+             '<xacro:macro name="part" params="sim_gazebo"><link name="p${sim_gazebo}"/>'
+             '</xacro:macro>\n'
+             '<xacro:macro name="arm_and_gripper" params="sim_gazebo:=false">\n'
+             '<xacro:part sim_gazebo="${sim_gazebo}"/>\n'
+             '<xacro:part\n sim_gazebo="$(arg sim_gazebo)"/>\n'
+             '</xacro:macro>\n'
+             '<xacro:arm_and_gripper sim_gazebo="$(arg sim_gazebo)"/>')
+    (found,) = lint_urdf(robot(macro), RULE)
+    assert found.line == 7 and found.severity.value == "warning"
+
+
 def test_an_arg_of_that_name_declared_still_leaves_the_parameter_ignored() -> None:
     declared = '<xacro:arg name="parent" default="base_link"/>'
     (found,) = lint_urdf(robot(declared + camera("$(arg parent)") + CALL), RULE)
