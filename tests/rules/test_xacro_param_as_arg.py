@@ -35,6 +35,13 @@ def test_read_with_the_parameter_or_an_arg_that_is_no_parameter_it_is_silent() -
     assert lint_urdf(robot(camera("${parent}") + CALL), RULE) == ()
     declared = '<xacro:arg name="base" default="base_link"/>'
     assert lint_urdf(robot(declared + camera("$(arg base)") + CALL), RULE) == ()
+    # A property named like an arg, at the top or in the body, is no parameter.
+    named = ('<xacro:arg name="base" default="base_link"/>'
+             '<xacro:property name="base" value="$(arg base)"/>')
+    assert lint_urdf(robot(named + camera("$(arg base)") + CALL), RULE) == ()
+    inner = camera("$(arg base)").replace(
+        '<link name="${name}_link"/>', '<xacro:property name="base" value="b"/>')
+    assert lint_urdf(robot(declared + inner + CALL), RULE) == ()
 
 
 def test_judged_true_one_call_given_the_parameter_and_another_the_arg() -> None:
