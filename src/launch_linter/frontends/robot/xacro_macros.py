@@ -39,8 +39,11 @@ TEXT_WINDOW = 65_536
 
 # ``$$(`` is xacro's escape for a literal ``$(``: a ``$(`` after a ``$`` is not a use.
 _USE = re.compile(r"(?<!\$)\$\(\s*arg\s+([^\s()$]+)\s*\)")
-_USE_BYTES = re.compile(rb"(?<!\$)\$\(\s*arg\s+([^\s()$]+)\s*\)")
-_PARAMS_BYTES = re.compile(rb"""\bparams\s*=\s*(?:"([^"]*)"|'([^']*)')""")
+# The look at the bytes may find more than there is (an escaped use, an attribute named
+# ``xparams``): it only decides whether to scan; without a look-behind or a word boundary
+# the patterns start with a literal, which the regex engine searches for fast.
+_USE_BYTES = re.compile(rb"\$\(\s*arg\s+([^\s()$]+)\s*\)")
+_PARAMS_BYTES = re.compile(rb"""params\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _PARAM_NAME = re.compile(rb"[*\s]*([^\s:=*]+)")
 _START_TAG = re.compile(r"""<[^\s/>]+(?:\s+[^\s=/>]+\s*=\s*(?:"[^"]*"|'[^']*'))*\s*/?>""")
 _NEWLINE = re.compile(r"\r\n|\r|\n")
