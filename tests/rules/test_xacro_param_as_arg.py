@@ -94,6 +94,21 @@ def test_a_macro_never_called_and_a_text_and_an_escape() -> None:
     assert found.line == 6  # the text's line, not its element's
 
 
+def test_inside_an_expression_and_an_arg_named_by_an_expression() -> None:
+    macro = ('<xacro:macro name="m" params="gazebo name">\n'
+             '<xacro:if value="${\'$(arg gazebo)\' == \'true\'}"><link name="g"/></xacro:if>\n'
+             '<link name="$(arg ${name}_frame)"/>\n</xacro:macro>')
+    (found,) = lint_urdf(robot(link("a") + macro), RULE)
+    assert found.line == 3 and "$(arg gazebo)" in found.message
+
+
+def test_an_unprefixed_macro_of_a_legacy_xacro() -> None:
+    text = robot('<macro name="m" params="side">\n<link name="$(arg side)"/>\n</macro>')
+    assert params_read_as_args(text.encode(), False) == {}
+    (uses,) = params_read_as_args(text.encode(), True).values()
+    assert [(use.macro, use.name, use.line) for use in uses] == [("m", "side", 3)]
+
+
 def test_an_attribute_on_a_later_line_of_its_element() -> None:
     call = ('<xacro:macro name="m" params="a b">\n<xacro:other\n x="${a}"\n'
             ' y="$(arg b)"/>\n</xacro:macro>')
