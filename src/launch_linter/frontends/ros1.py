@@ -44,7 +44,7 @@ from launch_linter.frontends.ros1_checks import (
     yaml_root_kind,
 )
 from launch_linter.frontends.ros1_names import _COLLAPSE_SLASHES, make_global_ns, ns_join
-from launch_linter.frontends.ros1_tags import Ros1Tags, nodelet_type
+from launch_linter.frontends.ros1_tags import Ros1Tags
 from launch_linter.frontends.tokens import split_args
 from launch_linter.frontends.xml_dialect import is_ros2_xml
 from launch_linter.model.diagnostic import Location
@@ -123,8 +123,7 @@ class Ros1Loader(Ros1Tags):
                                 _conjoin(context.condition, condition))
         if package_text is not None and type_text is not None:
             self._frame_node(element, context, condition, name_text, package_text, type_text,
-                             None if ns_unresolved else ns,
-                             nodelet_type(package_text, type_text, late.get("args")))
+                             None if ns_unresolved else ns, late.get("args"))
             if package_text == RSP_PACKAGE and not ns_unresolved:
                 self._description_remap(element, context, ns)
         if is_test or package is None or node_type is None:
