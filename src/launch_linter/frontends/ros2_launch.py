@@ -137,7 +137,8 @@ class Ros2Loader(Ros2Runner):
                         self._ros2_description(subs, scope, frame, where, name)
         if (package == "robot_state_publisher" and executable == "robot_state_publisher"
                 and not described and not unread and action.arguments
-                and not any(key == "robot_description" for key, _ in params)):
+                and not any(key == "robot_description"
+                            for key, _ in (*scope.parameters, *params))):
             self._description_argument(action.arguments[0], scope, frame, where, name)
         # SetParameter's parameters first: the node's own win over them.
         node = NodeRecord(
