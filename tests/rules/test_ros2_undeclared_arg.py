@@ -304,3 +304,15 @@ def test_reads_at_one_place_are_one_finding(tmp_path: Path) -> None:
 """
     ((_, _, _, message),) = _lint(tmp_path, {"a.launch.xml": text}, "a.launch.xml")
     assert "configurations 'a', 'b' are" in message or "configurations 'b', 'a' are" in message
+
+
+def test_an_xml_read_is_reported_at_the_element_that_writes_it(tmp_path: Path) -> None:
+    text = """<launch>
+  <node pkg="foo" exec="bar" name="n">
+    <param name="frame" value="$(var prefix)base"/>
+  </node>
+  <node pkg="foo" exec="baz" name="$(var robot)"/>
+</launch>
+"""
+    assert sorted(line for _, line, _, _ in _lint(tmp_path, {"a.launch.xml": text},
+                                                   "a.launch.xml")) == [3, 5]

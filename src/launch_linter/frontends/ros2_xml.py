@@ -39,6 +39,7 @@ from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.model.launch import may_hold_directive
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import (
+    Call,
     CommandLineError,
     Opaque,
     Subs,
@@ -67,6 +68,15 @@ class Entity:
     other_keys: list[str] = field(default_factory=list)
     """YAML keys written but kept neither as attributes nor as nested entities (a null
     value, a list of scalars, a mapping): the schema check still sees their names."""
+
+
+def _placed(subs: Subs, at: tuple[int, int]) -> Subs:
+    """``subs`` with each ``$(var)`` marked as written at ``at`` (line, column); the
+    parser bounds the nesting (``MAX_NESTING``)."""
+    return tuple(
+        Call(sub.name, tuple(_placed(arg, at) for arg in sub.args), sub.written,
+             at if sub.name == "var" else sub.at) if isinstance(sub, Call) else sub
+        for sub in subs)
 
 
 def normalise_tag(tag: str) -> str:
@@ -111,6 +121,10 @@ class _Reader:
         if refusal is not None and (id(entity), attribute) not in self.refused:
             self.refused.add((id(entity), attribute))
             self.report("roslaunch_error", entity, f"{attribute}: {refusal}")
+        if "$(var" in text:
+            # A read launch finds unset is reported at the entity that writes it (a
+            # <param> of a <node>), as the syntax faults above.
+            return _placed(subs, (entity.line, entity.column))
         return subs
 
     def required(self, entity: Entity, attribute: str) -> Subs | None:
