@@ -43,6 +43,10 @@ CASES = [
      "identifiers", "property names must be valid Python identifiers"),
     ('<xacro:property name="class" value="0.36"/>', "Property names must be valid python "
      "identifiers", "property names must be valid Python identifiers"),
+    ('<xacro:if value="false"><xacro:property name="imu_x" value="0"/></xacro:if>'
+     '<link name="imu${imu_x}"/>', "name 'imu_x' is not defined",
+     "name 'imu_x' is not defined"),
+    ('<link name="l${radians(pi)}${math.floor(2.5)}${sorted([2, 1])[0]}"/>', None, None),
     ('<xacro:property name="wheel_gap" value="0.36"/>', None, None),
     ('<xacro:wheel side="l"><origin xyz="1 0 0"/></xacro:wheel>', None, None),
     ('<xacro:arg name="tool" default="t"/><link name="$(arg tool)"/>', None, None),
@@ -69,3 +73,12 @@ def test_the_rule_and_the_real_xacro_agree(tmp_path: Path, body: str, xacro_says
         return
     assert refusal is not None and xacro_says in refusal
     assert len(found) == 1 and we_say is not None and we_say in found[0].message
+
+
+def test_every_global_symbol_of_the_real_xacro_is_listed() -> None:
+    import xacro  # type: ignore[import-untyped]
+
+    from launch_linter.frontends.robot.xacro_globals import xacro_defines
+
+    names = [name for name in xacro.create_global_symbols() if not xacro_defines(name)]
+    assert names == []

@@ -27,6 +27,7 @@ import typing
 from collections.abc import Callable, Mapping
 
 from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
+from launch_linter.frontends.robot.xacro_globals import undefined_name
 from launch_linter.frontends.robot.xacro_macros import (
     ParamArg,
     macro_params,
@@ -58,7 +59,6 @@ from launch_linter.frontends.robot.xacro_values import (
     _Abort,
     _Block,
     _boolean,
-    _literal,
     _Macro,
     _Property,
     _Refused,
@@ -70,8 +70,13 @@ from launch_linter.frontends.robot.xacro_values import (
 )
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
-from launch_linter.resolve.eval_values import AttributeDict, _auto_convert
-from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate, evaluate_value
+from launch_linter.resolve.safe_eval import (
+    EvalError,
+    EvalScope,
+    EvalUndefined,
+    evaluate,
+    evaluate_value,
+)
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
 
@@ -102,6 +107,9 @@ class XacroExpander:
         self._args_read: set[str] = set()
         self._env_read: set[str] = {"ROS_DISTRO"}
         self._cut_by_budget = False
+        self._open = False
+        """Whether something not followed could have defined a property (an unknown or
+        kept problem so far): then a name nothing defines is unknown, not refused."""
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
         self._include_stack: list[str] = []
@@ -166,6 +174,7 @@ class XacroExpander:
 
     def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
                  conditions: tuple[str, ...] = (), name: str | None = None) -> None:
+        self._open = self._open or kind in (UNKNOWN, KEPT)
         if len(self.problems) < 1000:
             self.problems.append(XacroProblem(path, line, message, False, kind, conditions,
                                               name))
@@ -255,6 +264,9 @@ class XacroExpander:
             return evaluate(source, scope) if as_text else evaluate_value(source, scope)
         except _Unknown:
             raise
+        except EvalUndefined as exc:
+            raise undefined_name(f"${{{source}}}: {exc.reason}", exc.name,
+                                 self._open or self._legacy) from None
         except EvalError as exc:
             raise _Unknown(f"${{{source}}}: {exc.reason}") from None
 
@@ -327,24 +339,6 @@ class XacroExpander:
         if self._load_yaml is None:
             self._load_yaml = yaml_loader(lambda: self._path, self._charge, self._yaml_files)
         return self._load_yaml
-
-    def namespace_values(self, table: _Table) -> AttributeDict:
-        """The properties of a namespaced include as ``${ns.x}`` reads them; one whose
-        value is unknown is left out (reading it is then unknown too)."""
-        values = AttributeDict()
-        for name, prop in table.properties.items():
-            self._charge()
-            try:
-                text = self.property_value(name, table, prop)
-            except _Unknown:
-                continue
-            if prop.namespace is not None:
-                values[name] = self.namespace_values(prop.namespace)
-            elif prop.data is not None:
-                values[name] = prop.data
-            elif text is not None:
-                values[name] = _auto_convert(_literal(text))
-        return values
 
     # -- elements ----------------------------------------------------------------------
     def _node(self, element: Element, path: str, conditions: tuple[str, ...],
