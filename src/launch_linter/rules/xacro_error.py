@@ -22,10 +22,10 @@ which reports it at the same line and level and says what to write instead.
 
 ## Why is this bad?
 xacro stops with an error (`unknown macro name: xacro:x`, `Undefined parameters [x]`,
-`Undefined substitution argument`, `name 'x' is not defined`): the launch file's xacro command fails, so
-`robot_description` is never set and robot_state_publisher publishes nothing (ROS 1
-`roslaunch` stops with "Invalid <param> tag: Cannot load command parameter"; ROS 2 `ros2
-launch` stops on the failed `Command` substitution).
+`Undefined substitution argument`, `name 'x' is not defined`): the launch file's xacro
+command fails, so `robot_description` is never set and robot_state_publisher publishes
+nothing (ROS 1 `roslaunch` stops with "Invalid <param> tag: Cannot load command
+parameter"; ROS 2 `ros2 launch` stops on the failed `Command` substitution).
 
 ## Example
 ```xml
