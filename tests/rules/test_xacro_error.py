@@ -150,3 +150,13 @@ def test_a_name_that_may_come_from_what_was_not_followed_is_unknown(tmp_path: Pa
     text = robot('<link name="l${x}"/>')
     assert lint_text(text, "robot.urdf.xacro", options).diagnostics == ()
     assert lint_urdf(text, RULE) != ()
+
+
+def test_unprefixed_tags_may_define_names_for_a_legacy_xacro() -> None:
+    # hsr_description, autolabor_pro1: <property>/<macro> without the prefix, read by
+    # xacro before Noetic; Noetic's xacro leaves them and stops at the first ${x}.
+    text = robot('<property name="x" value="1"/><link name="l${x}"/>')
+    assert lint_urdf(text, RULE) == ()
+    options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro="noetic")
+    (found,) = lint_text(text, "robot.urdf.xacro", options).diagnostics
+    assert "name 'x' is not defined" in found.message

@@ -374,8 +374,11 @@ class XacroExpander:
             self._charge()
             self._path, self._line = path, element.line
             tag = element.tag
-            if not tag.startswith(_PREFIX) and self._legacy and legacy_tag(element, table):
-                tag = _PREFIX + tag
+            if not tag.startswith(_PREFIX) and legacy_tag(element, table):
+                if self._legacy:
+                    tag = _PREFIX + tag
+                # A legacy xacro (distribution not given) would define names here.
+                self._open = self._open or "ROS_DISTRO" not in self.env
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
