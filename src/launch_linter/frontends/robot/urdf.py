@@ -123,27 +123,35 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
 
 def elements_of(root: ExpandedNode, display: Display,
                 outer: Condition) -> tuple[list[RobotElement], bool]:
-    """The links and joints directly under ``<robot>`` by name (as urdfdom reads them),
+    """The links, joints and materials directly under ``<robot>`` by name (as urdfdom
+    reads them: a ``<material>`` inside a ``<visual>`` is the link's, not the model's),
     and whether every link name and joint end is known."""
     out: list[RobotElement] = []
     known = True
     if root.tag != "robot":
         return out, False
     for element in root.children:
-        if element.tag not in ("link", "joint"):
+        if element.tag not in ("link", "joint", "material"):
             continue
-        name: str | None = element.attrib.get("name")
+        # urdfdom keeps a top-level material without a name as '' (its parseMaterial
+        # result is not checked), so two of them clash.
+        name: str | None = element.attrib.get(
+            "name", "" if element.tag == "material" else None)
         if "name" in element.unknown:
             name = None
-            known = known and element.tag == "joint"
+            known = known and element.tag != "link"
         if element.tag == "joint":
             for end in ("parent", "child"):
                 end_element = _first(element, end)
                 if end_element is not None and "link" in end_element.unknown:
                     known = False
         at = element.call or (element.path, element.line, element.column)
+        defined = (None if element.call is None
+                   else (display(element.path), element.line, element.column))
+        site = element.included
+        included = None if site is None else (display(site[0]), site[1], site[2])
         out.append(RobotElement(element.tag, name, display(at[0]), at[1], at[2],
-                                outer & _condition(element.conditions)))
+                                outer & _condition(element.conditions), defined, included))
     return out, known
 
 

@@ -59,6 +59,8 @@ from launch_linter.frontends.robot.xacro_values import (
     _Table,
     _Unknown,
     _unquoted,
+    expression_error,
+    inserts_block,
     legacy_tag,
     legacy_tags,
     valid_name,
@@ -115,6 +117,7 @@ class XacroExpander:
         self._yaml_files: dict[str, tuple[object, int] | _Unknown] = {}
         self._load_yaml: object | None = None
         self._call_site: tuple[str, int, int] | None = None
+        self._include_site: tuple[str, int, int] | None = None
 
     # -- entry -------------------------------------------------------------------------
     def expand(self, path: str, data: bytes | None = None) -> Expansion:
@@ -237,7 +240,7 @@ class XacroExpander:
         except _Unknown:
             raise
         except EvalError as exc:
-            raise _Unknown(f"${{{source}}}: {exc.reason}") from None
+            raise expression_error(source, exc.reason) from None
 
     def _extension(self, body: str, table: _Table) -> str:
         words = body.split()
@@ -335,7 +338,7 @@ class XacroExpander:
             raise _Abort(f"expansion makes more than {MAX_OUTPUT_ELEMENTS:,} elements", path,
                          element.line)
         made = ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
-        made.call = self._call_site
+        made.call, made.included = self._call_site, self._include_site
         return made
 
     def _attributes(self, element: Element, node: ExpandedNode, table: _Table) -> None:
@@ -369,8 +372,11 @@ class XacroExpander:
                 if element.text.strip():
                     try:
                         node.text = self.evaluate_text(element.text.strip(), table)
-                    except _Unknown:
+                    except _Unknown as unknown:
                         node.text = None
+                        if isinstance(unknown, _Refused):  # xacro evaluates all text
+                            self._problem(path, element.line, unknown.reason, REFUSED,
+                                          conditions)
                 out.children.append(node)
                 self._children(element.children, path, table, node, conditions)
                 continue
@@ -489,24 +495,11 @@ class XacroExpander:
         table.macros[name] = _Macro(params, defaults, element, path)
         self._defines_macros = True
         for param in params:
-            if param.startswith("*") and not self._inserts(element, param.lstrip("*")):
+            if param.startswith("*") and not inserts_block(
+                    element, param.lstrip("*"), self._legacy, self._charge):
                 self._problem(path, element.line, f"block parameter '{param}' of macro "
                               f"'{name}' is never inserted (no <xacro:insert_block "
                               f"name=\"{param.lstrip('*')}\"/>)", DROPPED)
-
-    def _inserts(self, element: Element, block: str) -> bool:
-        """Whether ``element`` holds an ``insert_block`` that may insert ``block`` (one
-        whose name is an expression may; unprefixed too, for a legacy xacro)."""
-        tags = {_PREFIX + "insert_block"} | ({"insert_block"} if self._legacy else set())
-        for child in element.children:
-            self._charge()
-            if child.tag in tags:
-                name = child.attrib.get("name", "")
-                if name == block or "$" in name:
-                    return True
-            if self._inserts(child, block):
-                return True
-        return False
 
     def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                  conditions: tuple[str, ...]) -> None:
@@ -533,6 +526,8 @@ class XacroExpander:
         if included is None:
             return
         self._include_stack.append(target)
+        outer_site = self._include_site  # in a macro, elements keep their call's include
+        self._include_site = outer_site if self._call_site else (path, element.line, element.column)
         # With ns=, the file's macros are called as ns.name and its properties read as
         # ${ns.x} (xacro gives the file a table of its own, reached through the namespace).
         inner = table if namespace is None else _Table(table)
@@ -540,6 +535,7 @@ class XacroExpander:
             self._children(included.children, target, inner, out, conditions)
         finally:
             self._include_stack.pop()
+            self._include_site = outer_site
         if namespace is not None:
             for name, macro in inner.macros.items():
                 table.macros[f"{namespace}.{name}"] = _Macro(
