@@ -47,8 +47,7 @@ CASES = [
     ('<link name="l"><inertial><mass value="${2 * (1 + 2) / 12)}"/></inertial></link>',
      "unmatched ')'", "')' closes no bracket"),
     ('<link name="${[1, (2]}"/>', "does not match", "']' does not close its bracket"),
-    ('<gazebo><plugin name="p" filename="x.so"><frameName>${\'a\' + (1}</frameName>'
-     '</plugin></gazebo>', "never closed", "'(' is not closed"),
+    ('<link name="${\'a\' + (1}"/>', "never closed", "'(' is not closed"),
     # Brackets inside strings, and a macro never called, are not evaluated as such.
     ("<link name=\"${'a(' + 'b]'}\"/>", None, None),
     ('<xacro:macro name="bad" params=""><link name="${(1}"/></xacro:macro>', None, None),

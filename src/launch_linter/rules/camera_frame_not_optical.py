@@ -89,7 +89,14 @@ from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord, pose_turn
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import entry_of, finding_at_node, nodes_of
-from launch_linter.rules._tree import Edge, Quaternion, edges_of, quaternion_from_ypr, same_rotation
+from launch_linter.rules._tree import (
+    Edge,
+    Quaternion,
+    as_written,
+    edges_of,
+    quaternion_from_ypr,
+    same_rotation,
+)
 
 ID = "camera_frame_not_optical"
 CATEGORY = Category.TF
@@ -221,9 +228,11 @@ def _plugins(context: RuleContext) -> list[tuple[NodeRecord, frozenset[str] | No
 
 
 def _published(context: RuleContext) -> frozenset[str]:
-    """Every frame at an end of an edge of the tree: static transforms, URDF joints and
-    the edges known nodes (Gazebo plugins included) publish."""
-    frames = {end for edge in edges_of(context) for end in (edge.parent, edge.child)}
+    """Every frame at an end of an edge of the tree: static transforms, URDF joints (as
+    published and as written) and the edges known nodes (Gazebo plugins included) publish."""
+    edges = edges_of(context)
+    frames = {end for edge in edges + tuple(as_written(e) for e in edges)
+              for end in (edge.parent, edge.child)}
     frames.update(end for edge in nodes_of(context).edges for end in (edge.parent, edge.child))
     return frozenset(frame.lstrip("/") for frame in frames)
 
@@ -241,7 +250,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
     plugins = _plugins(context)
     if not plugins:
         return
-    parents = parents_of(edges_of(context))
+    # The plugins name the description's links as written, before any publisher's prefix.
+    parents = parents_of(tuple(as_written(e) for e in edges_of(context)))
     published: frozenset[str] | None = None
     for node, links in plugins:
         body = node.given(SENSOR_LINK)

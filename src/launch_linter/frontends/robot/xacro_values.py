@@ -6,7 +6,7 @@ from __future__ import annotations
 import keyword
 import re
 import unicodedata
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 
 from launch_linter.model.record import MutableRecord, Record, _set
 from launch_linter.resolve.xml_safe import Element
@@ -108,7 +108,12 @@ class _Unknown(Exception):
 
 class _Refused(_Unknown):
     """What the real xacro stops on (an undefined macro, a missing parameter, an
-    undeclared ``$(arg)``): unknown to the expander as well, and a fault of the source."""
+    undeclared ``$(arg)``): unknown to the expander as well, and a fault of the source.
+    ``arg`` names the undeclared arg of a refused ``$(arg)``."""
+
+    def __init__(self, reason: str, arg: str | None = None) -> None:
+        super().__init__(reason)
+        self.arg = arg
 
 
 UNKNOWN = "unknown"
@@ -119,6 +124,10 @@ REFUSED = "refused"
 """A problem kind: the real xacro stops here (see :class:`_Refused`)."""
 DROPPED = "dropped"
 """A problem kind: the real xacro silently drops content here (a block never inserted)."""
+PARAM_AS_ARG = "param_as_arg"
+"""A problem kind: a macro reads its own parameter as ``$(arg)``, which never sees it."""
+FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG)
+"""The kinds that are faults of the source itself."""
 
 
 def expression_error(source: str, reason: str) -> _Unknown:
@@ -130,22 +139,6 @@ def expression_error(source: str, reason: str) -> _Unknown:
     return _Unknown(f"${{{source}}}: {reason}")
 
 
-def inserts_block(element: Element, block: str, legacy: bool,
-                  charge: Callable[[], None]) -> bool:
-    """Whether ``element`` holds an ``insert_block`` that may insert ``block`` (one
-    whose name is an expression may; unprefixed too, for a ``legacy`` xacro)."""
-    tags = {_PREFIX + "insert_block"} | ({"insert_block"} if legacy else set())
-    for child in element.children:
-        charge()
-        if child.tag in tags:
-            name = child.attrib.get("name", "")
-            if name == block or "$" in name:
-                return True
-        if inserts_block(child, block, legacy, charge):
-            return True
-    return False
-
-
 class XacroProblem(Record):
     """Something the expander could not follow, with where it was."""
 
@@ -155,11 +148,13 @@ class XacroProblem(Record):
     fatal: bool
     """True when the expansion stopped (a bound was reached or the root is unreadable)."""
     kind: str
-    """``UNKNOWN``, ``KEPT``, ``REFUSED`` or ``DROPPED``."""
+    """``UNKNOWN``, ``KEPT``, ``REFUSED``, ``DROPPED`` or ``PARAM_AS_ARG``."""
     conditions: tuple[str, ...]
     """The undecided ``xacro:if``/``xacro:unless`` texts around it (see ExpandedNode)."""
+    name: str | None
+    """The arg of a refused ``$(arg)`` or of a ``PARAM_AS_ARG`` use."""
 
-    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions")
+    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions", "name")
 
     def __init__(
         self,
@@ -169,6 +164,7 @@ class XacroProblem(Record):
         fatal: bool = False,
         kind: str = UNKNOWN,
         conditions: tuple[str, ...] = (),
+        name: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -176,6 +172,7 @@ class XacroProblem(Record):
         _set(self, "fatal", fatal)
         _set(self, "kind", kind)
         _set(self, "conditions", conditions)
+        _set(self, "name", name)
 
 
 TF_PREFIX_PARAM = "tf_prefix"
@@ -185,6 +182,8 @@ PLUGIN_TEXT_TAGS = frozenset({
     # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
     "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",
     "robotBaseFrame", "frameName", "bodyName", "publishOdom", "broadcastTF",
+    # kobuki_gazebo_plugins (ROS 1): Kobuki's simulated base.
+    "publish_tf",
     # gazebo_ros (ROS 2): parameters, and <ros><namespace>/<remapping>.
     "namespace", "remapping", "publish_odom_tf", "publish_wheel_tf", "odometry_frame",
     "robot_base_frame", "frame_name", "body_name", "publish_odom",
