@@ -197,3 +197,13 @@ def test_an_incomplete_description_proves_no_frame_absent(tmp_path: Path) -> Non
         '<robot name="r">', '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
         '<xacro:include filename="$(find nowhere)/optical.xacro"/>')
     assert run(tmp_path, text) == []
+
+
+def test_a_namespace_prefix_on_the_links_is_not_another_frame(tmp_path: Path) -> None:
+    """uuv_simulator's camera links are ${namespace}/camera_link_optical and its plugin
+    stamps camera_link_optical, which the ROS 1 plugin resolves with its tf_prefix."""
+    text = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                        body="<frameName>camera_link_optical</frameName>")
+    prefixed = text.replace('"camera_link', '"rov/camera_link').replace(
+        ">camera_link_optical<", ">camera_link_optical<")
+    assert all("nothing in this tree publishes" not in m for _, m in run(tmp_path, prefixed))

@@ -240,10 +240,15 @@ def _published(context: RuleContext) -> frozenset[str]:
 def _unpublished(frame: str, links: frozenset[str] | None,
                  published: frozenset[str]) -> bool:
     """Whether ``frame`` is proven to be no link of the plugin's complete description
-    (under any ``prefix/`` a namespace may add) and no frame of the tree's edges."""
-    if links is None or frame in published or frame.rpartition("/")[2] in links:
+    and no frame of the tree's edges. A ``prefix/`` on either side is not read as another
+    frame: a ROS 1 plugin resolves its frame with the ``tf_prefix`` its namespace finds
+    (gazebo_ros's camera utilities, ``tf::resolve``), and descriptions prefix their links
+    with a namespace (``${namespace}/camera_link``)."""
+    if links is None or frame in published or frame in links:
         return False
-    return frame not in links
+    ending = "/" + frame
+    return frame.rpartition("/")[2] not in links and not any(
+        link.endswith(ending) for link in links)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
