@@ -14,7 +14,9 @@ that no fixed path joins to the sensor's link is reported by its name only, at i
 the name does not say `optical`. A frame that is no link of the (complete) description,
 under any `ns/` prefix, and at no end of an edge of the tree (static transform, URDF joint,
 an edge a known node or plugin publishes) is reported at info: nothing in the tree
-publishes it, so every tf lookup of the images fails unless another launch does.
+publishes it, so every tf lookup of the images fails unless another launch does (judged on
+110 repositories with Gazebo cameras: 21 true of 29, docs/evaluation/camera_unpublished_frame.md;
+the false ones are frames a stack publishes from another repository).
 
 ## Why is this bad?
 Gazebo renders a camera looking along its link's x axis, and the plugin fills images,
