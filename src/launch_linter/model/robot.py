@@ -280,7 +280,9 @@ class RobotElement(Record):
     file the element (or its outermost call) is written in, None in the top file."""
 
     kind: str
-    """``link``, ``joint`` or ``material``."""
+    """``link``, ``joint``, ``material``, or ``origin``: an ``<origin>`` urdfdom ignores
+    (a second one in a link's ``<visual>``, ``<collision>``, ``<inertial>`` or in a joint),
+    named after its owner (``<visual> of link 'x'``)."""
     name: str | None
     path: str
     line: int

@@ -46,6 +46,8 @@ ID = "urdf_duplicate_name"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
 EXAMPLE_PATH = "example.urdf"
+NAMED_KINDS = ("link", "joint", "material")
+"""What urdfdom keeps by name (the description's other elements are not compared)."""
 
 
 def _place(path: str, line: int, seen_from: str) -> str:
@@ -89,7 +91,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
             continue
         first: dict[tuple[str, str], RobotElement] = {}
         for element in robot.elements:
-            if element.name is None or not element.condition.always:
+            if (element.name is None or not element.condition.always
+                    or element.kind not in NAMED_KINDS):
                 continue
             earlier = first.setdefault((element.kind, element.name), element)
             if earlier is not element:

@@ -103,7 +103,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 [r for r in certain if r is not shown],
             )
         elif not roots and all(e.condition.always for e in robot.elements
-                                   if e.kind != "material"):
+                                   if e.kind in ("link", "joint")):
             link = next(iter(links.values()))
             yield finding_at(
                 robot, link,
