@@ -40,7 +40,8 @@ reads it, as urdf_tutorial's readers did, ros/urdf_tutorial#22) changes nothing.
 
 ## Known problems
 Info: a heuristic of intent, not a fault urdfdom refuses; the second `<origin>` may repeat
-the first.
+the first. On 110 repositories with Gazebo cameras (5,857 files) it found 1, two identical
+origins (docs/evaluation/urdf_repeated_origin.md): too few to judge a warning.
 """
 from __future__ import annotations
 
