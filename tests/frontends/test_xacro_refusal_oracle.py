@@ -15,8 +15,14 @@ import pytest
 from launch_linter import LintOptions, lint_paths
 
 ROOT = Path(__file__).resolve().parent.parent.parent
+
+
 DRIVER = ROOT / "scripts" / "xacro_oracle_driver.py"
+
+
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+
+
 WHEEL = ('<xacro:macro name="wheel" params="side *origin"><link name="${side}"/>'
          '<joint name="${side}_j" type="fixed"><xacro:insert_block name="origin"/>'
          '<parent link="base"/><child link="${side}"/></joint></xacro:macro>')
@@ -27,6 +33,8 @@ pytestmark = pytest.mark.skipif(
 )
 
 # (body, what the real xacro says, what the linter's message says); None: both accept.
+
+
 CASES = [
     ('<xacro:wheeel side="l"><origin/></xacro:wheeel>', "unknown macro name",
      "unknown macro 'wheeel'"),
@@ -47,6 +55,14 @@ CASES = [
      '<link name="imu${imu_x}"/>', "name 'imu_x' is not defined",
      "name 'imu_x' is not defined"),
     ('<link name="l${radians(pi)}${math.floor(2.5)}${sorted([2, 1])[0]}"/>', None, None),
+    # An expression that is no Python: an unmatched, mismatched or unclosed bracket.
+    ('<link name="l"><inertial><mass value="${2 * (1 + 2) / 12)}"/></inertial></link>',
+     "unmatched ')'", "')' closes no bracket"),
+    ('<link name="${[1, (2]}"/>', "does not match", "']' does not close its bracket"),
+    ('<link name="${\'a\' + (1}"/>', "never closed", "'(' is not closed"),
+    # Brackets inside strings, and a macro never called, are not evaluated as such.
+    ("<link name=\"${'a(' + 'b]'}\"/>", None, None),
+    ('<xacro:macro name="bad" params=""><link name="${(1}"/></xacro:macro>', None, None),
     ('<xacro:property name="wheel_gap" value="0.36"/>', None, None),
     ('<xacro:wheel side="l"><origin xyz="1 0 0"/></xacro:wheel>', None, None),
     ('<xacro:arg name="tool" default="t"/><link name="$(arg tool)"/>', None, None),
@@ -60,6 +76,8 @@ def real_xacro(path: Path) -> str | None:
 
 
 @pytest.mark.parametrize("body, xacro_says, we_say", CASES)
+
+
 def test_the_rule_and_the_real_xacro_agree(tmp_path: Path, body: str, xacro_says: str | None,
                                             we_say: str | None) -> None:
     path = tmp_path / "robot.urdf.xacro"

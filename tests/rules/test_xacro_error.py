@@ -7,6 +7,8 @@ from _urdf import link, lint_loaded, lint_urdf, robot
 from launch_linter import LintOptions, lint_text
 
 RULE = "xacro_error"
+
+
 WHEEL = '<xacro:macro name="wheel" params="side *origin"><link name="${side}"/>' \
         '<xacro:insert_block name="origin"/></xacro:macro>'
 
@@ -160,3 +162,24 @@ def test_unprefixed_tags_may_define_names_for_a_legacy_xacro() -> None:
     options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro="noetic")
     (found,) = lint_text(text, "robot.urdf.xacro", options).diagnostics
     assert "name 'x' is not defined" in found.message
+
+
+def test_an_expression_with_an_extra_closing_bracket(tmp_path: Path) -> None:
+    """kuka-lwr#47: an inertia macro's ``${mass * (...) / 12)}``; xacro compiles each
+    expression it evaluates and stops on the SyntaxError."""
+    macro = ('<xacro:macro name="inertia" params="mass">\n'
+             '<inertia ixx="${mass * (1 + 2) / 12)}"/></xacro:macro>')
+    text = robot('<link name="a"><inertial>' + macro + '<xacro:inertia mass="2"/>'
+                 "</inertial></link>")
+    (found,) = lint_loaded(tmp_path, text, RULE)
+    assert "')' closes no bracket" in found.message and found.severity.value == "error"
+    assert found.line == 3  # the <inertia> in the macro
+    fixed = text.replace("/ 12)}", "/ 12}")
+    assert lint_loaded(tmp_path, fixed, RULE) == ()
+
+
+def test_an_expression_never_evaluated_is_not_refused(tmp_path: Path) -> None:
+    # xacro evaluates a macro's body only when it is called.
+    text = robot(link("a") + '<xacro:macro name="m" params=""><link name="${(1}"/>'
+                 "</xacro:macro>")
+    assert lint_loaded(tmp_path, text, RULE) == ()
