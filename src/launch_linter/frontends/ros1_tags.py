@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 
-from launch_linter.frontends.params import parse_yaml, read_yaml_file, ros1_params
+from launch_linter.frontends.params import parse_yaml, read_yaml_file_placed, ros1_params_keyed
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,
     from_ros1_param,
@@ -314,8 +314,9 @@ class Ros1Tags(Ros1Base):
                 params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
                 lines.append((key.lstrip("~"), path, sub.line, sub.column))
             elif sub.tag == "rosparam":
-                found, why = self._rosparam_values(sub, context)
+                found, why, places = self._rosparam_values(sub, context)
                 params.extend(found)
+                lines.extend((key, *place) for (key, _), place in zip(found, places))
                 if why:
                     unread.append(why)
         self.nodes.append(NodeRecord(
@@ -325,33 +326,44 @@ class Ros1Tags(Ros1Base):
         ))
 
     def _rosparam_values(self, element: Element, context: _Context
-                         ) -> tuple[list[tuple[str, str]], str | None]:
+                         ) -> tuple[list[tuple[str, str]], str | None, list[tuple[str, int, int]]]:
         """The parameters a ``<rosparam>`` loads (its text or its file, under its ``ns``),
-        and why they are not read when they are not."""
+        why they are not read when they are not, and where each is written (a file's key;
+        the ``<rosparam>`` element for its text)."""
         attrib = element.attrib
         if (attrib.get("command") or "load") != "load" or "param" in attrib:
-            return [], None
+            return [], None, []
         ns_text = attrib.get("ns", "")
         if "$" in ns_text:
             ns_text = resolved_text(self._resolve_text(ns_text, element, "ns", context,
                                                        dict(context.anon))) or ""
+        here = (self._display(context.filename), element.line, element.column)
         file_text = attrib.get("file")
         if file_text is not None:
             path = resolved_text(self._resolve_text(file_text, element, "file", context,
                                                     dict(context.anon)))
             if path is None:
-                return [], f"parameter file {file_text!r} is not resolved"
-            document, why = read_yaml_file(path)
+                return [], f"parameter file {file_text!r} is not resolved", []
+            document, why, keys = read_yaml_file_placed(path)
+            shown = self._display(path)
         elif element.text and "$(" not in element.text:
             document, why = parse_yaml(element.text)
+            keys, shown = {}, ""
             if why is not None:
                 # Without PyYAML, flat ``key: value`` lines are still read.
-                return params_from_yaml(element.text), why
+                found = params_from_yaml(element.text)
+                return found, why, [here] * len(found)
         else:
-            return [], None if not element.text else "<rosparam> text with substitutions"
+            return [], None if not element.text else "<rosparam> text with substitutions", []
         if why is not None:
-            return [], why
-        return ros1_params(document, ns_text), None
+            return [], why, []
+        params, places = [], []
+        for key, value, at in ros1_params_keyed(document, ns_text):
+            params.append((key, value))
+            line_column = keys.get(at)
+            places.append(here if line_column is None
+                          else (shown, line_column[0], line_column[1]))
+        return params, None, places
 
     def _rosparam(self, element: Element, context: _Context,
                   anon: dict[str, str] | None = None) -> None:
@@ -359,7 +371,7 @@ class Ros1Tags(Ros1Base):
             return
         if anon is None:
             # Beside the nodes: ``NODE/param`` names reach a node by its name.
-            found, why = self._rosparam_values(element, context)
+            found, why, _ = self._rosparam_values(element, context)
             self.node_params.extend(found)
             if why:
                 self.params_unread.append(why)

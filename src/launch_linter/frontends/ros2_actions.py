@@ -171,6 +171,9 @@ class Params:
     format, so values are kept as substitutions."""
 
     items: tuple[tuple[str, Subs], ...]
+    places: tuple[Where | None, ...] = ()
+    """Where each item's key is written, in the items' order (None: not known; empty when
+    the front-end keeps no places)."""
 
 
 @dataclass(frozen=True)

@@ -18,6 +18,7 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
+from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.params import (
@@ -27,7 +28,8 @@ from launch_linter.frontends.params import (
     controllers_of,
     embedded_costmap,
     read_yaml_file,
-    ros2_file_params,
+    read_yaml_file_placed,
+    ros2_file_params_keyed,
     spawned_controllers,
     spawner_words,
 )
@@ -73,6 +75,17 @@ from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
 from launch_linter.resolve.ros2_substitution import Call, Subs
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+
+
+class _NodeParams(NamedTuple):
+    """What :meth:`Ros2Loader._node_params` reads: the parameters in order (SetParameter's
+    first), where each is written (``NodeRecord.param_lines``), why some are not read,
+    and the parameter files' documents."""
+
+    params: tuple[tuple[str, str], ...]
+    lines: tuple[tuple[str, str, int, int], ...]
+    unread: tuple[str, ...]
+    documents: list[object]
 
 
 class Ros2Loader(Ros2Runner):
@@ -126,8 +139,8 @@ class Ros2Loader(Ros2Runner):
         # A controller manager without a name reads its file by its default name.
         section = (CONTROLLER_MANAGER_NAME if name is None and package == "controller_manager"
                    and executable == "ros2_control_node" else name)
-        params, unread, documents = self._node_params(action.parameters, scope, frame, where,
-                                                      section, known_namespace)
+        given = self._node_params(action.parameters, scope, frame, where, section,
+                                  known_namespace)
         for group in action.parameters:
             if isinstance(group, Params):
                 for key, subs in group.items:
@@ -136,10 +149,11 @@ class Ros2Loader(Ros2Runner):
         # SetParameter's parameters first: the node's own win over them.
         node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
-            executable or "", name, tuple(scope.parameters) + params, frame.condition,
-            unread=unread, namespace=known_namespace, ros=2,
+            executable or "", name, given.params, frame.condition,
+            unread=given.unread, namespace=known_namespace, ros=2, param_lines=given.lines,
         )
         self.nodes.append(node)
+        documents = given.documents
         costmap = embedded_costmap(node, documents, scope.parameters)
         if costmap is not None:
             self.nodes.append(costmap)
@@ -165,11 +179,14 @@ class Ros2Loader(Ros2Runner):
 
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,
-                     namespace: str | None
-                     ) -> tuple[tuple[tuple[str, str], ...], tuple[str, ...], list[object]]:
+                     namespace: str | None) -> _NodeParams:
         """The parameters a node is given (dictionaries and parameter files, in order),
-        why some are not read, and the parameter files' documents."""
+        where each is written, why some are not read, and the parameter files' documents.
+        A value's place: its dictionary key, its file's key (PyYAML's marks), else the
+        node's element (SetParameter's, those of a file without marks)."""
+        node_place = (self._display(frame.filename), where.line, where.column)
         params: list[tuple[str, str]] = []
+        places: list[tuple[str, int, int]] = [node_place] * len(scope.parameters)
         unread: list[str] = []
         documents: list[object] = []
         for group in groups:
@@ -181,19 +198,30 @@ class Ros2Loader(Ros2Runner):
                 if path is None:
                     unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
                     continue
-                document, why = read_yaml_file(path)
+                document, why, keys = read_yaml_file_placed(path)
                 if why is not None:
                     unread.append(why)
                     continue
                 documents.append(document)
-                params.extend(ros2_file_params(document, name, namespace))
+                shown = self._display(path)
+                for key, value, at in ros2_file_params_keyed(document, name, namespace):
+                    params.append((key, value))
+                    line_column = keys.get(at)
+                    places.append(node_place if line_column is None
+                                  else (shown, line_column[0], line_column[1]))
             else:
-                for key, subs in group.items:
+                for index, (key, subs) in enumerate(group.items):
                     if is_description_name(key.rsplit(".", 1)[-1]):
                         continue
                     text = resolved_text(self._resolve(subs, scope, frame, where))
                     params.append((key, UNKNOWN_VALUE if text is None else text))
-        return tuple(params[:MAX_PARAMS]), tuple(unread), documents
+                    place = group.places[index] if index < len(group.places) else None
+                    places.append(node_place if place is None else
+                                  (self._display(place.path), place.line, place.column))
+        own = params[:MAX_PARAMS]
+        given = tuple(scope.parameters) + tuple(own)
+        lines = tuple((key, *place) for (key, _), place in zip(given, places))
+        return _NodeParams(given, lines, tuple(unread), documents)
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
@@ -236,14 +264,13 @@ class Ros2Loader(Ros2Runner):
             name = None if name_value is None else resolved_text(name_value)
             namespace, pending = self._namespace(component.namespace, scope, here,
                                                  component.where)
-            node_params, unread, _ = self._node_params(
-                component.parameters, scope, here, component.where, name,
-                None if pending else namespace)
+            given = self._node_params(component.parameters, scope, here, component.where,
+                                      name, None if pending else namespace)
             self.nodes.append(NodeRecord(
                 self._display(here.filename), component.where.line, component.where.column,
-                package_text, "", name, tuple(scope.parameters) + node_params, here.condition,
-                plugin=plugin_text,
-                unread=unread, namespace=None if pending else namespace, ros=2))
+                package_text, "", name, given.params, here.condition,
+                plugin=plugin_text, unread=given.unread,
+                namespace=None if pending else namespace, ros=2, param_lines=given.lines))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

@@ -281,11 +281,13 @@ class _Reader:
                 out.append(ParamsFile(self.subs(entity, "from") or ()))
                 continue
             items: list[tuple[str, Subs]] = []
-            self.param_items(entity, "", items)
-            out.append(Params(tuple(items)))
+            places: list[Where | None] = []
+            self.param_items(entity, "", items, places)
+            out.append(Params(tuple(items), tuple(places)))
         return tuple(out)
 
-    def param_items(self, entity: Entity, prefix: str, items: list[tuple[str, Subs]]) -> None:
+    def param_items(self, entity: Entity, prefix: str, items: list[tuple[str, Subs]],
+                    places: list[Where | None]) -> None:
         name = entity.attrs.get("name")
         if name is None:
             self.report("roslaunch_error", entity, "<param> needs a 'name' or 'from' attribute")
@@ -293,11 +295,12 @@ class _Reader:
         nested = entity.lists.get("param", [])
         if nested:
             for child in nested:
-                self.param_items(child, f"{prefix}{name}.", items)
+                self.param_items(child, f"{prefix}{name}.", items, places)
             return
         value = self.subs(entity, "value")
         if value is not None:
             items.append((prefix + name, value))
+            places.append(self.where(entity))
 
 
 def _schema_entity(entity: Entity, xml: bool) -> SchemaEntity:

@@ -186,7 +186,10 @@ class NodeRecord(Record):
     a parameter it does not set then has no known value. ``namespace`` is the node's
     namespace (None when unresolved); ``ros`` the ROS version of the launch file.
     ``param_lines`` says where a parameter was set, when the front-end knows it: ``(name,
-    path, line, column)`` (a ROS 1 ``<param>`` inside the node's element).
+    path, line, column)``: a ROS 1 ``<param>`` or ``<rosparam>`` inside the node's element
+    (a ``<rosparam>`` file's key), a ROS 2 ``parameters=`` dictionary key, XML/YAML
+    ``<param>`` or parameter file key; ROS 2 front-ends give every parameter a place, in
+    the order of ``params`` (the node's element where the value's own place is unknown).
     """
 
     path: str
@@ -206,8 +209,11 @@ class NodeRecord(Record):
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros", "param_lines",
+        "plugin", "unread", "namespace", "ros", "param_lines", "_last_given", "_last_set",
     )
+    _private = ("_last_given", "_last_set")
+    _last_given: dict[str, str] | None
+    _last_set: dict[str, tuple[str, int, int]] | None
 
     def __init__(
         self,
@@ -241,25 +247,28 @@ class NodeRecord(Record):
         self.namespace = namespace
         self.ros = ros
         self.param_lines = param_lines
+        self._last_given = None
+        self._last_set = None
         _seal(self)
 
     def given(self, name: str) -> str | None:
         """The value of the parameter ``name`` exactly as the node is given it (the last
         setting wins), None when it is not set."""
-        found = None
-        for key, value in self.params:
-            if key == name:
-                found = value
-        return found
+        last = self._last_given
+        if last is None:
+            # Indexed once: rules ask a node for each of thousands of listed parameters.
+            last = dict(self.params)
+            _set(self, "_last_given", last)
+        return last.get(name)
 
     def where_set(self, name: str) -> tuple[str, int, int] | None:
         """Where the parameter ``name`` was last set (path, line, column), None when the
         front-end does not know."""
-        found = None
-        for key, path, line, column in self.param_lines:
-            if key == name:
-                found = (path, line, column)
-        return found
+        last = self._last_set
+        if last is None:
+            last = {key: (path, line, column) for key, path, line, column in self.param_lines}
+            _set(self, "_last_set", last)
+        return last.get(name)
 
     def param(self, name: str) -> str | None:
         for key, value in self.params:

@@ -210,16 +210,18 @@ def finding_at_node(node: NodeRecord, message: str,
                    node=node.name, related=related)
 
 
-def finding_at_param(node: NodeRecord, name: str, message: str) -> Finding:
-    """A finding at the line that sets the node's parameter ``name`` (a ``<param>`` inside
-    the node's element), with the node's element as related; at the node's element when
-    the front-end does not know where the parameter was set (a parameter file)."""
+def finding_at_param(node: NodeRecord, name: str, message: str,
+                     related: tuple[Location, ...] = ()) -> Finding:
+    """A finding at the line that last sets the node's parameter ``name`` (a ``<param>``,
+    a dictionary key in ``parameters=``, a parameter file's key), with the node's element
+    as related; at the node's element when the front-end does not know where the value
+    was written."""
     where = node.where_set(name)
-    if where is None:
-        return finding_at_node(node, message)
+    if where is None or where == (node.path, node.line, node.column):
+        return finding_at_node(node, message, related)
     path, line, column = where
     return Finding(path=path, line=line, column=column, message=message, node=node.name,
-                   related=(Location(node.path, node.line, node.column),))
+                   related=(Location(node.path, node.line, node.column), *related))
 
 
 def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:

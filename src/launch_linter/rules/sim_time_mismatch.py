@@ -77,7 +77,7 @@ from launch_linter.knowledge.publish import truth
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord, spawns_into_simulator
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node, program_of
+from launch_linter.rules._nodes import entry_of, finding_at_node, finding_at_param, program_of
 
 ID = "sim_time_mismatch"
 CATEGORY = Category.TF
@@ -174,8 +174,31 @@ def check(context: RuleContext) -> Iterator[Finding]:
         fix = ("set use_sim_time to true" if source.proof else
                "give both the same use_sim_time (true where a simulator or a bag "
                "publishes /clock)")
-        yield finding_at_node(
-            node,
-            f"{program} {how}: it runs on wall time while {source.how}; {effect}: {fix}",
-            related=(Location(source.node.path, source.node.line, source.node.column),),
-        )
+        related: tuple[Location, ...] = (
+            Location(source.node.path, source.node.line, source.node.column),)
+        overridden = _overridden_true(node)
+        if overridden is not None:
+            how += (f" (the true it is given at {overridden.path}:{overridden.line} is "
+                    f"overridden by this later setting: launch passes the parameters in "
+                    f"order and the last wins)")
+            related += (overridden,)
+        message = f"{program} {how}: it runs on wall time while {source.how}; {effect}: {fix}"
+        if given:
+            yield finding_at_param(node, PARAMETER, message, related)
+        else:
+            yield finding_at_node(node, message, related)
+
+
+def _overridden_true(node: NodeRecord) -> Location | None:
+    """Where the node is given use_sim_time true before the false that wins (a
+    dictionary listed before a parameter file that sets false), when the front-end knows
+    where each setting is written (every setting has its place: ROS 2)."""
+    values = [value for key, value in node.params if key == PARAMETER]
+    places = [(path, line, column) for key, path, line, column in node.param_lines
+              if key == PARAMETER]
+    if len(values) < 2 or len(values) != len(places):
+        return None
+    for value, (path, line, column) in zip(values[:-1], places[:-1]):
+        if value != UNKNOWN_VALUE and truth(value) is True:
+            return Location(path, line, column)
+    return None
