@@ -298,18 +298,33 @@ controller_server.cpp and planner_server.cpp, humble 3c3db59 and main a3a9704)."
 COSTMAP_PLUGIN = "nav2_costmap_2d::Costmap2DROS"
 
 
-def embedded_costmap(server: NodeRecord, documents: Sequence[object],
+class ProcessParams:
+    """A node's dictionary of parameters among its parameter files, in order: launch_ros
+    writes each dictionary as a parameter file under ``/**`` (launch_ros node.py,
+    ``_create_params_file_from_dict``), so every node of the process gets it."""
+
+    __slots__ = ("params",)
+
+    def __init__(self, params: tuple[tuple[str, str], ...]) -> None:
+        self.params = params
+
+
+def embedded_costmap(server: NodeRecord, process: Sequence[object],
                      scope_params: Sequence[tuple[str, str]] = ()) -> NodeRecord | None:
-    """The costmap node a nav2 server runs, with the section of the server's parameter
-    files that names it (and what ``SetParameter`` gives every node)."""
+    """The costmap node a nav2 server runs, with what the server's process is given in
+    order (``process``: parameter files' documents, whose section naming the costmap it
+    reads, and :class:`ProcessParams`), after what ``SetParameter`` gives every node."""
     name = EMBEDDED_COSTMAPS.get((server.package, server.executable))
     if name is None:
         return None
     namespace = (None if server.namespace is None
                  else "/" + "/".join(p for p in (server.namespace.strip("/"), name) if p))
     params = list(scope_params)
-    for document in documents:
-        params.extend(ros2_file_params(document, name, namespace))
+    for item in process:
+        if isinstance(item, ProcessParams):
+            params.extend(item.params)
+        else:
+            params.extend(ros2_file_params(item, name, namespace))
     return replace(server, package="nav2_costmap_2d", executable="", name=name,
                    plugin=COSTMAP_PLUGIN, params=tuple(params), namespace=namespace,
                    param_lines=())

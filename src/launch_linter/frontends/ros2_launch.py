@@ -25,6 +25,7 @@ from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     MAX_PARAMS,
     SPAWNERS,
+    ProcessParams,
     controllers_of,
     embedded_costmap,
     read_yaml_file,
@@ -49,6 +50,7 @@ from launch_linter.frontends.ros2_actions import (
     STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
     Component,
+    Include,
     Params,
     ParamsFile,
     ParamsUnknown,
@@ -70,22 +72,26 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.model.launch import Forwarded
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs
+from launch_linter.resolve.ros2_substitution import Call, Subs, reads_configuration
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
 
 
 class _NodeParams(NamedTuple):
     """What :meth:`Ros2Loader._node_params` reads: the parameters in order (SetParameter's
     first), where each is written (``NodeRecord.param_lines``), why some are not read,
-    and the parameter files' documents."""
+    the parameter files' documents, and what the node's process is given in order: a
+    parameter file's document, or a dictionary's parameters (launch_ros writes each
+    dictionary as a ``/**`` file: every node of the process gets it)."""
 
     params: tuple[tuple[str, str], ...]
     lines: tuple[tuple[str, str, int, int], ...]
     unread: tuple[str, ...]
     documents: list[object]
+    process: list[object]
 
 
 class Ros2Loader(Ros2Runner):
@@ -154,7 +160,7 @@ class Ros2Loader(Ros2Runner):
         )
         self.nodes.append(node)
         documents = given.documents
-        costmap = embedded_costmap(node, documents, scope.parameters)
+        costmap = embedded_costmap(node, given.process, scope.parameters)
         if costmap is not None:
             self.nodes.append(costmap)
         if package == "controller_manager" and documents:
@@ -162,6 +168,15 @@ class Ros2Loader(Ros2Runner):
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
+
+    def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
+        """An include, its arguments kept as :class:`Forwarded` (marked not followed when
+        its file was not read: then nothing after them was added)."""
+        start, followed = len(self.forwarded), self.includes_followed
+        super()._include(action, scope, frame)
+        if self.includes_followed == followed:
+            self.forwarded[start:] = [replace(f, followed=False)
+                                      for f in self.forwarded[start:]]
 
     def _spawned(self, spawner: NodeRecord, action: RunNode, scope: _Scope,
                  frame: _Frame) -> None:
@@ -189,6 +204,7 @@ class Ros2Loader(Ros2Runner):
         places: list[tuple[str, int, int]] = [node_place] * len(scope.parameters)
         unread: list[str] = []
         documents: list[object] = []
+        process: list[object] = []
         for group in groups:
             if isinstance(group, ParamsUnknown):
                 unread.append(group.reason)
@@ -203,6 +219,7 @@ class Ros2Loader(Ros2Runner):
                     unread.append(why)
                     continue
                 documents.append(document)
+                process.append(document)
                 shown = self._display(path)
                 for key, value, at in ros2_file_params_keyed(document, name, namespace):
                     params.append((key, value))
@@ -210,18 +227,24 @@ class Ros2Loader(Ros2Runner):
                     places.append(node_place if line_column is None
                                   else (shown, line_column[0], line_column[1]))
             else:
+                dictionary: list[tuple[str, str]] = []
                 for index, (key, subs) in enumerate(group.items):
                     if is_description_name(key.rsplit(".", 1)[-1]):
                         continue
                     text = resolved_text(self._resolve(subs, scope, frame, where))
                     params.append((key, UNKNOWN_VALUE if text is None else text))
+                    dictionary.append(params[-1])
                     place = group.places[index] if index < len(group.places) else None
                     places.append(node_place if place is None else
                                   (self._display(place.path), place.line, place.column))
+                    if reads_configuration(subs, key):
+                        self.forwarded.append(Forwarded(key, "parameter", *places[-1],
+                                                        frame.condition))
+                process.append(ProcessParams(tuple(dictionary)))
         own = params[:MAX_PARAMS]
         given = tuple(scope.parameters) + tuple(own)
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
-        return _NodeParams(given, lines, tuple(unread), documents)
+        return _NodeParams(given, lines, tuple(unread), documents, process)
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:

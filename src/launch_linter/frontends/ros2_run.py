@@ -46,6 +46,7 @@ from launch_linter.model.included import through_include
 from launch_linter.model.launch import (
     Comment,
     FileStatus,
+    Forwarded,
     LaunchTree,
     UndeclaredUse,
     holds_directive,
@@ -64,6 +65,7 @@ from launch_linter.resolve.ros2_substitution import (
     Ros2Scope,
     Subs,
     SubstitutionError,
+    reads_configuration,
     resolve,
     to_bool,
     written,
@@ -190,6 +192,8 @@ class Ros2Runner:
         self.element_lines: list[tuple[str, int]] = []
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
+        self.forwarded: list[Forwarded] = []
+        self.includes_followed = 0
         self.budget = _Budget()
         self.work = Budget()
         self._where: Where | None = None
@@ -277,6 +281,7 @@ class Ros2Runner:
             descriptions=tuple(self.descriptions),
             nodes=tuple(self.nodes),
             undeclared=undeclared,
+            forwarded=tuple(self.forwarded),
         )
 
     # -- launch configurations read but never declared -----------------------------------
@@ -514,6 +519,10 @@ class Ros2Runner:
             # like the read of this very value, which launch performs before setting it.
             passed.append(name)
             value = self._resolve(value_subs, scope, frame, action.where)
+            self.forwarded.append(Forwarded(
+                name, "include", self._display(frame.filename), action.where.line,
+                action.where.column, frame.condition, resolved_text(value),
+                reads_configuration(value_subs, name)))
             given_values.append((name, value))
             self._set(scope, name, value, frame.condition, f"$(var {name})")
         given = tuple(sorted((name, text_of(value)) for name, value in given_values))
@@ -585,6 +594,7 @@ class Ros2Runner:
         if read.actions is None:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
+        self.includes_followed += 1
         for name in required_arguments(read.actions):
             if name not in passed:
                 self._report(
@@ -619,7 +629,7 @@ _ACTIONS: dict[type, Callable[[Ros2Runner, Any, _Scope, _Frame], None]] = {
     SetEnv: Ros2Runner._set_env,
     PushNamespace: Ros2Runner._push_namespace,
     Group: Ros2Runner._group,
-    Include: Ros2Runner._include,
+    Include: lambda runner, *given: runner._include(*given),  # the subclass's (its record)
     RunNode: _run_node,
     LoadComponents: Ros2Runner._components,
     Deferred: Ros2Runner._deferred,

@@ -66,6 +66,7 @@ def _load() -> None:
         sig_null_disp,
         sig_null_rot,
         sim_time_mismatch,
+        sim_time_not_forwarded,
         tf_cycle,
         unresolved,
         unused_suppression,

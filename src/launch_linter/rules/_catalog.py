@@ -47,6 +47,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("frame_without_publisher", Category.TF),
     ("robot_frame_collision", Category.TF),
     ("sim_time_mismatch", Category.TF),
+    ("sim_time_not_forwarded", Category.TF),
     ("camera_frame_not_optical", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),
