@@ -57,6 +57,12 @@ to some nodes and not to others; a `<param name="use_sim_time">` inside a node's
 the private `~use_sim_time`, which no node reads.
 Only the file that passes the configuration on is searched: a node in another file of the
 tree is that file's matter (it may not take the argument at all).
+Info: 3 independent findings judged, all true (docs/evaluation/sim_time_judged.jsonl:
+rviz2 in IGVC_ROS2's costmap test, the corpus's latest files; joint_state_publisher beside
+robot_state_publisher in a course repository; rviz2 beside FAST_LIO's mapping node), on
+all 5,518 corpus files and 34 whole public ROS 2 repositories nobody had used: far from
+the 20 a warning needs. Where the launch is given `use_sim_time:=true`, the same node is
+`sim_time_mismatch`'s (a warning) when something else in the tree runs on simulated time.
 """
 
 from __future__ import annotations
