@@ -71,7 +71,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.launch import Forwarded
-from launch_linter.model.robot import NodeRecord, spawns_into_simulator
+from launch_linter.model.robot import spawns_into_simulator
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import finding_at_node, program_of
 from launch_linter.rules.sim_time_mismatch import (
@@ -95,15 +95,12 @@ def _passed_on(forwarded: tuple[Forwarded, ...]) -> dict[str, list[Forwarded]]:
     return by_file
 
 
-def _mismatch_reports(context: RuleContext, node: NodeRecord) -> bool:
-    """Whether sim_time_mismatch reports ``node`` (a clock source beside it)."""
-    return any(s.beside(node) for s in clock_sources(context.tree))
-
-
 def check(context: RuleContext) -> Iterator[Finding]:
     by_file = _passed_on(context.tree.forwarded)
     if not by_file:
         return
+    # A node with a clock source beside it is sim_time_mismatch's (one finding per defect).
+    sources = clock_sources(context.tree)
     for node in context.tree.nodes:
         places = by_file.get(node.path)
         if (places is None or node.kind != "node" or node.ros != 2 or not node.executable
@@ -114,7 +111,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if place is None:
             continue
         effect = clock_reaches_tf(context, node)
-        if effect is None or _mismatch_reports(context, node):
+        if effect is None or any(s.beside(node) for s in sources):
             continue
         target = "the include" if place.kind == "include" else "a node"
         yield finding_at_node(
