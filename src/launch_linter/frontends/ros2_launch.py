@@ -137,7 +137,7 @@ class Ros2Loader(Ros2Runner):
         node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
             executable or "", name, tuple(scope.parameters) + params, frame.condition,
-            unread=unread, namespace=known_namespace, ros=2,
+            unread=unread, namespace=known_namespace, ros=2, included_at=frame.sites,
         )
         self.nodes.append(node)
         costmap = embedded_costmap(node, documents, scope.parameters)
@@ -210,15 +210,16 @@ class Ros2Loader(Ros2Runner):
             if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
                 # open(path).read() or $(file-content path): a URDF file read as it is.
                 path = self._resolve(sub.args[0], scope, frame, where)
-                self.descriptions.append(from_file_value(
+                self.descriptions.append(replace(from_file_value(
                     path, self._display(frame.filename), where.line, where.column,
-                    frame.condition, node, os.path.dirname(frame.filename)))
+                    frame.condition, node, os.path.dirname(frame.filename)),
+                    included_at=frame.sites))
                 return
         value = self._resolve(subs, scope, frame, where) if command is None else ()
         source = from_ros2_value(value, command, self._display(frame.filename), where.line,
                                  where.column, frame.condition, node)
         if source is not None:
-            self.descriptions.append(source)
+            self.descriptions.append(replace(source, included_at=frame.sites))
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)
@@ -243,7 +244,8 @@ class Ros2Loader(Ros2Runner):
                 self._display(here.filename), component.where.line, component.where.column,
                 package_text, "", name, tuple(scope.parameters) + node_params, here.condition,
                 plugin=plugin_text,
-                unread=unread, namespace=None if pending else namespace, ros=2))
+                unread=unread, namespace=None if pending else namespace, ros=2,
+                included_at=here.sites))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

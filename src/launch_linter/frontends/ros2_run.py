@@ -125,6 +125,9 @@ class _Frame:
     condition: Condition
     calls: tuple[IncludeCall, ...] = ()
     """(file, values of the arguments it was given) of each include on the way here."""
+    sites: tuple[Location, ...] = ()
+    """The include actions on the way here, from the root's: two runs of one file through
+    different includes are two instances (``NodeRecord.included_at``)."""
 
 
 @dataclass
@@ -595,7 +598,7 @@ class Ros2Runner:
                 )
         inner = _Frame(absolute, read.launch_format, (*frame.chain, absolute),
                        (self._display(frame.filename), action.where.line), frame.condition,
-                       (*frame.calls, call))
+                       (*frame.calls, call), (*frame.sites, site))
         self._run(read.actions, scope, inner)
 
     # -- defined by a subclass, further on ---------------------------------------------------

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from enum import Enum
 
+from launch_linter.model.diagnostic import Location
 from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.transform import Condition
 
@@ -62,10 +63,13 @@ class DescriptionSource(Record):
     namespace: str | None
     """The ROS 1 namespace the ``robot_description`` parameter is set in (``/r1/``), where
     a spawner finds it by its relative name; None when unknown or not ROS 1."""
+    included_at: tuple[Location, ...]
+    """The include actions through which the launch file giving it was run (ROS 2), from
+    the root's: one line run through two includes gives two sources."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args", "open_file", "namespace",
+        "open_args", "open_file", "namespace", "included_at",
     )
 
     def __init__(
@@ -83,6 +87,7 @@ class DescriptionSource(Record):
         open_args: bool = False,
         open_file: tuple[str, str, str] | None = None,
         namespace: str | None = None,
+        included_at: tuple[Location, ...] = (),
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -97,6 +102,7 @@ class DescriptionSource(Record):
         _set(self, "open_args", open_args)
         _set(self, "open_file", open_file)
         _set(self, "namespace", namespace)
+        _set(self, "included_at", included_at)
 
 
 class RobotJoint(Record):
@@ -186,7 +192,9 @@ class NodeRecord(Record):
     a parameter it does not set then has no known value. ``namespace`` is the node's
     namespace (None when unresolved); ``ros`` the ROS version of the launch file.
     ``param_lines`` says where a parameter was set, when the front-end knows it: ``(name,
-    path, line, column)`` (a ROS 1 ``<param>`` inside the node's element).
+    path, line, column)`` (a ROS 1 ``<param>`` inside the node's element). ``included_at``
+    lists the include actions through which its launch file was run, from the root's (ROS
+    2): one node line run through two different includes is two nodes.
     """
 
     path: str
@@ -203,10 +211,11 @@ class NodeRecord(Record):
     namespace: str | None
     ros: int | None
     param_lines: tuple[tuple[str, str, int, int], ...]
+    included_at: tuple[Location, ...]
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros", "param_lines",
+        "plugin", "unread", "namespace", "ros", "param_lines", "included_at",
     )
 
     def __init__(
@@ -225,6 +234,7 @@ class NodeRecord(Record):
         namespace: str | None = "/",
         ros: int | None = None,
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
+        included_at: tuple[Location, ...] = (),
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -241,6 +251,7 @@ class NodeRecord(Record):
         self.namespace = namespace
         self.ros = ros
         self.param_lines = param_lines
+        self.included_at = included_at
         _seal(self)
 
     def given(self, name: str) -> str | None:
