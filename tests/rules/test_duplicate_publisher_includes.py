@@ -150,4 +150,4 @@ def test_a_known_node_started_by_two_includes(tmp_path: Path) -> None:
     })
     [finding] = found(root)
     assert (Path(finding.path).name, finding.severity) == ("main.launch.py", Severity.ERROR)
-    assert "one launch line run by this include" in finding.message
+    assert "one launch line run twice: by this include" in finding.message

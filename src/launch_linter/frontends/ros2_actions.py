@@ -104,6 +104,8 @@ class Include:
     args_known: bool = True
     """False when the arguments passed are not known (a Python expression the linter does
     not model): they may set any launch configuration."""
+    arg_places: tuple[tuple[int, int], ...] = ()
+    """Where each of ``args`` is written (line, column), when the front-end knows it."""
 
 
 @dataclass(frozen=True)

@@ -200,11 +200,13 @@ class _Reader:
         if path is None:
             return None
         args: list[tuple[Subs, Subs]] = []
+        places: list[tuple[int, int]] = []
         for arg in entity.lists.get("arg", []):
             name, value = self.required(arg, "name"), self.required(arg, "value")
             if name is not None and value is not None:
                 args.append((name, value))
-        return Include(where, condition, path, tuple(args))
+                places.append((arg.line, arg.column))
+        return Include(where, condition, path, tuple(args), arg_places=tuple(places))
 
     def node(self, entity: Entity, where: Where, condition: Predicate | None) -> RunNode | None:
         executable = self.subs(entity, "exec")

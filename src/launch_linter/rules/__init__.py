@@ -57,6 +57,7 @@ def _load() -> None:
         ros2_removed_keyword,
         ros2_schema,
         ros2_undeclared_arg,
+        ros2_unused_include_arg,
         roslaunch_error,
         rot_degrees,
         rounded_pi,

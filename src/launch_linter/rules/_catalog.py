@@ -60,6 +60,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("rounded_pi", Category.TF),
     ("ros2_undeclared_arg", Category.LAUNCH),
     ("py_name_error", Category.LAUNCH),
+    ("ros2_unused_include_arg", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

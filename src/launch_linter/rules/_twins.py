@@ -37,9 +37,11 @@ def at_second_run(node: NodeRecord, other: NodeRecord, message: str) -> Finding:
     if split is None:
         return finding_at_node(node, message, (Location(other.path, other.line, other.column),))
     first, second = split
+    # The message names neither include: one shared include file reached from several
+    # roots is then one finding (the first include is the first related place).
     return Finding(path=second.path, line=second.line, column=second.column,
-                   message=f"{message} (one launch line run by this include and by the "
-                           f"one at {first.path}:{first.line})",
+                   message=f"{message} (one launch line run twice: by this include and "
+                           f"by another of the same launch, the first related place)",
                    node=node.name, related=(first, Location(node.path, node.line, node.column)))
 
 
