@@ -45,14 +45,10 @@ def at_second_run(node: NodeRecord, other: NodeRecord, message: str) -> Finding:
                    node=node.name, related=(first, Location(node.path, node.line, node.column)))
 
 
-def _publisher(source: DescriptionSource, publishers: list[NodeRecord]) -> NodeRecord | None:
-    """The ROS 2 robot_state_publisher given ``source`` as its ``robot_description``
-    parameter: the node of the same launch line, run through the same includes."""
-    for node in publishers:
-        if ((node.path, node.line, node.column, node.included_at)
-                == (source.path, source.line, source.column, source.included_at)):
-            return node
-    return None
+def _place(record: DescriptionSource | NodeRecord) -> tuple[object, ...]:
+    """A launch line and the includes it ran through: a ROS 2 robot_state_publisher and
+    the ``robot_description`` parameter it is given share it."""
+    return (record.path, record.line, record.column, record.included_at)
 
 
 def _same_frames(node: NodeRecord, other: NodeRecord) -> bool:
@@ -69,11 +65,13 @@ def twin_descriptions(tree: LaunchTree) -> Iterator[Finding]:
     """Two ROS 2 robot_state_publishers that run together (two launch elements, or one
     run through two different includes) in one namespace with one frame prefix, whose
     descriptions share joints: each of those edges has two publishers. One finding per
-    later publisher, at it (or at its include), naming the edges."""
+    later publisher, at it (or at its include), naming the edges. The descriptions of a
+    tree are bounded (``MAX_DESCRIPTIONS_PER_TREE``), and so are the pairs compared."""
     publishers = [n for n in tree.nodes
                   if n.package == PUBLISHER and n.kind == "node" and n.ros == 2]
     if len(publishers) < 2:
         return
+    by_place = {_place(n): n for n in publishers}
     described: list[tuple[NodeRecord, dict[tuple[str, str], None]]] = []
     edges: dict[tuple[str, str], None] = {}  # ordered and without repeats
     last: DescriptionSource | None = None
@@ -82,7 +80,7 @@ def twin_descriptions(tree: LaunchTree) -> Iterator[Finding]:
             # Joints come per description entry, told apart by identity (one entry run
             # through two includes is two entries of equal value).
             last = joint.source
-            node = _publisher(joint.source, publishers)
+            node = by_place.get(_place(joint.source))
             edges = {}
             if node is not None:
                 described.append((node, edges))
