@@ -24,17 +24,42 @@ roslaunch refuses the same include (`unused args [...] for include of [...]`, ro
 ## Example
 ```xml
 <launch>
+  <arg name="use_sim" default="true"/>
   <include file="$(dirname)/controller.launch.xml">
+    <arg name="use_sim" value="$(var use_sim)"/>
     <arg name="publish_robot_state" value="false"/>
   </include>
 </launch>
 ```
-where `controller.launch.xml` declares no `publish_robot_state` and reads none.
+where `controller.launch.xml` has no `publish_robot_state`:
+```xml
+<launch>
+  <arg name="use_sim" default="false"/>
+  <node pkg="robot_state_publisher" exec="robot_state_publisher"/>
+  <node pkg="controller_manager" exec="ros2_control_node" unless="$(var use_sim)"/>
+</launch>
+```
 
 ## Use instead
-Declare the argument in the included file and use it (there:
-`<arg name="publish_robot_state" default="true"/>` and
-`<include file="..." if="$(var publish_robot_state)"/>`), or stop passing it.
+```xml
+<launch>
+  <arg name="use_sim" default="true"/>
+  <include file="$(dirname)/controller.launch.xml">
+    <arg name="use_sim" value="$(var use_sim)"/>
+    <arg name="publish_robot_state" value="false"/>
+  </include>
+</launch>
+```
+with `controller.launch.xml` declaring the argument and using it (or stop passing it):
+```xml
+<launch>
+  <arg name="use_sim" default="false"/>
+  <arg name="publish_robot_state" default="true"/>
+  <node pkg="robot_state_publisher" exec="robot_state_publisher"
+        if="$(var publish_robot_state)"/>
+  <node pkg="controller_manager" exec="ros2_control_node" unless="$(var use_sim)"/>
+</launch>
+```
 
 ## Known problems
 An include whose file the linter cannot follow, or that holds anything whose reads it
@@ -54,6 +79,9 @@ from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 ID = "ros2_unused_include_arg"
 CATEGORY = Category.LAUNCH
 SEVERITY = Severity.INFO
+EXAMPLE_PATH = "example.launch.xml"
+EXAMPLE_INCLUDED = "controller.launch.xml"
+"""The file the documented example includes: the second block of its sections."""
 
 
 def check(context: RuleContext) -> Iterable[Finding]:
