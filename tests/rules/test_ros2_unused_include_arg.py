@@ -118,6 +118,19 @@ def test_what_the_linter_cannot_see_is_silent(tmp_path: Path) -> None:
         assert lint(tmp_path, {name: text, "main.launch.py": main}) == [], case
 
 
+def test_a_parameter_file_with_substitutions_is_read(tmp_path: Path) -> None:
+    """autoware's pose initializer: its parameter file, loaded with allow_substs, reads
+    the argument ($(var x)); one that holds literals does not (a shape estimator's)."""
+    (tmp_path / "child.launch.xml").write_text(
+        '<launch><node pkg="p" exec="e"><param from="$(dirname)/p.yaml" allow_substs="true"/>'
+        '</node></launch>')
+    main = py(include("child.launch.xml", "'x': '1'"))
+    (tmp_path / "p.yaml").write_text("/**:\n  ros__parameters:\n    r: $(var x)\n")
+    assert lint(tmp_path, {"main.launch.py": main}) == []
+    (tmp_path / "p.yaml").write_text("/**:\n  ros__parameters:\n    r: false\n")
+    assert len(lint(tmp_path, {"main.launch.py": main})) == 1
+
+
 def test_a_file_chosen_by_an_argument_is_an_interface(tmp_path: Path) -> None:
     """autoware's vehicle_interface.launch.xml of $(var vehicle_model)_launch: each
     vehicle's file fills the arguments its own way."""

@@ -177,9 +177,11 @@ class Params:
 
 @dataclass(frozen=True)
 class ParamsFile:
-    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``)."""
+    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``).
+    ``substitutions``: launch performs the ``$(...)`` in the file (``allow_substs``)."""
 
     path: Subs
+    substitutions: bool = False
 
 
 @dataclass(frozen=True)

@@ -12,7 +12,8 @@ not run (a false condition: read statically), and every configuration the files'
 names (a ``LaunchConfiguration`` handed to a function the linter does not model). Anything
 it cannot see (an include not followed or skipped, an ``OpaqueFunction`` not run, a
 configuration name not literal, launch arguments not known, a parameter file loaded with
-``allow_substs``) makes the include's arguments unknown: never reported; so does a file
+``allow_substs`` that cannot be read, or any given in Python, where ``allow_substs`` is
+not kept) makes the include's arguments unknown: never reported; so does a file
 chosen by a launch configuration (``$(var vehicle_model)_launch``: its arguments are an
 interface that other files fill).
 """
@@ -28,6 +29,7 @@ from launch_linter.frontends.ros2_actions import (
     DeclareArg,
     Deferred,
     Include,
+    ParamsFile,
     SetVar,
     Unfollowed,
     Where,
@@ -35,9 +37,12 @@ from launch_linter.frontends.ros2_actions import (
 from launch_linter.frontends.ros2_declared import Declarations
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.resolve.ros2_substitution import Call, Text
+from launch_linter.resolve.xml_safe import read_regular_file
 
 RULE = "ros2_unused_include_arg"
 MAX_SUGGESTION_CANDIDATES = 500
+MAX_PARAMETER_FILE_BYTES = 512 * 1024
+"""What is read of a parameter file for its ``$(var)`` (its parser reads as much)."""
 MAX_SUGGESTED_NAMES = 32
 """Bounds of the "did you mean": the declared names one reported argument is compared
 with, and the reported arguments that get one (each comparison costs)."""
@@ -134,9 +139,30 @@ class ArgumentWatch:
                 watch.used.add(name)
         if python and text.count("launch_configurations") > len(CONTEXT_READS.findall(text)):
             watch.unknown = True  # the launch context's configurations, read otherwise
-        if "allow_substs" in text:
-            # A parameter file whose $(var) substitutions launch performs: not read here.
+        if python and "allow_substs" in text:
+            # A parameter file whose $(var) launch performs, given in Python (where the
+            # linter does not keep allow_substs): not read.
             watch.unknown = True
+
+    def parameter_file(self, path: str | None) -> None:
+        """A parameter file loaded with ``allow_substs`` (XML, YAML) by a node of the
+        include being watched: the ``$(var x)`` in it are reads; a file that cannot be
+        read (or a path not resolved) makes the include unknown."""
+        if not self._open or not any(open_watch.passed for open_watch in self._open):
+            return
+        watch = self._open[-1]
+        try:
+            data = b"" if path is None else read_regular_file(path, MAX_PARAMETER_FILE_BYTES)
+        except OSError:
+            path = None
+        if path is None:
+            watch.unknown = True
+            return
+        for match in XML_MENTIONS.finditer(data.decode("utf-8", "replace")):
+            if match.group(1) is None:
+                watch.unknown = True
+            else:
+                watch.used.add(match.group(1))
 
     def start(self, include: Include, target: str, passed: dict[str, tuple[int, int]]
               ) -> None:
@@ -229,7 +255,8 @@ def _static_reads(action: object, used: set[str]) -> bool:
     stack: list[object] = [action]
     while stack:
         item = stack.pop()
-        if isinstance(item, (Include, Deferred, Unfollowed)):
+        if isinstance(item, (Include, Deferred, Unfollowed)) or (
+                isinstance(item, ParamsFile) and item.substitutions):
             unseen = True
         elif isinstance(item, Call):
             if item.name == "var" and item.args:

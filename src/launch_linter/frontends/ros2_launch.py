@@ -178,6 +178,8 @@ class Ros2Loader(Ros2Runner):
             elif isinstance(group, ParamsFile):
                 path_value = self._resolve(group.path, scope, frame, where)
                 path = resolved_text(path_value)
+                if group.substitutions:
+                    self.arguments.parameter_file(path)
                 if path is None:
                     unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
                     continue

@@ -280,7 +280,8 @@ class _Reader:
         out: list[Params | ParamsFile | ParamsUnknown] = []
         for entity in entities:
             if "from" in entity.attrs:
-                out.append(ParamsFile(self.subs(entity, "from") or ()))
+                substitutions = entity.attrs.get("allow_substs", "false").strip().lower()
+                out.append(ParamsFile(self.subs(entity, "from") or (), substitutions != "false"))
                 continue
             items: list[tuple[str, Subs]] = []
             self.param_items(entity, "", items)
