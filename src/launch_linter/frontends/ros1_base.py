@@ -323,7 +323,7 @@ class Ros1Base:
             self._report("unresolved", self._path, self._element or root,
                          exc.message)
         tree = self._tree(FileStatus.OK)
-        if tree.nodes and only_parse_checked(absolute):
+        if tree.nodes and only_parse_checked(absolute, self.options.packages):
             tree = replace(tree, parse_check_only=True)
         return tree
 
