@@ -48,6 +48,7 @@ MAX_FILES_PER_TREE = 2_000
 _ARG_ATTRS = ("name", "value", "default", "doc")
 _NODE_LATE_ATTRS = ("machine", "args", "output", "respawn", "respawn_delay", "cwd",
                     "launch-prefix", "required")
+_NODE_LATE_NAMES = frozenset(_NODE_LATE_ATTRS)
 _PARAM_VALUE_ATTRS = ("value", "textfile", "binfile", "command")
 _ROSPARAM_ATTRS = ("command", "ns", "file", "param", "subst_value")
 _MACHINE_OLD_ATTRS = ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")

@@ -311,8 +311,9 @@ class Ros1Tags(Ros1Base):
                     known = None if "$(anon" in value else resolved_text(
                         resolved if resolved is not None else self._resolve_text(
                             value, sub, "value", context, dict(context.anon)))
-                params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
-                lines.append((key.lstrip("~"), path, sub.line, sub.column))
+                key = key.lstrip("~")
+                params.append((key, UNKNOWN_VALUE if known is None else known))
+                lines.append((key, path, sub.line, sub.column))
             elif sub.tag == "rosparam":
                 found, why = self._rosparam_values(sub, context)
                 params.extend(found)
