@@ -484,8 +484,8 @@ class Ros1Base:
         attrib = element.attrib
         found: dict[str, Value] = {}
         for attribute in attributes:
-            text = attrib.get(attribute)
-            if text is not None:
+            if attribute in attrib:  # a test, not a ``get`` call: most are absent
+                text = attrib[attribute]
                 found[attribute] = (
                     ((text,) if text else ()) if "$" not in text
                     else self._substitute(text, element, attribute, context, anon)

@@ -144,7 +144,7 @@ class Ros1Tags(Ros1Base):
                  value: Value | None, default: Value | None, condition: Condition) -> None:
         """roslaunch's ``LoaderContext.add_arg``; a declaration under an unresolved
         condition may or may not happen, so what it would set becomes a hole."""
-        conditional = not condition.always
+        conditional = bool(condition.literals)  # not ``always``: a property call per arg
         earlier = context.arg_names.get(name)
         if earlier is None:
             context.arg_names[name] = conditional
