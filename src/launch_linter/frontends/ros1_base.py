@@ -127,6 +127,8 @@ IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
 
 
 def include_call(path: str, args: dict[str, Value]) -> IncludeCall:
+    if not args:  # every root file without --arg
+        return path, ()
     return path, tuple(sorted((name, text_of(value)) for name, value in args.items()))
 
 
@@ -329,7 +331,11 @@ class Ros1Base:
         return tree
 
     def _tree(self, status: FileStatus) -> LaunchTree:
-        remapped = set(self.remapped_descriptions)
+        descriptions = self.descriptions
+        if self.other_descriptions and self.remapped_descriptions:
+            remapped = set(self.remapped_descriptions)
+            descriptions = [*descriptions, *(
+                source for name, source in self.other_descriptions if name in remapped)]
         return LaunchTree(
             root=self.root_display,
             status=status,
@@ -338,8 +344,7 @@ class Ros1Base:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
-            descriptions=(*self.descriptions, *(
-                source for name, source in self.other_descriptions if name in remapped)),
+            descriptions=tuple(descriptions),
             nodes=tuple(with_node_params(self.nodes, self.node_params, self.params_unread,
                                           self.tf_prefixes)),
         )
