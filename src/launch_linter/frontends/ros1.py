@@ -74,10 +74,11 @@ class Ros1Loader(Ros1Tags):
     def _node(self, element: Element, context: _Context, is_test: bool = False) -> None:
         """``<node>`` (or ``<test>``): every attribute is resolved in roslaunch's order;
         static transform publishers become :class:`StaticTransform` records."""
-        condition = self._condition(element, context)
+        attrib = element.attrib
+        condition = (self._condition(element, context) if "if" in attrib or "unless" in attrib
+                     else ALWAYS)
         if condition is None:
             return
-        attrib = element.attrib
         if is_test:
             for attribute in ("respawn", "respawn_delay", "output"):
                 if attribute in attrib:
