@@ -45,6 +45,7 @@ from launch_linter.resolve.xml_safe import Element
 MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
 _PARAM_SOURCES = ("textfile", "binfile", "command")
+_PARAM_SOURCE_NAMES = frozenset(_PARAM_SOURCES)
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
 
 
@@ -217,7 +218,7 @@ class Ros1Tags(Ros1Base):
             self._child_values[element] = written
         count = int(written is not None)
         sources: dict[str, Value] = {}
-        if not attrib.keys().isdisjoint(_PARAM_SOURCES):  # most have a value only
+        if not _PARAM_SOURCE_NAMES.isdisjoint(attrib):  # most have a value only
             for key in _PARAM_SOURCES:
                 text = attrib.get(key)
                 if text is not None:
