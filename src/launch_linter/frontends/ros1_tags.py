@@ -45,6 +45,7 @@ from launch_linter.resolve.xml_safe import Element
 MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
 _PARAM_SOURCES = ("textfile", "binfile", "command")
+_PARAM_SOURCE_NAMES = frozenset(_PARAM_SOURCES)
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
 NODELET = ("nodelet", "nodelet")
 NODELET_ARGS_UNKNOWN = "nodelet (arguments not resolved)"
@@ -160,7 +161,7 @@ class Ros1Tags(Ros1Base):
                  value: Value | None, default: Value | None, condition: Condition) -> None:
         """roslaunch's ``LoaderContext.add_arg``; a declaration under an unresolved
         condition may or may not happen, so what it would set becomes a hole."""
-        conditional = not condition.always
+        conditional = bool(condition.literals)  # not ``always``: a property call per arg
         earlier = context.arg_names.get(name)
         if earlier is None:
             context.arg_names[name] = conditional
@@ -233,7 +234,7 @@ class Ros1Tags(Ros1Base):
             self._child_values[element] = written
         count = int(written is not None)
         sources: dict[str, Value] = {}
-        if not attrib.keys().isdisjoint(_PARAM_SOURCES):  # most have a value only
+        if not _PARAM_SOURCE_NAMES.isdisjoint(attrib):  # most have a value only
             for key in _PARAM_SOURCES:
                 text = attrib.get(key)
                 if text is not None:
@@ -327,8 +328,9 @@ class Ros1Tags(Ros1Base):
                     known = None if "$(anon" in value else resolved_text(
                         resolved if resolved is not None else self._resolve_text(
                             value, sub, "value", context, dict(context.anon)))
-                params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
-                lines.append((key.lstrip("~"), path, sub.line, sub.column))
+                key = key.lstrip("~")
+                params.append((key, UNKNOWN_VALUE if known is None else known))
+                lines.append((key, path, sub.line, sub.column))
             elif sub.tag == "rosparam":
                 found, why, places = self._rosparam_values(sub, context)
                 params.extend(found)

@@ -104,6 +104,8 @@ class Include:
     args_known: bool = True
     """False when the arguments passed are not known (a Python expression the linter does
     not model): they may set any launch configuration."""
+    arg_places: tuple[tuple[int, int], ...] = ()
+    """Where each of ``args`` is written (line, column), when the front-end knows it."""
 
 
 @dataclass(frozen=True)
@@ -178,9 +180,11 @@ class Params:
 
 @dataclass(frozen=True)
 class ParamsFile:
-    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``)."""
+    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``).
+    ``substitutions``: launch performs the ``$(...)`` in the file (``allow_substs``)."""
 
     path: Subs
+    substitutions: bool = False
 
 
 @dataclass(frozen=True)

@@ -163,6 +163,7 @@ class Ros2Loader(Ros2Runner):
             self._display(frame.filename), where.line, where.column, package,
             executable or "", name, given.params, frame.condition,
             unread=given.unread, namespace=known_namespace, ros=2, param_lines=given.lines,
+            included_at=frame.sites,
         )
         self.nodes.append(node)
         documents = given.documents
@@ -229,6 +230,8 @@ class Ros2Loader(Ros2Runner):
             elif isinstance(group, ParamsFile):
                 path_value = self._resolve(group.path, scope, frame, where)
                 path = resolved_text(path_value)
+                if group.substitutions:
+                    self.arguments.parameter_file(path)
                 if path is None:
                     unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
                     continue
@@ -279,15 +282,16 @@ class Ros2Loader(Ros2Runner):
             if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
                 # open(path).read() or $(file-content path): a URDF file read as it is.
                 path = self._resolve(sub.args[0], scope, frame, where)
-                self.descriptions.append(from_file_value(
+                self.descriptions.append(replace(from_file_value(
                     path, self._display(frame.filename), where.line, where.column,
-                    frame.condition, node, os.path.dirname(frame.filename)))
+                    frame.condition, node, os.path.dirname(frame.filename)),
+                    included_at=frame.sites))
                 return
         value = self._resolve(subs, scope, frame, where) if command is None else ()
         source = from_ros2_value(value, command, self._display(frame.filename), where.line,
                                  where.column, frame.condition, node)
         if source is not None:
-            self.descriptions.append(source)
+            self.descriptions.append(replace(source, included_at=frame.sites))
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)
@@ -311,7 +315,8 @@ class Ros2Loader(Ros2Runner):
                 self._display(here.filename), component.where.line, component.where.column,
                 package_text, "", name, given.params, here.condition,
                 plugin=plugin_text, unread=given.unread,
-                namespace=None if pending else namespace, ros=2, param_lines=given.lines))
+                namespace=None if pending else namespace, ros=2, param_lines=given.lines,
+                included_at=here.sites))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

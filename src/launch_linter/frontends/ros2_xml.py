@@ -228,11 +228,13 @@ class _Reader:
         if path is None:
             return None
         args: list[tuple[Subs, Subs]] = []
+        places: list[tuple[int, int]] = []
         for arg in entity.lists.get("arg", []):
             name, value = self.required(arg, "name"), self.required(arg, "value")
             if name is not None and value is not None:
                 args.append((name, value))
-        return Include(where, condition, path, tuple(args))
+                places.append((arg.line, arg.column))
+        return Include(where, condition, path, tuple(args), arg_places=tuple(places))
 
     def node(self, entity: Entity, where: Where, condition: Predicate | None) -> RunNode | None:
         executable = self.subs(entity, "exec")
@@ -306,7 +308,8 @@ class _Reader:
         out: list[Params | ParamsFile | ParamsUnknown] = []
         for entity in entities:
             if "from" in entity.attrs:
-                out.append(ParamsFile(self.subs(entity, "from") or ()))
+                substitutions = entity.attrs.get("allow_substs", "false").strip().lower()
+                out.append(ParamsFile(self.subs(entity, "from") or (), substitutions != "false"))
                 continue
             items: list[tuple[str, Subs]] = []
             places: list[Where | None] = []

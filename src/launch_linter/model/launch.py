@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from enum import Enum
 
 from launch_linter.model.diagnostic import Problem
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint, RobotModel
 from launch_linter.model.transform import Condition, StaticTransform
 
@@ -201,17 +201,19 @@ class LaunchTree(Record):
         parse_check_only: bool = False,
         forwarded: tuple[Forwarded, ...] = (),
     ) -> None:
-        _set(self, "root", root)
-        _set(self, "status", status)
-        _set(self, "transforms", transforms)
-        _set(self, "problems", problems)
-        _set(self, "files", files)
-        _set(self, "comments", comments)
-        _set(self, "element_lines", element_lines)
-        _set(self, "descriptions", descriptions)
-        _set(self, "nodes", nodes)
-        _set(self, "joints", joints)
-        _set(self, "robots", robots)
-        _set(self, "undeclared", undeclared)
-        _set(self, "parse_check_only", parse_check_only)
-        _set(self, "forwarded", forwarded)
+        _open(self)  # made for every root file: see _open
+        self.root = root
+        self.status = status
+        self.transforms = transforms
+        self.problems = problems
+        self.files = files
+        self.comments = comments
+        self.element_lines = element_lines
+        self.descriptions = descriptions
+        self.nodes = nodes
+        self.joints = joints
+        self.robots = robots
+        self.undeclared = undeclared
+        self.parse_check_only = parse_check_only
+        self.forwarded = forwarded
+        _seal(self)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from enum import Enum
 
+from launch_linter.model.diagnostic import Location
 from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.transform import Condition
 
@@ -62,10 +63,13 @@ class DescriptionSource(Record):
     namespace: str | None
     """The ROS 1 namespace the ``robot_description`` parameter is set in (``/r1/``), where
     a spawner finds it by its relative name; None when unknown or not ROS 1."""
+    included_at: tuple[Location, ...]
+    """The include actions through which the launch file giving it was run (ROS 2), from
+    the root's: one line run through two includes gives two sources."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args", "open_file", "namespace",
+        "open_args", "open_file", "namespace", "included_at",
     )
 
     def __init__(
@@ -83,6 +87,7 @@ class DescriptionSource(Record):
         open_args: bool = False,
         open_file: tuple[str, str, str] | None = None,
         namespace: str | None = None,
+        included_at: tuple[Location, ...] = (),
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -97,6 +102,7 @@ class DescriptionSource(Record):
         _set(self, "open_args", open_args)
         _set(self, "open_file", open_file)
         _set(self, "namespace", namespace)
+        _set(self, "included_at", included_at)
 
 
 class RobotJoint(Record):
@@ -190,6 +196,8 @@ class NodeRecord(Record):
     (a ``<rosparam>`` file's key), a ROS 2 ``parameters=`` dictionary key, XML/YAML
     ``<param>`` or parameter file key; ROS 2 front-ends give every parameter a place, in
     the order of ``params`` (the node's element where the value's own place is unknown).
+    ``included_at`` lists the include actions through which its launch file was run, from
+    the root's (ROS 2): one node line run through two different includes is two nodes.
     """
 
     path: str
@@ -206,10 +214,12 @@ class NodeRecord(Record):
     namespace: str | None
     ros: int | None
     param_lines: tuple[tuple[str, str, int, int], ...]
+    included_at: tuple[Location, ...]
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros", "param_lines", "_last_given", "_last_set",
+        "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "_last_given",
+        "_last_set",
     )
     _private = ("_last_given", "_last_set")
     _last_given: dict[str, str] | None
@@ -231,6 +241,7 @@ class NodeRecord(Record):
         namespace: str | None = "/",
         ros: int | None = None,
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
+        included_at: tuple[Location, ...] = (),
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -247,6 +258,7 @@ class NodeRecord(Record):
         self.namespace = namespace
         self.ros = ros
         self.param_lines = param_lines
+        self.included_at = included_at
         self._last_given = None
         self._last_set = None
         _seal(self)
@@ -278,20 +290,29 @@ class NodeRecord(Record):
 
 
 class RobotElement(Record):
-    """A ``<link>`` or ``<joint>`` of an expanded description, by name, where it was written.
+    """A ``<link>``, ``<joint>`` or top-level ``<material>`` of an expanded description, by
+    name, where it was written.
 
-    ``name`` is None when the name could not be known; ``condition`` is the launch element's
-    condition and the undecided ``xacro:if``/``xacro:unless`` around the element."""
+    ``name`` is None when the name could not be known (a ``<material>`` without a name is
+    ``''``, as urdfdom keeps it); ``condition`` is the launch element's condition and the
+    undecided ``xacro:if``/``xacro:unless`` around the element. For an element a xacro
+    macro made, ``path``/``line`` are the outermost call and ``defined`` is where the
+    element is written in the macro; ``included`` is the ``xacro:include`` that read the
+    file the element (or its outermost call) is written in, None in the top file."""
 
     kind: str
-    """``link`` or ``joint``."""
+    """``link``, ``joint``, ``material``, or ``origin``: an ``<origin>`` urdfdom ignores
+    (a second one in a link's ``<visual>``, ``<collision>``, ``<inertial>`` or in a joint),
+    named after its owner (``<visual> of link 'x'``)."""
     name: str | None
     path: str
     line: int
     column: int
     condition: Condition
+    defined: tuple[str, int, int] | None
+    included: tuple[str, int, int] | None
 
-    __slots__ = ("kind", "name", "path", "line", "column", "condition")
+    __slots__ = ("kind", "name", "path", "line", "column", "condition", "defined", "included")
 
     def __init__(
         self,
@@ -301,6 +322,8 @@ class RobotElement(Record):
         line: int,
         column: int,
         condition: Condition | None = None,
+        defined: tuple[str, int, int] | None = None,
+        included: tuple[str, int, int] | None = None,
     ) -> None:
         _set(self, "kind", kind)
         _set(self, "name", name)
@@ -308,6 +331,8 @@ class RobotElement(Record):
         _set(self, "line", line)
         _set(self, "column", column)
         _set(self, "condition", Condition() if condition is None else condition)
+        _set(self, "defined", defined)
+        _set(self, "included", included)
 
 
 class FaultKind(str, Enum):

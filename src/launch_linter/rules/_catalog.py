@@ -56,12 +56,14 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("urdf_duplicate_name", Category.TF),
     ("urdf_missing_link", Category.TF),
     ("urdf_empty_robot", Category.TF),
+    ("urdf_repeated_origin", Category.TF),
     ("xacro_error", Category.TF),
     ("xacro_unused_block", Category.TF),
     ("xacro_param_as_arg", Category.TF),
     ("rounded_pi", Category.TF),
     ("ros2_undeclared_arg", Category.LAUNCH),
     ("py_name_error", Category.LAUNCH),
+    ("ros2_unused_include_arg", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

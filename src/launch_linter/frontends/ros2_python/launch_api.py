@@ -320,7 +320,20 @@ class Interpreter(Calls):
             isinstance(pair, (tuple, list)) and len(pair) == 2 for pair in launch_arguments)
         known = launch_arguments is None or pairs_known
         return Include(self.where(node), self.condition(kwargs, node), path, tuple(pairs),
-                       args_known=known)
+                       args_known=known, arg_places=self._arg_places(pairs, node))
+
+    def _arg_places(self, pairs: list[tuple[Subs, Subs]], node: ast.Call
+                    ) -> tuple[tuple[int, int], ...]:
+        """Where each argument name is written in the include's own ``launch_arguments``
+        (a string literal there); (0, 0) when elsewhere (a dictionary built before) or
+        when the include is made in a helper function (reported at the helper's call)."""
+        written_at: dict[str, tuple[int, int]] = {}
+        given = next((k.value for k in node.keywords if k.arg == "launch_arguments"), None)
+        if given is not None and not self.call_sites:
+            for inner in ast.walk(given):
+                if isinstance(inner, ast.Constant) and isinstance(inner.value, str):
+                    written_at.setdefault(inner.value, (inner.lineno, inner.col_offset + 1))
+        return tuple(written_at.get(written(name), (0, 0)) for name, _ in pairs)
 
     def _source(self, args: list[object], kwargs: dict[str, object], node: ast.Call
                 ) -> object:
