@@ -76,8 +76,24 @@ from launch_linter.model.launch import Forwarded
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs, reads_configuration
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+
+
+def reads_configuration(subs: Subs, name: str) -> bool:
+    """Whether ``subs`` reads the launch configuration ``name`` (``$(var name)``,
+    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by the
+    substitutions' own size."""
+    stack = [subs]
+    while stack:
+        for sub in stack.pop():
+            if not isinstance(sub, Call):
+                continue
+            if (sub.name == "var" and sub.args and len(sub.args[0]) == 1
+                    and isinstance(sub.args[0][0], Text) and sub.args[0][0].text == name):
+                return True
+            stack.extend(sub.args)
+    return False
 
 
 class _NodeParams(NamedTuple):
@@ -179,11 +195,18 @@ class Ros2Loader(Ros2Runner):
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         """An include, its arguments kept as :class:`Forwarded` (marked not followed when
         its file was not read: then nothing after them was added)."""
-        start, followed = len(self.forwarded), self.includes_followed
+        sites = {id(site) for site in self._included_at.values()}
         super()._include(action, scope, frame)
-        if self.includes_followed == followed:
-            self.forwarded[start:] = [replace(f, followed=False)
-                                      for f in self.forwarded[start:]]
+        # A file read is recorded with a new site: none new, the include was not followed.
+        followed = any(id(site) not in sites for site in self._included_at.values())
+        for name_subs, value_subs in action.args:
+            name = resolved_text(self._resolve(name_subs, scope, frame, action.where))
+            if name is not None:
+                value = resolved_text(self._resolve(value_subs, scope, frame, action.where))
+                self.forwarded.append(Forwarded(
+                    name, "include", self._display(frame.filename), action.where.line,
+                    action.where.column, frame.condition, value,
+                    reads_configuration(value_subs, name), followed))
 
     def _description_argument(self, first: Subs, scope: _Scope, frame: _Frame, where: Where,
                               node: str | None) -> None:

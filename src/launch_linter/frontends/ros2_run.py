@@ -66,7 +66,6 @@ from launch_linter.resolve.ros2_substitution import (
     Ros2Scope,
     Subs,
     SubstitutionError,
-    reads_configuration,
     resolve,
     to_bool,
     written,
@@ -197,7 +196,6 @@ class Ros2Runner:
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
         self.forwarded: list[Forwarded] = []
-        self.includes_followed = 0
         self.budget = _Budget()
         self.work = Budget()
         self._where: Where | None = None
@@ -534,10 +532,6 @@ class Ros2Runner:
             # like the read of this very value, which launch performs before setting it.
             passed[name] = place
             value = self._resolve(value_subs, scope, frame, action.where)
-            self.forwarded.append(Forwarded(
-                name, "include", self._display(frame.filename), action.where.line,
-                action.where.column, frame.condition, resolved_text(value),
-                reads_configuration(value_subs, name)))
             given_values.append((name, value))
             self._set(scope, name, value, frame.condition, f"$(var {name})")
         given = tuple(sorted((name, text_of(value)) for name, value in given_values))
@@ -609,7 +603,6 @@ class Ros2Runner:
         if read.actions is None:
             self.declarations.opened(f"line {action.where.line}: an include is not followed")
             return
-        self.includes_followed += 1
         for name in required_arguments(read.actions):
             if name not in passed:
                 self._report(
