@@ -289,3 +289,46 @@ def test_the_index_locates_through_the_layout(tmp_path: Path) -> None:
     assert index.locate(str(pkg / "launch" / "x.py")).path == str(pkg / "bringup/launch/x.py")
     gone = index.locate(str(pkg / "launch" / "y.py"))
     assert gone.path is None and gone.absent
+
+
+DUAL = """<?xml version="1.0"?>
+<package format="3"><name>{name}</name>
+<buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>
+<buildtool_depend condition="$ROS_VERSION == 2">ament_python</buildtool_depend>
+<export>
+  <build_type condition="$ROS_VERSION == 1">catkin</build_type>
+  <build_type condition="$ROS_VERSION == 2">ament_python</build_type>
+</export></package>
+"""
+
+
+def test_a_package_for_both_ros_versions_is_read_for_the_one_asked(tmp_path: Path) -> None:
+    # carla-simulator/ros-bridge: catkin under ROS_VERSION 1, ament_python under 2, and
+    # setup() inside `if ROS_VERSION == 2:` (not read): a ROS 2 include of a launch file
+    # the source holds is unknown, never "not found" because the first build type is catkin.
+    from launch_linter.workspace.packages import package_ros_version
+
+    manifest = write(tmp_path / "src" / "dual" / "package.xml", DUAL.format(name="dual"))
+    assert package_ros_version(str(manifest)) is None
+    assert package_ros_version(str(manifest), 1) == 1
+    assert package_ros_version(str(manifest), 2) == 2
+    write(tmp_path / "src" / "dual" / "setup.py",
+          "import os\nif os.environ['ROS_VERSION'] == '2':\n"
+          "    from setuptools import setup\n    setup(name='dual')\n")
+    write(tmp_path / "src" / "dual" / "launch" / "inner.launch.py", INNER)
+    top = write(tmp_path / "src" / "dual" / "launch" / "top.launch.py",
+                includer("dual", "inner.launch.py"))
+    assert not [m for r, m in findings(top) if r == "roslaunch_error"]
+
+
+def test_a_ros1_find_of_a_ros2_package_proves_nothing_absent(tmp_path: Path) -> None:
+    # pmb2_navigation: a catkin package left beside the ament one its $(find) names; the
+    # ROS 1 package of that name (another branch) holds the file.
+    ament_package(tmp_path / "src", "sensors",
+                  "install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})")
+    write(tmp_path / "src" / "old" / "package.xml", CATKIN.format(name="old"))
+    top = write(tmp_path / "src" / "old" / "launch" / "a.launch",
+                '<launch><include file="$(find sensors)/launch/laser.launch"/></launch>')
+    found = findings(top)
+    assert not [f for f in found if f[0] == "roslaunch_error"]
+    assert any("builds for ROS 2" in m for r, m in found if r == "unresolved")

@@ -179,3 +179,16 @@ def test_twenty_thousand_arguments_and_includes_stay_linear(tmp_path: Path) -> N
     assert len(lint(tmp_path, {"includes.launch.xml": many_includes},
                     "includes.launch.xml")) == 20_000
     assert time.process_time() - started < 60
+
+
+def test_a_decorated_entry_point_may_declare_what_it_is_passed(tmp_path: Path) -> None:
+    """beluga: ``@with_launch_arguments(get_launch_arguments())`` declares the arguments
+    around ``generate_launch_description``; the decorator is not read, so: unknown."""
+    child = py("Node(package='p', executable='e')",
+               before="def with_launch_arguments(arguments):\n"
+                      "    return lambda function: function\n"
+                      "@with_launch_arguments([DeclareLaunchArgument('map')])\n")
+    main = py(include("child.launch.py", "'map': 'map.yaml'"))
+    assert lint(tmp_path, {"child.launch.py": child, "main.launch.py": main}) == []
+    undecorated = child.replace("@with_launch_arguments([DeclareLaunchArgument('map')])\n", "")
+    assert len(lint(tmp_path, {"child.launch.py": undecorated})) == 1

@@ -261,7 +261,7 @@ class Ros1Loader(Ros1Tags):
             located = self.options.packages.locate(
                 path if os.path.isabs(path) else os.path.join(
                     os.path.dirname(context.filename), path),
-                near=os.path.dirname(context.filename))
+                near=os.path.dirname(context.filename), ros_version=1)
             if located.path is None and not located.absent and not self.options.study_errors:
                 self._report("unresolved", context.filename, element,
                              f"include file {self._quoted(path)!r} not followed: "

@@ -59,6 +59,17 @@ no group matched: a name that is not a string literal."""
 CONTEXT_READS = re.compile(r"launch_configurations\s*(?:\[|\.get\(|\.__getitem__\()\s*['\"]")
 XML_MENTIONS = re.compile(r"\$\(var\s+(?:([^\s)$]+)|(?=\$))")
 """``$(var x)`` in XML or YAML launch text; no group matched: ``$(var $(...))``."""
+ENTRY_POINT = re.compile(r"^[ \t]*def generate_launch_description\b", re.M)
+
+
+def _decorated_entry(text: str) -> bool:
+    """Whether a ``generate_launch_description`` stands under a decorator (the line
+    before it starts with ``@``): one look back per definition, linear in the text."""
+    for match in ENTRY_POINT.finditer(text):
+        before = text.rfind("\n", 0, max(match.start() - 1, 0))
+        if text[before + 1:match.start()].lstrip().startswith("@"):
+            return True
+    return False
 
 
 class _Watch:
@@ -139,6 +150,10 @@ class ArgumentWatch:
                 watch.used.add(name)
         if python and text.count("launch_configurations") > len(CONTEXT_READS.findall(text)):
             watch.unknown = True  # the launch context's configurations, read otherwise
+        if python and _decorated_entry(text):
+            # A decorator around generate_launch_description may declare arguments
+            # (beluga's @with_launch_arguments(...)): what it declares is not read.
+            watch.unknown = True
         if python and "allow_substs" in text:
             # A parameter file whose $(var) launch performs, given in Python (where the
             # linter does not keep allow_substs): not read.

@@ -10,6 +10,10 @@ xacro accepts the call, takes the block from the caller and drops it without a w
 `<origin>` passed to place a sensor is ignored and the sensor sits at the macro's own
 origin. The macro's interface promises something its body does not do.
 
+Info: of 6 judged findings 1 was a defect (pr2_description drops the measured Kinect
+origin); the other 5 were callers passing a placeholder block the macro does not need
+(docs/severity.md, precision trials 3 and 4).
+
 ## Example
 ```xml
 <robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro">
@@ -56,7 +60,7 @@ from launch_linter.rules._robot import robots_of
 
 ID = "xacro_unused_block"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 EXAMPLE_PATH = "example.urdf.xacro"
 
 

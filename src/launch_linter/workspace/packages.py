@@ -11,6 +11,7 @@ below ``rospack_nosubdirs``. Earlier roots win; within a root, the first package
 from __future__ import annotations
 
 import os
+import re
 import typing
 from collections.abc import Sequence
 from typing import NamedTuple
@@ -95,13 +96,16 @@ class PackageIndex:
                     self._installed.add(share)
         return found
 
-    def locate(self, path: str, near: str | None = None) -> Located:
+    def locate(self, path: str, near: str | None = None,
+               ros_version: int | None = None) -> Located:
         """The file that ``path`` names, the way ROS finds it: the path itself if it
         exists; else, inside a package found in source, the source file its install
         rules install there (``FindPackageShare`` names the share folder, which the
         source folder stands for); else absent when that is proven (see
         :class:`Located`), unknown otherwise. ``near`` is a folder of the linted tree
-        (the including file's): a path under it or a source root can be proven absent."""
+        (the including file's): a path under it or a source root can be proven absent.
+        ``ros_version`` 1 is a ROS 1 file's ``$(find)``: a ROS 2 package found here is not
+        the one roslaunch finds, so nothing is proven absent in it."""
         path = os.path.normpath(os.path.abspath(path))
         if reads.is_file(path):
             return Located(path, False)
@@ -110,7 +114,7 @@ class PackageIndex:
             return Located(path, False)
         owner = self._owner(path)
         if owner is not None:
-            return self._in_package(path, *owner)
+            return self._in_package(path, *owner, ros_version=ros_version)
         inside = [*self.roots, *([near] if near else [])]
         if any(_under(path, os.path.abspath(root)) for root in inside):
             return Located(None, True, "not found")
@@ -144,10 +148,15 @@ class PackageIndex:
                 best = (name, directory)
         return best
 
-    def _in_package(self, path: str, name: str, directory: str) -> Located:
+    def _in_package(self, path: str, name: str, directory: str,
+                    ros_version: int | None = None) -> Located:
         if directory in self._installed:
             return Located(None, True, f"not in the installed share folder of '{name}'")
         layout = self._layout(name, directory)
+        if ros_version == 1 and layout is not None:
+            return Located(None, False, f"package '{name}' found here builds for ROS 2; "
+                           "the ROS 1 package of that name that roslaunch finds is not in "
+                           "the linted paths")
         if layout is None or (not layout.rules and not layout.reasons):
             return Located(None, True, "not found")
         relative = os.path.relpath(path, directory).replace(os.sep, "/")
@@ -169,7 +178,7 @@ class PackageIndex:
         runs from the source folder: ``$(find)`` is it, in the devel space)."""
         def read() -> Layout | None:
             manifest = os.path.join(directory, "package.xml")
-            ros2 = reads.is_file(manifest) and package_ros_version(manifest) == 2
+            ros2 = reads.is_file(manifest) and package_ros_version(manifest, 2) == 2
             # Imported here: install rules are read only when a file is not where the
             # source folder would have it.
             from launch_linter.workspace.install_layout import read_layout
@@ -377,9 +386,26 @@ def nearest_package_xml(launch_file: str) -> str | None:
     return None
 
 
-def package_ros_version(manifest: str) -> int | None:
+_ROS_VERSION_CONDITION = re.compile(r"\s*\$ROS_VERSION\s*(==|!=)\s*([12])\s*$")
+
+
+def _holds(condition: str | None, ros_version: int | None) -> bool | None:
+    """Whether a manifest element's ``condition`` (REP 149) holds when building for
+    ``ros_version``: True without one; None when it is not the plain
+    ``$ROS_VERSION == N`` / ``!= N`` form or the version is not given."""
+    if condition is None or not condition.strip():
+        return True
+    match = _ROS_VERSION_CONDITION.match(condition)
+    if match is None or ros_version is None:
+        return None
+    return (ros_version == int(match.group(2))) == (match.group(1) == "==")
+
+
+def package_ros_version(manifest: str, building_for: int | None = None) -> int | None:
     """Which ROS a ``package.xml`` builds for: 2 for an ``ament_*`` build type (or
-    buildtool), 1 for catkin; None when it does not say (or cannot be read)."""
+    buildtool), 1 for catkin; None when it does not say (or cannot be read). A package
+    that builds for both (``<build_type condition="$ROS_VERSION == 1">catkin</build_type>``
+    beside ``ament_python`` for 2) says which only for ``building_for`` given."""
     try:
         document = parse_xml(
             read_regular_file(manifest, MAX_MANIFEST_BYTES),
@@ -392,10 +418,19 @@ def package_ros_version(manifest: str) -> int | None:
     for child in document.root.children:
         if child.tag == "export":
             for grandchild in child.children:
-                if grandchild.tag == "build_type" and build_type is None:
+                if grandchild.tag != "build_type" or build_type is not None:
+                    continue
+                holds = _holds(grandchild.get("condition"), building_for)
+                if holds is None:
+                    return None
+                if holds:
                     build_type = grandchild.text.strip()
         elif child.tag == "buildtool_depend":
-            buildtools.append(child.text.strip())
+            holds = _holds(child.get("condition"), building_for)
+            if holds is None:
+                return None
+            if holds:
+                buildtools.append(child.text.strip())
     if build_type is not None:
         if build_type.startswith("ament"):
             return 2
