@@ -309,6 +309,10 @@ class FaultKind(str, Enum):
     undeclared ``$(arg)``, a block the call does not match."""
     DROPPED = "dropped"
     """xacro goes on and drops content silently: a block parameter the macro never inserts."""
+    PARAM_AS_ARG = "param_as_arg"
+    """A macro's body reads its own parameter X as ``$(arg X)``, which reads xacro args
+    only: the value a call gives X is ignored (and xacro stops where no arg X is
+    declared: then a ``REFUSED`` fault with the same path, line and name)."""
 
 
 class DescriptionFault(Record):
@@ -316,7 +320,9 @@ class DescriptionFault(Record):
 
     ``proven`` is false when an earlier element could not be followed (an include not
     read, an unsupported directive), so that what looks missing may be defined there;
-    ``conditions`` are the undecided ``xacro:if``/``xacro:unless`` texts around it."""
+    ``conditions`` are the undecided ``xacro:if``/``xacro:unless`` texts around it;
+    ``name`` the arg of a refused ``$(arg)`` or of a ``PARAM_AS_ARG`` fault (whose
+    ``message`` names the macro: ``macro 'camera'``)."""
 
     path: str
     line: int
@@ -324,8 +330,9 @@ class DescriptionFault(Record):
     message: str
     proven: bool
     conditions: tuple[str, ...]
+    name: str | None
 
-    __slots__ = ("path", "line", "kind", "message", "proven", "conditions")
+    __slots__ = ("path", "line", "kind", "message", "proven", "conditions", "name")
 
     def __init__(
         self,
@@ -335,6 +342,7 @@ class DescriptionFault(Record):
         message: str,
         proven: bool = True,
         conditions: tuple[str, ...] = (),
+        name: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -342,6 +350,7 @@ class DescriptionFault(Record):
         _set(self, "message", message)
         _set(self, "proven", proven)
         _set(self, "conditions", conditions)
+        _set(self, "name", name)
 
 
 class RobotModel(Record):

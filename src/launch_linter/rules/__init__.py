@@ -74,6 +74,7 @@ def _load() -> None:
         urdf_missing_link,
         urdf_root,
         xacro_error,
+        xacro_param_as_arg,
         xacro_unused_block,
     )
 

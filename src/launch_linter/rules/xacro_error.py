@@ -12,7 +12,9 @@ file, for a Gazebo spawner as much as for robot_state_publisher); info when it s
 undecided `xacro:if` and in a `.xacro` file linted on its own (it may be a part that its
 includer completes). When an include could not be read or a directive is not supported
 before it (the macro or arg may be defined there), or the xacro call has unresolved words
-(they may give the arg), nothing is proven: it stays an `unresolved` diagnostic.
+(they may give the arg), nothing is proven: it stays an `unresolved` diagnostic. A
+`$(arg X)` where X is a parameter of the enclosing macro is left to `xacro_param_as_arg`,
+which reports it at the same line and level and says what to write instead.
 
 ## Why is this bad?
 xacro stops with an error (`unknown macro name: xacro:x`, `Undefined parameters [x]`,
@@ -65,9 +67,13 @@ def check(context: RuleContext) -> Iterator[Finding]:
     for robot in robots_of(context):
         effect = ("robot_state_publisher publishes nothing" if publisher or robot.standalone
                   else "the launch stops before any node starts")
+        params_as_args = {(f.path, f.line, f.name) for f in robot.faults
+                          if f.kind is FaultKind.PARAM_AS_ARG}
         for fault in robot.faults:
             if fault.kind is not FaultKind.REFUSED:
                 continue
+            if fault.name is not None and (fault.path, fault.line, fault.name) in params_as_args:
+                continue  # xacro_param_as_arg's
             if not fault.proven:
                 continue  # an ``unresolved`` diagnostic says what was not followed
             when = (f" when {' and '.join(fault.conditions)}" if fault.conditions else "")

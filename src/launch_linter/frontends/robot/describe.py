@@ -20,7 +20,14 @@ from launch_linter.frontends.params import (
     ros2_file_params,
 )
 from launch_linter.frontends.robot.alternatives import alternatives
-from launch_linter.frontends.robot.xacro_values import DROPPED, KEPT, REFUSED, TF_PREFIX_PARAM
+from launch_linter.frontends.robot.xacro_values import (
+    DROPPED,
+    FAULT_KINDS,
+    KEPT,
+    PARAM_AS_ARG,
+    REFUSED,
+    TF_PREFIX_PARAM,
+)
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
@@ -454,13 +461,14 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             f"{'; '.join(joint.reasons)[:300]}",
         ))
     elements, names_known = elements_of(root, display, source.condition)
-    followed = all(p.kind in (KEPT, DROPPED) for p in problems)
+    followed = all(p.kind in (KEPT, DROPPED, PARAM_AS_ARG) for p in problems)
     robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
                        faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found
 
 
-_FAULT_KINDS = (REFUSED, DROPPED)
+_FOLLOWED = (KEPT, *FAULT_KINDS)
+"""Problem kinds after which the expansion goes on as the real xacro's would."""
 
 
 def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
@@ -471,15 +479,16 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
     out: list[DescriptionFault] = []
     followed = True
     for problem in problems:
-        if problem.kind in _FAULT_KINDS:
-            # A block never inserted is read from the macro alone: nothing hides it.
-            proven = problem.kind == DROPPED or (
+        if problem.kind in FAULT_KINDS:
+            # A block never inserted and a parameter read as an arg are read from the
+            # macro alone: nothing hides them.
+            proven = problem.kind != REFUSED or (
                 followed and not (source.open_args and "$(arg " in problem.message))
-            kind = FaultKind.REFUSED if problem.kind == REFUSED else FaultKind.DROPPED
-            out.append(DescriptionFault(display(problem.path), problem.line, kind,
-                                        problem.message, proven, problem.conditions))
+            out.append(DescriptionFault(display(problem.path), problem.line,
+                                        FaultKind(problem.kind), problem.message, proven,
+                                        problem.conditions, problem.name))
         # A refusal stops the real xacro; what comes after it is checked as if it did not.
-        followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
+        followed = followed and problem.kind in _FOLLOWED
     return tuple(out)
 
 
@@ -501,12 +510,12 @@ def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
         if (followed or problem.kind != REFUSED) and said_as not in said:
             out.append(problem)
             said.add(said_as)
-        followed = followed and problem.kind in (KEPT, DROPPED, REFUSED)
+        followed = followed and problem.kind in _FOLLOWED
     return out
 
 
 def _all_followed(problems: Sequence[XacroProblem]) -> bool:
-    return all(problem.kind in (KEPT, DROPPED, REFUSED) for problem in problems)
+    return all(problem.kind in _FOLLOWED for problem in problems)
 
 
 def _unresolved(source: DescriptionSource, message: str) -> Problem:

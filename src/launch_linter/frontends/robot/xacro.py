@@ -27,10 +27,15 @@ import typing
 from collections.abc import Callable, Mapping
 
 from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
+from launch_linter.frontends.robot.xacro_macros import (
+    ParamArg,
+    macro_params,
+    never_inserted,
+    params_read_as_args,
+)
 from launch_linter.frontends.robot.xacro_values import (
     _GLOB,
     _MATH_PREFIX,
-    _PARAM,
     _PREFIX,
     _TOKEN,
     _WHOLE_EXPRESSION,
@@ -43,6 +48,7 @@ from launch_linter.frontends.robot.xacro_values import (
     MAX_OUTPUT_ELEMENTS,
     MAX_TEXT,
     MAX_WORK,
+    PARAM_AS_ARG,
     PLUGIN_TEXT_TAGS,
     REFUSED,
     UNKNOWN,
@@ -58,7 +64,6 @@ from launch_linter.frontends.robot.xacro_values import (
     _Refused,
     _Table,
     _Unknown,
-    _unquoted,
     legacy_tag,
     legacy_tags,
     valid_name,
@@ -115,6 +120,10 @@ class XacroExpander:
         self._yaml_files: dict[str, tuple[object, int] | _Unknown] = {}
         self._load_yaml: object | None = None
         self._call_site: tuple[str, int, int] | None = None
+        self._param_args: dict[str, dict[tuple[int, int], list[ParamArg]]] = {}
+        """Per file: its macros' parameters read as ``$(arg)``, by the macro's position."""
+        self._arg_lines: dict[tuple[str, int, str], int] = {}
+        """(file, element line, arg) of such a use -> the use's own line."""
 
     # -- entry -------------------------------------------------------------------------
     def expand(self, path: str, data: bytes | None = None) -> Expansion:
@@ -156,9 +165,17 @@ class XacroExpander:
                 raise _Abort(exc.message, self._path, self._line) from None
 
     def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
-                 conditions: tuple[str, ...] = ()) -> None:
+                 conditions: tuple[str, ...] = (), name: str | None = None) -> None:
         if len(self.problems) < 1000:
-            self.problems.append(XacroProblem(path, line, message, False, kind, conditions))
+            self.problems.append(XacroProblem(path, line, message, False, kind, conditions,
+                                              name))
+
+    def _refusal(self, path: str, line: int, message: str, refused: _Refused,
+                 conditions: tuple[str, ...]) -> None:
+        # An undeclared arg that is a macro's parameter is placed at the use's own line.
+        arg = refused.arg
+        at = line if arg is None else self._arg_lines.get((path, line, arg), line)
+        self._problem(path, at, message, REFUSED, conditions, arg)
 
     def _read(self, absolute: str, at: tuple[str, int] | None,
               data: bytes | None = None) -> Element | None:
@@ -184,7 +201,9 @@ class XacroExpander:
                           f"{self.display(absolute)}: {exc.strerror or exc}")
             return None
         try:
-            return parse_xml(data, PLUGIN_TEXT_TAGS).root
+            root = parse_xml(data, PLUGIN_TEXT_TAGS).root
+            self._param_args[absolute] = params_read_as_args(data, self._legacy)
+            return root
         except XmlError as exc:
             if at is None:  # placed at the file and line: no need to name them
                 raise _Abort(f"not well-formed XML: {exc.message}", absolute,
@@ -248,7 +267,7 @@ class XacroExpander:
             name = rest[0]
             self._args_read.add(name)
             if name not in self.args:
-                raise _Refused(f"$(arg {name}): the arg is not declared and not given")
+                raise _Refused(f"$(arg {name}): the arg is not declared and not given", name)
             value = self.args[name]
             if value is None:
                 raise _Unknown(f"$(arg {name}): its value is not known")
@@ -352,8 +371,8 @@ class XacroExpander:
                 node.attrib[name] = text
                 node.unknown[name] = unknown.reason
                 if isinstance(unknown, _Refused):
-                    self._problem(node.path, node.line, f"{name}={text!r}: {unknown.reason}",
-                                  REFUSED, node.conditions)
+                    self._refusal(node.path, node.line, f"{name}={text!r}: {unknown.reason}",
+                                  unknown, node.conditions)
 
     def _children(self, elements: list[Element], path: str, table: _Table,
                   out: ExpandedNode, conditions: tuple[str, ...]) -> None:
@@ -376,9 +395,11 @@ class XacroExpander:
                 continue
             try:
                 self._directive(element, tag[len(_PREFIX):], path, table, out, conditions)
+            except _Refused as refused:
+                self._refusal(path, element.line, f"<{tag}>: {refused.reason}", refused,
+                              conditions)
             except _Unknown as unknown:
-                kind = REFUSED if isinstance(unknown, _Refused) else UNKNOWN
-                self._problem(path, element.line, f"<{tag}>: {unknown.reason}", kind,
+                self._problem(path, element.line, f"<{tag}>: {unknown.reason}", UNKNOWN,
                               conditions)
 
     def _directive(self, element: Element, what: str, path: str, table: _Table,
@@ -473,40 +494,19 @@ class XacroExpander:
         name = element.attrib.get("name", "")
         if name.startswith(_PREFIX):
             name = name[len(_PREFIX):]
-        params: list[str] = []
-        defaults: dict[str, tuple[str | None, str | None]] = {}
-        for match in _PARAM.finditer(element.attrib.get("params", "")):
-            param, sep, forward, default = match.groups()
-            params.append(param)
-            if not sep:
-                continue
-            if forward:
-                defaults[param] = (param, default if forward == "^|" else None)
-            else:
-                # A quoted default (xyz:='0 0 0') keeps its spaces; xacro reads it as
-                # the text inside the quotes.
-                defaults[param] = (None, _unquoted(default))
+        params, defaults = macro_params(element.attrib.get("params", ""))
         table.macros[name] = _Macro(params, defaults, element, path)
         self._defines_macros = True
-        for param in params:
-            if param.startswith("*") and not self._inserts(element, param.lstrip("*")):
-                self._problem(path, element.line, f"block parameter '{param}' of macro "
-                              f"'{name}' is never inserted (no <xacro:insert_block "
-                              f"name=\"{param.lstrip('*')}\"/>)", DROPPED)
-
-    def _inserts(self, element: Element, block: str) -> bool:
-        """Whether ``element`` holds an ``insert_block`` that may insert ``block`` (one
-        whose name is an expression may; unprefixed too, for a legacy xacro)."""
-        tags = {_PREFIX + "insert_block"} | ({"insert_block"} if self._legacy else set())
-        for child in element.children:
-            self._charge()
-            if child.tag in tags:
-                name = child.attrib.get("name", "")
-                if name == block or "$" in name:
-                    return True
-            if self._inserts(child, block):
-                return True
-        return False
+        for param in never_inserted(element, params, self._legacy, self._charge):
+            self._problem(path, element.line, f"block parameter '{param}' of macro "
+                          f"'{name}' is never inserted (no <xacro:insert_block "
+                          f"name=\"{param.lstrip('*')}\"/>)", DROPPED)
+        # Found once per file, at the outermost macro (a nested one is defined only
+        # while its outer macro is called).
+        for use in self._param_args.get(path, {}).pop((element.line, element.column), ()):
+            self._arg_lines.setdefault((path, use.element_line, use.name), use.line)
+            self._problem(path, use.line, f"macro '{use.macro}'", PARAM_AS_ARG,
+                          name=use.name)
 
     def _include(self, element: Element, path: str, table: _Table, out: ExpandedNode,
                  conditions: tuple[str, ...]) -> None:

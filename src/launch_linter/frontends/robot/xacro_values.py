@@ -59,7 +59,12 @@ class _Unknown(Exception):
 
 class _Refused(_Unknown):
     """What the real xacro stops on (an undefined macro, a missing parameter, an
-    undeclared ``$(arg)``): unknown to the expander as well, and a fault of the source."""
+    undeclared ``$(arg)``): unknown to the expander as well, and a fault of the source.
+    ``arg`` names the undeclared arg of a refused ``$(arg)``."""
+
+    def __init__(self, reason: str, arg: str | None = None) -> None:
+        super().__init__(reason)
+        self.arg = arg
 
 
 UNKNOWN = "unknown"
@@ -70,6 +75,10 @@ REFUSED = "refused"
 """A problem kind: the real xacro stops here (see :class:`_Refused`)."""
 DROPPED = "dropped"
 """A problem kind: the real xacro silently drops content here (a block never inserted)."""
+PARAM_AS_ARG = "param_as_arg"
+"""A problem kind: a macro reads its own parameter as ``$(arg)``, which never sees it."""
+FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG)
+"""The kinds that are faults of the source itself."""
 
 
 class XacroProblem(Record):
@@ -81,11 +90,13 @@ class XacroProblem(Record):
     fatal: bool
     """True when the expansion stopped (a bound was reached or the root is unreadable)."""
     kind: str
-    """``UNKNOWN``, ``KEPT``, ``REFUSED`` or ``DROPPED``."""
+    """``UNKNOWN``, ``KEPT``, ``REFUSED``, ``DROPPED`` or ``PARAM_AS_ARG``."""
     conditions: tuple[str, ...]
     """The undecided ``xacro:if``/``xacro:unless`` texts around it (see ExpandedNode)."""
+    name: str | None
+    """The arg of a refused ``$(arg)`` or of a ``PARAM_AS_ARG`` use."""
 
-    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions")
+    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions", "name")
 
     def __init__(
         self,
@@ -95,6 +106,7 @@ class XacroProblem(Record):
         fatal: bool = False,
         kind: str = UNKNOWN,
         conditions: tuple[str, ...] = (),
+        name: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -102,6 +114,7 @@ class XacroProblem(Record):
         _set(self, "fatal", fatal)
         _set(self, "kind", kind)
         _set(self, "conditions", conditions)
+        _set(self, "name", name)
 
 
 TF_PREFIX_PARAM = "tf_prefix"
