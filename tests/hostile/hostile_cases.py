@@ -90,6 +90,21 @@ def _same_names() -> str:
     return f'<launch><arg name="v"/>{params}{nodes}{node("n")}</launch>'
 
 
+def _prefixed_publishers(folder: Path) -> str:
+    # One description of 40 joints published by 20,000 robot_state_publishers, each in its
+    # namespace with its own tf_prefix: the prefixed copies of its frames stay bounded.
+    links = "".join(f'<link name="l{i}"/>' for i in range(41))
+    joints = "".join(f'<joint name="j{i}" type="fixed"><parent link="l{i}"/>'
+                     f'<child link="l{i + 1}"/></joint>' for i in range(40))
+    _write(folder, "many.urdf", f'<robot name="r">{links}{joints}</robot>')
+    groups = "".join(f'<group ns="r{i}"><param name="tf_prefix" value="r{i}"/>'
+                     f'<node pkg="robot_state_publisher" type="robot_state_publisher" '
+                     f'name="rsp"/></group>' for i in range(20_000))
+    return _write(folder, "prefixed_publishers.launch",
+                  '<launch><param name="robot_description" '
+                  f'textfile="$(dirname)/many.urdf"/>{groups}{node("n")}</launch>')
+
+
 def _many_includes(folder: Path) -> str:
     _write(folder, "included/leaf.launch",
            "<launch>" + '<arg name="x" default="1"/>' * 3000 + node("leaf") + "</launch>")
@@ -289,6 +304,7 @@ CASES: dict[str, Case] = {
     "doubling_let": Case("work", _text("doubling_let.launch.xml", _doubling_let()), "longer than"),
     "many_includes": Case("work", _many_includes, "work budget"),
     "same_names": Case("work", _text("same_names.launch", _same_names())),
+    "prefixed_publishers": Case("work", _prefixed_publishers),
     "undeclared_reads": Case("work", _text("undeclared.launch.xml", _undeclared_reads()),
                              "does not exist"),
     "eval_growth": Case("work", _text("eval_growth.launch", _eval_growth())),

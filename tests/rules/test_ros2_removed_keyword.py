@@ -44,6 +44,13 @@ def test_silent_on_foxy_or_when_the_keywords_are_the_only_evidence(
     assert _found(tmp_path, distro) == []
 
 
+@pytest.mark.parametrize("distro", ["melodic", "noetic"])
+def test_a_ros1_target_says_nothing_of_the_ros2_distribution(tmp_path: Path, distro: str) -> None:
+    # A mixed repository linted with --ros-distro noetic: its ROS 2 files are judged as
+    # with no target given, not as if Noetic were a distribution after Foxy.
+    assert _found(tmp_path, distro) == []
+
+
 def test_the_keywords_are_evidence_of_foxy(tmp_path: Path) -> None:
     # Positional arguments are Foxy's only form: with the keywords as evidence and no
     # distribution given, ros2_positional_args says nothing.

@@ -32,11 +32,12 @@ def run(ns: argparse.Namespace) -> int:
     options = lint_options(ns, config)
     result = lint_command_paths(ns, options, config)
     if ns.format == "json":
-        document = json_report.transforms_document(result)
-        document.update(node_edges.document_part(result, options.knowledge))
+        document = json_report.transforms_document(result, options.ros_distro)
+        document.update(node_edges.document_part(result, options.knowledge,
+                                                 options.ros_distro))
         json_report.write(document, sys.stdout)
         return EXIT_OK
-    edges = published(result)
+    edges = published(result, options.ros_distro)
     # The entry points are named only when there are several to tell apart.
     several = len({root for item in edges for root in item.entry_points}) > 1
     for item in sorted(edges, key=lambda item: isinstance(item.edge, RobotJoint)):
@@ -45,7 +46,7 @@ def run(ns: argparse.Namespace) -> int:
             sys.stdout.write(text.format_joint(item.edge, roots) + "\n")
         else:
             sys.stdout.write(text.format_transform(item.edge, roots) + "\n")
-    lines = list(node_edges.text_lines(result, options.knowledge))
+    lines = list(node_edges.text_lines(result, options.knowledge, options.ros_distro))
     for line in lines:
         sys.stdout.write(line + "\n")
     if not edges and not lines:

@@ -123,7 +123,7 @@ class Ros1Loader(Ros1Tags):
                                 _conjoin(context.condition, condition))
         if package_text is not None and type_text is not None:
             self._frame_node(element, context, condition, name_text, package_text, type_text,
-                             None if ns_unresolved else ns)
+                             None if ns_unresolved else ns, late.get("args"))
             if package_text == RSP_PACKAGE and not ns_unresolved:
                 self._description_remap(element, context, ns)
         if is_test or package is None or node_type is None:

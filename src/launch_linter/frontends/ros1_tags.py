@@ -46,6 +46,22 @@ MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
 _PARAM_SOURCES = ("textfile", "binfile", "command")
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
+NODELET = ("nodelet", "nodelet")
+NODELET_ARGS_UNKNOWN = "nodelet (arguments not resolved)"
+"""The program of a ``nodelet`` node whose arguments the linter cannot read: unknown."""
+
+
+def nodelet_loaded(args: str | None) -> str | None:
+    """What a ``nodelet`` node runs, by its arguments (nodelet's ``nodelet.cpp``): None
+    for ``manager`` (a container that publishes nothing itself), the nodelet type
+    (``pkg/Class``) for ``load TYPE MANAGER`` and ``standalone TYPE``, else unknown
+    (nodelet noetic-devel c7973f0 ``nodelet/src/nodelet.cpp`` 106-136, 316-383)."""
+    words = args.split() if args is not None else []
+    if words and words[0] == "manager":
+        return None
+    if len(words) >= {"load": 3, "standalone": 2}.get(words[0] if words else "", 9):
+        return words[1]
+    return NODELET_ARGS_UNKNOWN
 
 
 class Ros1Tags(Ros1Base):
@@ -287,10 +303,10 @@ class Ros1Tags(Ros1Base):
 
     def _frame_node(self, element: Element, context: _Context, condition: Condition,
                     name: str | None, package: str, executable: str,
-                    namespace: str | None) -> None:
+                    namespace: str | None, args: Value | None = None) -> None:
         """Keep a launched node with the parameters it is given inside its element
         (``<param>``, ``<rosparam>`` text and files); the knowledge base tells which of
-        them matter."""
+        them matter. A ``nodelet`` node is the nodelet its arguments load."""
         params: list[tuple[str, str]] = []
         unread: list[str] = []
         lines: list[tuple[str, str, int, int]] = []
@@ -318,10 +334,13 @@ class Ros1Tags(Ros1Base):
                 params.extend(found)
                 if why:
                     unread.append(why)
+        plugin = (nodelet_loaded(None if args is None else resolved_text(args))
+                  if (package, executable) == NODELET else None)
         self.nodes.append(NodeRecord(
             path, element.line, element.column, package,
             executable, name, tuple(params), _conjoin(context.condition, condition),
-            unread=tuple(unread), namespace=namespace, ros=1, param_lines=tuple(lines),
+            plugin=plugin, unread=tuple(unread), namespace=namespace, ros=1,
+            param_lines=tuple(lines),
         ))
 
     def _rosparam_values(self, element: Element, context: _Context

@@ -88,18 +88,23 @@ class EdgeSpec(Record):
 
 class Prefix(Record):
     """A parameter that prefixes every published frame (``tf_frame_prefix``); when
-    ``empty_means_namespace``, an empty prefix is the node's namespace."""
+    ``empty_means_namespace``, an empty prefix is the node's namespace, and so it is in
+    the ROS 1 distributions ``namespace_when_empty_in`` names (gazebo_plugins' GazeboRos
+    up to melodic)."""
 
     param: str
     enabled_by: str | None
     empty_means_namespace: bool
+    namespace_when_empty_in: tuple[str, ...]
 
-    __slots__ = ("param", "enabled_by", "empty_means_namespace")
+    __slots__ = ("param", "enabled_by", "empty_means_namespace", "namespace_when_empty_in")
 
-    def __init__(self, param: str, enabled_by: str | None, empty_means_namespace: bool) -> None:
+    def __init__(self, param: str, enabled_by: str | None, empty_means_namespace: bool,
+                 namespace_when_empty_in: tuple[str, ...] = ()) -> None:
         _set(self, "param", param)
         _set(self, "enabled_by", enabled_by)
         _set(self, "empty_means_namespace", empty_means_namespace)
+        _set(self, "namespace_when_empty_in", namespace_when_empty_in)
 
 
 class Entry(Record):
@@ -369,9 +374,15 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         if not isinstance(prefix_data, dict):
             raise KnowledgeError(f"{where}.prefix must be an object")
         enabled = prefix_data.get("enabled_by")
+        distros = _texts(prefix_data.get("namespace_when_empty_in", []),
+                         f"{where}.prefix.namespace_when_empty_in")
+        unknown = [d for d in distros if d not in ROS1_DISTROS]
+        if unknown:
+            raise KnowledgeError(f"{where}.prefix.namespace_when_empty_in names "
+                                 f"{unknown[0]!r}, not one of {', '.join(ROS1_DISTROS)}")
         prefix = Prefix(_text(prefix_data.get("param"), f"{where}.prefix.param"),
                         None if enabled is None else _text(enabled, f"{where}.prefix.enabled_by"),
-                        bool(prefix_data.get("empty_means_namespace", False)))
+                        bool(prefix_data.get("empty_means_namespace", False)), distros)
     sources = data.get("sources")
     if not isinstance(sources, list) or not sources:
         raise KnowledgeError(f"{where}.sources must list where the entry was read")

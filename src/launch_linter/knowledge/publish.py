@@ -65,11 +65,14 @@ class Parameters:
     """The value of each parameter of ``entry`` for ``node``: as given, else the entry's
     default when every parameter source of the node was read, else unknown (None)."""
 
-    def __init__(self, entry: Entry, node: NodeRecord, assume: bool = False) -> None:
+    def __init__(self, entry: Entry, node: NodeRecord, assume: bool = False,
+                 distro: str | None = None) -> None:
         self.entry = entry
         self.node = node
         self.assume = assume
         """Whether defaults stand for parameters that an unread file may set."""
+        self.distro = distro
+        """The target distribution (``--ros-distro``), None when not given."""
 
     def value(self, name: str, depth: int = 0) -> str | None:
         given = self.node.given(name)
@@ -127,7 +130,8 @@ class Parameters:
             if not enabled:
                 return ""
         prefix = self.value(spec.param)
-        if prefix == "" and spec.empty_means_namespace:
+        if prefix == "" and (spec.empty_means_namespace
+                             or self.distro in spec.namespace_when_empty_in):
             prefix = self.node.namespace
         if prefix is None:
             return None
@@ -136,14 +140,15 @@ class Parameters:
         return prefix.lstrip("/")
 
 
-def published(entry: Entry, node: NodeRecord, assume: bool = False
-              ) -> tuple[list[PublishedEdge], list[EdgeSpec]]:
+def published(entry: Entry, node: NodeRecord, assume: bool = False,
+              distro: str | None = None) -> tuple[list[PublishedEdge], list[EdgeSpec]]:
     """The edges ``node`` publishes (frames None where unknown), and the edges it may
     publish: those whose conditions are unknown. With ``assume``, the entry's defaults
-    stand for parameters that an unread parameter file may set."""
+    stand for parameters that an unread parameter file may set; ``distro``: the target
+    distribution, where the prefix depends on it."""
     if not has_input(entry, node):
         return [], []
-    params = Parameters(entry, node, assume)
+    params = Parameters(entry, node, assume, distro)
     prefix = params.prefix()
     sure: list[PublishedEdge] = []
     maybe: list[EdgeSpec] = []

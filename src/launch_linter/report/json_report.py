@@ -133,14 +133,14 @@ def joint_json(root: str, j: RobotJoint) -> dict[str, Any]:
     }
 
 
-def transforms_document(result: LintResult) -> dict[str, Any]:
+def transforms_document(result: LintResult, distro: str | None = None) -> dict[str, Any]:
     """Each edge once (see :mod:`launch_linter.report.published`): ``root`` is the first
     tree it was found in, ``entry_points`` every entry point that publishes it."""
     from launch_linter.report.published import published  # transforms only, not check
 
     transforms: list[dict[str, Any]] = []
     joints: list[dict[str, Any]] = []
-    for item in published(result):
+    for item in published(result, distro):
         edge = item.edge
         if isinstance(edge, RobotJoint):
             joints.append({**joint_json(item.entry_points[0], edge),

@@ -14,11 +14,12 @@ from launch_linter.report.escape import printable
 from launch_linter.rules._nodes import Lookup, NodeEdge, NodeView, program_of, view_of
 
 
-def views(result: LintResult, knowledge: KnowledgeBase | None) -> Iterator[tuple[str, NodeView]]:
+def views(result: LintResult, knowledge: KnowledgeBase | None, distro: str | None = None
+          ) -> Iterator[tuple[str, NodeView]]:
     base = knowledge if knowledge is not None else bundled()
     for tree in result.trees:
         if tree.nodes:
-            yield tree.root, view_of(tree, base)
+            yield tree.root, view_of(tree, base, distro)
 
 
 def _node_json(node: NodeRecord) -> dict[str, Any]:
@@ -39,21 +40,23 @@ def lookup_json(root: str, lookup: Lookup) -> dict[str, Any]:
             "parameter": lookup.param, "knowledge": lookup.entry.id}
 
 
-def document_part(result: LintResult, knowledge: KnowledgeBase | None) -> dict[str, Any]:
+def document_part(result: LintResult, knowledge: KnowledgeBase | None,
+                  distro: str | None = None) -> dict[str, Any]:
     """``node_edges`` and ``frame_consumers`` of every tree."""
     edges: list[dict[str, Any]] = []
     consumers: list[dict[str, Any]] = []
-    for root, view in views(result, knowledge):
+    for root, view in views(result, knowledge, distro):
         edges.extend(edge_json(root, e) for e in view.edges)
         consumers.extend(lookup_json(root, lookup) for lookup in view.lookups)
     return {"node_edges": edges, "frame_consumers": consumers}
 
 
-def text_lines(result: LintResult, knowledge: KnowledgeBase | None) -> Iterator[str]:
+def text_lines(result: LintResult, knowledge: KnowledgeBase | None,
+               distro: str | None = None) -> Iterator[str]:
     """``FILE:LINE:COL: node PROGRAM PARENT -> CHILD [role ...]`` and
     ``FILE:LINE:COL: looks up FRAME (param NAME) PROGRAM``; each line through
     :func:`printable` (frames, parameters and programs are a launch file's words)."""
-    for _, view in views(result, knowledge):
+    for _, view in views(result, knowledge, distro):
         for edge in view.edges:
             node = edge.node
             extra = [edge.role]

@@ -18,9 +18,10 @@ from typing import Tuple, Union
 
 from launch_linter.engine import LintResult
 from launch_linter.model.launch import LaunchTree
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _set, replace
 from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import StaticTransform
+from launch_linter.rules._prefixes import description_prefixes, prefixed
 
 TfEdge = Union[StaticTransform, RobotJoint]
 """A static transform of a launch file, or a URDF joint a robot_state_publisher publishes."""
@@ -36,17 +37,36 @@ def edge_identity(edge: TfEdge) -> Identity:
             edge.parent, edge.child, edge.condition)
 
 
-def tree_edges(tree: LaunchTree) -> list[TfEdge]:
+def tree_edges(tree: LaunchTree, distro: str | None = None) -> list[TfEdge]:
     """The tree's static transforms, then its URDF joints, each identity once (an element
     reached twice with the same values is one edge)."""
     seen: set[Identity] = set()
     out: list[TfEdge] = []
-    every: list[TfEdge] = [*tree.transforms, *tree.joints]
+    every: list[TfEdge] = [*tree.transforms, *published_joints(tree, distro)]
     for edge in every:
         identity = edge_identity(edge)
         if identity not in seen:
             seen.add(identity)
             out.append(edge)
+    return out
+
+
+def published_joints(tree: LaunchTree, distro: str | None = None) -> list[RobotJoint]:
+    """The tree's URDF joints with the frames their robot_state_publisher sends: under its
+    prefix (one joint per publisher of the description); a joint whose prefix is unknown
+    as written."""
+    prefixes = description_prefixes(tree, distro)
+    if not prefixes:
+        return list(tree.joints)
+    ros = next((n.ros for n in tree.nodes if n.ros is not None), None)
+    out: list[RobotJoint] = []
+    for joint in tree.joints:
+        for prefix in prefixes.get(id(joint.source), ("",)):
+            if not prefix or joint.parent is None or joint.child is None:
+                out.append(joint)
+            else:
+                out.append(replace(joint, parent=prefixed(prefix, joint.parent, ros),
+                                   child=prefixed(prefix, joint.child, ros)))
     return out
 
 
@@ -73,7 +93,7 @@ class Published(Record):
         _set(self, "entry_points", entry_points)
 
 
-def published(result: LintResult) -> list[Published]:
+def published(result: LintResult, distro: str | None = None) -> list[Published]:
     """Every edge of ``result`` once, in the order first met (entry points first), with
     the entry points that publish it."""
     entries = entry_points(result)
@@ -83,7 +103,7 @@ def published(result: LintResult) -> list[Published]:
     for index in order:
         tree = result.trees[index]
         entry = index in is_entry
-        for edge in tree_edges(tree):
+        for edge in tree_edges(tree, distro):
             identity = edge_identity(edge)
             if identity not in found:
                 found[identity] = (edge, [tree.root])

@@ -18,6 +18,7 @@ from launch_linter.model.launch import LaunchTree
 from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._prefixes import publisher_prefix
 
 STATIC_PUBLISHERS = frozenset({"tf", "tf2_ros"})
 """Packages whose static_transform_publisher the tree already reads as launch edges."""
@@ -171,11 +172,15 @@ def _view(context: RuleContext) -> NodeView:
             unknown.append(node)
             continue
         joint_states = joint_states or entry.publishes_joint_states
-        sure, maybe = published(entry, node)
-        if maybe or any(e.signature is None for e in sure):
+        sure, maybe = published(entry, node, distro=context.distro)
+        if (maybe or any(e.signature is None for e in sure)
+                or (entry.publishes_description and publisher_prefix(node, context.distro)
+                    is None)):
+            # Edges not worked out, or a description's frames under an unknown prefix.
             unsure.append(node)
         proven = {e.signature for e in sure if e.signature is not None}
-        assumed = published(entry, node, assume=True)[0] if node.unread else sure
+        assumed = (published(entry, node, assume=True, distro=context.distro)[0]
+                   if node.unread else sure)
         for edge in assumed:
             if edge.signature is not None:
                 edges.append(NodeEdge(edge.signature[0], edge.signature[1], edge.role,
@@ -222,9 +227,10 @@ def finding_at_param(node: NodeRecord, name: str, message: str) -> Finding:
                    related=(Location(node.path, node.line, node.column),))
 
 
-def view_of(tree: LaunchTree, knowledge: KnowledgeBase) -> NodeView:
-    """The node side of one tree, outside a rule run (``transforms``, ``graph``)."""
-    return nodes_of(RuleContext(tree, knowledge=knowledge))
+def view_of(tree: LaunchTree, knowledge: KnowledgeBase, distro: str | None = None) -> NodeView:
+    """The node side of one tree, outside a rule run (``transforms``, ``graph``), for the
+    target distribution ``distro`` where a prefix depends on it."""
+    return nodes_of(RuleContext(tree, knowledge=knowledge, distro=distro))
 
 
 def frame_parameters(entry: Entry, node: NodeRecord | None = None) -> list[str]:

@@ -13,6 +13,7 @@ from launch_linter.model.robot import RobotJoint
 from launch_linter.model.transform import Condition, Field, RotationKind, StaticTransform
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import nodes_of
+from launch_linter.rules._prefixes import description_prefixes, prefixed
 
 Quaternion = typing.Tuple[float, float, float, float]
 """(x, y, z, w)."""
@@ -128,12 +129,22 @@ def _transform_edge(t: StaticTransform) -> Edge | None:
                 Location(t.path, t.line, t.column), transform=t)
 
 
-def _joint_edge(j: RobotJoint) -> Edge | None:
+def _joint_edge(j: RobotJoint, prefix: str = "", ros: int | None = None) -> Edge | None:
     if j.parent is None or j.child is None:
         return None
     rotation = None if j.rpy is None else quaternion_from_ypr(j.rpy[2], j.rpy[1], j.rpy[0])
-    return Edge(j.parent, j.child, j.translation, rotation, j.condition,
-                Location(j.path, j.line, j.column), joint=j)
+    return Edge(prefixed(prefix, j.parent, ros), prefixed(prefix, j.child, ros),
+                j.translation, rotation, j.condition, Location(j.path, j.line, j.column),
+                joint=j)
+
+
+def as_written(edge: Edge) -> Edge:
+    """``edge`` with a URDF joint's frames as the description writes them (before the
+    prefix its robot_state_publisher puts on them)."""
+    joint = edge.joint
+    if joint is None or joint.parent is None or joint.child is None:
+        return edge
+    return replace(edge, parent=joint.parent, child=joint.child)
 
 
 def with_macro_definitions(tree: LaunchTree, found: list[Diagnostic]) -> list[Diagnostic]:
@@ -158,14 +169,20 @@ def with_macro_definitions(tree: LaunchTree, found: list[Diagnostic]) -> list[Di
     return out
 
 
-def tree_edges(tree: LaunchTree) -> tuple[Edge, ...]:
+def tree_edges(tree: LaunchTree, distro: str | None = None) -> tuple[Edge, ...]:
     """URDF joints first (the robot's own structure), then launch static transforms in
-    tree order, so that a finding lands on the launch file that adds to the robot."""
+    tree order, so that a finding lands on the launch file that adds to the robot. A
+    joint's frames carry its robot_state_publisher's prefix (one edge per publisher of
+    its description); a joint whose prefix is unknown is no edge (its frames are not
+    known)."""
     edges: list[Edge] = []
+    prefixes = description_prefixes(tree, distro)
+    ros = next((n.ros for n in tree.nodes if n.ros is not None), None)
     for joint in tree.joints:
-        edge = _joint_edge(joint)
-        if edge is not None:
-            edges.append(edge)
+        for prefix in prefixes.get(id(joint.source), ("",)):
+            edge = None if prefix is None else _joint_edge(joint, prefix, ros)
+            if edge is not None:
+                edges.append(edge)
     for transform in tree.transforms:
         edge = _transform_edge(transform)
         if edge is not None:
@@ -174,7 +191,7 @@ def tree_edges(tree: LaunchTree) -> tuple[Edge, ...]:
 
 
 def _published_edges(context: RuleContext) -> tuple[Edge, ...]:
-    edges = context.shared(tree_edges)
+    edges = tree_edges(context.tree, context.distro)
     if nodes_of(context).joint_states:
         return edges
     # robot_state_publisher sends a movable joint only from /joint_states: with no known
@@ -186,6 +203,33 @@ def edges_of(context: RuleContext) -> tuple[Edge, ...]:
     """The tree's edges (static transforms and the URDF joints robot_state_publisher
     sends), built once for all the tree rules run on one tree."""
     return context.derived(_published_edges)
+
+
+def _written(context: RuleContext) -> tuple[Edge, ...]:
+    seen: set[int] = set()
+    out: list[Edge] = []
+    for edge in edges_of(context):
+        if edge.joint is not None:
+            if id(edge.joint) in seen:
+                continue
+            seen.add(id(edge.joint))
+            edge = as_written(edge)
+        out.append(edge)
+    return tuple(out)
+
+
+def written_edges(context: RuleContext) -> tuple[Edge, ...]:
+    """The tree's edges with each URDF joint once, under its frames as the description
+    writes them: for the rules that judge a joint by its own values, or joints against
+    each other (one defect of the description, however many publishers prefix it, and
+    the same finding as on the description linted alone)."""
+    return context.derived(_written)
+
+
+def joints_only(edge: Edge, others: typing.Iterable[Edge]) -> bool:
+    """Whether a finding on ``edge`` against ``others`` is among URDF joints alone (found
+    on :func:`written_edges`, not again under each publisher's prefix)."""
+    return edge.joint is not None and all(other.joint is not None for other in others)
 
 
 def coexist(a: Edge, b: Edge) -> bool:

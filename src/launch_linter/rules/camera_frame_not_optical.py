@@ -86,7 +86,14 @@ from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord, pose_turn
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import entry_of, finding_at_node
-from launch_linter.rules._tree import Edge, Quaternion, edges_of, quaternion_from_ypr, same_rotation
+from launch_linter.rules._tree import (
+    Edge,
+    Quaternion,
+    as_written,
+    edges_of,
+    quaternion_from_ypr,
+    same_rotation,
+)
 
 ID = "camera_frame_not_optical"
 CATEGORY = Category.TF
@@ -218,7 +225,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
     plugins = _plugins(context)
     if not plugins:
         return
-    parents = parents_of(edges_of(context))
+    # The plugins name the description's links as written, before any publisher's prefix.
+    parents = parents_of(tuple(as_written(e) for e in edges_of(context)))
     for node in plugins:
         body = node.given(SENSOR_LINK)
         camera = camera_in_link(node)

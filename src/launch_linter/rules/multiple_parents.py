@@ -57,7 +57,15 @@ from launch_linter.rules._api import (
     RuleContext,
     summarised_lazily,
 )
-from launch_linter.rules._tree import Edge, coexist, edges_of, finding_on, place
+from launch_linter.rules._tree import (
+    Edge,
+    coexist,
+    edges_of,
+    finding_on,
+    joints_only,
+    place,
+    written_edges,
+)
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
@@ -133,8 +141,16 @@ def _robots_apart(context: RuleContext) -> bool:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    edges = edges_of(context)
+    # Parents among URDF joints alone are the description's: found once, under the frames
+    # as written; those with a launch transform or a node among them, under the prefixes
+    # the tree's publishers put on the joints.
     robots_apart = _robots_apart(context)
+    yield from _found(written_edges(context), context, robots_apart, joints=True)
+    yield from _found(edges_of(context), context, robots_apart, joints=False)
+
+
+def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
+           joints: bool) -> Iterator[Finding]:
     # Only a frame that is the child of two edges may have two parents (most are of one).
     counts = collections.Counter(edge.child for edge in edges)
     by_child: dict[str, _Parents] = {}
@@ -145,7 +161,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         parents = by_child.setdefault(child, _Parents())
         rivals, count, conditional = parents.rivals(edge, robots_apart)
         parents.add(position, edge)
-        if not count:
+        if not count or joints != (count == len(rivals)
+                                   and joints_only(edge, (t for _, t in rivals))):
             continue
         others = " and ".join(summarised_lazily(
             (f"'{p}' ({_where(t, edge)})" for p, t in rivals), count))
@@ -171,11 +188,11 @@ def _kdl_keeps(edge: Edge, rivals: list[tuple[str, Edge]], context: RuleContext)
                             for _, r in rivals):
         return None
     kept = max((j for j in context.tree.joints
-                if j.source == joint.source and j.child == edge.child and j.parent is not None),
+                if j.source == joint.source and j.child == joint.child and j.parent is not None),
                key=lambda j: j.name, default=None)
     if kept is None:
         return None
-    return (f"robot_state_publisher (urdfdom, then KDL) keeps one: '{edge.child}' under "
+    return (f"robot_state_publisher (urdfdom, then KDL) keeps one: '{joint.child}' under "
             f"'{kept.parent}' by joint '{kept.name}', the name that sorts last")
 
 

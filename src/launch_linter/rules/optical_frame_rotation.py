@@ -50,10 +50,10 @@ from launch_linter.model.transform import RotationKind
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._tree import (
     Edge,
-    edges_of,
     finding_on,
     quaternion_from_ypr,
     same_rotation,
+    written_edges,
 )
 
 ID = "optical_frame_rotation"
@@ -98,7 +98,7 @@ def _right_in_degrees(edge: Edge) -> bool:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    for edge in edges_of(context):
+    for edge in written_edges(context):
         if edge.dynamic or not is_optical(edge.child) or "optical" in edge.parent:
             continue
         if not own_body(edge.parent, edge.child):

@@ -40,7 +40,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._tree import edges_of, finding_on
+from launch_linter.rules._tree import finding_on, written_edges
 
 ID = "rep105_order"
 CATEGORY = Category.TF
@@ -50,7 +50,7 @@ CHAIN = {"earth": 0, "map": 1, "odom": 2, "base_link": 3, "base_footprint": 3}
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    for edge in edges_of(context):
+    for edge in written_edges(context):
         parent, child = CHAIN.get(edge.parent), CHAIN.get(edge.child)
         if parent is None or child is None or parent <= child:
             continue

@@ -88,27 +88,17 @@ from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
 from launch_linter.rules._nodes import NodeEdge, finding_at_node, nodes_of
+from launch_linter.rules._prefixes import PUBLISHER, publisher_prefix
 
 ID = "robot_frame_collision"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
-PUBLISHER = "robot_state_publisher"
 REFUSED = "roslaunch_error"
-PREFIXES = {1: ("tf_prefix",), 2: ("frame_prefix",)}
-"""The parameter that prefixes robot_state_publisher's frames, by ROS version: ROS 1 reads
-tf_prefix (found by searchParam), ROS 2 frame_prefix; each ignores the other's."""
-
-
-NO_FRAME_PREFIX = ("dashing", "eloquent")
-"""ROS 2 distributions whose robot_state_publisher has no ``frame_prefix`` (added in 2.5.0,
-ros/robot_state_publisher#159, backported to foxy in 2.4.5, August 2021)."""
 
 
 def _prefixed(node: NodeRecord, distro: str | None = None) -> bool:
-    names = PREFIXES.get(node.ros or 0, ("tf_prefix", "frame_prefix"))
-    if node.ros == 2 and distro in NO_FRAME_PREFIX:
-        return False
-    return any(node.given(p) not in (None, "") for p in names)
+    """Whether robot_state_publisher ``node`` prefixes its frames, or may (unknown)."""
+    return publisher_prefix(node, distro) != ""
 
 
 def check(context: RuleContext) -> Iterator[Finding]:

@@ -46,7 +46,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.distro import LEGACY_KEYWORDS_OK, uses_flags
+from launch_linter.model.distro import LEGACY_KEYWORDS_OK, ROS1_DISTROS, uses_flags
 from launch_linter.model.record import replace
 from launch_linter.model.transform import StaticTransform
 from launch_linter.rules._api import Finding, RuleContext, frontend_findings
@@ -65,7 +65,9 @@ def _flags_at(context: RuleContext) -> StaticTransform | None:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    distro = context.distro
+    # A ROS 1 target (a mixed repository linted with --ros-distro noetic) says nothing
+    # about the ROS 2 distribution that runs this file: judged as with no target.
+    distro = None if context.distro in ROS1_DISTROS else context.distro
     if context.study or distro in LEGACY_KEYWORDS_OK:
         return
     flagged = _flags_at(context) if distro is None else None

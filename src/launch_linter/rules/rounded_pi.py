@@ -47,7 +47,7 @@ from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.model.transform import RotationKind
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._tree import Edge, edges_of, finding_on
+from launch_linter.rules._tree import Edge, finding_on, written_edges
 
 ID = "rounded_pi"
 CATEGORY = Category.TF
@@ -133,7 +133,7 @@ def _farthest_child(edge: Edge, by_parent: dict[str, list[Edge]]) -> tuple[str, 
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    edges = edges_of(context)
+    edges = written_edges(context)
     by_parent: dict[str, list[Edge]] | None = None
     for edge in edges:
         found = [(name, value, rounded) for name, value in _angles(edge)

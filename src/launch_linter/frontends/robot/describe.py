@@ -266,7 +266,7 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         problems_found = [problem if problem.path not in sites
                           else through_include(problem, sites[problem.path])
                           for problem in problems_found]
-    plugins = simulated_plugins(tree.nodes, robots, tf_prefixes)
+    plugins = simulated_plugins(tree.nodes, robots, SearchedPrefixes(tf_prefixes))
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found),
                    nodes=tree.nodes + tuple(plugins))
@@ -291,14 +291,14 @@ def _refusals(tree: LaunchTree, packages: PackageIndex, cache: RobotCache,
 
 
 def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel],
-                      tf_prefixes: Sequence[tuple[str | None, str]] = ()
-                      ) -> list[NodeRecord]:
+                      tf_prefixes: SearchedPrefixes | None = None) -> list[NodeRecord]:
     """The Gazebo plugins of the descriptions, when the tree spawns a description into a
     simulator (a description only published by robot_state_publisher, as on the real
     robot, runs no plugin). Each runs under its description's condition and, when every
     spawner is conditional, the first spawner's; a ros2_control plugin's controller
     parameter file gives its controllers. A ROS 1 plugin gets its robot namespace and
     the ``tf_prefix`` found from there (``tf_prefixes``: those set in a namespace)."""
+    prefixes = tf_prefixes if tf_prefixes is not None else SearchedPrefixes(())
     spawners = [n for n in nodes if spawns_into_simulator(n)]
     if not spawners:
         return []
@@ -312,7 +312,7 @@ def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel],
                              condition=plugin.condition if condition is None
                              else plugin.condition & condition)
             if plugin.ros == 1:
-                plugin = _ros1_robot_namespace(plugin, robot.source, spawners, tf_prefixes)
+                plugin = _ros1_robot_namespace(plugin, robot.source, spawners, prefixes)
             out.append(plugin)
             out.extend(_simulated_controllers(plugin))
     return out
@@ -320,7 +320,7 @@ def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel],
 
 def _ros1_robot_namespace(plugin: NodeRecord, source: DescriptionSource,
                           spawners: Sequence[NodeRecord],
-                          tf_prefixes: Sequence[tuple[str | None, str]]) -> NodeRecord:
+                          tf_prefixes: SearchedPrefixes) -> NodeRecord:
     """A ROS 1 plugin with the namespace its node handle runs in and the ``tf_prefix``
     gazebo_plugins find there (``tf::getPrefixParam``, a ``searchParam``): its own
     ``<robotNamespace>``, else the one ``spawn_model`` writes into it (``-robot_namespace``,
@@ -335,29 +335,42 @@ def _ros1_robot_namespace(plugin: NodeRecord, source: DescriptionSource,
             if any(s.namespace is not None and s.namespace.strip("/") == here
                    for s in spawners if s.package == "gazebo_ros"):
                 namespace = "/" + here
-    prefix = (UNKNOWN_VALUE if namespace is None
-              else searched_tf_prefix(namespace, tf_prefixes))
+    prefix = UNKNOWN_VALUE if namespace is None else tf_prefixes.find(namespace)
     return replace(plugin, namespace=namespace, params=(*plugin.params, (TF_PREFIX_PARAM, prefix)))
 
 
 def searched_tf_prefix(namespace: str, tf_prefixes: Sequence[tuple[str | None, str]]
                        ) -> str:
-    """The ``tf_prefix`` that ``tf::getPrefixParam`` (a ``searchParam``) finds from
-    ``namespace`` up: the one set in the closest enclosing namespace, the last one set
-    there; ``UNKNOWN_VALUE`` when one whose namespace is unresolved could be it, '' when
-    none is set."""
-    inside = namespace.strip("/")
-    found, depth = "", -1
-    for scope, value in tf_prefixes:
-        if scope is None:
+    """The ``tf_prefix`` that ``searchParam`` finds from ``namespace`` up
+    (:class:`SearchedPrefixes`, for one lookup)."""
+    return SearchedPrefixes(tf_prefixes).find(namespace)
+
+
+class SearchedPrefixes:
+    """The ``tf_prefix`` parameters set in namespaces, indexed for ``searchParam``
+    (``tf::getPrefixParam`` and robot_state_publisher): from a namespace up, the one set in
+    the closest enclosing namespace, the last one set there; ``UNKNOWN_VALUE`` when one
+    whose namespace is unresolved could be it, '' when none is set. A lookup walks the
+    namespace's own levels, not every parameter."""
+
+    def __init__(self, tf_prefixes: Sequence[tuple[str | None, str]]) -> None:
+        self.unknown = any(scope is None for scope, _ in tf_prefixes)
+        self.by_scope = {scope.strip("/"): value for scope, value in tf_prefixes
+                         if scope is not None}
+
+    def __bool__(self) -> bool:
+        return self.unknown or bool(self.by_scope)
+
+    def find(self, namespace: str) -> str:
+        if self.unknown:
             return UNKNOWN_VALUE
-        outer = scope.strip("/")
-        if outer and inside != outer and not inside.startswith(outer + "/"):
-            continue
-        level = outer.count("/") + 1 if outer else 0
-        if level >= depth:
-            found, depth = value, level
-    return found
+        inside = namespace.strip("/")
+        parts = inside.split("/") if inside else []
+        for end in range(len(parts), -1, -1):
+            found = self.by_scope.get("/".join(parts[:end]))
+            if found is not None:
+                return found
+        return ""
 
 
 _ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",

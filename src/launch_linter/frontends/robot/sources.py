@@ -13,9 +13,19 @@ import shlex
 from collections.abc import Sequence
 
 from launch_linter.frontends.params import ros1_controllers
-from launch_linter.frontends.robot.describe import Word, literal_kind, xacro_command
+from launch_linter.frontends.robot.describe import (
+    SearchedPrefixes,
+    Word,
+    literal_kind,
+    xacro_command,
+)
 from launch_linter.model.record import replace
-from launch_linter.model.robot import DescriptionKind, DescriptionSource, NodeRecord
+from launch_linter.model.robot import (
+    UNKNOWN_VALUE,
+    DescriptionKind,
+    DescriptionSource,
+    NodeRecord,
+)
 from launch_linter.model.transform import Condition
 from launch_linter.resolve.value import (
     Hole,
@@ -158,6 +168,9 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
     return None
 
 
+TF_PREFIX = "tf_prefix"
+
+
 def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, str]],
                      unread: Sequence[str] = (),
                      tf_prefixes: Sequence[tuple[str | None, str]] = ()) -> list[NodeRecord]:
@@ -175,12 +188,16 @@ def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, st
             by_name.setdefault(part, []).append(("/".join(parts[i + 1:]), value))
     out: list[NodeRecord] = []
     managed = False
+    searched = SearchedPrefixes(tf_prefixes)
     for node in nodes:
         extra = tuple(by_name.get(node.name, ())) if node.name is not None else ()
-        if node.package == "robot_state_publisher":
-            extra += tuple(("tf_prefix", value) for scope, value in tf_prefixes
-                           if scope is None or node.namespace is None
-                           or node.namespace.startswith(scope.rstrip("/") + "/"))
+        if (node.package == "robot_state_publisher" and searched
+                and node.given(TF_PREFIX) is None and all(k != TF_PREFIX for k, _ in extra)):
+            # searchParam from the node's private namespace up: its own tf_prefix first,
+            # else the one set in the closest namespace around it.
+            found = _searched(node.namespace, searched)
+            if found:
+                extra += ((TF_PREFIX, found),)
         if extra or unread:
             node = replace(node, params=node.params + extra,
                            unread=node.unread + tuple(unread[:3]))
@@ -189,6 +206,16 @@ def with_node_params(nodes: Sequence[NodeRecord], params: Sequence[tuple[str, st
             managed = True
             out.extend(ros1_controllers(params[:MAX_GLOBAL_PARAMS], node))
     return out
+
+
+def _searched(namespace: str | None, tf_prefixes: SearchedPrefixes) -> str:
+    """The ``tf_prefix`` searchParam finds from ``namespace`` up (unknown when the
+    namespace is not resolved, unless every one is set at the root)."""
+    if namespace is None:
+        if tf_prefixes.unknown or set(tf_prefixes.by_scope) - {""}:
+            return UNKNOWN_VALUE
+        namespace = "/"
+    return tf_prefixes.find(namespace)
 
 
 def from_file_value(value: Value, path: str, line: int, column: int, condition: Condition,

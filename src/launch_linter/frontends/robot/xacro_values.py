@@ -124,6 +124,8 @@ PLUGIN_TEXT_TAGS = frozenset({
     # gazebo_ros (ROS 1) plugin parameters that name frames or switch tf on and off.
     "robotNamespace", "publishOdomTF", "publishWheelTF", "publishTf", "odometryFrame",
     "robotBaseFrame", "frameName", "bodyName", "publishOdom", "broadcastTF",
+    # kobuki_gazebo_plugins (ROS 1): Kobuki's simulated base.
+    "publish_tf",
     # gazebo_ros (ROS 2): parameters, and <ros><namespace>/<remapping>.
     "namespace", "remapping", "publish_odom_tf", "publish_wheel_tf", "odometry_frame",
     "robot_base_frame", "frame_name", "body_name", "publish_odom",
