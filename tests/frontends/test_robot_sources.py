@@ -283,3 +283,36 @@ def test_ros2_python_xacro_parse_without_process_doc_is_unread(tmp_path: Path) -
     # Without process_doc the document is the raw xacro text: never read as the robot.
     found = tree(tmp_path, "a.launch.py", XACRO_PARSE.replace("    PROCESS\n", ""))
     assert found.joints == ()
+
+
+RSP_ARGUMENT = """import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    urdf = os.path.join(os.path.dirname(__file__), 'robot.urdf')
+    return LaunchDescription([Node(package='robot_state_publisher',
+                                   executable='robot_state_publisher',
+                                   {given}arguments=[urdf])])
+"""
+URDF_FILE = ('<robot name="r"><link name="base"/><link name="scan"/>'
+             '<joint name="j" type="fixed"><parent link="base"/><child link="scan"/></joint>'
+             '</robot>\n')
+
+
+def test_ros2_urdf_file_given_as_robot_state_publishers_argument(tmp_path: Path) -> None:
+    # Crystal to Eloquent (navigation2#452's turtlebot3), still a fallback on Rolling:
+    # without a robot_description parameter the first argument is the URDF file.
+    (tmp_path / "robot.urdf").write_text(URDF_FILE, encoding="utf-8")
+    found = tree(tmp_path, "a.launch.py", RSP_ARGUMENT.format(given=""))
+    (source,) = found.descriptions
+    assert source.kind is DescriptionKind.FILE
+    assert "scan" in {j.child for j in found.joints}
+
+
+def test_ros2_robot_description_parameter_wins_over_the_argument(tmp_path: Path) -> None:
+    (tmp_path / "robot.urdf").write_text(URDF_FILE, encoding="utf-8")
+    given = "parameters=[{'robot_description': '<robot name=\"other\"/>'}],\n" + " " * 35
+    found = tree(tmp_path, "a.launch.py", RSP_ARGUMENT.format(given=given))
+    assert "scan" not in {j.child for j in found.joints}

@@ -5,12 +5,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 import yaml
 from hypothesis import given
 from hypothesis import strategies as st
 
 from launch_linter.engine import LintOptions, lint_paths
-from launch_linter.frontends.params import flat_yaml, scalar_text
+from launch_linter.frontends.params import flat_yaml, ros2_file_params, scalar_text
 from launch_linter.knowledge import bundled
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._nodes import view_of
@@ -70,6 +71,61 @@ def test_ros2_dictionaries_and_parameter_files_by_node_key(tmp_path: Path) -> No
     assert ekf.given("use_sim_time") == "true"
     assert ekf.given("publish_tf") == "false"
     assert ekf.unread == ()
+
+
+@pytest.mark.parametrize("key, node, applies", [
+    ("/**", "/ns/amcl", True),
+    ("/**/amcl", "/amcl", True),
+    ("/**/amcl", "/a/b/amcl", True),
+    ("/*/amcl", "/ns/amcl", True),
+    ("/*/amcl", "/amcl", False),
+    ("amcl", "/amcl", True),
+    ("/ns/amcl", "/ns/amcl", True),
+    # rclcpp adds a leading '/' to a bare key: it names the node at the root only.
+    ("amcl", "/ns/amcl", False),
+    ("ns/amcl", "/ns/amcl", True),
+    ("amcl_node", "/amcl", False),
+])
+def test_a_parameter_file_key_applies_as_rclcpp_matches_it(key: str, node: str,
+                                                           applies: bool) -> None:
+    namespace, name = node.rsplit("/", 1)
+    document = {key: {"ros__parameters": {"x": 1}}}
+    assert (ros2_file_params(document, name, namespace or "/") == [("x", "1")]) is applies
+
+
+_NAMES = st.lists(st.from_regex(r"[A-Za-z_][A-Za-z0-9_]{0,8}", fullmatch=True),
+                  min_size=1, max_size=4)
+
+
+@given(_NAMES, _NAMES)
+def test_a_full_key_names_one_node_and_a_double_star_reaches_every_namespace(
+        names: list[str], other: list[str]) -> None:
+    namespace, name = "/" + "/".join(names[:-1]), names[-1]
+    document = {"/".join(names): {"ros__parameters": {"x": 1}}}
+    assert ros2_file_params(document, name, namespace) == [("x", "1")]
+    anywhere = {"/**/" + name: {"ros__parameters": {"x": 1}}}
+    assert ros2_file_params(anywhere, name, "/" + "/".join(other)) == [("x", "1")]
+    if other != names[:-1]:
+        assert ros2_file_params(document, name, "/" + "/".join(other)) == []
+
+
+def test_a_key_naming_another_node_leaves_the_node_at_its_defaults(tmp_path: Path) -> None:
+    # husky/husky#244: the file's key is imu_filter_node, the node is named imu_filter:
+    # the file is read, gives it nothing, and the filter's defaults hold (publish_tf true).
+    files = {
+        "imu.yaml": "imu_filter_node:\n  ros__parameters:\n    publish_tf: false\n",
+        "a.launch.py": (
+            "import os\nfrom launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+            "def generate_launch_description():\n"
+            "    here = os.path.dirname(__file__)\n"
+            "    return LaunchDescription([Node(package='imu_filter_madgwick', "
+            "executable='imu_filter_madgwick_node', name='imu_filter', "
+            "parameters=[os.path.join(here, 'imu.yaml')])])\n"),
+    }
+    (imu,) = nodes(tmp_path, files, "a.launch.py")
+    assert imu.params == () and imu.unread == ()
+    entry = bundled().node("imu_filter_madgwick", "imu_filter_madgwick_node", 2)
+    assert entry is not None and entry.default("publish_tf") is True
 
 
 def test_ros2_controllers_of_a_controller_manager_file(tmp_path: Path) -> None:

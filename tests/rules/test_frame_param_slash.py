@@ -144,3 +144,30 @@ def test_the_costmap_cob_collision_velocity_filter_runs(tmp_path: Path) -> None:
         (RULE, 2, "warning")]
     assert levels(tmp_path, "c.launch", COB.format(frame="base_link"), "melodic") == []
     assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "kinetic") == []
+
+
+def test_the_frame_a_depthimage_to_laserscan_nodelet_stamps_on_its_scans(
+        tmp_path: Path) -> None:
+    # turtlebot/turtlebot_simulator#78: costmap_2d (tf2 from Melodic) looks the scans'
+    # frame up; the nodelet is known by the type its `load` arguments name.
+    def launch(frame: str) -> str:
+        return ('<launch>\n'
+                '  <node pkg="nodelet" type="nodelet" name="m" args="manager"/>\n'
+                '  <node pkg="nodelet" type="nodelet" name="d"\n'
+                '        args="load depthimage_to_laserscan/DepthImageToLaserScanNodelet m">\n'
+                f'    <param name="output_frame_id" value="{frame}"/>\n'
+                '  </node>\n'
+                '</launch>\n')
+    assert levels(tmp_path, "a.launch", launch("/camera_depth_frame"), "melodic") == [
+        (RULE, 5, "warning")]
+    assert levels(tmp_path, "a.launch", launch("/camera_depth_frame"), "kinetic") == []
+    assert levels(tmp_path, "a.launch", launch("camera_depth_frame"), "melodic") == []
+
+
+def test_the_frame_a_ros2_depthimage_to_laserscan_stamps_on_its_scans(tmp_path: Path) -> None:
+    launch = ('<launch>\n'
+              '  <node pkg="depthimage_to_laserscan" exec="depthimage_to_laserscan_node">\n'
+              '    <param name="output_frame" value="/camera_depth_frame"/>\n'
+              '  </node>\n'
+              '</launch>\n')
+    assert run(tmp_path, "a.launch.xml", launch) == [(RULE, 2)]

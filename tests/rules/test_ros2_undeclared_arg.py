@@ -48,7 +48,9 @@ def test_python_parameter_read_never_declared_is_an_error(tmp_path: Path) -> Non
     ])
 """)
     ((name, line, level, message),) = _lint(tmp_path, {"a.launch.py": text}, "a.launch.py")
-    assert (name, line, level) == ("a.launch.py", 13, "error")
+    # At the LaunchConfiguration that names it (where a default or the right name is
+    # written), not at the Node that performs it: launch's error names no place.
+    assert (name, line, level) == ("a.launch.py", 11, "error")
     assert "launch configuration 'use_sim_time' does not exist" in message
     assert "a.launch.py" in message
 
@@ -266,7 +268,23 @@ def test_include_passing_its_own_read_does_not_declare_it(tmp_path: Path) -> Non
 """)
     files = {"inner.launch.xml": inner, "outer.launch.py": outer}
     ((name, line, level, _),) = _lint(tmp_path, files, "outer.launch.py")
-    assert (name, line, level) == ("outer.launch.py", 12, "error")
+    assert (name, line, level) == ("outer.launch.py", 14, "error")
+
+
+def test_one_python_launch_configuration_read_by_several_actions_is_one_finding(
+        tmp_path: Path) -> None:
+    text = _py("""    prefix = LaunchConfiguration('prefix')
+    return LaunchDescription([
+        DeclareLaunchArgument('gui'),
+        Node(package='foo', executable='a', name=prefix,
+             condition=IfCondition(LaunchConfiguration('gui'))),
+        Node(package='foo', executable='b', parameters=[{'frame': prefix}]),
+    ])
+""")
+    # One place: reported once, and for sure, since the second Node always runs.
+    assert [(name, line, level) for name, line, level, _ in
+            _lint(tmp_path, {"a.launch.py": text}, "a.launch.py")] == [
+        ("a.launch.py", 11, "error")]
 
 
 def test_only_what_was_not_followed_before_the_read_makes_it_an_info(tmp_path: Path) -> None:
@@ -286,3 +304,15 @@ def test_reads_at_one_place_are_one_finding(tmp_path: Path) -> None:
 """
     ((_, _, _, message),) = _lint(tmp_path, {"a.launch.xml": text}, "a.launch.xml")
     assert "configurations 'a', 'b' are" in message or "configurations 'b', 'a' are" in message
+
+
+def test_an_xml_read_is_reported_at_the_element_that_writes_it(tmp_path: Path) -> None:
+    text = """<launch>
+  <node pkg="foo" exec="bar" name="n">
+    <param name="frame" value="$(var prefix)base"/>
+  </node>
+  <node pkg="foo" exec="baz" name="$(var robot)"/>
+</launch>
+"""
+    assert sorted(line for _, line, _, _ in _lint(tmp_path, {"a.launch.xml": text},
+                                                   "a.launch.xml")) == [3, 5]

@@ -147,9 +147,19 @@ def ros1_params(document: object, namespace: str = "") -> list[tuple[str, str]]:
 
 
 def _section_pattern(key: str) -> re.Pattern[str]:
-    """A ROS 2 parameter file's node key as a pattern over ``/namespace/name``."""
-    text = "/" + key.strip("/")
-    pattern = re.escape(text).replace(r"\*\*", ".*").replace(r"\*", "[^/]*")
+    """A ROS 2 parameter file's node key as a pattern over ``/namespace/name``, made as
+    rclcpp makes it: a leading ``/`` added, each ``/*`` one ``/NAME`` and a ``*`` right
+    after it a repeat (``/**``: any number of names, none included, so ``/**/amcl``
+    matches ``/amcl``)."""
+    text = "/" + key.lstrip("/")  # nested keys are joined with '/' by ros2_sections
+    pieces = text.split("/*")
+    pattern = re.escape(pieces[0])
+    for piece in pieces[1:]:
+        pattern += "(/[A-Za-z0-9_]+)"
+        if piece.startswith("*"):
+            pattern += "*"
+            piece = piece[1:]
+        pattern += re.escape(piece)
     return re.compile(f"^{pattern}$")
 
 
@@ -172,14 +182,16 @@ def ros2_sections(document: object) -> list[tuple[str, dict[Any, Any]]]:
 
 def ros2_file_params(document: object, name: str | None, namespace: str | None
                      ) -> list[tuple[str, str]]:
-    """The parameters a ROS 2 parameter file gives the node ``namespace/name`` (``/**``,
-    wildcards and the node's own key; later sections win, as in rcl)."""
+    """The parameters a ROS 2 parameter file gives the node ``namespace/name``: the
+    sections whose key, with a leading ``/`` added, matches the node's full name (``/*``
+    one name, ``/**`` any; later sections win): rclcpp's ``parameter_map_from``
+    (rclcpp/src/rclcpp/parameter_map.cpp 52-68, ros2/rclcpp humble 99f1d8d). A bare
+    ``name:`` key is ``/name``: it does not reach the node ``/ns/name``, and a key naming
+    another node (``imu_filter_node:`` for the node ``imu_filter``) gives it nothing."""
     full = "/" + "/".join(p for p in ((namespace or "").strip("/"), name or "") if p)
     out: list[tuple[str, str]] = []
     for key, section in ros2_sections(document):
-        pattern = _section_pattern(key)
-        plain = key.strip("/")
-        if pattern.match(full) or (name is not None and plain == name):
+        if _section_pattern(key).match(full):
             out.extend(flatten(section, "."))
     return out
 

@@ -36,10 +36,15 @@ class Declarations:
     def read_unset(self, name: str, where: Where, conditional: bool) -> None:
         """``name`` read without a default at ``where``, where it is not set."""
         key = (where.path, where.line, where.column, name)
-        if key not in self.unset:
+        known = self.unset.get(key)
+        if known is None:
             # What was not followed before the read: launch runs actions in order, so
             # nothing met later could have set it in time.
             self.unset[key] = (conditional, self.open)
+        elif known[0] and not conditional:
+            # One place (a LaunchConfiguration) performed by several actions: it fails
+            # for sure when any of them runs for sure.
+            self.unset[key] = (False, known[1])
 
     def declares(self, action: Action) -> None:
         """Note the configuration an action declares or sets, whether or not it runs:

@@ -128,11 +128,18 @@ class Ros2Loader(Ros2Runner):
                    and executable == "ros2_control_node" else name)
         params, unread, documents = self._node_params(action.parameters, scope, frame, where,
                                                       section, known_namespace)
+        described = False
         for group in action.parameters:
             if isinstance(group, Params):
                 for key, subs in group.items:
                     if is_description_name(key.rsplit(".", 1)[-1]):
+                        described = True
                         self._ros2_description(subs, scope, frame, where, name)
+        if (package == "robot_state_publisher" and executable == "robot_state_publisher"
+                and not described and not unread and action.arguments
+                and not any(key == "robot_description"
+                            for key, _ in (*scope.parameters, *params))):
+            self._description_argument(action.arguments[0], scope, frame, where, name)
         # SetParameter's parameters first: the node's own win over them.
         node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
@@ -148,6 +155,18 @@ class Ros2Loader(Ros2Runner):
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
+
+    def _description_argument(self, first: Subs, scope: _Scope, frame: _Frame, where: Where,
+                              node: str | None) -> None:
+        """robot_state_publisher without a ``robot_description`` parameter reads the URDF
+        file its first argument names (``Node(arguments=[urdf])``, the Crystal to Eloquent
+        way, still a fallback from Foxy to Rolling): ros/robot_state_publisher
+        src/joint_state_listener.cpp 192-199 (dashing 64b5186), src/robot_state_publisher.cpp
+        79-99 (foxy a1346e9) and 81-101 (humble 8b5af4f, rolling e0f77e6)."""
+        path = self._resolve(first, scope, frame, where)
+        self.descriptions.append(from_file_value(
+            path, self._display(frame.filename), where.line, where.column, frame.condition,
+            node, os.path.dirname(frame.filename)))
 
     def _spawned(self, spawner: NodeRecord, action: RunNode, scope: _Scope,
                  frame: _Frame) -> None:

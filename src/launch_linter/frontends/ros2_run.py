@@ -280,10 +280,14 @@ class Ros2Runner:
         )
 
     # -- launch configurations read but never declared -----------------------------------
-    def _missing(self, name: str) -> None:
-        """``resolve`` read ``name`` without a default where it is not set."""
+    def _missing(self, name: str, at: tuple[int, int] | None) -> None:
+        """``resolve`` read ``name`` without a default where it is not set; ``at``, where
+        the read is written when the front-end knows it (the ``LaunchConfiguration`` call
+        that names it), else the action's place."""
         if self._reading is not None:
             where, frame = self._reading
+            if at is not None:
+                where = Where(where.path, at[0], at[1])
             self.declarations.read_unset(name, where, bool(frame.condition.literals))
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:

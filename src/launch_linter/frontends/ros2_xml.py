@@ -39,11 +39,13 @@ from launch_linter.frontends.ros2_schema import SchemaEntity, check_launch
 from launch_linter.model.launch import may_hold_directive
 from launch_linter.model.transform import LaunchFormat
 from launch_linter.resolve.ros2_substitution import (
+    Call,
     CommandLineError,
     Opaque,
     Subs,
     SubstitutionSyntaxError,
     Text,
+    first_refusal,
     parse,
     split_command_line,
     written,
@@ -68,6 +70,15 @@ class Entity:
     value, a list of scalars, a mapping): the schema check still sees their names."""
 
 
+def _placed(subs: Subs, at: tuple[int, int]) -> Subs:
+    """``subs`` with each ``$(var)`` marked as written at ``at`` (line, column); the
+    parser bounds the nesting (``MAX_NESTING``)."""
+    return tuple(
+        Call(sub.name, tuple(_placed(arg, at) for arg in sub.args), sub.written,
+             at if sub.name == "var" else sub.at) if isinstance(sub, Call) else sub
+        for sub in subs)
+
+
 def normalise_tag(tag: str) -> str:
     return tag.replace("-", "_")
 
@@ -76,8 +87,11 @@ class _Reader:
     def __init__(self, path: str) -> None:
         self.path = path
         self.problems: list[Problem] = []
-        self.parsed: dict[str, Subs] = {}
-        """Each attribute text parsed once: ``$(var use_sim_time)`` recurs in a file."""
+        self.parsed: dict[str, tuple[Subs, str | None]] = {}
+        """Each attribute text parsed once (``$(var use_sim_time)`` recurs in a file), with
+        why launch refuses it, if it does."""
+        self.refused: set[tuple[int, str]] = set()
+        """(entity, attribute) whose refusal is reported: each is read more than once."""
 
     def where(self, entity: Entity) -> Where:
         return Where(self.path, entity.line, entity.column)
@@ -86,18 +100,32 @@ class _Reader:
         self.problems.append(Problem(rule, entity.line, entity.column, message))
 
     def subs(self, entity: Entity, attribute: str) -> Subs | None:
+        """The attribute's substitutions. What launch's parser refuses (bad syntax, an
+        unknown substitution, a wrong argument count) is reported at the entity that
+        carries it, once, and stands as an opaque piece: launch refuses it while it parses
+        the file, not when the enclosing action runs."""
         text = entity.attrs.get(attribute)
         if text is None:
             return None
         known = self.parsed.get(text)
-        if known is not None:
-            return known
-        try:
-            subs = self.parsed[text] = parse(text)
-            return subs
-        except SubstitutionSyntaxError as exc:
-            self.report("roslaunch_error", entity, f"{attribute}: {exc}")
-            return (Opaque(text, f"not a valid substitution: {exc}"),)
+        if known is None:
+            try:
+                subs = parse(text)
+                refusal = first_refusal(subs)
+            except SubstitutionSyntaxError as exc:
+                subs, refusal = (), f"{exc}"
+            if refusal is not None:
+                subs = (Opaque(text, f"not a valid substitution: {refusal}"),)
+            known = self.parsed[text] = (subs, refusal)
+        subs, refusal = known
+        if refusal is not None and (id(entity), attribute) not in self.refused:
+            self.refused.add((id(entity), attribute))
+            self.report("roslaunch_error", entity, f"{attribute}: {refusal}")
+        if "$(var" in text:
+            # A read launch finds unset is reported at the entity that writes it (a
+            # <param> of a <node>), as the syntax faults above.
+            return _placed(subs, (entity.line, entity.column))
+        return subs
 
     def required(self, entity: Entity, attribute: str) -> Subs | None:
         value = self.subs(entity, attribute)

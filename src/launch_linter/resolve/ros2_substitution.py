@@ -19,7 +19,7 @@ import os
 import re
 import shlex
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Tuple, Union
 
 from launch_linter.model.budget import Budget
@@ -56,6 +56,9 @@ class Call:
     name: str
     args: tuple[Subs, ...]
     written: str
+    at: tuple[int, int] | None = field(default=None, compare=False)
+    """(line, column) where the substitution is made, in the file of the action that
+    performs it (a Python ``LaunchConfiguration(...)``); None: the action's own place."""
 
 
 @dataclass(frozen=True)
@@ -93,10 +96,11 @@ class Ros2Scope:
     filename: str
     budget: Budget | None = None
     """The root file's work budget, charged before a value is built."""
-    missing: Callable[[str], None] | None = None
-    """Told the name of each launch configuration read without a default where none is
-    set: launch's ``LaunchConfiguration.perform`` raises "launch configuration '…' does not
-    exist" there (the loader decides whether anything could have set it)."""
+    missing: Callable[[str, tuple[int, int] | None], None] | None = None
+    """Told the name (and the call's ``at``) of each launch configuration read without a
+    default where none is set: launch's ``LaunchConfiguration.perform`` raises "launch
+    configuration '…' does not exist" there (the loader decides whether anything could
+    have set it)."""
 
 
 def literal(text: str) -> Subs:
@@ -304,6 +308,37 @@ _TRUE_WORDS = ("true", "1", "yes", "on")
 _FALSE_WORDS = ("false", "0", "no", "off")
 
 
+def _refusal(call: Call) -> str | None:
+    """Why launch refuses this one call (an unknown name, a wrong number of arguments),
+    or None."""
+    if call.name == "arg":
+        return ("ROS 1's '$(arg)' in a ROS 2 launch file: launch stops with 'Unknown "
+                "substitution: arg'; ROS 2 reads a launch argument with '$(var NAME)'")
+    if call.name not in _ARITY:
+        return f"unknown substitution '$({call.name})'"
+    low, high = _ARITY[call.name]
+    if not low <= len(call.args) <= high:
+        expected = str(low) if low == high else f"{low} to {high}"
+        return f"'$({call.name})' takes {expected} argument(s), not {len(call.args)}"
+    return None
+
+
+def first_refusal(subs: Subs) -> str | None:
+    """Why launch refuses these substitutions when it parses them, nested ones included,
+    or None: the frontend's parser instantiates every substitution of an attribute while
+    it parses the file (``instantiate_substitution`` raises 'Unknown substitution', a
+    substitution's ``parse`` a wrong argument count), before any action runs."""
+    pending: list[Subs] = [subs]
+    while pending:
+        for sub in pending.pop():
+            if isinstance(sub, Call):
+                refusal = _refusal(sub)
+                if refusal is not None:
+                    return refusal
+                pending.extend(sub.args)
+    return None
+
+
 def _hole(call: Call, reason: str) -> Value:
     return (Hole(call.written, reason),)
 
@@ -342,18 +377,9 @@ class _Resolver:
         return value if text is None else text
 
     def call(self, call: Call) -> Value:
-        if call.name == "arg":
-            raise SubstitutionError(
-                "ROS 1's '$(arg)' in a ROS 2 launch file: launch stops with 'Unknown "
-                "substitution: arg'; ROS 2 reads a launch argument with '$(var NAME)'")
-        if call.name not in _ARITY:
-            raise SubstitutionError(f"unknown substitution '$({call.name})'")
-        low, high = _ARITY[call.name]
-        if not low <= len(call.args) <= high:
-            expected = str(low) if low == high else f"{low} to {high}"
-            raise SubstitutionError(
-                f"'$({call.name})' takes {expected} argument(s), not {len(call.args)}"
-            )
+        refusal = _refusal(call)
+        if refusal is not None:
+            raise SubstitutionError(refusal)
         if call.name in _RUNTIME_ONLY:
             return _hole(call, _RUNTIME_ONLY[call.name])
         handler = getattr(self, "_" + call.name.replace("-", "_"))
@@ -370,7 +396,7 @@ class _Resolver:
         if len(call.args) == 2:
             return self.value(call.args[1])
         if self.scope.missing is not None:
-            self.scope.missing(name)
+            self.scope.missing(name, call.at)
         return _hole(
             call,
             f"launch argument '{name}' is not set (give it with --arg {name}:=VALUE)",

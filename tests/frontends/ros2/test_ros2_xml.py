@@ -181,6 +181,30 @@ def test_a_required_argument_an_include_does_not_pass(load: Load) -> None:
     assert "missing required argument" in tree.problems[0].message
 
 
+def test_the_command_line_does_not_satisfy_an_included_required_argument(load: Load) -> None:
+    # launch/actions/include_launch_description.py (ros2/launch, dashing 2e12986 to rolling
+    # 02595ba): execute() compares the declared arguments only with the include's own
+    # launch_arguments, never with context.launch_configurations, where `ros2 launch`
+    # put the command line's values: the include still raises.
+    tree = load({
+        "a.launch.xml": launch('  <let name="robot" value="r"/>\n  <include file="b.launch.xml"/>'),
+        "b.launch.xml": launch('  <arg name="frame"/>'),
+    }, "a.launch.xml", args={"frame": "x"})
+    assert rules(tree) == [("roslaunch_error", 3)]
+
+
+def test_the_command_line_value_reaches_an_included_file(load: Load) -> None:
+    # DeclareLaunchArgument keeps a value already set (the command line's) over its default.
+    tree = load({
+        "a.launch.xml": launch('  <let name="robot" value="r"/>\n  <include file="b.launch.xml"/>'),
+        "b.launch.xml": launch(
+            '  <arg name="frame" default="d"/>\n'
+            f'  <node {TF} name="t" args="--frame-id $(var frame) --child-frame-id c"/>'),
+    }, "a.launch.xml", args={"frame": "x"})
+    assert rules(tree) == []
+    assert by_name(tree)["t"].parent == "x"
+
+
 def test_include_cycles_and_missing_files(load: Load) -> None:
     tree = load({
         "a.launch.xml": launch(
@@ -334,3 +358,41 @@ def test_executable_ros2_run_forms(load: Load, executable: str,
                                    expected: list[tuple[str, str]]) -> None:
     tree = load({"a.launch.xml": launch(f"  <executable {executable}/>")}, "a.launch.xml")
     assert [(t.parent, t.child) for t in tree.transforms] == expected
+
+
+def test_a_refused_substitution_is_reported_where_it_is_written(load: Load) -> None:
+    # launch's parser instantiates each substitution while it parses the file
+    # (launch/frontend/expose.py, instantiate_substitution: 'Unknown substitution'), so the
+    # fault is the attribute's, not the node's; each place that writes it is named once.
+    tree = load({"a.launch.xml": launch(
+        '  <arg name="params" default="p.yaml"/>\n'
+        '  <node pkg="demo" exec="talker" name="t">\n'
+        '    <param from="$(arg params)"/>\n'
+        '    <param name="a" value="$(var params x y)"/>\n'
+        '  </node>\n'
+        '  <node pkg="demo" exec="listener" name="l">\n'
+        '    <param from="$(arg params)"/>\n'
+        '  </node>')}, "a.launch.xml")
+    assert rules(tree) == [("roslaunch_error", 4), ("roslaunch_error", 5),
+                           ("roslaunch_error", 8)]
+    assert "'$(var)' takes 1 to 2 argument(s), not 3" in tree.problems[1].message
+
+
+def test_a_substitution_launch_knows_is_not_reported(load: Load) -> None:
+    tree = load({"a.launch.xml": launch(
+        '  <arg name="params" default="p.yaml"/>\n'
+        '  <node pkg="demo" exec="talker" name="t">\n'
+        '    <param from="$(var params)"/>\n'
+        '  </node>')}, "a.launch.xml")
+    assert rules(tree) == []
+
+
+def test_a_refused_substitution_in_yaml_is_reported_at_its_entry(load: Load) -> None:
+    tree = load({"a.launch.yaml": (
+        "launch:\n"
+        "- node:\n"
+        "    pkg: demo\n"
+        "    exec: talker\n"
+        "    param:\n"
+        "    - from: $(arg params)\n")}, "a.launch.yaml")
+    assert rules(tree) == [("roslaunch_error", 6)]

@@ -76,7 +76,8 @@ def _substitution(kind: str, arity: int) -> Callable[..., object]:
         values = list(args) + list(kwargs.values())
         subs = tuple(self.subs(v, node, "substitution argument")
                      for v in values[:arity] if v is not None)
-        return SubsVal((Call(kind, subs, self.segment(node)),))
+        site = self.where(node)
+        return SubsVal((Call(kind, subs, self.segment(node), (site.line, site.column)),))
 
     return make
 
