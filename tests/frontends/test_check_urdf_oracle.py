@@ -99,6 +99,25 @@ def test_a_link_without_a_name(tmp_path: Path) -> None:
     assert linter(path) == urdfdom(path) == (False, None)
 
 
+MATERIAL = '<material name="m"><color rgba="1 0 0 1"/></material>'
+VISUAL = f'<visual><geometry><box size="1 1 1"/></geometry>{MATERIAL}</visual>'
+
+
+@pytest.mark.parametrize("body", [
+    MATERIAL + MATERIAL,  # alike: refused all the same
+    MATERIAL + MATERIAL.replace("1 0 0 1", "0 1 0 1"),
+    "<material/><material/>",  # both kept as ''
+    MATERIAL + f'<link name="b">{VISUAL}</link><link name="c">{VISUAL}</link>'
+    '<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
+    '<joint name="k" type="fixed"><parent link="a"/><child link="c"/></joint>',
+])
+def test_top_level_materials(tmp_path: Path, body: str) -> None:
+    """urdfdom refuses a second top-level material of a name; a visual's is the link's."""
+    path = tmp_path / "materials.urdf"
+    path.write_text(f'<robot name="m"><link name="a"/>{body}</robot>', encoding="utf-8")
+    assert linter(path) == urdfdom(path)
+
+
 def test_real_urdf() -> None:
     path = FIXTURES / "robot_ws" / "src" / "demo_description" / "urdf" / "plain.urdf"
     assert linter(path) == urdfdom(path)

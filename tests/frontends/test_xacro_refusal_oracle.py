@@ -43,6 +43,14 @@ CASES = [
      "identifiers", "property names must be valid Python identifiers"),
     ('<xacro:property name="class" value="0.36"/>', "Property names must be valid python "
      "identifiers", "property names must be valid Python identifiers"),
+    # An expression that is no Python: an unmatched, mismatched or unclosed bracket.
+    ('<link name="l"><inertial><mass value="${2 * (1 + 2) / 12)}"/></inertial></link>',
+     "unmatched ')'", "')' closes no bracket"),
+    ('<link name="${[1, (2]}"/>', "does not match", "']' does not close its bracket"),
+    ('<link name="${\'a\' + (1}"/>', "never closed", "'(' is not closed"),
+    # Brackets inside strings, and a macro never called, are not evaluated as such.
+    ("<link name=\"${'a(' + 'b]'}\"/>", None, None),
+    ('<xacro:macro name="bad" params=""><link name="${(1}"/></xacro:macro>', None, None),
     ('<xacro:property name="wheel_gap" value="0.36"/>', None, None),
     ('<xacro:wheel side="l"><origin xyz="1 0 0"/></xacro:wheel>', None, None),
     ('<xacro:arg name="tool" default="t"/><link name="$(arg tool)"/>', None, None),

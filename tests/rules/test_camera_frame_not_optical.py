@@ -71,7 +71,8 @@ def test_unjoined_frames_are_judged_by_name_and_movable_paths_not_at_all(
     named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
                          body="<frame_name>{}</frame_name>")
     assert len(run(tmp_path, named.format("kinect_frame"))) == 1
-    assert run(tmp_path, named.format("kinect_optical_frame")) == []
+    (unpublished,) = run(tmp_path, named.format("kinect_optical_frame"))
+    assert "nothing in this tree publishes" in unpublished[1]
     movable = ROBOT.format(rpy="0 0 0", filename="libgazebo_ros_camera.so",
                            body="<frame_name>camera_link_optical</frame_name>").replace(
         'name="camera_optical_joint" type="fixed"', 'name="camera_optical_joint" '
@@ -140,3 +141,69 @@ def test_a_proven_rotation_warns_and_a_name_alone_informs(tmp_path: Path) -> Non
     named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
                          body="<frame_name>head_rgb_frame</frame_name>")
     assert levels(named) == ["info"]
+
+
+WITHOUT_OPTICAL = ROBOT.replace('<link name="camera_link_optical"/>', "").replace(
+    """  <joint name="camera_optical_joint" type="fixed">
+    <parent link="camera_link"/><child link="camera_link_optical"/>
+    <origin xyz="0 0 0" rpy="{rpy}"/>
+  </joint>
+""", "")
+
+
+def test_a_frame_no_link_of_the_description_and_nothing_publishes(tmp_path: Path) -> None:
+    """vrx#140: the camera macro stamps images with ${name}_link_optical, a link the
+    macro no longer defines: every tf lookup of the images fails."""
+    body = "<frameName>camera_link_optical</frameName>"
+    fault = WITHOUT_OPTICAL.format(filename="libgazebo_ros_camera.so", body=body)
+    assert "camera_link_optical" not in fault.split("<gazebo")[0]
+    (found,) = run(tmp_path, fault)
+    assert "which is no link of the robot description and which nothing in this tree " \
+           "publishes" in found[1] and "(frameName)" in found[1]
+    fixed = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body=body)
+    assert run(tmp_path, fixed) == []
+    # A namespace prefix on a link the description has is not read as another frame.
+    prefixed = WITHOUT_OPTICAL.format(filename="libgazebo_ros_camera.so",
+                                      body="<frameName>cam/camera_link_optical</frameName>")
+    assert len(run(tmp_path, prefixed)) == 1
+    on_link = prefixed.replace("cam/camera_link_optical", "cam/camera_link")
+    assert all("nothing in this tree publishes" not in m for _, m in run(tmp_path, on_link))
+
+
+def test_a_frame_a_static_transform_of_the_tree_publishes(tmp_path: Path) -> None:
+    body = "<frameName>camera_link_optical</frameName>"
+    (tmp_path / "robot.urdf").write_text(
+        WITHOUT_OPTICAL.format(filename="libgazebo_ros_camera.so", body=body))
+    static = ('<node pkg="tf2_ros" type="static_transform_publisher" name="optical" '
+              'args="0 0 0 -1.5707963 0 -1.5707963 camera_link camera_link_optical"/>')
+    launch = tmp_path / "sim.launch"
+    launch.write_text(
+        '<launch><param name="robot_description" textfile="$(dirname)/robot.urdf"/>'
+        '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+        '<node pkg="gazebo_ros" type="spawn_model" name="spawn" '
+        'args="-urdf -param robot_description -model r"/>' + "{}</launch>")
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    text = launch.read_text()
+    launch.write_text(text.format(""))
+    (found,) = lint_paths([str(launch)], options).diagnostics
+    assert "nothing in this tree publishes" in found.message
+    launch.write_text(text.format(static))
+    assert lint_paths([str(launch)], options).diagnostics == ()
+
+
+def test_an_incomplete_description_proves_no_frame_absent(tmp_path: Path) -> None:
+    body = "<frameName>camera_link_optical</frameName>"
+    text = WITHOUT_OPTICAL.format(filename="libgazebo_ros_camera.so", body=body).replace(
+        '<robot name="r">', '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        '<xacro:include filename="$(find nowhere)/optical.xacro"/>')
+    assert run(tmp_path, text) == []
+
+
+def test_a_namespace_prefix_on_the_links_is_not_another_frame(tmp_path: Path) -> None:
+    """uuv_simulator's camera links are ${namespace}/camera_link_optical and its plugin
+    stamps camera_link_optical, which the ROS 1 plugin resolves with its tf_prefix."""
+    text = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
+                        body="<frameName>camera_link_optical</frameName>")
+    prefixed = text.replace('"camera_link', '"rov/camera_link').replace(
+        ">camera_link_optical<", ">camera_link_optical<")
+    assert all("nothing in this tree publishes" not in m for _, m in run(tmp_path, prefixed))

@@ -114,3 +114,24 @@ def test_a_property_name_that_is_no_python_identifier(tmp_path: Path) -> None:
     assert "property names must be valid Python identifiers: ''" in found.message
     assert lint_loaded(tmp_path, robot(link("a") + '<xacro:property name="gap" value="1"/>'),
                        RULE) == ()
+
+
+def test_an_expression_with_an_extra_closing_bracket(tmp_path: Path) -> None:
+    """kuka-lwr#47: an inertia macro's ``${mass * (...) / 12)}``; xacro compiles each
+    expression it evaluates and stops on the SyntaxError."""
+    macro = ('<xacro:macro name="inertia" params="mass">\n'
+             '<inertia ixx="${mass * (1 + 2) / 12)}"/></xacro:macro>')
+    text = robot('<link name="a"><inertial>' + macro + '<xacro:inertia mass="2"/>'
+                 "</inertial></link>")
+    (found,) = lint_loaded(tmp_path, text, RULE)
+    assert "')' closes no bracket" in found.message and found.severity.value == "error"
+    assert found.line == 3  # the <inertia> in the macro
+    fixed = text.replace("/ 12)}", "/ 12}")
+    assert lint_loaded(tmp_path, fixed, RULE) == ()
+
+
+def test_an_expression_never_evaluated_is_not_refused(tmp_path: Path) -> None:
+    # xacro evaluates a macro's body only when it is called.
+    text = robot(link("a") + '<xacro:macro name="m" params=""><link name="${(1}"/>'
+                 "</xacro:macro>")
+    assert lint_loaded(tmp_path, text, RULE) == ()

@@ -269,20 +269,29 @@ class NodeRecord(Record):
 
 
 class RobotElement(Record):
-    """A ``<link>`` or ``<joint>`` of an expanded description, by name, where it was written.
+    """A ``<link>``, ``<joint>`` or top-level ``<material>`` of an expanded description, by
+    name, where it was written.
 
-    ``name`` is None when the name could not be known; ``condition`` is the launch element's
-    condition and the undecided ``xacro:if``/``xacro:unless`` around the element."""
+    ``name`` is None when the name could not be known (a ``<material>`` without a name is
+    ``''``, as urdfdom keeps it); ``condition`` is the launch element's condition and the
+    undecided ``xacro:if``/``xacro:unless`` around the element. For an element a xacro
+    macro made, ``path``/``line`` are the outermost call and ``defined`` is where the
+    element is written in the macro; ``included`` is the ``xacro:include`` that read the
+    file the element (or its outermost call) is written in, None in the top file."""
 
     kind: str
-    """``link`` or ``joint``."""
+    """``link``, ``joint``, ``material``, or ``origin``: an ``<origin>`` urdfdom ignores
+    (a second one in a link's ``<visual>``, ``<collision>``, ``<inertial>`` or in a joint),
+    named after its owner (``<visual> of link 'x'``)."""
     name: str | None
     path: str
     line: int
     column: int
     condition: Condition
+    defined: tuple[str, int, int] | None
+    included: tuple[str, int, int] | None
 
-    __slots__ = ("kind", "name", "path", "line", "column", "condition")
+    __slots__ = ("kind", "name", "path", "line", "column", "condition", "defined", "included")
 
     def __init__(
         self,
@@ -292,6 +301,8 @@ class RobotElement(Record):
         line: int,
         column: int,
         condition: Condition | None = None,
+        defined: tuple[str, int, int] | None = None,
+        included: tuple[str, int, int] | None = None,
     ) -> None:
         _set(self, "kind", kind)
         _set(self, "name", name)
@@ -299,6 +310,8 @@ class RobotElement(Record):
         _set(self, "line", line)
         _set(self, "column", column)
         _set(self, "condition", Condition() if condition is None else condition)
+        _set(self, "defined", defined)
+        _set(self, "included", included)
 
 
 class FaultKind(str, Enum):

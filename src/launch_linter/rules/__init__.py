@@ -72,6 +72,7 @@ def _load() -> None:
         urdf_duplicate_name,
         urdf_empty_robot,
         urdf_missing_link,
+        urdf_repeated_origin,
         urdf_root,
         xacro_error,
         xacro_param_as_arg,

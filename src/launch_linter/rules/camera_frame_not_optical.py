@@ -11,7 +11,12 @@ fixed joints and the launch files' static transforms, is not roll -π/2, pitch 0
 yaw -π/2 (z forward, x right, y down). The image frame being the sensor's link itself
 (the ROS 2 default) is the commonest case. That rotation proven is a warning; a frame
 that no fixed path joins to the sensor's link is reported by its name only, at info, when
-the name does not say `optical`.
+the name does not say `optical`. A frame that is no link of the (complete) description,
+under any `ns/` prefix, and at no end of an edge of the tree (static transform, URDF joint,
+an edge a known node or plugin publishes) is reported at info: nothing in the tree
+publishes it, so every tf lookup of the images fails unless another launch does (judged on
+110 repositories with Gazebo cameras: 21 true of 29, docs/evaluation/camera_unpublished_frame.md;
+the false ones are frames a stack publishes from another repository).
 
 ## Why is this bad?
 Gazebo renders a camera looking along its link's x axis, and the plugin fills images,
@@ -85,7 +90,7 @@ from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord, pose_turn
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node
+from launch_linter.rules._nodes import entry_of, finding_at_node, nodes_of
 from launch_linter.rules._tree import (
     Edge,
     Quaternion,
@@ -108,6 +113,8 @@ SENSOR_POSE = "gazebo_sensor_pose"
 OPTICAL = quaternion_from_ypr(-1.5707963267948966, 0.0, -1.5707963267948966)
 IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
 MAX_DEPTH = 64
+UNPUBLISHED_LEVEL = Severity.INFO
+"""A camera frame no link of a complete description and nothing in the tree publishes."""
 
 
 def _product(a: Quaternion, b: Quaternion) -> Quaternion:
@@ -199,15 +206,16 @@ def _camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, st
     return frames_named(entry, node, entry.camera_frames)
 
 
-def _plugins(context: RuleContext) -> list[NodeRecord]:
+def _plugins(context: RuleContext) -> list[tuple[NodeRecord, frozenset[str] | None]]:
     """The plugins of every description the tree reads (spawned or not: the fault is the
-    description's), once each, in the tree's ROS version where the plugin does not say;
-    not a sensor's whose ``<gazebo reference>`` names no link of a complete description."""
+    description's), once each, in the tree's ROS version where the plugin does not say,
+    each with the links of its description when that is complete (None otherwise); not a
+    sensor's whose ``<gazebo reference>`` names no link of a complete description."""
     ros = next((n.ros for n in context.tree.nodes if n.ros is not None), None)
     seen: set[tuple[str, int]] = set()
-    out: list[NodeRecord] = []
+    out: list[tuple[NodeRecord, frozenset[str] | None]] = []
     for robot in context.tree.robots:
-        links = {e.name for e in robot.elements if e.kind == "link"}
+        links = frozenset(e.name for e in robot.elements if e.kind == "link" and e.name)
         for plugin in robot.plugins:
             reference = plugin.given(SENSOR_LINK)
             if robot.complete and reference is not None and reference not in links:
@@ -216,9 +224,33 @@ def _plugins(context: RuleContext) -> list[NodeRecord]:
                 continue
             if (plugin.path, plugin.line) not in seen:
                 seen.add((plugin.path, plugin.line))
-                out.append(plugin if plugin.ros is not None or ros is None
-                           else replace(plugin, ros=ros))
+                out.append((plugin if plugin.ros is not None or ros is None
+                            else replace(plugin, ros=ros), links if robot.complete else None))
     return out
+
+
+def _published(context: RuleContext) -> frozenset[str]:
+    """Every frame at an end of an edge of the tree: static transforms, URDF joints (as
+    published and as written) and the edges known nodes (Gazebo plugins included) publish."""
+    edges = edges_of(context)
+    frames = {end for edge in edges + tuple(as_written(e) for e in edges)
+              for end in (edge.parent, edge.child)}
+    frames.update(end for edge in nodes_of(context).edges for end in (edge.parent, edge.child))
+    return frozenset(frame.lstrip("/") for frame in frames)
+
+
+def _unpublished(frame: str, links: frozenset[str] | None,
+                 published: frozenset[str]) -> bool:
+    """Whether ``frame`` is proven to be no link of the plugin's complete description
+    and no frame of the tree's edges. A ``prefix/`` on either side is not read as another
+    frame: a ROS 1 plugin resolves its frame with the ``tf_prefix`` its namespace finds
+    (gazebo_ros's camera utilities, ``tf::resolve``), and descriptions prefix their links
+    with a namespace (``${namespace}/camera_link``)."""
+    if links is None or frame in published or frame in links:
+        return False
+    ending = "/" + frame
+    return frame.rpartition("/")[2] not in links and not any(
+        link.endswith(ending) for link in links)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -227,7 +259,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         return
     # The plugins name the description's links as written, before any publisher's prefix.
     parents = parents_of(tuple(as_written(e) for e in edges_of(context)))
-    for node in plugins:
+    published: frozenset[str] | None = None
+    for node, links in plugins:
         body = node.given(SENSOR_LINK)
         camera = camera_in_link(node)
         for frame, param in _camera_frames(context, node):
@@ -255,6 +288,18 @@ def check(context: RuleContext) -> Iterator[Finding]:
                     f"and fills the data z forward (REP 103); stamp them with a child "
                     f"frame of {base} at rpy \"-pi/2 0 -pi/2\"",
                 )
+                continue
+            if published is None:
+                published = _published(context)
+            if _unpublished(frame, links, published):
+                yield replace(finding_at_node(
+                    node,
+                    f"camera plugin {node.plugin} stamps its images with '{frame}' "
+                    f"({param}), which is no link of the robot description and which "
+                    f"nothing in this tree publishes: every tf lookup of the images "
+                    f"fails; add that frame to the description (a fixed joint from the "
+                    f"sensor's link at rpy \"-pi/2 0 -pi/2\") or stamp them with one it has",
+                ), severity=UNPUBLISHED_LEVEL)
             elif "optical" not in frame:
                 # Only the name speaks here: a frame another package publishes may be an
                 # optical frame named otherwise (hsr_description's *_rgb_frame).

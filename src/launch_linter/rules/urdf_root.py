@@ -102,7 +102,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 + refused(f"Two root links found: [{first}] and [{second}]") + missing,
                 [r for r in certain if r is not shown],
             )
-        elif not roots and all(e.condition.always for e in robot.elements):
+        elif not roots and all(e.condition.always for e in robot.elements
+                                   if e.kind in ("link", "joint")):
             link = next(iter(links.values()))
             yield finding_at(
                 robot, link,

@@ -5,7 +5,9 @@ Reports, in a xacro description that a launch file loads (or a `.xacro` file lin
 own), each element the real xacro stops on: a call of a macro no `xacro:macro` defines, a
 macro call without a parameter that has no default or with one the macro does not have,
 blocks that do not match the macro's block parameters, an `insert_block` of an undefined
-block, and a `$(arg x)` that no `xacro:arg` declares and the xacro call does not give.
+block, a `$(arg x)` that no `xacro:arg` declares and the xacro call does not give, and a
+`${...}` that xacro evaluates (in a macro, once it is called) whose brackets or quotes do
+not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`).
 It is an error when a launch file loads the description (with or without a
 robot_state_publisher: roslaunch runs a `<param command="xacro ...">` when it loads the
 file, for a Gazebo spawner as much as for robot_state_publisher); info when it sits under an
@@ -18,8 +20,9 @@ which reports it at the same line and level and says what to write instead.
 
 ## Why is this bad?
 xacro stops with an error (`unknown macro name: xacro:x`, `Undefined parameters [x]`,
-`Undefined substitution argument`): the launch file's xacro command fails, so
-`robot_description` is never set and robot_state_publisher publishes nothing (ROS 1
+`Undefined substitution argument`, `unmatched ')' ... when evaluating expression`): the
+launch file's xacro command fails, so `robot_description` is never set and
+robot_state_publisher publishes nothing (ROS 1
 `roslaunch` stops with "Invalid <param> tag: Cannot load command parameter"; ROS 2 `ros2
 launch` stops on the failed `Command` substitution).
 

@@ -123,28 +123,62 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
 
 def elements_of(root: ExpandedNode, display: Display,
                 outer: Condition) -> tuple[list[RobotElement], bool]:
-    """The links and joints directly under ``<robot>`` by name (as urdfdom reads them),
+    """The links, joints and materials directly under ``<robot>`` by name (as urdfdom
+    reads them: a ``<material>`` inside a ``<visual>`` is the link's, not the model's),
     and whether every link name and joint end is known."""
     out: list[RobotElement] = []
     known = True
     if root.tag != "robot":
         return out, False
     for element in root.children:
-        if element.tag not in ("link", "joint"):
+        if element.tag not in ("link", "joint", "material"):
             continue
-        name: str | None = element.attrib.get("name")
+        # urdfdom keeps a top-level material without a name as '' (its parseMaterial
+        # result is not checked), so two of them clash.
+        name: str | None = element.attrib.get(
+            "name", "" if element.tag == "material" else None)
         if "name" in element.unknown:
             name = None
-            known = known and element.tag == "joint"
+            known = known and element.tag != "link"
         if element.tag == "joint":
             for end in ("parent", "child"):
                 end_element = _first(element, end)
                 if end_element is not None and "link" in end_element.unknown:
                     known = False
         at = element.call or (element.path, element.line, element.column)
+        defined = (None if element.call is None
+                   else (display(element.path), element.line, element.column))
+        site = element.included
+        included = None if site is None else (display(site[0]), site[1], site[2])
         out.append(RobotElement(element.tag, name, display(at[0]), at[1], at[2],
-                                outer & _condition(element.conditions)))
+                                outer & _condition(element.conditions), defined, included))
+        if element.tag in ("link", "joint"):
+            out.extend(_ignored_origins(element, name, display, outer))
     return out, known
+
+
+ORIGIN_OWNERS = ("visual", "collision", "inertial")
+"""The elements of a ``<link>`` that urdfdom reads one ``<origin>`` of (the first)."""
+
+
+def _ignored_origins(element: ExpandedNode, name: str | None, display: Display,
+                     outer: Condition) -> list[RobotElement]:
+    """The ``<origin>`` elements urdfdom ignores in a link's visuals, collisions and
+    inertial, or in a joint: every one after the first (urdfdom's link.cpp and joint.cpp
+    read ``FirstChildElement("origin")``), as elements of kind ``origin`` named after
+    their owner (``<visual> of link 'x'``)."""
+    what = f"link '{name}'" if element.tag == "link" else f"joint '{name}'"
+    owners = ([(f"<{c.tag}> of {what}", c) for c in element.children
+               if c.tag in ORIGIN_OWNERS] if element.tag == "link" else [(what, element)])
+    out: list[RobotElement] = []
+    for owner, node in owners:
+        for origin in [c for c in node.children if c.tag == "origin"][1:]:
+            at = origin.call or (origin.path, origin.line, origin.column)
+            defined = (None if origin.call is None
+                       else (display(origin.path), origin.line, origin.column))
+            out.append(RobotElement("origin", owner, display(at[0]), at[1], at[2],
+                                    outer & _condition(origin.conditions), defined))
+    return out
 
 
 SIMULATOR_PACKAGE = "gazebo"
@@ -282,9 +316,10 @@ def literal_root(text: str, path: str, line: int, own_lines: bool = False
                 if own_lines else ExpandedNode(element.tag, path, line, 1, ()))
         node.attrib = dict(element.attrib)
         node.text = element.text.strip()
-        # Only joints and Gazebo plugins, with their children, matter; the rest of the
-        # tree is not copied.
-        if element.tag in ("robot", "joint", "gazebo", "sensor", "camera", "plugin", "ros"):
+        # Only joints, Gazebo plugins and the <origin>s of links' parts, with their
+        # children, matter; the rest of the tree is not copied.
+        if element.tag in ("robot", "joint", "gazebo", "sensor", "camera", "plugin", "ros",
+                           "link", *ORIGIN_OWNERS):
             node.children = [convert(child) for child in element.children]
         return node
 

@@ -5,13 +5,8 @@ descriptions are untrusted input to the linter, so this expander follows xacro's
 processing tag by tag but evaluates expressions with :mod:`launch_linter.resolve.safe_eval`
 and reads only the files the description includes, through the bounded XML reader.
 
-Supported: ``xacro:property`` (text and block properties, ``default``, ``scope``, lazy
-evaluation as in xacro), ``xacro:arg`` with values from the xacro call, ``$(arg)``,
-``$(find)``, ``$(env)``/``$(optenv)`` (explicit environment only), ``xacro:include``
-(relative and ``$(find)``, ``ns=`` for its macros), ``xacro:macro`` with parameters,
-defaults (``:=``, ``^``, ``^|``, quoted: ``xyz:='0 0 0'``) and block parameters
-(``*origin``, ``**content``), ``xacro:call``, ``xacro:insert_block``,
-``xacro:if``/``xacro:unless``, ``xacro:element`` and ``xacro:attribute``.
+Supported: what docs/robot.md lists (properties, args, ``$(find)``/``$(env)``, includes,
+macros with defaults and blocks, conditionals, ``xacro:call``/``element``/``attribute``).
 
 What cannot be known becomes *unknown* rather than an error: an attribute keeps a reason
 (``ExpandedNode.unknown``); a conditional whose value is unknown keeps its content, marked
@@ -64,6 +59,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _Refused,
     _Table,
     _Unknown,
+    expression_error,
     legacy_tag,
     legacy_tags,
     valid_name,
@@ -120,6 +116,7 @@ class XacroExpander:
         self._yaml_files: dict[str, tuple[object, int] | _Unknown] = {}
         self._load_yaml: object | None = None
         self._call_site: tuple[str, int, int] | None = None
+        self._include_site: tuple[str, int, int] | None = None
         self._param_args: dict[str, dict[tuple[int, int], list[ParamArg]]] = {}
         """Per file: its macros' parameters read as ``$(arg)``, by the macro's position."""
         self._arg_lines: dict[tuple[str, int, str], int] = {}
@@ -256,7 +253,7 @@ class XacroExpander:
         except _Unknown:
             raise
         except EvalError as exc:
-            raise _Unknown(f"${{{source}}}: {exc.reason}") from None
+            raise expression_error(source, exc.reason) from None
 
     def _extension(self, body: str, table: _Table) -> str:
         words = body.split()
@@ -354,7 +351,7 @@ class XacroExpander:
             raise _Abort(f"expansion makes more than {MAX_OUTPUT_ELEMENTS:,} elements", path,
                          element.line)
         made = ExpandedNode(tag or element.tag, path, element.line, element.column, conditions)
-        made.call = self._call_site
+        made.call, made.included = self._call_site, self._include_site
         return made
 
     def _attributes(self, element: Element, node: ExpandedNode, table: _Table) -> None:
@@ -533,6 +530,8 @@ class XacroExpander:
         if included is None:
             return
         self._include_stack.append(target)
+        outer_site = self._include_site  # in a macro, elements keep their call's include
+        self._include_site = outer_site if self._call_site else (path, element.line, element.column)
         # With ns=, the file's macros are called as ns.name and its properties read as
         # ${ns.x} (xacro gives the file a table of its own, reached through the namespace).
         inner = table if namespace is None else _Table(table)
@@ -540,6 +539,7 @@ class XacroExpander:
             self._children(included.children, target, inner, out, conditions)
         finally:
             self._include_stack.pop()
+            self._include_site = outer_site
         if namespace is not None:
             for name, macro in inner.macros.items():
                 table.macros[f"{namespace}.{name}"] = _Macro(

@@ -39,6 +39,55 @@ def valid_name(name: str) -> bool:
             and unicodedata.normalize("NFKC", name) == name)
 
 
+_CLOSES = {")": "(", "]": "[", "}": "{"}
+
+
+def _string_end(source: str, start: int, quote: str) -> int:
+    """Where the string literal whose body starts at ``start`` ends (after its closing
+    ``quote``); -1 when it is not closed (a one-quote string ends at a line's end)."""
+    position = start
+    while position < len(source):
+        if source[position] == "\\":
+            position += 2
+        elif source.startswith(quote, position):
+            return position + len(quote)
+        elif source[position] == "\n" and len(quote) == 1:
+            return -1
+        else:
+            position += 1
+    return -1
+
+
+def bracket_fault(source: str) -> str | None:
+    """Why ``source`` is no Python expression in any Python xacro runs on (2 or 3): a
+    bracket that closes none or not its own, a bracket or a string left open; None when
+    its brackets and quotes pair up. xacro compiles each ``${...}`` it evaluates (its
+    ``eval_text``/``safe_eval``), so such an expression stops it with a SyntaxError."""
+    opened: list[str] = []
+    position = 0
+    while position < len(source):
+        char = source[position]
+        if char in "'\"":
+            quote = char * 3 if source.startswith(char * 3, position) else char
+            position = _string_end(source, position + len(quote), quote)
+            if position < 0:
+                return "a string is not closed"
+            continue
+        if char == "#":  # a comment, to the end of its line
+            position = source.find("\n", position)
+            if position < 0:
+                break
+        elif char in "([{":
+            opened.append(char)
+        elif char in _CLOSES:
+            if not opened:
+                return f"'{char}' closes no bracket"
+            if opened.pop() != _CLOSES[char]:
+                return f"'{char}' does not close its bracket"
+        position += 1
+    return f"'{opened[-1]}' is not closed" if opened else None
+
+
 class _Abort(Exception):
     """A bound was reached: the expansion stops."""
 
@@ -79,6 +128,15 @@ PARAM_AS_ARG = "param_as_arg"
 """A problem kind: a macro reads its own parameter as ``$(arg)``, which never sees it."""
 FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG)
 """The kinds that are faults of the source itself."""
+
+
+def expression_error(source: str, reason: str) -> _Unknown:
+    """What an expression the evaluator could not read is: refused by xacro when it is
+    no Python expression at all (:func:`bracket_fault`), else unknown (``reason``)."""
+    fault = bracket_fault(source)
+    if fault is not None:
+        return _Refused(f"${{{source}}}: {fault}")
+    return _Unknown(f"${{{source}}}: {reason}")
 
 
 class XacroProblem(Record):
@@ -142,8 +200,8 @@ knowledge base knows (tests/knowledge checks that every plugin entry's parameter
 class ExpandedNode:
     """An element of the expanded document, with where it was written."""
 
-    __slots__ = ("attrib", "call", "children", "column", "conditions", "line", "path", "tag",
-                 "text", "unknown")
+    __slots__ = ("attrib", "call", "children", "column", "conditions", "included", "line",
+                 "path", "tag", "text", "unknown")
 
     def __init__(self, tag: str, path: str, line: int, column: int,
                  conditions: tuple[str, ...]) -> None:
@@ -164,6 +222,10 @@ class ExpandedNode:
         self.call: tuple[str, int, int] | None = None
         """For an element a macro made: the outermost ``<xacro:macro_name .../>`` call
         that made it (file, line, column): what a user edits to change that instance."""
+        self.included: tuple[str, int, int] | None = None
+        """The ``xacro:include`` (file, line, column) that read the file this element, or
+        its outermost macro call, is written in; None in the top file. A file included
+        twice makes its elements twice, told apart by this."""
 
 
 class Expansion(MutableRecord):
