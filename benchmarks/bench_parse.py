@@ -4,6 +4,7 @@
     python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--every N]
                                      [--profile N [--format ros1|python] [--measure read|check]]
                                      [--repeat N --format ros1|python --measure floor|read|check]
+                                     [--against SRC [--rounds N]]
 
 Over the latest version of every corpus file (``manifest.jsonl``, ``latest: true``;
 ``../shared/corpus`` relative to the repository root by default), grouped by format (the
@@ -32,6 +33,13 @@ process).
 ``cProfile`` and prints its N costliest functions by own time, then by cumulative time
 (the profiler slows Python code more than C code: compare shares, not times).
 
+``--against SRC`` compares with another checkout's ``src`` (main exported with ``git
+archive``): ``--rounds`` rounds, each running this script once from this checkout and once
+from SRC (``PYTHONPATH``), one after the other (which goes first alternates), so that
+both see the same load; it prints
+each run's ratios (front-end / floor and check / floor, medians of its passes) and, per
+format, the median over the rounds of this checkout's ratio divided by SRC's.
+
 ``--repeat N`` runs only that pass, N times after one warm-up pass, and prints nothing: for
 an instruction counter, which the machine's load does not move (docs/performance.md):
 
@@ -52,6 +60,7 @@ import json
 import os
 import pstats
 import statistics
+import subprocess
 import sys
 from typing import Dict, List, Sequence
 
@@ -128,7 +137,8 @@ def make_check_pass() -> Pass:
     return check_pass
 
 
-def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> None:
+def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> dict[str, float]:
+    """Print the figures of ``name``'s files; return each pass's median ratio to the floor."""
     floor_label, floor = FLOORS[name]
     measures = {floor_label: floor, **passes}
     cpu: Timings = {label: [] for label in measures}
@@ -145,10 +155,47 @@ def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> 
                  spread([o / f for o, f in zip(cpu[label], cpu[floor_label])], digits=2))
         print(f"{label:18s} {spread(cpu[label], 1e6):>22s} {spread(wall[label], 1e6):>22s} "
               f"{ratio:>22s}")
-    if "check" in cpu:
-        times = statistics.median(o / f for o, f in zip(cpu["check"], cpu[floor_label]))
+    ratios = {label: statistics.median(o / f for o, f in zip(cpu[label], cpu[floor_label]))
+              for label in passes}
+    if "check" in ratios:
+        times = ratios["check"]
         verdict = "met" if times <= TARGETS[name] else "not met"
         print(f"target: check <= {TARGETS[name]:g}x {floor_label}: {verdict} ({times:.2f}x)")
+    return ratios
+
+
+RATIOS = "ratios: "
+"""How a run started by ``--against`` hands its ratios to the comparing run."""
+
+
+def compare(ns: argparse.Namespace, against: str) -> int:
+    """``--against``: this checkout and ``against`` in alternating runs."""
+    argv = [sys.executable, os.path.abspath(__file__), "--corpus", ns.corpus, "--runs",
+            str(ns.runs), "--every", str(ns.every), "--no-roslaunch"]
+    sides = {"this": os.path.join(ROOT, "src"), "other": os.path.abspath(against)}
+    found: dict[str, list[dict[str, dict[str, float]]]] = {side: [] for side in sides}
+    print(f"this: {sides['this']}; other: {sides['other']}; {ns.rounds} rounds; "
+          f"{load_average()}")
+    for round_number in range(1, ns.rounds + 1):
+        order = list(sides.items())
+        for side, src in order if round_number % 2 else reversed(order):
+            env = dict(os.environ, PYTHONPATH=src)
+            done = subprocess.run(argv, env=env, capture_output=True, text=True, check=True)
+            line = next(x for x in done.stdout.splitlines() if x.startswith(RATIOS))
+            ratios = json.loads(line[len(RATIOS):])
+            found[side].append(ratios)
+            shown = "; ".join(f"{name}: " + ", ".join(f"{label} {value:.2f}x" for label, value
+                                                     in by_label.items())
+                              for name, by_label in ratios.items())
+            print(f"round {round_number} {side:5s} {shown} ({load_average()})")
+    for name in found["this"][0]:
+        for label in found["this"][0][name]:
+            mine = [r[name][label] for r in found["this"]]
+            other = [r[name][label] for r in found["other"]]
+            change = [m / o for m, o in zip(mine, other)]
+            print(f"{name} {label} / floor: this {spread(mine, digits=2)}, other "
+                  f"{spread(other, digits=2)}; this / other {spread(change, digits=3)}")
+    return 0
 
 
 def profile(paths: list[str], function: Pass, count: int) -> None:
@@ -175,7 +222,12 @@ def main() -> int:
                         help="only run the --format/--measure pass N times, silently")
     parser.add_argument("--no-roslaunch", action="store_true",
                         help="skip roslaunch's loader")
+    parser.add_argument("--against", metavar="SRC",
+                        help="compare with another checkout's src, in alternating runs")
+    parser.add_argument("--rounds", type=int, default=3, help="rounds of --against")
     ns = parser.parse_args()
+    if ns.against:
+        return compare(ns, ns.against)
     if not os.path.exists(os.path.join(ns.corpus, "manifest.jsonl")):
         print(f"no corpus at {ns.corpus}", file=sys.stderr)
         return 2
@@ -196,9 +248,11 @@ def main() -> int:
         return 0
     print(f"{sum(map(len, groups.values()))} corpus files (latest versions; every "
           f"{ns.every}); Python {sys.version.split()[0]}; {load_average()}")
+    ratios = {}
     for name, paths in groups.items():
         if paths:
-            measure(name, paths, ns.runs, passes)
+            ratios[name] = measure(name, paths, ns.runs, passes)
+    print(RATIOS + json.dumps(ratios))
     ros1 = groups["ROS 1 XML"]
     measured = None if ns.no_roslaunch or not ros1 else roslaunch_per_file(ros1, ns.runs)
     if measured is not None:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from launch_linter.workspace.packages import PackageIndex, default_package_roots
 
 
@@ -118,3 +120,34 @@ def test_the_engine_finds_the_roots_once_per_real_folder(tmp_path: Path) -> None
     assert roots("a.launch") == roots("b.launch") == [str(tmp_path / "ws" / "src")]
     assert roots("link.launch") == [str(tmp_path / "loose")]
     assert roots("a.launch") == [str(tmp_path / "ws" / "src")]
+
+
+def test_a_folders_package_is_walked_up_to_once(tmp_path: Path,
+                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    """The ROS 1 parse-check probe asks for the package of every root with nodes: the
+    launch files of one folder share one walk up, and each of them still depends on what
+    that walk looked at (the results cache)."""
+    from launch_linter.resolve import reads
+    from launch_linter.workspace import packages
+
+    launch = package(tmp_path / "pkg", "pkg") / "launch"
+    launch.mkdir()
+    walks: list[str] = []
+    walk = packages.nearest_package_xml
+
+    def counted(path: str) -> str | None:
+        walks.append(path)
+        return walk(path)
+
+    monkeypatch.setattr(packages, "nearest_package_xml", counted)
+    index = PackageIndex([])
+    logs = []
+    for name in ("a.launch", "b.launch"):
+        with reads.recording() as log:
+            assert index.package_xml_of(str(launch / name)) == str(tmp_path / "pkg" /
+                                                                    "package.xml")
+        logs.append(log)
+    assert walks == [str(launch / "a.launch")]
+    for log in logs:
+        looked_at = {p for group in log.closure() for p in group.stamps}
+        assert str(tmp_path / "pkg" / "package.xml") in looked_at

@@ -67,14 +67,22 @@ def _first_xml(doc: str, heading: str) -> str:
     return match.group(1)
 
 
-def _run(rule: Rule, xml: str) -> list[int]:
+def _run(rule: Rule, xml: str, heading: str = "", folder: Path | None = None) -> list[int]:
     """Lines where ``rule`` reports, with every rule on, as ``launch-linter check`` runs.
-    A module may name the file its example is (``EXAMPLE_PATH``, e.g. a ``.launch.py``) and
-    the distribution it targets (``EXAMPLE_DISTRO``)."""
+    A module may name the file its example is (``EXAMPLE_PATH``, e.g. a ``.launch.py``),
+    the distribution it targets (``EXAMPLE_DISTRO``) and the file the example includes
+    (``EXAMPLE_INCLUDED``: the second block under ``heading``, written into ``folder``
+    beside the example)."""
     module = MODULES[rule.id]
     options = LintOptions(package_paths=(), beliefs=load_beliefs("bundled", 1.0),
                           ros_distro=getattr(module, "EXAMPLE_DISTRO", None))
-    result = lint_text(xml, getattr(module, "EXAMPLE_PATH", "example.launch"), options)
+    path = getattr(module, "EXAMPLE_PATH", "example.launch")
+    included = getattr(module, "EXAMPLE_INCLUDED", None)
+    if included is not None and folder is not None:
+        blocks = XML_BLOCK.findall(_section(rule.doc, heading))
+        (folder / included).write_text(blocks[1], encoding="utf-8")
+        path = str(folder / path)
+    result = lint_text(xml, path, options)
     return [d.line for d in result.diagnostics if d.rule == rule.id]
 
 
@@ -130,9 +138,12 @@ def test_documented(rule: Rule) -> None:
 
 
 @pytest.mark.parametrize("rule", RULES, ids=lambda r: r.id)
-def test_example_triggers_and_fix_does_not(rule: Rule) -> None:
-    assert _run(rule, _first_xml(rule.doc, "## Example")), "the Example does not trigger"
-    assert _run(rule, _first_xml(rule.doc, "## Use instead")) == [], "Use instead triggers"
+def test_example_triggers_and_fix_does_not(rule: Rule, tmp_path: Path) -> None:
+    example, instead = "## Example", "## Use instead"
+    assert _run(rule, _first_xml(rule.doc, example), example, tmp_path), (
+        "the Example does not trigger")
+    assert _run(rule, _first_xml(rule.doc, instead), instead, tmp_path) == [], (
+        "Use instead triggers")
 
 
 @pytest.mark.parametrize(

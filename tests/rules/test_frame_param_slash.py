@@ -35,7 +35,12 @@ def test_a_costmap_global_frame_with_a_slash_in_a_ros2_parameter_file(tmp_path: 
               "        Node(package='nav2_bt_navigator', executable='bt_navigator',\n"
               "             name='bt_navigator',\n"
               "             parameters=[os.path.join(here, 'nav.yaml')])])\n")
-    assert run(tmp_path, "nav.launch.py", launch) == [(RULE, 7)]
+    # At the parameter file's key (PyYAML's mark), the node's element as related.
+    (tmp_path / "nav.launch.py").write_text(launch)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    [found] = lint_paths([str(tmp_path / "nav.launch.py")], options).diagnostics
+    assert (Path(found.path).name, found.line, found.column) == ("nav.yaml", 3, 5)
+    assert [(Path(r.path).name, r.line) for r in found.related] == [("nav.launch.py", 7)]
     (tmp_path / "nav.yaml").write_text(
         "bt_navigator:\n  ros__parameters:\n    global_frame: map\n")
     assert run(tmp_path, "nav.launch.py", launch) == []
@@ -87,7 +92,8 @@ def test_a_frame_prefix_that_is_a_slash(tmp_path: Path) -> None:
               "        Node(package='robot_state_publisher', executable='robot_state_publisher',\n"
               "             parameters=[{'frame_prefix':\n"
               "                 PythonExpression(['\"', ns, '/\"'])}])])\n")
-    assert levels(tmp_path, "rsp.launch.py", launch) == [(RULE, 7, "warning")]
+    # At the dictionary key that sets it, not at the Node( line.
+    assert levels(tmp_path, "rsp.launch.py", launch) == [(RULE, 8, "warning")]
     fixed = launch.replace("['\"', ns, '/\"']", "['\"', ns, '/\" if \"', ns, '\" else \"\"']")
     assert levels(tmp_path, "rsp.launch.py", fixed) == []
     prefixed = launch.replace("default=''", "default='robot1'")
@@ -100,7 +106,7 @@ def test_the_finding_is_on_the_param_line_that_sets_the_frame(tmp_path: Path) ->
             '      args="map.yaml">\n  <param name="frame_id" value="/eng2/7f"/>\n'
             '</node>\n</launch>\n')
     assert levels(tmp_path, "m.launch", ros1, "noetic") == [(RULE, 4, "warning")]
-    # Set in a parameter file, the line in the file is not known: the node's element.
+    # Set in a <rosparam>'s text: the <rosparam> element (here on the node's line).
     assert levels(tmp_path, "m.launch", MOVE_BASE, "noetic") == [(RULE, 2, "warning")]
 
 
@@ -119,8 +125,9 @@ def test_a_costmap_observation_source_sensor_frame_is_a_frame_it_looks_up(
     layer's namespace) is a namespace whose sensor_frame the observations are
     transformed from in tf2 (costmap_2d observation_buffer.cpp, Melodic on)."""
     fault = SOURCES.format(scan="/base_laser_link", local="/base_laser_link")
+    # At the <rosparam> that sets the first, the <param> that sets the second.
     assert levels(tmp_path, "s.launch", fault, "melodic") == [
-        (RULE, 2, "warning"), (RULE, 8, "warning")]
+        (RULE, 3, "warning"), (RULE, 8, "warning")]
     fixed = SOURCES.format(scan="base_laser_link", local="base_laser_link")
     assert levels(tmp_path, "s.launch", fixed, "melodic") == []
     # A frame under a name no observation_sources lists is not read by the costmap.
@@ -141,7 +148,7 @@ def test_the_costmap_cob_collision_velocity_filter_runs(tmp_path: Path) -> None:
     """cob_collision_velocity_filter runs a Costmap2DROS 'anti_collision_costmap' on tf2
     from Melodic on (cob_control melodic_dev)."""
     assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "melodic") == [
-        (RULE, 2, "warning")]
+        (RULE, 3, "warning")]
     assert levels(tmp_path, "c.launch", COB.format(frame="base_link"), "melodic") == []
     assert levels(tmp_path, "c.launch", COB.format(frame="/base_link"), "kinetic") == []
 
@@ -170,4 +177,5 @@ def test_the_frame_a_ros2_depthimage_to_laserscan_stamps_on_its_scans(tmp_path: 
               '    <param name="output_frame" value="/camera_depth_frame"/>\n'
               '  </node>\n'
               '</launch>\n')
-    assert run(tmp_path, "a.launch.xml", launch) == [(RULE, 2)]
+    # At the <param> that writes the value (ROS 2 XML <param> lines are kept).
+    assert run(tmp_path, "a.launch.xml", launch) == [(RULE, 3)]

@@ -36,7 +36,8 @@ PY = ("from launch import LaunchDescription\n"
 
 def test_nodes_on_wall_time_beside_a_spawned_robot(tmp_path: Path) -> None:
     fault = PY.format(default="false", slam="")
-    assert run(tmp_path, "sim.launch.py", fault) == [(RULE, 12), (RULE, 14)]
+    # The EKF given false: at the dictionary key; slam_toolbox given nothing: at its Node.
+    assert run(tmp_path, "sim.launch.py", fault) == [(RULE, 13), (RULE, 14)]
     fixed = PY.format(default="true", slam=", parameters=[{'use_sim_time': sim}]")
     assert run(tmp_path, "sim.launch.py", fixed) == []
 
@@ -129,3 +130,39 @@ def test_rviz_looks_up_at_its_own_clock(tmp_path: Path) -> None:
     fixed = text.format('><param name="use_sim_time" value="true"/></node')
     assert run(tmp_path, "v.launch.xml", fixed.replace('/>\n</launch>', '>\n</launch>')
                ) == []
+
+
+OVERRIDE = ("import os\n"
+            "from launch import LaunchDescription\n"
+            "from launch.substitutions import LaunchConfiguration\n"
+            "from launch_ros.actions import Node\n"
+            "def generate_launch_description():\n"
+            "    sim = LaunchConfiguration('use_sim_time', default='true')\n"
+            "    ekf = os.path.join(os.path.dirname(__file__), 'ekf.yaml')\n"
+            "    return LaunchDescription([\n"
+            "        Node(package='slam_toolbox', executable='async_slam_toolbox_node',\n"
+            "             parameters=[{{'use_sim_time': sim}}]),\n"
+            "        Node(package='robot_localization', executable='ekf_node',\n"
+            "             name='ekf_filter_node',\n"
+            "             parameters=[{params}]),\n"
+            "    ])\n")
+
+
+def test_a_parameter_file_listed_after_the_argument_overrides_it(tmp_path: Path) -> None:
+    """roverrobotics_ros2#19: launch_ros passes each entry of parameters= in order (a
+    dictionary as a parameter file of its own) and the last setting wins: the file's
+    false after the argument's true. Reported at the file's key, the node and the
+    overridden true as related."""
+    (tmp_path / "ekf.yaml").write_text(
+        "ekf_filter_node:\n  ros__parameters:\n    frequency: 30.0\n    use_sim_time: false\n")
+    fault = OVERRIDE.format(params="{'use_sim_time': sim}, ekf")
+    (tmp_path / "o.launch.py").write_text(fault)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    [found] = lint_paths([str(tmp_path / "o.launch.py")], options).diagnostics
+    assert (Path(found.path).name, found.line) == ("ekf.yaml", 4)
+    assert "o.launch.py:13 is overridden by this later setting" in found.message
+    assert [(Path(r.path).name, r.line) for r in found.related] == [
+        ("o.launch.py", 11), ("o.launch.py", 9), ("o.launch.py", 13)]
+    # The argument after the file: it wins, both nodes on simulated time.
+    assert run(tmp_path, "o.launch.py", OVERRIDE.format(params="ekf, {'use_sim_time': sim}")) \
+        == []

@@ -12,7 +12,7 @@ import os
 import re
 import textwrap
 from collections.abc import Iterable, Sequence
-from typing import Any
+from typing import Any, Dict, Tuple
 
 from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
@@ -26,7 +26,7 @@ MAX_CACHED = 512
 ROS2_SECTION = "ros__parameters"
 _CONTROLLER_TYPE = re.compile(r"^[A-Za-z_][\w]*/[A-Za-z_][\w]*$")
 
-_cache: dict[str, tuple[Any, str | None]] = {}
+_cache: dict[str, tuple[Any, str | None, KeyPlaces]] = {}
 
 
 _FLAT_LINE = re.compile(r"^([A-Za-z_~][\w/~]*)[ \t]*:[ \t]+(?:'([^']*)'|\"([^\"\\]*)\"|"
@@ -63,24 +63,81 @@ def flat_yaml(text: str) -> dict[str, str] | None:
 def parse_yaml(text: str) -> tuple[Any, str | None]:
     """The YAML document (plain data, no tags run), or None and why it is not read.
     Without PyYAML, flat ``key: value`` text is still read (the same in both cases)."""
+    document, why, _ = parse_yaml_placed(text)
+    return document, why
+
+
+def parse_yaml_placed(text: str) -> tuple[Any, str | None, KeyPlaces]:
+    """:func:`parse_yaml`, and where each mapping key is written (see :data:`KeyPlaces`):
+    from PyYAML's node marks, or the flat lines read without it."""
     try:
         # Imported on use: PyYAML stays out of the standard-library core.
         import yaml  # type: ignore[import-untyped]
     except ImportError:
         flat = flat_yaml(text)
         if flat is not None:
-            return flat, None
-        return None, "reading YAML parameters needs PyYAML"
+            return flat, None, _flat_places(text)
+        return None, "reading YAML parameters needs PyYAML", {}
     if len(text) > MAX_PARAM_FILE_BYTES:
-        return None, f"YAML larger than {MAX_PARAM_FILE_BYTES} bytes"
+        return None, f"YAML larger than {MAX_PARAM_FILE_BYTES} bytes", {}
+    # What yaml.load does (compose, then construct), keeping the composed nodes' marks.
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)(text)
     try:
-        return yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)), None
+        root = loader.get_single_node()
+        document = None if root is None else loader.construct_document(root)
     except (yaml.YAMLError, RecursionError, ValueError) as exc:
-        return None, f"not readable YAML: {str(exc)[:200]}"
+        return None, f"not readable YAML: {str(exc)[:200]}", {}
+    finally:
+        loader.dispose()
+    return document, None, _node_places(root, yaml.MappingNode, yaml.ScalarNode)
+
+
+KeyPlaces = Dict[Tuple[str, ...], Tuple[int, int]]
+"""Where a YAML text's mapping keys are written: the path of keys from the top (each key
+as written) to its 1-based line and column."""
+MAX_KEY_DEPTH = 32
+
+
+def _node_places(root: object, mapping: type, scalar: type) -> KeyPlaces:
+    """The keys of a composed YAML document (PyYAML nodes) with their marks; bounded in
+    entries and visits (an alias reaches one mapping by many paths)."""
+    out: KeyPlaces = {}
+    stack: list[tuple[tuple[str, ...], object]] = [((), root)]
+    visits = 0
+    while stack and visits < 4 * MAX_PARAMS:
+        path, node = stack.pop()
+        if not isinstance(node, mapping) or len(path) >= MAX_KEY_DEPTH:
+            continue
+        for key, value in node.value:  # type: ignore[attr-defined]
+            visits += 1
+            if visits >= 4 * MAX_PARAMS:
+                break
+            if isinstance(key, scalar):
+                here = (*path, str(key.value))  # type: ignore[attr-defined]
+                mark = key.start_mark  # type: ignore[attr-defined]
+                out[here] = (mark.line + 1, mark.column + 1)
+                stack.append((here, value))
+    return out
+
+
+def _flat_places(text: str) -> KeyPlaces:
+    """The keys of a flat ``key: value`` text (see :func:`flat_yaml`) with their lines."""
+    out: KeyPlaces = {}
+    for number, line in enumerate(text.splitlines(), 1):
+        match = _FLAT_LINE.match(line.strip())
+        if match is not None:
+            out[(match.group(1),)] = (number, 1 + len(line) - len(line.lstrip()))
+    return out
 
 
 def read_yaml_file(path: str) -> tuple[Any, str | None]:
     """A parameter file's document, parsed once per version of the file (bounded)."""
+    document, why, _ = read_yaml_file_placed(path)
+    return document, why
+
+
+def read_yaml_file_placed(path: str) -> tuple[Any, str | None, KeyPlaces]:
+    """:func:`read_yaml_file`, and where the file's keys are written."""
     status: os.stat_result | None
     try:
         status = os.stat(path)
@@ -98,14 +155,16 @@ def read_yaml_file(path: str) -> tuple[Any, str | None]:
     try:
         data = read_regular_file(path, MAX_PARAM_FILE_BYTES + 1)
     except OSError as exc:
-        found: tuple[Any, str | None] = (None, f"parameter file {path!r} not read: "
-                                               f"{exc.strerror or exc}")
+        found: tuple[Any, str | None, KeyPlaces] = (
+            None, f"parameter file {path!r} not read: {exc.strerror or exc}", {})
     else:
         if len(data) > MAX_PARAM_FILE_BYTES:
-            found = (None, f"parameter file {path!r} is larger than {MAX_PARAM_FILE_BYTES} bytes")
+            found = (None, f"parameter file {path!r} is larger than {MAX_PARAM_FILE_BYTES} "
+                           f"bytes", {})
         else:
-            document, reason = parse_yaml(data.decode("utf-8", "replace"))
-            found = (document, None if reason is None else f"parameter file {path!r}: {reason}")
+            document, reason, places = parse_yaml_placed(data.decode("utf-8", "replace"))
+            found = (document, None if reason is None else f"parameter file {path!r}: {reason}",
+                     places)
     if len(_cache) >= MAX_CACHED:
         _cache.clear()
     _cache[key] = found
@@ -125,25 +184,40 @@ def scalar_text(value: object) -> str | None:
 
 def flatten(data: object, separator: str, prefix: str = "") -> list[tuple[str, str]]:
     """``data``'s scalar leaves as ``(a<sep>b<sep>c, value)``, iteratively and bounded."""
-    out: list[tuple[str, str]] = []
-    stack: list[tuple[str, object]] = [(prefix, data)]
+    return [(name, text) for name, text, _ in flatten_keyed(data, separator, prefix)]
+
+
+def flatten_keyed(data: object, separator: str, prefix: str = "",
+                  keys: tuple[str, ...] = ()) -> list[tuple[str, str, tuple[str, ...]]]:
+    """:func:`flatten`, each leaf with its path of keys below ``keys`` (to find where it
+    is written in :data:`KeyPlaces`)."""
+    out: list[tuple[str, str, tuple[str, ...]]] = []
+    stack: list[tuple[str, tuple[str, ...], object]] = [(prefix, keys, data)]
     while stack and len(out) < MAX_PARAMS:
-        name, value = stack.pop()
+        name, path, value = stack.pop()
         if isinstance(value, dict):
             items = list(value.items())
             for key, child in reversed(items[:MAX_PARAMS]):
-                stack.append((f"{name}{separator}{key}" if name else str(key), child))
+                here = (*path, str(key)) if len(path) < MAX_KEY_DEPTH else path
+                stack.append((f"{name}{separator}{key}" if name else str(key), here, child))
             continue
         text = scalar_text(value)
         if text is not None and name:
-            out.append((name, text))
+            out.append((name, text, path))
     return out
 
 
 def ros1_params(document: object, namespace: str = "") -> list[tuple[str, str]]:
     """A ``<rosparam>`` document's parameters, names joined with ``/`` under ``namespace``."""
+    return [(key, value) for key, value, _ in ros1_params_keyed(document, namespace)]
+
+
+def ros1_params_keyed(document: object, namespace: str = ""
+                      ) -> list[tuple[str, str, tuple[str, ...]]]:
+    """:func:`ros1_params`, each with its path of keys in the document."""
     prefix = namespace.strip("/")
-    return [(key.lstrip("~"), value) for key, value in flatten(document, "/", prefix)]
+    return [(key.lstrip("~"), value, path)
+            for key, value, path in flatten_keyed(document, "/", prefix)]
 
 
 def _section_pattern(key: str) -> re.Pattern[str]:
@@ -166,17 +240,23 @@ def _section_pattern(key: str) -> re.Pattern[str]:
 def ros2_sections(document: object) -> list[tuple[str, dict[Any, Any]]]:
     """Each ``ros__parameters`` mapping of a ROS 2 parameter file with its node key (nested
     namespace keys joined with ``/``)."""
-    out: list[tuple[str, dict[Any, Any]]] = []
-    stack: list[tuple[str, object]] = [("", document)]
+    return [(key, section) for key, section, _ in _ros2_sections_keyed(document)]
+
+
+def _ros2_sections_keyed(document: object
+                         ) -> list[tuple[str, dict[Any, Any], tuple[str, ...]]]:
+    """:func:`ros2_sections`, each with the path of keys down to its ``ros__parameters``."""
+    out: list[tuple[str, dict[Any, Any], tuple[str, ...]]] = []
+    stack: list[tuple[str, tuple[str, ...], object]] = [("", (), document)]
     while stack and len(out) < MAX_PARAMS:
-        path, value = stack.pop()
+        path, keys, value = stack.pop()
         if not isinstance(value, dict):
             continue
         for key, child in value.items():
             if key == ROS2_SECTION and isinstance(child, dict):
-                out.append((path, child))
+                out.append((path, child, (*keys, ROS2_SECTION)))
             elif isinstance(child, dict) and path.count("/") < 16:
-                stack.append((f"{path}/{key}", child))
+                stack.append((f"{path}/{key}", (*keys, str(key)), child))
     return out
 
 
@@ -188,11 +268,17 @@ def ros2_file_params(document: object, name: str | None, namespace: str | None
     (rclcpp/src/rclcpp/parameter_map.cpp 52-68, ros2/rclcpp humble 99f1d8d). A bare
     ``name:`` key is ``/name``: it does not reach the node ``/ns/name``, and a key naming
     another node (``imu_filter_node:`` for the node ``imu_filter``) gives it nothing."""
+    return [(key, value) for key, value, _ in ros2_file_params_keyed(document, name, namespace)]
+
+
+def ros2_file_params_keyed(document: object, name: str | None, namespace: str | None
+                           ) -> list[tuple[str, str, tuple[str, ...]]]:
+    """:func:`ros2_file_params`, each with its path of keys in the file."""
     full = "/" + "/".join(p for p in ((namespace or "").strip("/"), name or "") if p)
-    out: list[tuple[str, str]] = []
-    for key, section in ros2_sections(document):
+    out: list[tuple[str, str, tuple[str, ...]]] = []
+    for key, section, keys in _ros2_sections_keyed(document):
         if _section_pattern(key).match(full):
-            out.extend(flatten(section, "."))
+            out.extend(flatten_keyed(section, ".", keys=keys))
     return out
 
 
@@ -210,7 +296,7 @@ def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[Nod
         for document in documents:
             params.extend(ros2_file_params(document, controller, manager.namespace))
         out.append(replace(manager, executable="", name=controller, kind="controller",
-                           plugin=value, params=tuple(params)))
+                           plugin=value, params=tuple(params), param_lines=()))
     return out
 
 
@@ -224,20 +310,36 @@ controller_server.cpp and planner_server.cpp, humble 3c3db59 and main a3a9704)."
 COSTMAP_PLUGIN = "nav2_costmap_2d::Costmap2DROS"
 
 
-def embedded_costmap(server: NodeRecord, documents: Sequence[object],
+class ProcessParams:
+    """A node's dictionary of parameters among its parameter files, in order: launch_ros
+    writes each dictionary as a parameter file under ``/**`` (launch_ros node.py,
+    ``_create_params_file_from_dict``), so every node of the process gets it."""
+
+    __slots__ = ("params",)
+
+    def __init__(self, params: tuple[tuple[str, str], ...]) -> None:
+        self.params = params
+
+
+def embedded_costmap(server: NodeRecord, process: Sequence[object],
                      scope_params: Sequence[tuple[str, str]] = ()) -> NodeRecord | None:
-    """The costmap node a nav2 server runs, with the section of the server's parameter
-    files that names it (and what ``SetParameter`` gives every node)."""
+    """The costmap node a nav2 server runs, with what the server's process is given in
+    order (``process``: parameter files' documents, whose section naming the costmap it
+    reads, and :class:`ProcessParams`), after what ``SetParameter`` gives every node."""
     name = EMBEDDED_COSTMAPS.get((server.package, server.executable))
     if name is None:
         return None
     namespace = (None if server.namespace is None
                  else "/" + "/".join(p for p in (server.namespace.strip("/"), name) if p))
     params = list(scope_params)
-    for document in documents:
-        params.extend(ros2_file_params(document, name, namespace))
+    for item in process:
+        if isinstance(item, ProcessParams):
+            params.extend(item.params)
+        else:
+            params.extend(ros2_file_params(item, name, namespace))
     return replace(server, package="nav2_costmap_2d", executable="", name=name,
-                   plugin=COSTMAP_PLUGIN, params=tuple(params), namespace=namespace)
+                   plugin=COSTMAP_PLUGIN, params=tuple(params), namespace=namespace,
+                   param_lines=())
 
 
 CONTROLLER_MANAGER_NAME = "controller_manager"
@@ -297,7 +399,7 @@ def spawned_controllers(spawner: NodeRecord, names: Sequence[str], kind: str | N
         found = kind or dict(params).get("type") or declared or ""
         if _CONTROLLER_TYPE.match(found):
             out.append(replace(spawner, executable="", name=name, kind="controller",
-                               plugin=found, params=tuple(params)))
+                               plugin=found, params=tuple(params), param_lines=()))
     return out
 
 
@@ -314,5 +416,5 @@ def ros1_controllers(global_params: Iterable[tuple[str, str]], manager: NodeReco
         head = controller + "/"
         params = tuple((k[len(head):], v) for k, v in pairs if k.startswith(head))
         out.append(replace(manager, executable="", name=controller.rsplit("/", 1)[-1],
-                           kind="controller", plugin=value, params=params))
+                           kind="controller", plugin=value, params=params, param_lines=()))
     return out

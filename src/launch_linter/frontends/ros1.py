@@ -26,6 +26,7 @@ from launch_linter.frontends.robot.describe import RSP_PACKAGE
 from launch_linter.frontends.robot.sources import DESCRIPTION_PARAM
 from launch_linter.frontends.ros1_base import (
     _NODE_LATE_ATTRS,
+    _NODE_LATE_NAMES,
     MAX_FILES_PER_TREE,
     MAX_INCLUDE_DEPTH,
     MAX_NESTING,
@@ -73,10 +74,11 @@ class Ros1Loader(Ros1Tags):
     def _node(self, element: Element, context: _Context, is_test: bool = False) -> None:
         """``<node>`` (or ``<test>``): every attribute is resolved in roslaunch's order;
         static transform publishers become :class:`StaticTransform` records."""
-        condition = self._condition(element, context)
+        attrib = element.attrib
+        condition = (self._condition(element, context) if "if" in attrib or "unless" in attrib
+                     else ALWAYS)
         if condition is None:
             return
-        attrib = element.attrib
         if is_test:
             for attribute in ("respawn", "respawn_delay", "output"):
                 if attribute in attrib:
@@ -99,7 +101,8 @@ class Ros1Loader(Ros1Tags):
             self._clear_params(element, context, needs_ns=False, node_name=name)
         package = self._required(element, "pkg", context)
         node_type = self._required(element, "type", context)
-        late = self._present(element, _NODE_LATE_ATTRS, context)
+        late = ({} if _NODE_LATE_NAMES.isdisjoint(attrib)
+                else self._present(element, _NODE_LATE_ATTRS, context))
         if element.children:
             self._node_children(element, context, param_anon or {}, dict(context.anon))
         if namespace is None:
@@ -193,7 +196,10 @@ class Ros1Loader(Ros1Tags):
         two under conditions that exclude each other (``if="$(arg a)"`` and
         ``unless="$(arg a)"``) are never launched together."""
         resolved_name = ns_join(namespace, name)
-        earlier = self.node_names.setdefault(resolved_name, [])
+        earlier = self.node_names.get(resolved_name)
+        if earlier is None:  # most names: no earlier node to compare with
+            self.node_names[resolved_name] = [(context.filename, element, condition)]
+            return
         first = next((e for e in earlier if not e[2].excludes(condition)), None)
         if len(earlier) < MAX_SAME_NAME:
             earlier.append((context.filename, element, condition))

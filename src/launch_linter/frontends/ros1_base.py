@@ -48,6 +48,7 @@ MAX_FILES_PER_TREE = 2_000
 _ARG_ATTRS = ("name", "value", "default", "doc")
 _NODE_LATE_ATTRS = ("machine", "args", "output", "respawn", "respawn_delay", "cwd",
                     "launch-prefix", "required")
+_NODE_LATE_NAMES = frozenset(_NODE_LATE_ATTRS)
 _PARAM_VALUE_ATTRS = ("value", "textfile", "binfile", "command")
 _ROSPARAM_ATTRS = ("command", "ns", "file", "param", "subst_value")
 _MACHINE_OLD_ATTRS = ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")
@@ -126,6 +127,8 @@ IncludeCall = typing.Tuple[str, typing.Tuple[typing.Tuple[str, str], ...]]
 
 
 def include_call(path: str, args: dict[str, Value]) -> IncludeCall:
+    if not args:  # every root file without --arg
+        return path, ()
     return path, tuple(sorted((name, text_of(value)) for name, value in args.items()))
 
 
@@ -323,12 +326,16 @@ class Ros1Base:
             self._report("unresolved", self._path, self._element or root,
                          exc.message)
         tree = self._tree(FileStatus.OK)
-        if tree.nodes and only_parse_checked(absolute):
+        if tree.nodes and only_parse_checked(absolute, self.options.packages):
             tree = replace(tree, parse_check_only=True)
         return tree
 
     def _tree(self, status: FileStatus) -> LaunchTree:
-        remapped = set(self.remapped_descriptions)
+        descriptions = self.descriptions
+        if self.other_descriptions and self.remapped_descriptions:
+            remapped = set(self.remapped_descriptions)
+            descriptions = [*descriptions, *(
+                source for name, source in self.other_descriptions if name in remapped)]
         return LaunchTree(
             root=self.root_display,
             status=status,
@@ -337,8 +344,7 @@ class Ros1Base:
             files=tuple(self.files),
             comments=tuple(self.comments),
             element_lines=tuple(self.element_lines),
-            descriptions=(*self.descriptions, *(
-                source for name, source in self.other_descriptions if name in remapped)),
+            descriptions=tuple(descriptions),
             nodes=tuple(with_node_params(self.nodes, self.node_params, self.params_unread,
                                           self.tf_prefixes)),
         )
@@ -483,8 +489,8 @@ class Ros1Base:
         attrib = element.attrib
         found: dict[str, Value] = {}
         for attribute in attributes:
-            text = attrib.get(attribute)
-            if text is not None:
+            if attribute in attrib:  # a test, not a ``get`` call: most are absent
+                text = attrib[attribute]
                 found[attribute] = (
                     ((text,) if text else ()) if "$" not in text
                     else self._substitute(text, element, attribute, context, anon)

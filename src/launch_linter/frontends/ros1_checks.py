@@ -34,7 +34,9 @@ def _single_command(text: str) -> bool:
 
 
 def _conjoin(outer: Condition, inner: Condition) -> Condition:
-    return outer if inner.always else inner if outer.always else outer & inner
+    # ``literals`` read directly (``always`` is a property: a call), for every node and
+    # transform.
+    return outer if not inner.literals else inner if not outer.literals else outer & inner
 
 
 def _is_int(text: str) -> bool:

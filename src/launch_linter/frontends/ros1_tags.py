@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 
-from launch_linter.frontends.params import parse_yaml, read_yaml_file, ros1_params
+from launch_linter.frontends.params import parse_yaml, read_yaml_file_placed, ros1_params_keyed
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,
     from_ros1_param,
@@ -45,6 +45,7 @@ from launch_linter.resolve.xml_safe import Element
 MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
 _PARAM_SOURCES = ("textfile", "binfile", "command")
+_PARAM_SOURCE_NAMES = frozenset(_PARAM_SOURCES)
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
 NODELET = ("nodelet", "nodelet")
 NODELET_ARGS_UNKNOWN = "nodelet (arguments not resolved)"
@@ -160,7 +161,7 @@ class Ros1Tags(Ros1Base):
                  value: Value | None, default: Value | None, condition: Condition) -> None:
         """roslaunch's ``LoaderContext.add_arg``; a declaration under an unresolved
         condition may or may not happen, so what it would set becomes a hole."""
-        conditional = not condition.always
+        conditional = bool(condition.literals)  # not ``always``: a property call per arg
         earlier = context.arg_names.get(name)
         if earlier is None:
             context.arg_names[name] = conditional
@@ -233,7 +234,7 @@ class Ros1Tags(Ros1Base):
             self._child_values[element] = written
         count = int(written is not None)
         sources: dict[str, Value] = {}
-        if not attrib.keys().isdisjoint(_PARAM_SOURCES):  # most have a value only
+        if not _PARAM_SOURCE_NAMES.isdisjoint(attrib):  # most have a value only
             for key in _PARAM_SOURCES:
                 text = attrib.get(key)
                 if text is not None:
@@ -327,11 +328,13 @@ class Ros1Tags(Ros1Base):
                     known = None if "$(anon" in value else resolved_text(
                         resolved if resolved is not None else self._resolve_text(
                             value, sub, "value", context, dict(context.anon)))
-                params.append((key.lstrip("~"), UNKNOWN_VALUE if known is None else known))
-                lines.append((key.lstrip("~"), path, sub.line, sub.column))
+                key = key.lstrip("~")
+                params.append((key, UNKNOWN_VALUE if known is None else known))
+                lines.append((key, path, sub.line, sub.column))
             elif sub.tag == "rosparam":
-                found, why = self._rosparam_values(sub, context)
+                found, why, places = self._rosparam_values(sub, context)
                 params.extend(found)
+                lines.extend((key, *place) for (key, _), place in zip(found, places))
                 if why:
                     unread.append(why)
         plugin = (nodelet_loaded(None if args is None else resolved_text(args))
@@ -344,33 +347,44 @@ class Ros1Tags(Ros1Base):
         ))
 
     def _rosparam_values(self, element: Element, context: _Context
-                         ) -> tuple[list[tuple[str, str]], str | None]:
+                         ) -> tuple[list[tuple[str, str]], str | None, list[tuple[str, int, int]]]:
         """The parameters a ``<rosparam>`` loads (its text or its file, under its ``ns``),
-        and why they are not read when they are not."""
+        why they are not read when they are not, and where each is written (a file's key;
+        the ``<rosparam>`` element for its text)."""
         attrib = element.attrib
         if (attrib.get("command") or "load") != "load" or "param" in attrib:
-            return [], None
+            return [], None, []
         ns_text = attrib.get("ns", "")
         if "$" in ns_text:
             ns_text = resolved_text(self._resolve_text(ns_text, element, "ns", context,
                                                        dict(context.anon))) or ""
+        here = (self._display(context.filename), element.line, element.column)
         file_text = attrib.get("file")
         if file_text is not None:
             path = resolved_text(self._resolve_text(file_text, element, "file", context,
                                                     dict(context.anon)))
             if path is None:
-                return [], f"parameter file {file_text!r} is not resolved"
-            document, why = read_yaml_file(path)
+                return [], f"parameter file {file_text!r} is not resolved", []
+            document, why, keys = read_yaml_file_placed(path)
+            shown = self._display(path)
         elif element.text and "$(" not in element.text:
             document, why = parse_yaml(element.text)
+            keys, shown = {}, ""
             if why is not None:
                 # Without PyYAML, flat ``key: value`` lines are still read.
-                return params_from_yaml(element.text), why
+                found = params_from_yaml(element.text)
+                return found, why, [here] * len(found)
         else:
-            return [], None if not element.text else "<rosparam> text with substitutions"
+            return [], None if not element.text else "<rosparam> text with substitutions", []
         if why is not None:
-            return [], why
-        return ros1_params(document, ns_text), None
+            return [], why, []
+        params, places = [], []
+        for key, value, at in ros1_params_keyed(document, ns_text):
+            params.append((key, value))
+            line_column = keys.get(at)
+            places.append(here if line_column is None
+                          else (shown, line_column[0], line_column[1]))
+        return params, None, places
 
     def _rosparam(self, element: Element, context: _Context,
                   anon: dict[str, str] | None = None) -> None:
@@ -378,7 +392,7 @@ class Ros1Tags(Ros1Base):
             return
         if anon is None:
             # Beside the nodes: ``NODE/param`` names reach a node by its name.
-            found, why = self._rosparam_values(element, context)
+            found, why, _ = self._rosparam_values(element, context)
             self.node_params.extend(found)
             if why:
                 self.params_unread.append(why)

@@ -104,6 +104,8 @@ class Include:
     args_known: bool = True
     """False when the arguments passed are not known (a Python expression the linter does
     not model): they may set any launch configuration."""
+    arg_places: tuple[tuple[int, int], ...] = ()
+    """Where each of ``args`` is written (line, column), when the front-end knows it."""
 
 
 @dataclass(frozen=True)
@@ -171,13 +173,18 @@ class Params:
     format, so values are kept as substitutions."""
 
     items: tuple[tuple[str, Subs], ...]
+    places: tuple[Where | None, ...] = ()
+    """Where each item's key is written, in the items' order (None: not known; empty when
+    the front-end keeps no places)."""
 
 
 @dataclass(frozen=True)
 class ParamsFile:
-    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``)."""
+    """A parameter file given to a node (``'file.yaml'``, ``ParameterFile``, ``from=``).
+    ``substitutions``: launch performs the ``$(...)`` in the file (``allow_substs``)."""
 
     path: Subs
+    substitutions: bool = False
 
 
 @dataclass(frozen=True)

@@ -25,11 +25,15 @@ class Declarations:
         self.open: str | None = None
         """The first thing met so far that could set launch configurations the linter
         cannot see."""
+        self.openings = 0
+        """How many things met so far could set launch configurations the linter cannot
+        see (an include's arguments it cannot judge when one is met inside it)."""
         self.unset: dict[tuple[str, int, int, str], tuple[bool, str | None]] = {}
         """Launch configurations read without a default where none was set, by place:
         whether under an undecided condition, and what was not followed before."""
 
     def opened(self, reason: str) -> None:
+        self.openings += 1
         if self.open is None:
             self.open = reason
 

@@ -18,16 +18,19 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
+from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     MAX_PARAMS,
     SPAWNERS,
+    ProcessParams,
     controllers_of,
     embedded_costmap,
     read_yaml_file,
-    ros2_file_params,
+    read_yaml_file_placed,
+    ros2_file_params_keyed,
     spawned_controllers,
     spawner_words,
 )
@@ -47,6 +50,7 @@ from launch_linter.frontends.ros2_actions import (
     STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
     Component,
+    Include,
     Params,
     ParamsFile,
     ParamsUnknown,
@@ -68,11 +72,42 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.model.launch import Forwarded
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
+
+
+def reads_configuration(subs: Subs, name: str) -> bool:
+    """Whether ``subs`` reads the launch configuration ``name`` (``$(var name)``,
+    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by the
+    substitutions' own size."""
+    stack = [subs]
+    while stack:
+        for sub in stack.pop():
+            if not isinstance(sub, Call):
+                continue
+            if (sub.name == "var" and sub.args and len(sub.args[0]) == 1
+                    and isinstance(sub.args[0][0], Text) and sub.args[0][0].text == name):
+                return True
+            stack.extend(sub.args)
+    return False
+
+
+class _NodeParams(NamedTuple):
+    """What :meth:`Ros2Loader._node_params` reads: the parameters in order (SetParameter's
+    first), where each is written (``NodeRecord.param_lines``), why some are not read,
+    the parameter files' documents, and what the node's process is given in order: a
+    parameter file's document, or a dictionary's parameters (launch_ros writes each
+    dictionary as a ``/**`` file: every node of the process gets it)."""
+
+    params: tuple[tuple[str, str], ...]
+    lines: tuple[tuple[str, str, int, int], ...]
+    unread: tuple[str, ...]
+    documents: list[object]
+    process: list[object]
 
 
 class Ros2Loader(Ros2Runner):
@@ -126,8 +161,8 @@ class Ros2Loader(Ros2Runner):
         # A controller manager without a name reads its file by its default name.
         section = (CONTROLLER_MANAGER_NAME if name is None and package == "controller_manager"
                    and executable == "ros2_control_node" else name)
-        params, unread, documents = self._node_params(action.parameters, scope, frame, where,
-                                                      section, known_namespace)
+        given = self._node_params(action.parameters, scope, frame, where, section,
+                                  known_namespace)
         described = False
         for group in action.parameters:
             if isinstance(group, Params):
@@ -136,18 +171,19 @@ class Ros2Loader(Ros2Runner):
                         described = True
                         self._ros2_description(subs, scope, frame, where, name)
         if (package == "robot_state_publisher" and executable == "robot_state_publisher"
-                and not described and not unread and action.arguments
-                and not any(key == "robot_description"
-                            for key, _ in (*scope.parameters, *params))):
+                and not described and not given.unread and action.arguments
+                and not any(key == "robot_description" for key, _ in given.params)):
             self._description_argument(action.arguments[0], scope, frame, where, name)
         # SetParameter's parameters first: the node's own win over them.
         node = NodeRecord(
             self._display(frame.filename), where.line, where.column, package,
-            executable or "", name, tuple(scope.parameters) + params, frame.condition,
-            unread=unread, namespace=known_namespace, ros=2,
+            executable or "", name, given.params, frame.condition,
+            unread=given.unread, namespace=known_namespace, ros=2, param_lines=given.lines,
+            included_at=frame.sites,
         )
         self.nodes.append(node)
-        costmap = embedded_costmap(node, documents, scope.parameters)
+        documents = given.documents
+        costmap = embedded_costmap(node, given.process, scope.parameters)
         if costmap is not None:
             self.nodes.append(costmap)
         if package == "controller_manager" and documents:
@@ -155,6 +191,22 @@ class Ros2Loader(Ros2Runner):
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
+
+    def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
+        """An include, its arguments kept as :class:`Forwarded` (marked not followed when
+        its file was not read: then nothing after them was added)."""
+        sites = {id(site) for site in self._included_at.values()}
+        super()._include(action, scope, frame)
+        # A file read is recorded with a new site: none new, the include was not followed.
+        followed = any(id(site) not in sites for site in self._included_at.values())
+        for name_subs, value_subs in action.args:
+            name = resolved_text(self._resolve(name_subs, scope, frame, action.where))
+            if name is not None:
+                value = resolved_text(self._resolve(value_subs, scope, frame, action.where))
+                self.forwarded.append(Forwarded(
+                    name, "include", self._display(frame.filename), action.where.line,
+                    action.where.column, frame.condition, value,
+                    reads_configuration(value_subs, name), followed))
 
     def _description_argument(self, first: Subs, scope: _Scope, frame: _Frame, where: Where,
                               node: str | None) -> None:
@@ -184,35 +236,59 @@ class Ros2Loader(Ros2Runner):
 
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,
-                     namespace: str | None
-                     ) -> tuple[tuple[tuple[str, str], ...], tuple[str, ...], list[object]]:
+                     namespace: str | None) -> _NodeParams:
         """The parameters a node is given (dictionaries and parameter files, in order),
-        why some are not read, and the parameter files' documents."""
+        where each is written, why some are not read, and the parameter files' documents.
+        A value's place: its dictionary key, its file's key (PyYAML's marks), else the
+        node's element (SetParameter's, those of a file without marks)."""
+        node_place = (self._display(frame.filename), where.line, where.column)
         params: list[tuple[str, str]] = []
+        places: list[tuple[str, int, int]] = [node_place] * len(scope.parameters)
         unread: list[str] = []
         documents: list[object] = []
+        process: list[object] = []
         for group in groups:
             if isinstance(group, ParamsUnknown):
                 unread.append(group.reason)
             elif isinstance(group, ParamsFile):
                 path_value = self._resolve(group.path, scope, frame, where)
                 path = resolved_text(path_value)
+                if group.substitutions:
+                    self.arguments.parameter_file(path)
                 if path is None:
                     unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
                     continue
-                document, why = read_yaml_file(path)
+                document, why, keys = read_yaml_file_placed(path)
                 if why is not None:
                     unread.append(why)
                     continue
                 documents.append(document)
-                params.extend(ros2_file_params(document, name, namespace))
+                process.append(document)
+                shown = self._display(path)
+                for key, value, at in ros2_file_params_keyed(document, name, namespace):
+                    params.append((key, value))
+                    line_column = keys.get(at)
+                    places.append(node_place if line_column is None
+                                  else (shown, line_column[0], line_column[1]))
             else:
-                for key, subs in group.items:
+                dictionary: list[tuple[str, str]] = []
+                for index, (key, subs) in enumerate(group.items):
                     if is_description_name(key.rsplit(".", 1)[-1]):
                         continue
                     text = resolved_text(self._resolve(subs, scope, frame, where))
                     params.append((key, UNKNOWN_VALUE if text is None else text))
-        return tuple(params[:MAX_PARAMS]), tuple(unread), documents
+                    dictionary.append(params[-1])
+                    place = group.places[index] if index < len(group.places) else None
+                    places.append(node_place if place is None else
+                                  (self._display(place.path), place.line, place.column))
+                    if reads_configuration(subs, key):
+                        self.forwarded.append(Forwarded(key, "parameter", *places[-1],
+                                                        frame.condition))
+                process.append(ProcessParams(tuple(dictionary)))
+        own = params[:MAX_PARAMS]
+        given = tuple(scope.parameters) + tuple(own)
+        lines = tuple((key, *place) for (key, _), place in zip(given, places))
+        return _NodeParams(given, lines, tuple(unread), documents, process)
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
@@ -229,15 +305,16 @@ class Ros2Loader(Ros2Runner):
             if isinstance(sub, Call) and sub.name == "file-content" and sub.args:
                 # open(path).read() or $(file-content path): a URDF file read as it is.
                 path = self._resolve(sub.args[0], scope, frame, where)
-                self.descriptions.append(from_file_value(
+                self.descriptions.append(replace(from_file_value(
                     path, self._display(frame.filename), where.line, where.column,
-                    frame.condition, node, os.path.dirname(frame.filename)))
+                    frame.condition, node, os.path.dirname(frame.filename)),
+                    included_at=frame.sites))
                 return
         value = self._resolve(subs, scope, frame, where) if command is None else ()
         source = from_ros2_value(value, command, self._display(frame.filename), where.line,
                                  where.column, frame.condition, node)
         if source is not None:
-            self.descriptions.append(source)
+            self.descriptions.append(replace(source, included_at=frame.sites))
 
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
         own = self._condition(component.condition, scope, frame, component.where)
@@ -255,14 +332,14 @@ class Ros2Loader(Ros2Runner):
             name = None if name_value is None else resolved_text(name_value)
             namespace, pending = self._namespace(component.namespace, scope, here,
                                                  component.where)
-            node_params, unread, _ = self._node_params(
-                component.parameters, scope, here, component.where, name,
-                None if pending else namespace)
+            given = self._node_params(component.parameters, scope, here, component.where,
+                                      name, None if pending else namespace)
             self.nodes.append(NodeRecord(
                 self._display(here.filename), component.where.line, component.where.column,
-                package_text, "", name, tuple(scope.parameters) + node_params, here.condition,
-                plugin=plugin_text,
-                unread=unread, namespace=None if pending else namespace, ros=2))
+                package_text, "", name, given.params, here.condition,
+                plugin=plugin_text, unread=given.unread,
+                namespace=None if pending else namespace, ros=2, param_lines=given.lines,
+                included_at=here.sites))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

@@ -37,6 +37,7 @@ from launch_linter.frontends.ros2_include import (
     find_included,
     required_arguments,
 )
+from launch_linter.frontends.ros2_include_args import ArgumentWatch
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
@@ -46,6 +47,7 @@ from launch_linter.model.included import through_include
 from launch_linter.model.launch import (
     Comment,
     FileStatus,
+    Forwarded,
     LaunchTree,
     UndeclaredUse,
     holds_directive,
@@ -125,6 +127,9 @@ class _Frame:
     condition: Condition
     calls: tuple[IncludeCall, ...] = ()
     """(file, values of the arguments it was given) of each include on the way here."""
+    sites: tuple[Location, ...] = ()
+    """The include actions on the way here, from the root's: two runs of one file through
+    different includes are two instances (``NodeRecord.included_at``)."""
 
 
 @dataclass
@@ -190,6 +195,7 @@ class Ros2Runner:
         self.element_lines: list[tuple[str, int]] = []
         self.descriptions: list[DescriptionSource] = []
         self.nodes: list[NodeRecord] = []
+        self.forwarded: list[Forwarded] = []
         self.budget = _Budget()
         self.work = Budget()
         self._where: Where | None = None
@@ -197,6 +203,7 @@ class Ros2Runner:
         self.root_display = ""
         self._displayed: dict[str, str] = {}
         self.declarations = Declarations()
+        self.arguments = ArgumentWatch(self.declarations)
         self._reading: tuple[Where, _Frame] | None = None
         """Where the value being resolved is read (for the launch configurations it reads)."""
         self._included_at: dict[str, Location] = {}
@@ -256,9 +263,11 @@ class Ros2Runner:
                            ((absolute, ()),))
             self._run(read.actions, scope, frame)
         except BudgetExceeded as exc:
+            self.arguments.abandon()
             self._report("unresolved", self._where or Where(absolute, 1, 1),
                          exc.message)
             self.declarations.opened("the launch was followed only in part")
+        self.problems.extend(self.arguments.problems())
         return self._tree(FileStatus.OK,
                           self.declarations.facts(absolute, self._display, self.root_display))
 
@@ -277,6 +286,7 @@ class Ros2Runner:
             descriptions=tuple(self.descriptions),
             nodes=tuple(self.nodes),
             undeclared=undeclared,
+            forwarded=tuple(self.forwarded),
         )
 
     # -- launch configurations read but never declared -----------------------------------
@@ -323,7 +333,8 @@ class Ros2Runner:
         # every value resolved in this scope and file (unless a mapping was replaced).
         if made is None or made.configs is not scope.configs or made.env is not scope.env:
             made = Ros2Scope(scope.configs, scope.env, self.options.packages.find,
-                             self._anonymous, frame.filename, self.work, self._missing)
+                             self._anonymous, frame.filename, self.work, self._missing,
+                             self.arguments.read)
             scope.resolvers[frame.filename] = made
         return made
 
@@ -383,8 +394,10 @@ class Ros2Runner:
             self.declarations.opened(action.reason)
             return
         self.declarations.declares(action)
+        self.arguments.declares(action)
         own = self._condition(action.condition, scope, frame, action.where)
         if own is None:
+            self.arguments.skipped(action)
             return
         # Most actions have no condition of their own: they run in the frame as it is.
         here = frame if not own.literals else replace(frame, condition=frame.condition & own)
@@ -503,12 +516,13 @@ class Ros2Runner:
 
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         path_value = self._resolve(action.path, scope, frame, action.where)
-        passed: list[str] = []
+        passed: dict[str, tuple[int, int]] = {}  # where each is given, by name
         given_values: list[tuple[str, Value]] = []
         if not action.args_known:
             self.declarations.opened(
                 f"line {action.where.line}: the arguments of an include are unknown")
-        for name_subs, value_subs in action.args:
+        places = action.arg_places or ((0, 0),) * len(action.args)
+        for (name_subs, value_subs), place in zip(action.args, places):
             name = self._name(name_subs, scope, frame, action.where, "include argument")
             if name is None:
                 self.declarations.opened(f"line {action.where.line}: an include argument's name is "
@@ -516,7 +530,7 @@ class Ros2Runner:
                 continue
             # Passed from here on (the include is not scoped): reads before it still fail,
             # like the read of this very value, which launch performs before setting it.
-            passed.append(name)
+            passed[name] = place
             value = self._resolve(value_subs, scope, frame, action.where)
             given_values.append((name, value))
             self._set(scope, name, value, frame.condition, f"$(var {name})")
@@ -599,8 +613,11 @@ class Ros2Runner:
                 )
         inner = _Frame(absolute, read.launch_format, (*frame.chain, absolute),
                        (self._display(frame.filename), action.where.line), frame.condition,
-                       (*frame.calls, call))
+                       (*frame.calls, call), (*frame.sites, site))
+        self.arguments.start(action, absolute, passed if action.args_known else {})
+        self.arguments.file_read(data, absolute.endswith(".py"))
         self._run(read.actions, scope, inner)
+        self.arguments.finish(self._display)
 
     # -- defined by a subclass, further on ---------------------------------------------------
     def _component(self, component: Component, scope: _Scope, frame: _Frame) -> None:
@@ -623,7 +640,7 @@ _ACTIONS: dict[type, Callable[[Ros2Runner, Any, _Scope, _Frame], None]] = {
     SetEnv: Ros2Runner._set_env,
     PushNamespace: Ros2Runner._push_namespace,
     Group: Ros2Runner._group,
-    Include: Ros2Runner._include,
+    Include: lambda runner, *given: runner._include(*given),  # the subclass's (its record)
     RunNode: _run_node,
     LoadComponents: Ros2Runner._components,
     Deferred: Ros2Runner._deferred,

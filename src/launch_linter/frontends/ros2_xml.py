@@ -228,11 +228,13 @@ class _Reader:
         if path is None:
             return None
         args: list[tuple[Subs, Subs]] = []
+        places: list[tuple[int, int]] = []
         for arg in entity.lists.get("arg", []):
             name, value = self.required(arg, "name"), self.required(arg, "value")
             if name is not None and value is not None:
                 args.append((name, value))
-        return Include(where, condition, path, tuple(args))
+                places.append((arg.line, arg.column))
+        return Include(where, condition, path, tuple(args), arg_places=tuple(places))
 
     def node(self, entity: Entity, where: Where, condition: Predicate | None) -> RunNode | None:
         executable = self.subs(entity, "exec")
@@ -306,14 +308,17 @@ class _Reader:
         out: list[Params | ParamsFile | ParamsUnknown] = []
         for entity in entities:
             if "from" in entity.attrs:
-                out.append(ParamsFile(self.subs(entity, "from") or ()))
+                substitutions = entity.attrs.get("allow_substs", "false").strip().lower()
+                out.append(ParamsFile(self.subs(entity, "from") or (), substitutions != "false"))
                 continue
             items: list[tuple[str, Subs]] = []
-            self.param_items(entity, "", items)
-            out.append(Params(tuple(items)))
+            places: list[Where | None] = []
+            self.param_items(entity, "", items, places)
+            out.append(Params(tuple(items), tuple(places)))
         return tuple(out)
 
-    def param_items(self, entity: Entity, prefix: str, items: list[tuple[str, Subs]]) -> None:
+    def param_items(self, entity: Entity, prefix: str, items: list[tuple[str, Subs]],
+                    places: list[Where | None]) -> None:
         name = entity.attrs.get("name")
         if name is None:
             self.report("roslaunch_error", entity, "<param> needs a 'name' or 'from' attribute")
@@ -321,11 +326,12 @@ class _Reader:
         nested = entity.lists.get("param", [])
         if nested:
             for child in nested:
-                self.param_items(child, f"{prefix}{name}.", items)
+                self.param_items(child, f"{prefix}{name}.", items, places)
             return
         value = self.subs(entity, "value")
         if value is not None:
             items.append((prefix + name, value))
+            places.append(self.where(entity))
 
 
 def _schema_entity(entity: Entity, xml: bool) -> SchemaEntity:

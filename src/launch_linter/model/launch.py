@@ -6,9 +6,9 @@ from collections.abc import Iterable
 from enum import Enum
 
 from launch_linter.model.diagnostic import Problem
-from launch_linter.model.record import Record, _set
+from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint, RobotModel
-from launch_linter.model.transform import StaticTransform
+from launch_linter.model.transform import Condition, StaticTransform
 
 
 class FileStatus(str, Enum):
@@ -115,6 +115,41 @@ class UndeclaredUse(Record):
         _set(self, "similar", similar)
 
 
+class Forwarded(Record):
+    """A value a ROS 2 launch file passes on: a node parameter that reads the launch
+    configuration of its own name, ``{'x': LaunchConfiguration('x')}`` (``kind``
+    ``parameter``, at the value's key), or any include argument (``include``, at the
+    include). ``own``: the value reads the configuration of its own name (``x:=$(var
+    x)``); ``value``: its text, None when unresolved; ``followed``: the include's file was
+    read (an argument of an include not followed says what the launch means to run)."""
+
+    name: str
+    kind: str
+    path: str
+    line: int
+    column: int
+    condition: Condition
+    value: str | None
+    own: bool
+    followed: bool
+
+    __slots__ = ("name", "kind", "path", "line", "column", "condition", "value", "own",
+                 "followed")
+
+    def __init__(self, name: str, kind: str, path: str, line: int, column: int,
+                 condition: Condition, value: str | None = None, own: bool = True,
+                 followed: bool = True) -> None:
+        _set(self, "name", name)
+        _set(self, "kind", kind)
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "condition", condition)
+        _set(self, "value", value)
+        _set(self, "own", own)
+        _set(self, "followed", followed)
+
+
 class LaunchTree(Record):
     """Everything read from one root file, its includes included."""
 
@@ -140,10 +175,13 @@ class LaunchTree(Record):
     parse_check_only: bool
     """The root is proven to be only an input of ``roslaunch_add_file_check`` (parsed by a
     test, never started): not one running system (``workspace/launch_checks.py``)."""
+    forwarded: tuple[Forwarded, ...]
+    """ROS 2 launch configurations passed on under their own name (``Forwarded``)."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
         "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
+        "forwarded",
     )
 
     def __init__(
@@ -161,17 +199,21 @@ class LaunchTree(Record):
         robots: tuple[RobotModel, ...] = (),
         undeclared: tuple[UndeclaredUse, ...] = (),
         parse_check_only: bool = False,
+        forwarded: tuple[Forwarded, ...] = (),
     ) -> None:
-        _set(self, "root", root)
-        _set(self, "status", status)
-        _set(self, "transforms", transforms)
-        _set(self, "problems", problems)
-        _set(self, "files", files)
-        _set(self, "comments", comments)
-        _set(self, "element_lines", element_lines)
-        _set(self, "descriptions", descriptions)
-        _set(self, "nodes", nodes)
-        _set(self, "joints", joints)
-        _set(self, "robots", robots)
-        _set(self, "undeclared", undeclared)
-        _set(self, "parse_check_only", parse_check_only)
+        _open(self)  # made for every root file: see _open
+        self.root = root
+        self.status = status
+        self.transforms = transforms
+        self.problems = problems
+        self.files = files
+        self.comments = comments
+        self.element_lines = element_lines
+        self.descriptions = descriptions
+        self.nodes = nodes
+        self.joints = joints
+        self.robots = robots
+        self.undeclared = undeclared
+        self.parse_check_only = parse_check_only
+        self.forwarded = forwarded
+        _seal(self)

@@ -136,15 +136,18 @@ def _open(record: Record) -> None:
     or twenty-six ``_set`` calls (each a call of ``object.__setattr__``) cost three to five
     times what two changes of class and plain assignments do."""
     cls = type(record)
-    twin = cls.__dict__.get("_open_twin")
+    twin = _TWINS.get(cls)  # a dict, not ``cls.__dict__``: no mapping proxy made per record
     if twin is None:
-        twin = type(cls.__name__, (cls,), {
+        twin = _TWINS[cls] = type(cls.__name__, (cls,), {
             "__slots__": (), "__module__": cls.__module__, "__qualname__": cls.__qualname__,
             "__setattr__": object.__setattr__, "__delattr__": object.__delattr__,
             "_sealed_as": cls,
         })
-        type.__setattr__(cls, "_open_twin", twin)
     _set(record, "__class__", twin)
+
+
+_TWINS: dict[type, type] = {}
+"""Each record class opened so far -> its open twin (see :func:`_open`)."""
 
 
 def _seal(record: Record) -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from enum import Enum
 
+from launch_linter.model.diagnostic import Location
 from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.transform import Condition
 
@@ -62,10 +63,13 @@ class DescriptionSource(Record):
     namespace: str | None
     """The ROS 1 namespace the ``robot_description`` parameter is set in (``/r1/``), where
     a spawner finds it by its relative name; None when unknown or not ROS 1."""
+    included_at: tuple[Location, ...]
+    """The include actions through which the launch file giving it was run (ROS 2), from
+    the root's: one line run through two includes gives two sources."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args", "open_file", "namespace",
+        "open_args", "open_file", "namespace", "included_at",
     )
 
     def __init__(
@@ -83,6 +87,7 @@ class DescriptionSource(Record):
         open_args: bool = False,
         open_file: tuple[str, str, str] | None = None,
         namespace: str | None = None,
+        included_at: tuple[Location, ...] = (),
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -97,6 +102,7 @@ class DescriptionSource(Record):
         _set(self, "open_args", open_args)
         _set(self, "open_file", open_file)
         _set(self, "namespace", namespace)
+        _set(self, "included_at", included_at)
 
 
 class RobotJoint(Record):
@@ -186,7 +192,12 @@ class NodeRecord(Record):
     a parameter it does not set then has no known value. ``namespace`` is the node's
     namespace (None when unresolved); ``ros`` the ROS version of the launch file.
     ``param_lines`` says where a parameter was set, when the front-end knows it: ``(name,
-    path, line, column)`` (a ROS 1 ``<param>`` inside the node's element).
+    path, line, column)``: a ROS 1 ``<param>`` or ``<rosparam>`` inside the node's element
+    (a ``<rosparam>`` file's key), a ROS 2 ``parameters=`` dictionary key, XML/YAML
+    ``<param>`` or parameter file key; ROS 2 front-ends give every parameter a place, in
+    the order of ``params`` (the node's element where the value's own place is unknown).
+    ``included_at`` lists the include actions through which its launch file was run, from
+    the root's (ROS 2): one node line run through two different includes is two nodes.
     """
 
     path: str
@@ -203,11 +214,16 @@ class NodeRecord(Record):
     namespace: str | None
     ros: int | None
     param_lines: tuple[tuple[str, str, int, int], ...]
+    included_at: tuple[Location, ...]
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros", "param_lines",
+        "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "_last_given",
+        "_last_set",
     )
+    _private = ("_last_given", "_last_set")
+    _last_given: dict[str, str] | None
+    _last_set: dict[str, tuple[str, int, int]] | None
 
     def __init__(
         self,
@@ -225,6 +241,7 @@ class NodeRecord(Record):
         namespace: str | None = "/",
         ros: int | None = None,
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
+        included_at: tuple[Location, ...] = (),
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -241,25 +258,29 @@ class NodeRecord(Record):
         self.namespace = namespace
         self.ros = ros
         self.param_lines = param_lines
+        self.included_at = included_at
+        self._last_given = None
+        self._last_set = None
         _seal(self)
 
     def given(self, name: str) -> str | None:
         """The value of the parameter ``name`` exactly as the node is given it (the last
         setting wins), None when it is not set."""
-        found = None
-        for key, value in self.params:
-            if key == name:
-                found = value
-        return found
+        last = self._last_given
+        if last is None:
+            # Indexed once: rules ask a node for each of thousands of listed parameters.
+            last = dict(self.params)
+            _set(self, "_last_given", last)
+        return last.get(name)
 
     def where_set(self, name: str) -> tuple[str, int, int] | None:
         """Where the parameter ``name`` was last set (path, line, column), None when the
         front-end does not know."""
-        found = None
-        for key, path, line, column in self.param_lines:
-            if key == name:
-                found = (path, line, column)
-        return found
+        last = self._last_set
+        if last is None:
+            last = {key: (path, line, column) for key, path, line, column in self.param_lines}
+            _set(self, "_last_set", last)
+        return last.get(name)
 
     def param(self, name: str) -> str | None:
         for key, value in self.params:

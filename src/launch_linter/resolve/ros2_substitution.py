@@ -101,6 +101,9 @@ class Ros2Scope:
     default where none is set: launch's ``LaunchConfiguration.perform`` raises "launch
     configuration '…' does not exist" there (the loader decides whether anything could
     have set it)."""
+    read: Callable[[str | None], None] | None = None
+    """Told the name of every launch configuration read (None: a name not resolved), for
+    the include arguments nothing uses (``frontends.ros2_include_args``)."""
 
 
 def literal(text: str) -> Subs:
@@ -388,6 +391,8 @@ class _Resolver:
 
     def _var(self, call: Call) -> Value:
         name = self.text(call.args[0])
+        if self.scope.read is not None:
+            self.scope.read(name if isinstance(name, str) else None)
         if not isinstance(name, str):
             return _hole(call, f"the configuration name is unresolved: {_reasons(name)}")
         if name in self.scope.configs:

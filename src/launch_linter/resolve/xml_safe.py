@@ -256,7 +256,8 @@ def parse_xml(
     push = stack.append
     pop = stack.pop
     # Character data is wanted only inside ``text_tags``: the handler is switched on when
-    # such an element starts and restored when it ends, so other elements cost nothing.
+    # such an element starts and restored when it ends, so other elements cost nothing
+    # (and the end handler is switched with it).
     wanting: list[Element] = []
     new_element = object.__new__
 
@@ -294,14 +295,19 @@ def parse_xml(
         if tag in text_tags:
             wanting.append(element)
             parser.CharacterDataHandler = chars
+            parser.EndElementHandler = end_wanted
         push(element)
 
     def end(tag: str) -> None:
-        element = pop()
-        if wanting and element is wanting[-1]:
+        pop()
+
+    def end_wanted(tag: str) -> None:
+        # The end handler while an element keeps its text (most documents never need it).
+        if pop() is wanting[-1]:
             wanting.pop()
             if not wanting:
                 parser.CharacterDataHandler = None
+                parser.EndElementHandler = end
 
     def comment(text: str) -> None:
         comments.append((parser.CurrentLineNumber + text.count("\n"), text))

@@ -47,6 +47,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("frame_without_publisher", Category.TF),
     ("robot_frame_collision", Category.TF),
     ("sim_time_mismatch", Category.TF),
+    ("sim_time_not_forwarded", Category.TF),
     ("camera_frame_not_optical", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),
@@ -62,6 +63,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("rounded_pi", Category.TF),
     ("ros2_undeclared_arg", Category.LAUNCH),
     ("py_name_error", Category.LAUNCH),
+    ("ros2_unused_include_arg", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -199,12 +199,37 @@ def nodes_of(context: RuleContext) -> NodeView:
 __all__ = ["NodeEdge", "NodeView", "PublishedEdge", "nodes_of", "view_of"]
 
 
+def include_split(first: tuple[Location, ...], second: tuple[Location, ...]
+                  ) -> tuple[Location, Location] | None:
+    """Where two runs of one launch line part: the innermost include actions that differ
+    between their include chains (``first``'s, ``second``'s), where a user can drop one;
+    None when both came through the same includes (one run read twice by the linter: a
+    loop or a helper function in Python, an include the reading repeats)."""
+    for mine, theirs in zip(reversed(first), reversed(second)):
+        if mine != theirs:
+            return mine, theirs
+    return None
+
+
+def twice_included(a: NodeRecord, b: NodeRecord) -> tuple[Location, Location] | None:
+    """Where one node line, run through two different includes into one namespace, parts
+    (:func:`include_split`); None when ``a`` and ``b`` are not such a pair."""
+    if (a.path, a.line, a.column) != (b.path, b.line, b.column):
+        return None
+    if a.namespace is None or a.namespace != b.namespace:
+        # Other namespaces: robot_frame_collision's (robots told apart by namespace).
+        return None
+    return include_split(a.included_at, b.included_at)
+
+
 def rivals(a: NodeEdge, b: NodeEdge) -> bool:
-    """Whether two node edges come from two publishers that run together: not one launch
-    element included twice (that is ``dup_name``'s), not under exclusive conditions
-    (nav2's composed and separate amcl: ``IfCondition(x)`` and ``IfCondition(
-    PythonExpression(['not ', x]))``)."""
-    return a.location != b.location and not a.node.condition.excludes(b.node.condition)
+    """Whether two node edges come from two publishers that run together: two launch
+    elements, or one element run through two different includes into one namespace (not
+    one run the linter read twice), not under exclusive conditions (nav2's composed and
+    separate amcl: ``IfCondition(x)`` and ``IfCondition(PythonExpression(['not ', x]))``)."""
+    if a.node.condition.excludes(b.node.condition):
+        return False
+    return a.location != b.location or twice_included(a.node, b.node) is not None
 
 
 def finding_at_node(node: NodeRecord, message: str,
@@ -215,16 +240,18 @@ def finding_at_node(node: NodeRecord, message: str,
                    node=node.name, related=related)
 
 
-def finding_at_param(node: NodeRecord, name: str, message: str) -> Finding:
-    """A finding at the line that sets the node's parameter ``name`` (a ``<param>`` inside
-    the node's element), with the node's element as related; at the node's element when
-    the front-end does not know where the parameter was set (a parameter file)."""
+def finding_at_param(node: NodeRecord, name: str, message: str,
+                     related: tuple[Location, ...] = ()) -> Finding:
+    """A finding at the line that last sets the node's parameter ``name`` (a ``<param>``,
+    a dictionary key in ``parameters=``, a parameter file's key), with the node's element
+    as related; at the node's element when the front-end does not know where the value
+    was written."""
     where = node.where_set(name)
-    if where is None:
-        return finding_at_node(node, message)
+    if where is None or where == (node.path, node.line, node.column):
+        return finding_at_node(node, message, related)
     path, line, column = where
     return Finding(path=path, line=line, column=column, message=message, node=node.name,
-                   related=(Location(node.path, node.line, node.column),))
+                   related=(Location(node.path, node.line, node.column), *related))
 
 
 def view_of(tree: LaunchTree, knowledge: KnowledgeBase, distro: str | None = None) -> NodeView:

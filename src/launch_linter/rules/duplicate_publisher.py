@@ -8,8 +8,13 @@ publishes it as well: a second node (amcl and a robot_localization filter both s
 `odom → base_link`), a joint of the robot description that robot_state_publisher sends (a
 camera driver with `publish_tf` on beside the URDF's camera joints), or a static transform
 for an edge that is not REP 105's localization or odometry edge (those are
-`frame_authority`'s). The finding is at the second publisher; sources under mutually
-exclusive conditions are not compared.
+`frame_authority`'s). It also reports two ROS 2 `robot_state_publisher`s of one namespace
+and one `frame_prefix` whose descriptions share joints. The finding is at the second
+publisher; sources under mutually exclusive conditions are not compared. One launch line
+run through two different includes (a file that starts robot_state_publisher included by
+both the spawn and the controller launch files) is two publishers: the finding is then at
+the second of the two includes, with the first include and the node's line as related
+places.
 
 ## Why is this bad?
 tf2 keeps one transform per edge: two publishers overwrite each other and the frame jumps
@@ -55,7 +60,12 @@ there were fixed (a filter with no input publishes nothing; realsense's alternat
 drivers; a root only ``roslaunch_add_file_check`` parses)
 (docs/evaluation/duplicate_publisher.md). The corpus's 5,518 distinct files give 1 finding
 (true). A root that only ``roslaunch_add_file_check`` parses is not one running
-system and is left out.
+system and is left out. One line run twice is reported only when the two runs come through
+different include actions into one namespace (robots told apart by namespace are
+`robot_frame_collision`'s), and proven only when both includes run unconditionally; runs
+that share their whole include chain (a Python loop over one include) may be the linter's
+own reading twice and are never reported. In ROS 1 one node line run twice in one
+namespace is a duplicate node name, which roslaunch refuses (`roslaunch_error`).
 """
 
 from __future__ import annotations
@@ -75,6 +85,7 @@ from launch_linter.rules._nodes import (
     rivals,
 )
 from launch_linter.rules._tree import edges_of, finding_on
+from launch_linter.rules._twins import at_second_run, twin_descriptions, unproven_runs
 
 ID = "duplicate_publisher"
 CATEGORY = Category.TF
@@ -118,6 +129,10 @@ def _evidence(found: Finding, *edges: NodeEdge) -> Finding:
     """``found`` with its proof said: proven at the rule's level, else info naming what
     was not read."""
     reasons = [r for r in (unproven(e) for e in edges) if r is not None]
+    if len(edges) == 2:
+        runs = unproven_runs(edges[0].node, edges[1].node)
+        if runs is not None:
+            reasons.append(runs)
     if not reasons:
         return replace(found, message=f"{found.message} ({PROVEN})")
     return replace(found, message=f"{found.message} (not proven: {'; '.join(reasons)})",
@@ -128,6 +143,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
     if context.tree.parse_check_only:
         # Only parsed by roslaunch_add_file_check, never started: not one running system.
         return
+    yield from twin_descriptions(context.tree)
     view = nodes_of(context)
     if not view.edges:
         return
@@ -138,12 +154,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
         other = next((e for e in earlier if rivals(e, node_edge)), None)
         earlier.append(node_edge)
         if other is not None:
-            yield _evidence(finding_at_node(
-                node_edge.node,
+            yield _evidence(at_second_run(
+                node_edge.node, other.node,
                 f"'{node_edge.parent}' -> '{node_edge.child}' is published by "
                 f"{node_edge.describe()} and by {other.describe()}; tf2 keeps whichever "
                 f"arrives last: switch one of them off",
-                (other.location,),
             ), node_edge, other)
     for edge in edges_of(context):
         for node_edge in by_edge.get((edge.parent, edge.child), ()):

@@ -10,9 +10,17 @@ whose stamps robot_state_publisher gives the movable joints (joint_state_publish
 robot_state_publisher in the tree; controller_manager's spawners stamp nothing). The tree
 runs on simulated time when it spawns a robot into Gazebo (`gazebo_ros spawn_entity.py`,
 `ros_gz_sim create`: the simulator publishes `/clock`), or when it gives another ROS 2 node
-use_sim_time true; that second evidence says only that the two clocks disagree (a node
-given false on purpose may be the right one, as in a real-robot launch whose included
-controller launch defaults to true), and the message says so.
+use_sim_time true, or an include whose file is not followed (nav2_bringup not installed:
+its nodes are not in the tree); that second evidence says only that the two clocks
+disagree (a node given false on purpose may be the right one, as in a real-robot launch
+whose included controller launch defaults to true), and the message says so. A followed
+include is no evidence by itself: its nodes are, and its file may ignore the argument.
+A node given false is reported at the line that writes the false that wins (a dictionary
+key, a `<param>`, a parameter file's key), the node as related location; when a true
+given earlier in its `parameters=` is overridden (launch_ros passes each entry in order,
+a dictionary as a `/**` parameter file of its own, launch_ros node.py
+`_create_params_file_from_dict`, and the last setting wins), the message names it
+(RoverRobotics/roverrobotics_ros2#19).
 joint_state_publisher stamps `/joint_states` with its own clock (joint_state_publisher.py,
 ros2 05a9679, `timer_callback`) and robot_state_publisher sends the movable joints with
 that stamp (robot_state_publisher.cpp, rolling 01a7be1, `publishTransforms(...,
@@ -66,7 +74,11 @@ of the 20 the other rules were raised on. The evidence of a node on simulated ti
 gave 18 false findings there, on controller spawners (fixed), and one whose advice was
 wrong (set true on a ros2_control_node given false in a real-robot launch, whose included
 controller launch wrongly defaults to true: the message now says the clocks disagree and
-either may be wrong).
+either may be wrong). On 34 more whole public ROS 2 repositories nobody had used (issue 28,
+engineer 'output'): 18 independent findings, 17 true, 1 false and fixed (a nav2 server's
+costmap is given the server's dictionaries: launch_ros writes them under `/**`); the
+evidence of an include not followed given true: 2 findings, both true
+(docs/evaluation/sim_time_judged.jsonl).
 """
 
 from __future__ import annotations
@@ -75,9 +87,11 @@ from collections.abc import Iterator
 
 from launch_linter.knowledge.publish import truth
 from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.model.launch import LaunchTree
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord, spawns_into_simulator
+from launch_linter.model.transform import Condition
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node, program_of
+from launch_linter.rules._nodes import entry_of, finding_at_node, finding_at_param, program_of
 
 ID = "sim_time_mismatch"
 CATEGORY = Category.TF
@@ -108,29 +122,51 @@ def _on_sim_time(node: NodeRecord) -> bool:
     return given is not None and given != UNKNOWN_VALUE and truth(given) is True
 
 
-class _Source:
+class Source:
     """What says the tree runs on simulated time: a spawner proves it (the simulator
     publishes /clock: the node on wall time is the wrong one); a node the launch puts on
-    simulated time says only that the two clocks disagree (either may be the wrong one)."""
+    simulated time, or an include not followed that it gives use_sim_time true, says only
+    that the two clocks disagree (either may be the wrong one)."""
 
-    def __init__(self, node: NodeRecord, how: str, proof: bool) -> None:
-        self.node = node
+    def __init__(self, place: Location, condition: Condition, how: str, proof: bool,
+                 node: NodeRecord | None = None) -> None:
+        self.place = place
+        self.condition = condition
         self.how = how
         self.proof = proof
+        self.node = node
+
+    def beside(self, node: NodeRecord) -> bool:
+        """Whether it runs with ``node`` (another element, not under exclusive conditions)."""
+        return self.node is not node and not self.condition.excludes(node.condition)
 
 
-def _clock_sources(nodes: tuple[NodeRecord, ...]) -> list[_Source]:
-    """The spawners first, then the ROS 2 nodes given use_sim_time true."""
-    spawners = [_Source(n, f"{n.package}/{n.executable} ({n.path}:{n.line}) spawns the "
-                           f"robot into a simulator that publishes /clock", True)
+def _from_node(node: NodeRecord, how: str, proof: bool) -> Source:
+    return Source(Location(node.path, node.line, node.column), node.condition,
+                  f"{how} ({node.path}:{node.line})", proof, node)
+
+
+def clock_sources(tree: LaunchTree) -> list[Source]:
+    """The spawners first, then the ROS 2 nodes given use_sim_time true, then the includes
+    given use_sim_time true whose file is not followed (their nodes are not in the tree;
+    a followed include's nodes speak for themselves, and may ignore the argument)."""
+    nodes = tree.nodes
+    spawners = [_from_node(n, f"{n.package}/{n.executable}", True)
                 for n in nodes if spawns_into_simulator(n) and n.ros == 2]
-    on_sim = [_Source(n, f"{program_of(n)} ({n.path}:{n.line}) is given use_sim_time "
-                         f"true", False)
+    on_sim = [_from_node(n, program_of(n), False)
               for n in nodes if n.kind == "node" and n.ros == 2 and _on_sim_time(n)]
-    return spawners + on_sim
+    includes = [Source(Location(f.path, f.line, f.column), f.condition,
+                       f"the include at {f.path}:{f.line} (its file not followed)", False)
+                for f in tree.forwarded if f.kind == "include" and not f.followed
+                and f.name == PARAMETER and f.value is not None and truth(f.value) is True]
+    for source in spawners:
+        source.how += " spawns the robot into a simulator that publishes /clock"
+    for source in on_sim + includes:
+        source.how += " is given use_sim_time true"
+    return spawners + on_sim + includes
 
 
-def _stamps_tf(context: RuleContext, node: NodeRecord) -> str | None:
+def clock_reaches_tf(context: RuleContext, node: NodeRecord) -> str | None:
     """How ``node``'s clock reaches tf: it sends or looks up transforms, or it publishes
     the /joint_states whose stamps robot_state_publisher gives the movable joints; None
     when the knowledge base says neither."""
@@ -153,7 +189,7 @@ def _stamps_tf(context: RuleContext, node: NodeRecord) -> str | None:
 
 def check(context: RuleContext) -> Iterator[Finding]:
     nodes = context.tree.nodes
-    sources = _clock_sources(nodes)
+    sources = clock_sources(context.tree)
     if not sources:
         return
     for node in nodes:
@@ -161,12 +197,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
             continue
         if not _wall_time(node):
             continue
-        effect = _stamps_tf(context, node)
+        effect = clock_reaches_tf(context, node)
         if effect is None:
             continue
         given = node.given(PARAMETER) is not None
-        source = next((s for s in sources if s.node is not node
-                       and not s.node.condition.excludes(node.condition)), None)
+        source = next((s for s in sources if s.beside(node)), None)
         if source is None:
             continue
         program = program_of(node)
@@ -174,8 +209,30 @@ def check(context: RuleContext) -> Iterator[Finding]:
         fix = ("set use_sim_time to true" if source.proof else
                "give both the same use_sim_time (true where a simulator or a bag "
                "publishes /clock)")
-        yield finding_at_node(
-            node,
-            f"{program} {how}: it runs on wall time while {source.how}; {effect}: {fix}",
-            related=(Location(source.node.path, source.node.line, source.node.column),),
-        )
+        related: tuple[Location, ...] = (source.place,)
+        overridden = _overridden_true(node)
+        if overridden is not None:
+            how += (f" (the true it is given at {overridden.path}:{overridden.line} is "
+                    f"overridden by this later setting: launch passes the parameters in "
+                    f"order and the last wins)")
+            related += (overridden,)
+        message = f"{program} {how}: it runs on wall time while {source.how}; {effect}: {fix}"
+        if given:
+            yield finding_at_param(node, PARAMETER, message, related)
+        else:
+            yield finding_at_node(node, message, related)
+
+
+def _overridden_true(node: NodeRecord) -> Location | None:
+    """Where the node is given use_sim_time true before the false that wins (a
+    dictionary listed before a parameter file that sets false), when the front-end knows
+    where each setting is written (every setting has its place: ROS 2)."""
+    values = [value for key, value in node.params if key == PARAMETER]
+    places = [(path, line, column) for key, path, line, column in node.param_lines
+              if key == PARAMETER]
+    if len(values) < 2 or len(values) != len(places):
+        return None
+    for value, (path, line, column) in zip(values[:-1], places[:-1]):
+        if value != UNKNOWN_VALUE and truth(value) is True:
+            return Location(path, line, column)
+    return None

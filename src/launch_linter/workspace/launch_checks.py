@@ -15,7 +15,7 @@ from __future__ import annotations
 import os
 
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
-from launch_linter.workspace.packages import nearest_package_xml
+from launch_linter.workspace.packages import PackageIndex
 
 MAX_CMAKE_BYTES = 1024 * 1024
 """The bound cmake_install puts on a CMakeLists.txt (not imported from it: see below)."""
@@ -44,9 +44,10 @@ def _installed_items(texts: list[str]) -> list[str]:
     return items
 
 
-def only_parse_checked(path: str) -> bool:
-    """Whether the launch file ``path`` is proven to be only a parse-check input."""
-    manifest = nearest_package_xml(path)
+def only_parse_checked(path: str, packages: PackageIndex) -> bool:
+    """Whether the launch file ``path`` is proven to be only a parse-check input
+    (``packages``: the run's index, which finds each folder's package once)."""
+    manifest = packages.package_xml_of(path)
     if manifest is None:
         return False
     folder = os.path.dirname(manifest)

@@ -54,6 +54,7 @@ class PackageIndex:
         self._packages: dict[str, str] | None = None
         self._installed: set[str] = set()
         self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
+        self._manifests: dict[str, tuple[str | None, reads.ReadLog]] = {}
         self._read = reads.ReadLog()
         """What the crawl read: every file that asks for a package depends on it."""
 
@@ -64,6 +65,13 @@ class PackageIndex:
 
     def find(self, name: str) -> str | None:
         return self._all().get(name)
+
+    def package_xml_of(self, path: str) -> str | None:
+        """:func:`nearest_package_xml` of ``path``, walked up once per folder in this
+        index's life (a run): the launch files of one folder share the walk, and each
+        depends on what it looked at (``reads.remembered``)."""
+        directory = os.path.dirname(os.path.abspath(path))
+        return reads.remembered(self._manifests, directory, lambda: nearest_package_xml(path))
 
     def _all(self) -> dict[str, str]:
         if self._packages is None:

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import re
-import shlex
 from collections.abc import Sequence
 
 from launch_linter.frontends.params import ros1_controllers
@@ -19,6 +18,7 @@ from launch_linter.frontends.robot.describe import (
     literal_kind,
     xacro_command,
 )
+from launch_linter.frontends.tokens import shell_words
 from launch_linter.model.record import replace
 from launch_linter.model.robot import (
     UNKNOWN_VALUE,
@@ -74,9 +74,9 @@ def words_of(value: Value) -> list[Word]:
             pieces.append(f"\x00{len(written)}\x00")
             written.append(part.text)
     marked = "".join(pieces)
-    try:
-        split = shlex.split(marked)
-    except ValueError:
+    # shlex's own splitter only where quotes or backslashes need it (shell_words).
+    split, refused = shell_words(marked)
+    if refused is not None:
         split = marked.split()
     return [(_PLACEHOLDER.sub(lambda m: written[int(m.group(1))], word), "\x00" not in word)
             for word in split]

@@ -26,6 +26,7 @@ from launch_linter.frontends.ros2_python.values import (
     Env,
     FuncVal,
     LazyStr,
+    LinedDict,
     ModuleVal,
     OpenFile,
     Unknown,
@@ -274,6 +275,8 @@ class Evaluator:
             key = self.eval(subscript_index(target), env)
             if isinstance(container, dict) and isinstance(key, (str, int, float, bool)):
                 container[key] = value
+                if isinstance(container, LinedDict):
+                    container.places[key] = self.where(target)
 
     def aug_assign(self, node: ast.AugAssign, env: Env) -> None:
         current = self.eval(node.target, env) if isinstance(node.target, ast.Name) else None

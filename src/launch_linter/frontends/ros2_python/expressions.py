@@ -23,6 +23,7 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchDescriptionVal,
     LaunchObject,
     LazyStr,
+    LinedDict,
     ModuleVal,
     MoveItBuilderVal,
     MoveItConfigsVal,
@@ -163,18 +164,23 @@ class Expressions(Evaluator):
         return items
 
     def mapping(self, node: ast.Dict, env: Env) -> object:
-        result: dict[object, object] = {}
+        result = LinedDict()
         for key_node, value_node in zip(node.keys, node.values):
             value = self.eval(value_node, env)
             if key_node is None:
                 if not isinstance(value, dict):
                     return self.unknown(value_node, "cannot unpack this mapping")
                 result.update(value)
+                for key in value:
+                    # An unpacked key keeps its own line where it has one, else this one.
+                    result.places[key] = (value.places[key] if isinstance(value, LinedDict)
+                                          and key in value.places else self.where(value_node))
                 continue
             key = self.eval(key_node, env)
             if not isinstance(key, (str, int, float, bool)) and key is not None:
                 return self.unknown(key_node, "dictionary key is not a known constant")
             result[key] = value
+            result.places[key] = self.where(key_node)
         return result
 
     def truth(self, value: object) -> bool | None:

@@ -47,6 +47,7 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchDescriptionVal,
     LaunchObject,
     LazyStr,
+    LinedDict,
     ModuleVal,
     SourceVal,
     SubsVal,
@@ -319,7 +320,20 @@ class Interpreter(Calls):
             isinstance(pair, (tuple, list)) and len(pair) == 2 for pair in launch_arguments)
         known = launch_arguments is None or pairs_known
         return Include(self.where(node), self.condition(kwargs, node), path, tuple(pairs),
-                       args_known=known)
+                       args_known=known, arg_places=self._arg_places(pairs, node))
+
+    def _arg_places(self, pairs: list[tuple[Subs, Subs]], node: ast.Call
+                    ) -> tuple[tuple[int, int], ...]:
+        """Where each argument name is written in the include's own ``launch_arguments``
+        (a string literal there); (0, 0) when elsewhere (a dictionary built before) or
+        when the include is made in a helper function (reported at the helper's call)."""
+        written_at: dict[str, tuple[int, int]] = {}
+        given = next((k.value for k in node.keywords if k.arg == "launch_arguments"), None)
+        if given is not None and not self.call_sites:
+            for inner in ast.walk(given):
+                if isinstance(inner, ast.Constant) and isinstance(inner.value, str):
+                    written_at.setdefault(inner.value, (inner.lineno, inner.col_offset + 1))
+        return tuple(written_at.get(written(name), (0, 0)) for name, _ in pairs)
 
     def _source(self, args: list[object], kwargs: dict[str, object], node: ast.Call
                 ) -> object:
@@ -471,10 +485,11 @@ class Interpreter(Calls):
         for entry in value:
             if isinstance(entry, dict):
                 items: list[tuple[str, Subs]] = []
-                if not self.flatten(entry, "", items, node):
+                places: list[Where | None] = []
+                if not self.flatten(entry, "", items, node, places):
                     out.append(ParamsUnknown(f"line {node.lineno}: a parameter name or value "
                                              f"is unknown"))
-                out.append(Params(tuple(items)))
+                out.append(Params(tuple(items), tuple(places)))
             elif isinstance(entry, (str, SubsVal, LazyStr)):
                 out.append(ParamsFile(self.subs(entry, node, "parameter file")))
             else:
@@ -484,20 +499,30 @@ class Interpreter(Calls):
         return tuple(out)
 
     def flatten(self, entry: dict[object, object], prefix: str,
-                items: list[tuple[str, Subs]], node: ast.Call) -> bool:
+                items: list[tuple[str, Subs]], node: ast.Call,
+                places: list[Where | None], place: Where | None = None) -> bool:
+        """``entry``'s parameters into ``items`` (nested names joined with ``.``), and
+        where each key is written into ``places`` (a nested key without a line of its own:
+        its parent's)."""
         complete = True
         for key, value in entry.items():
             if not isinstance(key, str):
                 complete = False
                 continue
+            here = (entry.places.get(key, place) if isinstance(entry, LinedDict) else place)
             if isinstance(value, dict):
-                complete = self.flatten(value, f"{prefix}{key}.", items, node) and complete
-            elif isinstance(value, bool):
+                complete = self.flatten(value, f"{prefix}{key}.", items, node, places,
+                                        here) and complete
+                continue
+            count = len(items)
+            if isinstance(value, bool):
                 items.append((prefix + key, literal(str(value).lower())))
             elif isinstance(value, (int, float)):
                 items.append((prefix + key, literal(repr(value))))
             elif isinstance(value, (str, SubsVal, LazyStr, Unknown)):
                 items.append((prefix + key, self.subs(value, node, "parameter")))
+            if len(items) > count:
+                places.append(here)
         return complete
 
     def _container(self, args: list[object], kwargs: dict[str, object], node: ast.Call

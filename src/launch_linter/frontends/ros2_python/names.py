@@ -55,20 +55,42 @@ _DYNAMIC = frozenset({"exec", "eval", "globals", "locals", "vars", "setattr", "_
 _CATCHES_NAME_ERROR = frozenset({"NameError", "Exception", "BaseException"})
 
 
+_DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+_IMPORTS = (ast.Import, ast.ImportFrom)
+_DECLARATIONS = (ast.Global, ast.Nonlocal)
+_CAPTURES = tuple(kind for kind in vars(ast).values() if isinstance(kind, type)
+                  and issubclass(kind, ast.AST) and kind.__name__.startswith("Match"))
+"""The pattern node types of this Python (3.10+): some carry a bound name in a ``name``
+or ``rest`` field (``case Point(x=px)``, ``case {**rest}``)."""
+
+
 def bound_names(tree: ast.Module) -> frozenset[str] | None:
     """Every name ``tree`` binds in any scope; None when a name may be bound unseen."""
     bound: set[str] = set()
-    for node in ast.walk(tree):
+    # One stack over the tree's nodes (order does not matter here), not ``ast.walk``,
+    # whose three generators per node cost more than the tests below.
+    pending: list[ast.AST] = [tree]
+    push = pending.append
+    while pending:
+        node = pending.pop()
+        for field in node._fields:
+            child = getattr(node, field, None)
+            if isinstance(child, ast.AST):
+                push(child)
+            elif isinstance(child, list):
+                for item in child:
+                    if isinstance(item, ast.AST):
+                        push(item)
         if isinstance(node, ast.Name):
             if isinstance(node.ctx, ast.Store):
                 bound.add(node.id)
             elif node.id in _DYNAMIC:
                 return None
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+        elif isinstance(node, _DEFINITIONS):
             bound.add(node.name)
         elif isinstance(node, ast.arg):
             bound.add(node.arg)
-        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+        elif isinstance(node, _IMPORTS):
             for alias in node.names:
                 if alias.name == "*":
                     return None
@@ -78,14 +100,12 @@ def bound_names(tree: ast.Module) -> frozenset[str] | None:
                 bound.add(node.name)
             if _catches_name_error(node.type):
                 return None
-        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+        elif isinstance(node, _DECLARATIONS):
             bound.update(node.names)
-        else:
-            # Pattern captures (``case Point(x=px)``, Python 3.10) and any other node that
-            # carries a bound name in a ``name``/``rest`` field.
+        elif isinstance(node, _CAPTURES):
             for field in ("name", "rest"):
                 value = getattr(node, field, None)
-                if isinstance(value, str) and type(node).__name__.startswith("Match"):
+                if isinstance(value, str):
                     bound.add(value)
     return frozenset(bound)
 

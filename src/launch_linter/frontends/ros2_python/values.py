@@ -12,7 +12,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Dict
 
 from launch_linter.frontends.ros2_actions import Component, Predicate, Where
 from launch_linter.resolve.ros2_substitution import Opaque, Subs, literal
@@ -100,6 +100,18 @@ class XacroParsedDoc:
 
     path: Subs
     processed: object = None
+
+
+class LinedDict(Dict[object, object]):
+    """A dictionary written in the file (``{'key': value}``, ``d['key'] = value``), with
+    where each key was last written: a parameter's value then has its own line. A
+    dictionary made any other way is a plain ``dict`` (its keys' lines unknown)."""
+
+    __slots__ = ("places",)
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.places: dict[object, Where] = {}
 
 
 @dataclass(frozen=True)
