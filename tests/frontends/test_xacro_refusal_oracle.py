@@ -15,8 +15,14 @@ import pytest
 from launch_linter import LintOptions, lint_paths
 
 ROOT = Path(__file__).resolve().parent.parent.parent
+
+
 DRIVER = ROOT / "scripts" / "xacro_oracle_driver.py"
+
+
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+
+
 WHEEL = ('<xacro:macro name="wheel" params="side *origin"><link name="${side}"/>'
          '<joint name="${side}_j" type="fixed"><xacro:insert_block name="origin"/>'
          '<parent link="base"/><child link="${side}"/></joint></xacro:macro>')
@@ -27,6 +33,8 @@ pytestmark = pytest.mark.skipif(
 )
 
 # (body, what the real xacro says, what the linter's message says); None: both accept.
+
+
 CASES = [
     ('<xacro:wheeel side="l"><origin/></xacro:wheeel>', "unknown macro name",
      "unknown macro 'wheeel'"),
@@ -43,6 +51,10 @@ CASES = [
      "identifiers", "property names must be valid Python identifiers"),
     ('<xacro:property name="class" value="0.36"/>', "Property names must be valid python "
      "identifiers", "property names must be valid Python identifiers"),
+    ('<xacro:if value="false"><xacro:property name="imu_x" value="0"/></xacro:if>'
+     '<link name="imu${imu_x}"/>', "name 'imu_x' is not defined",
+     "name 'imu_x' is not defined"),
+    ('<link name="l${radians(pi)}${math.floor(2.5)}${sorted([2, 1])[0]}"/>', None, None),
     # An expression that is no Python: an unmatched, mismatched or unclosed bracket.
     ('<link name="l"><inertial><mass value="${2 * (1 + 2) / 12)}"/></inertial></link>',
      "unmatched ')'", "')' closes no bracket"),
@@ -64,6 +76,8 @@ def real_xacro(path: Path) -> str | None:
 
 
 @pytest.mark.parametrize("body, xacro_says, we_say", CASES)
+
+
 def test_the_rule_and_the_real_xacro_agree(tmp_path: Path, body: str, xacro_says: str | None,
                                             we_say: str | None) -> None:
     path = tmp_path / "robot.urdf.xacro"
@@ -77,3 +91,12 @@ def test_the_rule_and_the_real_xacro_agree(tmp_path: Path, body: str, xacro_says
         return
     assert refusal is not None and xacro_says in refusal
     assert len(found) == 1 and we_say is not None and we_say in found[0].message
+
+
+def test_every_global_symbol_of_the_real_xacro_is_listed() -> None:
+    import xacro  # type: ignore[import-untyped]
+
+    from launch_linter.frontends.robot.xacro_globals import xacro_defines
+
+    names = [name for name in xacro.create_global_symbols() if not xacro_defines(name)]
+    assert names == []

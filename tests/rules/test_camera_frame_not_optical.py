@@ -25,6 +25,8 @@ ROBOT = """<robot name="r">
   </gazebo>
 </robot>
 """
+
+
 OPTICAL_RPY = "-1.5707963 0 -1.5707963"
 
 
@@ -141,6 +143,38 @@ def test_a_proven_rotation_warns_and_a_name_alone_informs(tmp_path: Path) -> Non
     named = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so",
                          body="<frame_name>head_rgb_frame</frame_name>")
     assert levels(named) == ["info"]
+
+
+GZ_SENSOR = """  <gazebo reference="camera_link">
+    <sensor name="cam" type="{kind}">{body}
+    </sensor>
+  </gazebo>
+</robot>
+"""
+
+
+def gz_robot(kind: str, body: str) -> str:
+    head = ROBOT.format(rpy=OPTICAL_RPY, filename="x", body="")
+    return head[:head.index("  <gazebo")] + GZ_SENSOR.format(kind=kind, body=body)
+
+
+def test_a_gz_sim_camera_stamped_with_its_body_frame(tmp_path: Path) -> None:
+    # yahboom_rosmaster e22470d: an rgbd_camera with <gz_frame_id> its body link.
+    for kind, tag in (("rgbd_camera", "gz_frame_id"), ("camera", "ignition_frame_id")):
+        fault = gz_robot(kind, f"<{tag}>camera_link</{tag}>")
+        (found,) = run(tmp_path, fault)
+        assert f"gz-sim {kind}" in found[1] and f"'camera_link' ({tag})" in found[1]
+        assert run(tmp_path, fault.replace(">camera_link<", ">camera_link_optical<")) == []
+
+
+def test_a_gz_sim_camera_whose_images_name_another_frame(tmp_path: Path) -> None:
+    # A camera's <optical_frame_id> stamps its images, whatever the sensor's frame.
+    optical = ("<gz_frame_id>camera_link</gz_frame_id>"
+               "<camera><optical_frame_id>camera_link_optical</optical_frame_id></camera>")
+    assert run(tmp_path, gz_robot("depth_camera", optical)) == []
+    # No frame named (the sensor's scoped name), or a lidar: nothing to judge.
+    assert run(tmp_path, gz_robot("rgbd_camera", "<topic>cam</topic>")) == []
+    assert run(tmp_path, gz_robot("gpu_lidar", "<gz_frame_id>camera_link</gz_frame_id>")) == []
 
 
 WITHOUT_OPTICAL = ROBOT.replace('<link name="camera_link_optical"/>', "").replace(

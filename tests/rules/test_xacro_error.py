@@ -4,7 +4,11 @@ from pathlib import Path
 
 from _urdf import link, lint_loaded, lint_urdf, robot
 
+from launch_linter import LintOptions, lint_text
+
 RULE = "xacro_error"
+
+
 WHEEL = '<xacro:macro name="wheel" params="side *origin"><link name="${side}"/>' \
         '<xacro:insert_block name="origin"/></xacro:macro>'
 
@@ -114,6 +118,50 @@ def test_a_property_name_that_is_no_python_identifier(tmp_path: Path) -> None:
     assert "property names must be valid Python identifiers: ''" in found.message
     assert lint_loaded(tmp_path, robot(link("a") + '<xacro:property name="gap" value="1"/>'),
                        RULE) == ()
+
+
+def test_a_name_no_property_defines(tmp_path: Path) -> None:
+    # depthai-ros #96: properties set only under a false xacro:if, read unconditionally.
+    text = robot('<xacro:if value="${1 == 2}"><xacro:property name="imu_x" value="1"/>'
+                 '</xacro:if><link name="imu${imu_x}"/>')
+    (found,) = lint_loaded(tmp_path, text, RULE)
+    assert found.severity.value == "error" and "name 'imu_x' is not defined" in found.message
+    # xacro is in order: a property defined after its use is not defined at the use.
+    assert lint_loaded(tmp_path, robot('<link name="l${x}"/><xacro:property name="x" '
+                                       'value="1"/>'), RULE) != ()
+
+
+def test_xacro_symbols_and_defined_properties_are_no_refusal() -> None:
+    for expression in ("pi", "radians(90)", "math.pi", "python.abs(-1)", "sorted([2, 1])[0]",
+                       "xacro.arg('a')", "load_yaml('x.yaml')", "cbrt(8)", "fma(1, 2, 3)"):
+        assert lint_urdf(robot(f'<link name="l${{{expression}}}"/>'), RULE) == (), expression
+    assert lint_urdf(robot('<xacro:property name="x" value="1"/><link name="l${x}"/>'),
+                     RULE) == ()
+
+
+def test_a_name_that_may_come_from_what_was_not_followed_is_unknown(tmp_path: Path) -> None:
+    not_read = robot('<xacro:include filename="$(find nowhere)/p.xacro"/><link name="l${x}"/>')
+    assert lint_loaded(tmp_path, not_read, RULE) == ()
+    undecided = robot('<xacro:arg name="a" default="true"/><xacro:if value="$(arg a)">'
+                      '<xacro:property name="x" value="1"/></xacro:if><link name="l${y}"/>')
+    assert lint_loaded(tmp_path, undecided, RULE, "a:=$(arg b)") == ()
+    (found,) = lint_loaded(tmp_path, undecided, RULE, "a:=true")
+    assert "name 'y' is not defined" in found.message
+    # A legacy (pre-Noetic) xacro's symbols are not listed: unknown there.
+    options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro="kinetic")
+    text = robot('<link name="l${x}"/>')
+    assert lint_text(text, "robot.urdf.xacro", options).diagnostics == ()
+    assert lint_urdf(text, RULE) != ()
+
+
+def test_unprefixed_tags_may_define_names_for_a_legacy_xacro() -> None:
+    # hsr_description, autolabor_pro1: <property>/<macro> without the prefix, read by
+    # xacro before Noetic; Noetic's xacro leaves them and stops at the first ${x}.
+    text = robot('<property name="x" value="1"/><link name="l${x}"/>')
+    assert lint_urdf(text, RULE) == ()
+    options = LintOptions(package_paths=(), select=frozenset({RULE}), ros_distro="noetic")
+    (found,) = lint_text(text, "robot.urdf.xacro", options).diagnostics
+    assert "name 'x' is not defined" in found.message
 
 
 def test_an_expression_with_an_extra_closing_bracket(tmp_path: Path) -> None:

@@ -32,6 +32,7 @@ from launch_linter.resolve.eval_values import (
     AttributeDict,
     EvalError,
     EvalScope,
+    EvalUndefined,
     EvalUnresolved,
     _attempt,
     _auto_convert,
@@ -243,7 +244,7 @@ class _Interpreter:
             return _BUILTINS[name]
         if name in vars(builtins):
             raise EvalError(f"the Python builtin '{name}' is not allowed in $(eval)")
-        raise EvalError(f"name '{name}' is not defined")
+        raise EvalUndefined(f"name '{name}' is not defined", name)
 
     def _unary(self, node: ast.UnaryOp) -> object:
         if isinstance(node.op, ast.Invert):

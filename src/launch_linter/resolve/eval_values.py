@@ -57,6 +57,15 @@ class EvalUnresolved(EvalError):
         self.name = name
 
 
+class EvalUndefined(EvalError):
+    """The expression reads a name that nothing in scope defines (Python's
+    ``NameError``). `.name` says which."""
+
+    def __init__(self, reason: str, name: str) -> None:
+        super().__init__(reason)
+        self.name = name
+
+
 @dataclass(frozen=True)
 class EvalScope:
     """What an expression can see."""

@@ -70,6 +70,7 @@ from launch_linter.resolve.eval_interpreter import _Interpreter
 from launch_linter.resolve.eval_values import (
     EvalError,
     EvalScope,
+    EvalUndefined,
     EvalUnresolved,
     _clip,
     subscript_index,
@@ -85,6 +86,7 @@ __all__ = [
     "MAX_WORK",
     "EvalError",
     "EvalScope",
+    "EvalUndefined",
     "EvalUnresolved",
     "evaluate",
     "evaluate_value",

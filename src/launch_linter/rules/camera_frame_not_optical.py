@@ -3,7 +3,8 @@
 ## What it does
 Reports a Gazebo camera plugin read from the robot description (gazebo_ros
 `libgazebo_ros_camera.so` in ROS 2, `frame_name`, by default the sensor's link; in ROS 1
-the camera, depth-camera, multi-camera and openni-kinect plugins, `frameName`) whose image
+the camera, depth-camera, multi-camera and openni-kinect plugins, `frameName`; a gz-sim
+image sensor's `<gz_frame_id>`, see Known problems) whose image
 frame is not REP 103's optical frame of the camera Gazebo renders: the rotation from the
 link of the `<gazebo reference="...">` block, turned by the sensor's `<pose>` and its
 `<camera>`'s `<pose>` as Gazebo composes them, to the image frame, over the description's
@@ -62,8 +63,11 @@ the wrong place.
 ```
 
 ## Known problems
-gz-sim cameras are sensors, not plugins: their frame (`<gz_frame_id>`, before it
-`<optical_frame_id>`) is not read. Drivers of real cameras (realsense, openni) publish
+A gz-sim image sensor (no plugin; `camera`, `rgbd_camera`, `depth_camera`, ...) is read
+when it names its images' frame: its camera's `<optical_frame_id>`, else the sensor's
+`<gz_frame_id>` (before it `<ignition_frame_id>`), as gz-sensors stamps them; without one
+its images carry the sensor's scoped name, no tf frame, and with the newest `<frame_id>`
+it is not read. Drivers of real cameras (realsense, openni) publish
 their own optical frames and are not checked. A path through a movable joint (a
 pan-tilt unit), a pose with attributes (`relative_to`, `degrees`) and a multicamera whose
 cameras turn differently leave the rotation unknown: judged by the name only, at info.

@@ -6,6 +6,9 @@ own), each element the real xacro stops on: a call of a macro no `xacro:macro` d
 macro call without a parameter that has no default or with one the macro does not have,
 blocks that do not match the macro's block parameters, an `insert_block` of an undefined
 block, a `$(arg x)` that no `xacro:arg` declares and the xacro call does not give, and a
+`${name}` that no property defines by then and that is none of xacro's own symbols (its
+math names, the Python builtins and namespaces it exposes, `load_yaml`; listed with their
+source in `frontends/robot/xacro_globals.py`, for Noetic's and ROS 2's xacro only), and a
 `${...}` that xacro evaluates (in a macro, once it is called) whose brackets or quotes do
 not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`).
 It is an error when a launch file loads the description (with or without a
@@ -13,18 +16,19 @@ robot_state_publisher: roslaunch runs a `<param command="xacro ...">` when it lo
 file, for a Gazebo spawner as much as for robot_state_publisher); info when it sits under an
 undecided `xacro:if` and in a `.xacro` file linted on its own (it may be a part that its
 includer completes). When an include could not be read or a directive is not supported
-before it (the macro or arg may be defined there), or the xacro call has unresolved words
-(they may give the arg), nothing is proven: it stays an `unresolved` diagnostic. A
+before it (the macro, arg or property may be defined there; for a `${name}`, also a
+conditional undecided before it), or the xacro call has unresolved words (they may give
+the arg), nothing is proven: it stays an `unresolved` diagnostic. A
 `$(arg X)` where X is a parameter of the enclosing macro is left to `xacro_param_as_arg`,
 which reports it at the same line and level and says what to write instead.
 
 ## Why is this bad?
 xacro stops with an error (`unknown macro name: xacro:x`, `Undefined parameters [x]`,
-`Undefined substitution argument`, `unmatched ')' ... when evaluating expression`): the
-launch file's xacro command fails, so `robot_description` is never set and
-robot_state_publisher publishes nothing (ROS 1
-`roslaunch` stops with "Invalid <param> tag: Cannot load command parameter"; ROS 2 `ros2
-launch` stops on the failed `Command` substitution).
+`Undefined substitution argument`, `name 'x' is not defined`, `unmatched ')' ... when
+evaluating expression`): the launch file's xacro command fails, so `robot_description` is
+never set and robot_state_publisher publishes nothing (ROS 1 `roslaunch` stops with
+"Invalid <param> tag: Cannot load command parameter"; ROS 2 `ros2 launch` stops on the
+failed `Command` substitution).
 
 ## Example
 ```xml

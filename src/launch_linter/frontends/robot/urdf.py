@@ -195,6 +195,20 @@ DepthCameraSensor.cc, ``Init``, commit 00eaa74), each ``x y z roll pitch yaw``, 
 by ``;``."""
 MAX_PLUGINS = 200
 
+GZ_CAMERA_TYPES = frozenset({
+    "camera", "depth", "depth_camera", "rgbd", "rgbd_camera", "thermal", "thermal_camera",
+    "segmentation", "segmentation_camera", "boundingbox", "boundingbox_camera",
+    "wideanglecamera", "wide_angle_camera"})
+"""The ``<sensor type>`` names of SDFormat's image sensors (gazebosim/sdformat
+``src/Sensor.cc`` ``Sensor::Load``, branch sdf14 8512585): gz-sim makes them without a
+plugin. Their record is a ``gazebo_plugin`` named ``gz-sim TYPE`` (knowledge entry
+``gz_sim_camera_sensor``)."""
+GZ_FRAME_TAGS = ("gz_frame_id", "ignition_frame_id")
+"""The sensor's frame as gz-sensors reads it (``src/Sensor.cc`` ``SensorPrivate::
+PopulateFromSDF``: ``gz_frame_id``, before it ``ignition_frame_id``; gz-sensors7
+4fcd8ed, gz-sensors8 c8159af), which a camera's ``<optical_frame_id>`` overrides for its
+images (``src/CameraSensor.cc`` and ``RgbdCameraSensor.cc``, gz-sensors8)."""
+
 
 ROS1_PLUGIN_TAGS = frozenset({"robotNamespace", "frameName", "publishOdomTF",
                               "odometryFrame", "robotBaseFrame", "bodyName", "broadcastTF"})
@@ -298,6 +312,44 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                 ros=ros if ros is not None else _ros_of(plugin)))
             if len(out) >= MAX_PLUGINS:
                 return out
+        out.extend(_gz_cameras(gazebo, display, outer, ros))
+    return out[:MAX_PLUGINS]
+
+
+def _gz_cameras(gazebo: ExpandedNode, display: Display, outer: Condition,
+                ros: int | None) -> list[NodeRecord]:
+    """The gz-sim image sensors of a ``<gazebo>`` block that name the frame of their
+    images (a camera's ``<optical_frame_id>``, else the sensor's ``<gz_frame_id>`` or
+    ``<ignition_frame_id>``), each as a record with that frame as a parameter. Without
+    one the frame is the sensor's scoped name, no tf frame; with ``<frame_id>`` (read
+    first by the newest gz-sensors) or a plugin inside (a gazebo_ros camera) none is
+    made."""
+    reference = gazebo.attrib.get("reference")
+    out: list[NodeRecord] = []
+    for sensor in gazebo.children:
+        if sensor.tag != "sensor" or sensor.attrib.get("type") not in GZ_CAMERA_TYPES:
+            continue
+        tags = {child.tag: child for child in sensor.children}
+        if "plugin" in tags or "frame_id" in tags:
+            continue
+        optical = [c for camera in sensor.children if camera.tag == "camera"
+                   for c in camera.children if c.tag == "optical_frame_id"]
+        named = optical[:1] or [tags[t] for t in GZ_FRAME_TAGS if t in tags][:1]
+        if not named:
+            continue
+        params = [(named[0].tag, UNKNOWN_VALUE if named[0].text is None
+                   else named[0].text)]
+        if reference and "reference" not in gazebo.unknown:
+            params.append((SENSOR_LINK_PARAM, reference))
+        pose = _sensor_pose(sensor)
+        if pose is not None:
+            params.append((SENSOR_POSE_PARAM, pose))
+        # At the element naming the frame: the word a fix changes.
+        out.append(NodeRecord(
+            display(named[0].path), named[0].line, named[0].column, SIMULATOR_PACKAGE, "",
+            sensor.attrib.get("name"), tuple(params),
+            outer & _condition(sensor.conditions), kind="gazebo_plugin",
+            plugin=f"gz-sim {sensor.attrib['type']}", namespace="/", ros=ros))
     return out
 
 

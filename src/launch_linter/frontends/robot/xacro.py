@@ -22,6 +22,7 @@ import typing
 from collections.abc import Callable, Mapping
 
 from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
+from launch_linter.frontends.robot.xacro_globals import undefined_name
 from launch_linter.frontends.robot.xacro_macros import (
     ParamArg,
     macro_params,
@@ -53,7 +54,6 @@ from launch_linter.frontends.robot.xacro_values import (
     _Abort,
     _Block,
     _boolean,
-    _literal,
     _Macro,
     _Property,
     _Refused,
@@ -66,8 +66,13 @@ from launch_linter.frontends.robot.xacro_values import (
 )
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.resolve import reads
-from launch_linter.resolve.eval_values import AttributeDict, _auto_convert
-from launch_linter.resolve.safe_eval import EvalError, EvalScope, evaluate, evaluate_value
+from launch_linter.resolve.safe_eval import (
+    EvalError,
+    EvalScope,
+    EvalUndefined,
+    evaluate,
+    evaluate_value,
+)
 from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 
 
@@ -98,6 +103,9 @@ class XacroExpander:
         self._args_read: set[str] = set()
         self._env_read: set[str] = {"ROS_DISTRO"}
         self._cut_by_budget = False
+        self._open = False
+        """Whether something not followed could have defined a property (an unknown or
+        kept problem so far): then a name nothing defines is unknown, not refused."""
         self.problems: list[XacroProblem] = []
         self.files: list[str] = []
         self._include_stack: list[str] = []
@@ -163,6 +171,7 @@ class XacroExpander:
 
     def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
                  conditions: tuple[str, ...] = (), name: str | None = None) -> None:
+        self._open = self._open or kind in (UNKNOWN, KEPT)
         if len(self.problems) < 1000:
             self.problems.append(XacroProblem(path, line, message, False, kind, conditions,
                                               name))
@@ -252,6 +261,9 @@ class XacroExpander:
             return evaluate(source, scope) if as_text else evaluate_value(source, scope)
         except _Unknown:
             raise
+        except EvalUndefined as exc:
+            raise undefined_name(f"${{{source}}}: {exc.reason}", exc.name,
+                                 self._open or self._legacy) from None
         except EvalError as exc:
             raise expression_error(source, exc.reason) from None
 
@@ -325,24 +337,6 @@ class XacroExpander:
             self._load_yaml = yaml_loader(lambda: self._path, self._charge, self._yaml_files)
         return self._load_yaml
 
-    def namespace_values(self, table: _Table) -> AttributeDict:
-        """The properties of a namespaced include as ``${ns.x}`` reads them; one whose
-        value is unknown is left out (reading it is then unknown too)."""
-        values = AttributeDict()
-        for name, prop in table.properties.items():
-            self._charge()
-            try:
-                text = self.property_value(name, table, prop)
-            except _Unknown:
-                continue
-            if prop.namespace is not None:
-                values[name] = self.namespace_values(prop.namespace)
-            elif prop.data is not None:
-                values[name] = prop.data
-            elif text is not None:
-                values[name] = _auto_convert(_literal(text))
-        return values
-
     # -- elements ----------------------------------------------------------------------
     def _node(self, element: Element, path: str, conditions: tuple[str, ...],
               tag: str | None = None) -> ExpandedNode:
@@ -377,8 +371,11 @@ class XacroExpander:
             self._charge()
             self._path, self._line = path, element.line
             tag = element.tag
-            if not tag.startswith(_PREFIX) and self._legacy and legacy_tag(element, table):
-                tag = _PREFIX + tag
+            if not tag.startswith(_PREFIX) and legacy_tag(element, table):
+                if self._legacy:
+                    tag = _PREFIX + tag
+                # A legacy xacro (distribution not given) would define names here.
+                self._open = self._open or "ROS_DISTRO" not in self.env
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)

@@ -21,7 +21,13 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from launch_linter.frontends.robot.xacro_values import _literal, _Property, _Table, _Unknown
-from launch_linter.resolve.eval_values import AttributeDict, EvalError, Machine, function
+from launch_linter.resolve.eval_values import (
+    AttributeDict,
+    EvalError,
+    Machine,
+    _auto_convert,
+    function,
+)
 from launch_linter.resolve.safe_eval import EvalScope, evaluate_value
 from launch_linter.resolve.xml_safe import read_regular_file
 
@@ -157,7 +163,27 @@ class _Expander(typing.Protocol):
 
     def yaml_loader(self) -> object: ...
 
-    def namespace_values(self, table: _Table) -> AttributeDict: ...
+    def _charge(self, units: int = 1) -> None: ...
+
+
+
+def namespace_values(expander: _Expander, table: _Table) -> AttributeDict:
+    """The properties of a namespaced include as ``${ns.x}`` reads them; one whose
+    value is unknown is left out (reading it is then unknown too)."""
+    values = AttributeDict()
+    for name, prop in table.properties.items():
+        expander._charge()
+        try:
+            text = expander.property_value(name, table, prop)
+        except _Unknown:
+            continue
+        if prop.namespace is not None:
+            values[name] = namespace_values(expander, prop.namespace)
+        elif prop.data is not None:
+            values[name] = prop.data
+        elif text is not None:
+            values[name] = _auto_convert(_literal(text))
+    return values
 
 
 class Symbols(typing.Mapping[str, object]):
@@ -182,7 +208,7 @@ class Symbols(typing.Mapping[str, object]):
             raise KeyError(name)
         value = self._expander.property_value(name, found[0], found[1])
         if found[1].namespace is not None:
-            return self._expander.namespace_values(found[1].namespace)
+            return namespace_values(self._expander, found[1].namespace)
         if found[1].data is not None:
             return found[1].data
         return None if value is None else _literal(value)

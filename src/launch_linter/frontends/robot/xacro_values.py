@@ -192,6 +192,8 @@ PLUGIN_TEXT_TAGS = frozenset({
     "parameters", "controller_manager_name",
     # A sensor's pose in its link (and its camera's in the sensor): where a camera looks.
     "pose",
+    # gz-sim sensors: the frame of their data (gz-sensors Sensor.cc, CameraSensor.cc).
+    "gz_frame_id", "ignition_frame_id", "optical_frame_id",
 })
 """The elements whose text the expander keeps: the parameters of the Gazebo plugins the
 knowledge base knows (tests/knowledge checks that every plugin entry's parameter is one)."""
