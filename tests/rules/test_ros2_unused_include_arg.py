@@ -176,8 +176,14 @@ def test_twenty_thousand_arguments_and_includes_stay_linear(tmp_path: Path) -> N
     (tmp_path / "leaf.launch.xml").write_text('<launch><node pkg="p" exec="e"/></launch>')
     started = time.process_time()
     assert len(lint(tmp_path, {"args.launch.xml": many_args}, "args.launch.xml")) == 20_000
-    assert len(lint(tmp_path, {"includes.launch.xml": many_includes},
-                    "includes.launch.xml")) == 20_000
+    (tmp_path / "includes.launch.xml").write_text(many_includes, encoding="utf-8")
+    result = lint_paths([str(tmp_path / "includes.launch.xml")],
+                        LintOptions(package_paths=(), ros=2))
+    found = sum(d.rule == RULE for d in result.diagnostics)
+    # The tree's work budget is CPU time (5 s): on a slow or loaded machine it may cut the
+    # last includes, and then says so; a quadratic walk would be cut after a few thousand.
+    cut = any("work budget" in d.message for d in result.diagnostics if d.rule == "unresolved")
+    assert found == 20_000 or (cut and found >= 10_000), found
     assert time.process_time() - started < 60
 
 
