@@ -21,7 +21,7 @@ CASES = ROOT / "tests" / "faults"
 CLASSES = {"two_publishers", "static_on_owned_edge", "node_second_parent", "frame_param",
            "multi_robot", "use_sim_time", "optical_frame", "camera_publish_tf_vs_urdf",
            "static_vs_urdf", "urdf_structure", "undeclared_launch_arg",
-           "static_transform_args", "launch_schema"}
+           "static_transform_args", "launch_schema", "missing_publisher"}
 
 
 def _runner() -> ModuleType:
