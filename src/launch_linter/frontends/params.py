@@ -12,7 +12,7 @@ import os
 import re
 import textwrap
 from collections.abc import Iterable, Sequence
-from typing import Any, Dict, Tuple
+from typing import Any, Dict, NamedTuple, Tuple
 
 from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
@@ -282,9 +282,19 @@ def ros2_file_params_keyed(document: object, name: str | None, namespace: str | 
     return out
 
 
-def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[NodeRecord]:
+class PlacedDocument(NamedTuple):
+    """A parameter file's document with its path as shown and where its keys are written."""
+
+    document: object
+    shown: str
+    keys: KeyPlaces
+
+
+def controllers_of(manager: NodeRecord, documents: Sequence[object],
+                   placed: Sequence[PlacedDocument] = ()) -> list[NodeRecord]:
     """The ros2_control controllers a controller manager is given (``NAME.type`` set to a
-    controller type), each with its own section of the same parameter files."""
+    controller type), each with its own section of the same parameter files; with
+    ``placed`` (the same files with their key places), each parameter at its key."""
     out: list[NodeRecord] = []
     for key, value in manager.params:
         if not key.endswith(".type") or not _CONTROLLER_TYPE.match(value):
@@ -293,10 +303,17 @@ def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[Nod
         if "." in controller:
             continue
         params: list[tuple[str, str]] = []
+        lines: list[tuple[str, str, int, int]] = []
         for document in documents:
             params.extend(ros2_file_params(document, controller, manager.namespace))
+        for each in placed:
+            for name, _, at in ros2_file_params_keyed(each.document, controller,
+                                                      manager.namespace):
+                line_column = each.keys.get(at)
+                if line_column is not None:
+                    lines.append((name, each.shown, *line_column))
         out.append(replace(manager, executable="", name=controller, kind="controller",
-                           plugin=value, params=tuple(params), param_lines=()))
+                           plugin=value, params=tuple(params), param_lines=tuple(lines)))
     return out
 
 
