@@ -137,3 +137,18 @@ def test_many_links_are_bounded(tmp_path: Path) -> None:
     result = found(tmp_path, urdf, ROS2_LAUNCH.format(frame_prefix=""), "a.launch.py")
     assert time.process_time() - start < 60
     assert [message.split("'")[1] for _, _, message in result] == [f"l{i}" for i in range(5)]
+
+
+def test_ros1_camera_plugin_prefixes_its_frame_with_the_tf_prefix_it_finds(
+        tmp_path: Path) -> None:
+    """gazebo_ros_camera_utils.cpp resolves frameName with the tf_prefix found from the
+    plugin's namespace, as the laser plugin does."""
+    camera = ROS1_URDF.replace('type="ray"', 'type="camera"').replace(
+        "libgazebo_ros_laser.so", "libgazebo_ros_camera.so")
+    launch = ROS1_LAUNCH.format(group="mir", group_prefix='<param name="tf_prefix" value="mir"/>',
+                                rsp_prefix="")
+    assert found(tmp_path, camera.format(frame="cam", laser_link="cam"), launch, "a.launch") == []
+    launch = ROS1_LAUNCH.format(group="/", group_prefix="",
+                                rsp_prefix='<param name="tf_prefix" value="mir"/>')
+    assert len(found(tmp_path, camera.format(frame="cam", laser_link="cam"), launch,
+                     "a.launch")) == 1
