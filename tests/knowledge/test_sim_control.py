@@ -199,3 +199,19 @@ def test_a_launched_controller_manager_with_an_unread_file_leaves_the_tree_open(
     view = view_of(result.trees[0], bundled())
     assert view.open_because is not None
     assert view.open_because.executable == "ros2_control_node"
+
+
+def test_a_launched_controller_managers_controllers_are_placed_at_their_file_keys(
+        tmp_path: Path) -> None:
+    (tmp_path / "c.yaml").write_text(CONTROLLERS.format(odom_tf="true"))
+    launch = tmp_path / "a.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='controller_manager',\n"
+        f"        executable='ros2_control_node', parameters=['{tmp_path}/c.yaml'])])\n")
+    result = lint_paths([str(launch)], LintOptions(package_paths=()))
+    (controller,) = [n for n in result.trees[0].nodes if n.name == "diff_cont"]
+    where = controller.where_set("enable_odom_tf")
+    assert where is not None and (Path(where[0]).name, where[1]) == ("c.yaml", 11)

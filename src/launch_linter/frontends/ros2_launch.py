@@ -25,6 +25,7 @@ from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     MAX_PARAMS,
     SPAWNERS,
+    PlacedDocument,
     ProcessParams,
     controllers_of,
     embedded_costmap,
@@ -108,6 +109,9 @@ class _NodeParams(NamedTuple):
     unread: tuple[str, ...]
     documents: list[object]
     process: list[object]
+    placed: list[PlacedDocument]
+    """The parameter files with where their keys are written (a controller's parameters
+    placed at its section's keys)."""
 
 
 class Ros2Loader(Ros2Runner):
@@ -187,7 +191,7 @@ class Ros2Loader(Ros2Runner):
         if costmap is not None:
             self.nodes.append(costmap)
         if package == "controller_manager" and documents:
-            self.nodes.extend(controllers_of(node, documents))
+            self.nodes.extend(controllers_of(node, documents, given.placed))
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
@@ -246,6 +250,7 @@ class Ros2Loader(Ros2Runner):
         places: list[tuple[str, int, int]] = [node_place] * len(scope.parameters)
         unread: list[str] = []
         documents: list[object] = []
+        placed: list[PlacedDocument] = []
         process: list[object] = []
         for group in groups:
             if isinstance(group, ParamsUnknown):
@@ -265,6 +270,7 @@ class Ros2Loader(Ros2Runner):
                 documents.append(document)
                 process.append(document)
                 shown = self._display(path)
+                placed.append(PlacedDocument(document, shown, keys))
                 for key, value, at in ros2_file_params_keyed(document, name, namespace):
                     params.append((key, value))
                     line_column = keys.get(at)
@@ -288,7 +294,7 @@ class Ros2Loader(Ros2Runner):
         own = params[:MAX_PARAMS]
         given = tuple(scope.parameters) + tuple(own)
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
-        return _NodeParams(given, lines, tuple(unread), documents, process)
+        return _NodeParams(given, lines, tuple(unread), documents, process, placed)
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
