@@ -97,3 +97,18 @@ def test_an_empty_value_not_from_a_root_default_stays_an_error(tmp_path: Path) -
         </launch>"""))
     errors = messages(tree, "roslaunch_error")
     assert errors.count("<node> tag has an empty 'ns' attribute") == 3
+
+
+def test_the_refused_attribute_is_the_one_checked(tmp_path: Path) -> None:
+    # The node's launch-prefix reads the environment; its ns does not: the empty ns is
+    # the root default's, not the environment's.
+    tree = load(write(tmp_path / "root.launch", f"""
+        <launch>
+          <arg name="robot_model" default=""/>
+          <node name="pixels" ns="$(arg robot_model)" {STP}
+                launch-prefix="sudo -E PYTHONPATH=$(env PYTHONPATH)"/>
+          <node name="literal" ns="" {STP} launch-prefix="$(env PREFIX)"/>
+        </launch>"""))
+    assert messages(tree, "roslaunch_error") == ["<node> tag has an empty 'ns' attribute"]
+    (unresolved,) = [m for m in messages(tree, "unresolved") if "empty 'ns'" in m]
+    assert "arg 'robot_model'" in unresolved and "environment" not in unresolved

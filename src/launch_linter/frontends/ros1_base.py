@@ -261,10 +261,14 @@ class Ros1Base:
     def _error(self, context: _Context, element: Element | None, message: str,
                attribute: str | None = None) -> None:
         """A roslaunch refusal; ``attribute`` names the attribute whose value it refuses
-        (checked for a root arg left at an empty default)."""
+        (the one checked for the environment and for a root arg left at an empty
+        default; every attribute of the element when it is not known)."""
         checkable = (element is not None and not self.options.study_errors
                      and message.startswith(_VALUE_ERRORS))
-        source = self._env_source(element) if checkable and element is not None else None
+        source = None
+        if checkable and element is not None:
+            source = (self._env_source(element) if attribute is None
+                      else self._env_in_text(element.attrib.get(attribute, "")))
         if source is not None:
             self._report("unresolved", context.filename, element,
                          f"{message}, but the value depends on the environment ({source}): "
