@@ -330,15 +330,17 @@ def controllers_of(manager: NodeRecord, documents: Sequence[object],
             indexed[id(document)] = _Sections(document)
         return indexed[id(document)]
 
+    # One controller per name, of the type set last (a later file wins, as in rcl), where
+    # it is first named: the same file given twice names its controllers twice.
+    named: dict[str, str] = {}
+    for key, value in manager.params:
+        if key.endswith(".type") and "." not in key[:-len(".type")] \
+                and _CONTROLLER_TYPE.match(value):
+            named[key[:-len(".type")]] = value
     namespace = (manager.namespace or "").strip("/")
     matches = 0
     out: list[NodeRecord] = []
-    for key, value in manager.params:
-        if not key.endswith(".type") or not _CONTROLLER_TYPE.match(value):
-            continue
-        controller = key[:-len(".type")]
-        if "." in controller:
-            continue
+    for controller, value in named.items():
         full = "/" + "/".join(p for p in (namespace, controller) if p)
         matches += sum(len(sections(d).wildcard) for d in documents)
         if matches > MAX_SECTION_MATCHES:
