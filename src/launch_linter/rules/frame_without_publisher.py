@@ -50,13 +50,23 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import replace
 from launch_linter.rules._api import Finding, RuleContext, summarised_lazily
 from launch_linter.rules._nodes import finding_at_node, finding_at_param, nodes_of, program_of
 from launch_linter.rules._tree import edges_of
+from launch_linter.rules._whole_robot import is_global, outside_frame, whole_robot
 
 ID = "frame_without_publisher"
 CATEGORY = Category.TF
 SEVERITY = Severity.INFO
+WHOLE_ROBOT_LEVEL = Severity.INFO
+"""The level of a frame missing from a tree that brings up the whole robot: info until a
+judged sample of such findings (docs/evaluation/frame_without_publisher.md) shows the
+warning bar (90% on 20 or more)."""
+
+
+def _info(finding: Finding) -> Finding:
+    return replace(finding, severity=Severity.INFO)
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -76,17 +86,26 @@ def check(context: RuleContext) -> Iterator[Finding]:
         names = sorted({lookup.frame for lookup in missing})
         listed = ", ".join(summarised_lazily((f"'{n}'" for n in names), len(names)))
         first = missing[0].node
-        yield finding_at_node(
+        yield _info(finding_at_node(
             first,
             f"no publisher in this tree gives {listed}, which nodes look up; the tree is "
             f"open: {program_of(opener)} ({opener.path}:{opener.line}) may publish tf "
             f"(the knowledge base does not tell its edges)",
-        )
+        ))
         return
     for lookup in missing:
-        yield finding_at_param(
-            lookup.node, lookup.param,
-            f"{program_of(lookup.node)} looks up '{lookup.frame}' (parameter "
-            f"'{lookup.param}'), which no static transform, URDF joint or node of this tree "
-            f"publishes",
-        )
+        said = (f"{program_of(lookup.node)} looks up '{lookup.frame}' (parameter "
+                f"'{lookup.param}'), which no static transform, URDF joint or node of this "
+                f"tree publishes")
+        outside = outside_frame(context, lookup.frame)
+        if outside is not None:
+            yield _info(finding_at_param(lookup.node, lookup.param, f"{said}: {outside}"))
+            continue
+        reason, publishers = whole_robot(context, lookup.node, is_global(lookup.param))
+        if reason is None:
+            yield replace(finding_at_param(
+                lookup.node, lookup.param,
+                f"{said}, and this tree brings up the whole robot: {publishers}"),
+                severity=WHOLE_ROBOT_LEVEL)
+        else:
+            yield _info(finding_at_param(lookup.node, lookup.param, f"{said} ({reason})"))
