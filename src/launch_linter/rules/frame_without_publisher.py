@@ -52,10 +52,10 @@ node that publishes it was left out.
 ## Known problems
 Reported at info, the whole-robot findings too. A launch tree is not the whole running
 system: on the corpus all 84 findings of an earlier sample (docs/evaluation/tree_judged.jsonl)
-and, on 33 whole repositories, all 53 findings in closed trees
+and, on whole repositories, all 53 findings judged in closed trees
 (docs/evaluation/frame_without_publisher.md) were navigation or mapping launch files meant
 to run beside a robot bringup started on its own, which publishes the frame; none of these
-trees brings up the whole robot. Trees that do were found in one repository of the 33 (4
+trees brings up the whole robot. Trees that do were found in one repository of 56 (4
 trees) and none in the corpus, and no frame was missing in them: with no judged
 whole-robot finding, that level stays info (`WHOLE_ROBOT_LEVEL`) until a sample of 20 or
 more reaches 90%. A simulator spawn without a robot_state_publisher, and gz-sim systems,
