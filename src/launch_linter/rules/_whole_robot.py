@@ -21,7 +21,6 @@ import typing
 from launch_linter.knowledge import Entry
 from launch_linter.knowledge.publish import Parameters
 from launch_linter.model.launch import LaunchTree
-from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import DescriptionKind, NodeRecord
 from launch_linter.model.transform import Condition, ConditionLiteral
 from launch_linter.rules._api import RuleContext
@@ -62,8 +61,9 @@ class FirstRunning(typing.Generic[T]):
         return None
 
 
-class RobotPublishers(Record):
-    """A tree's publishers of the robot, found once per tree."""
+class RobotPublishers:
+    """A tree's publishers of the robot, found once per tree (internal to the rules: not
+    a contract record)."""
 
     describers: FirstRunning[NodeRecord]
     """robot_state_publishers (nodes whose entry publishes a description)."""
@@ -82,12 +82,12 @@ class RobotPublishers(Record):
     def __init__(self, describers: FirstRunning[NodeRecord], description_read: bool,
                  odometry: FirstRunning[NodeEdge], localization: FirstRunning[NodeEdge],
                  dropped: frozenset[str], driver_frames: dict[str, str]) -> None:
-        _set(self, "describers", describers)
-        _set(self, "description_read", description_read)
-        _set(self, "odometry", odometry)
-        _set(self, "localization", localization)
-        _set(self, "dropped", dropped)
-        _set(self, "driver_frames", driver_frames)
+        self.describers = describers
+        self.description_read = description_read
+        self.odometry = odometry
+        self.localization = localization
+        self.dropped = dropped
+        self.driver_frames = driver_frames
 
 
 def _describes(context: RuleContext, node: NodeRecord) -> bool:
