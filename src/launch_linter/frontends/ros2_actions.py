@@ -39,6 +39,13 @@ class Where:
     line: int
     column: int
 
+    def __init__(self, path: str, line: int, column: int) -> None:
+        # Made for every action and call the interpreter evaluates: the fields are put in
+        # the instance's dict, at less than half the cost of the frozen dataclass's
+        # ``object.__setattr__`` per field (assignment is still refused).
+        fields = self.__dict__
+        fields["path"], fields["line"], fields["column"] = path, line, column
+
 
 @dataclass(frozen=True)
 class Predicate:
