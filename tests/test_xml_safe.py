@@ -11,8 +11,10 @@ from launch_linter.resolve.xml_safe import (
     MAX_BYTES,
     MAX_DEPTH,
     MAX_ELEMENTS,
+    FileTooLarge,
     XmlError,
     parse_xml,
+    read_file_within,
     read_regular_file,
 )
 
@@ -152,3 +154,13 @@ def test_element_count_is_bounded() -> None:
 def test_size_is_bounded() -> None:
     with pytest.raises(XmlError, match="larger than"):
         parse_xml(b" " * (MAX_BYTES + 1))
+
+
+def test_read_file_within_takes_a_file_of_the_limit_and_refuses_one_byte_more(
+        tmp_path: Path) -> None:
+    path = tmp_path / "f"
+    path.write_bytes(b"x" * 10)
+    assert read_file_within(str(path), 10) == b"x" * 10
+    with pytest.raises(FileTooLarge) as refused:
+        read_file_within(str(path), 9)
+    assert isinstance(refused.value, OSError) and refused.value.strerror == "larger than 9 bytes"

@@ -8,7 +8,7 @@ import re
 
 from launch_linter.model.beliefs import BeliefFormatError, BeliefSet
 from launch_linter.resolve import reads
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within
 
 BUNDLED = "beliefs-bundled.json"
 STUDY = "beliefs-study.json"
@@ -66,11 +66,9 @@ def load_beliefs(spec: str, min_z: float) -> BeliefSet:
         return BeliefSet.stored(spec, min_z, reads.digest(content), lambda: BeliefSet.from_json(
             json.loads(content.decode("utf-8")), spec, min_z))
     try:
-        raw = read_regular_file(spec, MAX_BELIEFS_BYTES + 1)
-    except OSError as exc:
+        raw = read_file_within(spec, MAX_BELIEFS_BYTES)
+    except OSError as exc:  # FileTooLarge included
         raise BeliefsNotFound(f"cannot read beliefs file {spec}: {exc.strerror or exc}") from None
-    if len(raw) > MAX_BELIEFS_BYTES:
-        raise BeliefsNotFound(f"beliefs file {spec} is larger than {MAX_BELIEFS_BYTES} bytes")
     try:
         data = load_json(raw.decode("utf-8-sig"))
     except (UnicodeDecodeError, ValueError) as exc:

@@ -24,7 +24,7 @@ from launch_linter.model.diagnostic import Applicability, Diagnostic, Edit, Fix
 from launch_linter.model.record import replace
 from launch_linter.resolve.xml_safe import (
     declared_encoding,
-    read_regular_file,
+    read_file_within,
     unsaved_text,
     unsaved_texts,
 )
@@ -301,11 +301,12 @@ def read_bytes(path: str) -> bytes | None:
     """The file's bytes (the text ``--diff`` has fixed, while it lints it again), or None
     when it is no regular file, unreadable or too large."""
     data = unsaved_text(path)
+    if data is not None:
+        return data if len(data) <= MAX_FIX_BYTES else None
     try:
-        data = read_regular_file(path, MAX_FIX_BYTES + 1) if data is None else data
-    except OSError:  # NotRegularFile included
+        return read_file_within(path, MAX_FIX_BYTES)
+    except OSError:  # NotRegularFile and FileTooLarge included
         return None
-    return data if len(data) <= MAX_FIX_BYTES else None
 
 
 def with_located_fixes(

@@ -38,7 +38,7 @@ from launch_linter.model.diagnostic import (
 )
 from launch_linter.model.launch import Comment, FileRecord, FileStatus, LaunchTree
 from launch_linter.resolve import reads
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within, read_regular_file
 from launch_linter.workspace.discovery import InputFile
 
 CACHE_FOLDER = reads.CACHE_FOLDER
@@ -326,10 +326,8 @@ class ResultsCache:
 
     def _load(self) -> None:
         try:
-            data = read_regular_file(self.path, MAX_CACHE_BYTES + 1)
+            data = read_file_within(self.path, MAX_CACHE_BYTES)
         except (OSError, ValueError):
-            return
-        if len(data) > MAX_CACHE_BYTES:
             return
         try:
             document = json.loads(data.decode("utf-8"))

@@ -4,6 +4,7 @@ evaluated against a node's parameters."""
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -11,6 +12,7 @@ import pytest
 from launch_linter.knowledge import KnowledgeError, bundled, bundled_path, load, parse
 from launch_linter.knowledge.publish import published
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
+from launch_linter.workspace.config import load_knowledge_file
 
 REQUIRED = ("amcl", "nav2_amcl", "robot_localization_filter", "navsat_transform",
             "slam_toolbox", "gmapping", "cartographer", "hector_mapping", "rtabmap",
@@ -148,7 +150,7 @@ def test_a_user_file_extends_and_overrides_the_bundled_base(tmp_path: Path) -> N
                      "ref": "main", "commit": "0" * 40, "lines": "10"}]}]}
     path = tmp_path / "k.json"
     path.write_text(json.dumps(mine))
-    base = bundled().extended(load(str(path)))
+    base = bundled().extended(load_knowledge_file(str(path)))
     entry = base.node("my_base", "driver", 1)
     assert entry is not None and entry.origin == str(path)
     assert base.node("amcl", "amcl", 1) is not None
@@ -164,3 +166,25 @@ def test_the_configuration_names_knowledge_files(tmp_path: Path) -> None:
     (tmp_path / "k.json").write_text('{"format": 1, "entries": [{"id": "x"}]}')
     with pytest.raises(UsageError, match="kind"):
         load_knowledge(config.knowledge)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs on this platform")
+def test_a_configured_knowledge_file_that_is_a_fifo_is_refused_not_waited_on(
+        tmp_path: Path) -> None:
+    # open() of a FIFO blocks until a writer comes: a repository's configuration naming
+    # one must not hang the run.
+    from launch_linter.commands.common import UsageError
+    from launch_linter.commands.options import load_knowledge
+
+    os.mkfifo(str(tmp_path / "k.json"))
+    with pytest.raises(UsageError, match="not a regular file"):
+        load_knowledge((str(tmp_path / "k.json"),))
+
+
+def test_a_configured_knowledge_file_past_the_limit_is_refused_unread(tmp_path: Path) -> None:
+    from launch_linter.knowledge import MAX_KNOWLEDGE_BYTES
+
+    path = tmp_path / "k.json"
+    path.write_bytes(b" " * (MAX_KNOWLEDGE_BYTES + 1))
+    with pytest.raises(KnowledgeError, match="larger than"):
+        load_knowledge_file(str(path))

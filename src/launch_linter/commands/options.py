@@ -212,12 +212,13 @@ def load_knowledge(files: tuple[str, ...]) -> KnowledgeBase | None:
     first); None when there are none."""
     if not files:
         return None
-    from launch_linter.knowledge import KnowledgeError, bundled, load
+    from launch_linter.knowledge import KnowledgeError, bundled
+    from launch_linter.workspace.config import load_knowledge_file
 
     base = bundled()
     try:
         for path in files:
-            base = base.extended(load(path))
+            base = base.extended(load_knowledge_file(path))
     except KnowledgeError as exc:
         raise UsageError(str(exc)) from None
     return base

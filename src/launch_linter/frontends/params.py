@@ -17,7 +17,7 @@ from typing import Any, Dict, Tuple
 from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
 from launch_linter.resolve import reads
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within
 
 MAX_PARAM_FILE_BYTES = 512 * 1024
 MAX_PARAMS = 5000
@@ -153,18 +153,14 @@ def read_yaml_file_placed(path: str) -> tuple[Any, str | None, KeyPlaces]:
             reads.note_status(path, status)
         return _cache[key]
     try:
-        data = read_regular_file(path, MAX_PARAM_FILE_BYTES + 1)
-    except OSError as exc:
+        data = read_file_within(path, MAX_PARAM_FILE_BYTES)
+    except OSError as exc:  # FileTooLarge included
         found: tuple[Any, str | None, KeyPlaces] = (
             None, f"parameter file {path!r} not read: {exc.strerror or exc}", {})
     else:
-        if len(data) > MAX_PARAM_FILE_BYTES:
-            found = (None, f"parameter file {path!r} is larger than {MAX_PARAM_FILE_BYTES} "
-                           f"bytes", {})
-        else:
-            document, reason, places = parse_yaml_placed(data.decode("utf-8", "replace"))
-            found = (document, None if reason is None else f"parameter file {path!r}: {reason}",
-                     places)
+        document, reason, places = parse_yaml_placed(data.decode("utf-8", "replace"))
+        found = (document, None if reason is None else f"parameter file {path!r}: {reason}",
+                 places)
     if len(_cache) >= MAX_CACHED:
         _cache.clear()
     _cache[key] = found

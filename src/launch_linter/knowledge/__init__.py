@@ -436,7 +436,8 @@ def parse(data: Any, origin: str) -> KnowledgeBase:
 
 
 def load(path: str) -> KnowledgeBase:
-    """A knowledge file (JSON, bounded in size)."""
+    """The bundled knowledge file. A user's files are read by the configuration layer
+    (``workspace.config.load_knowledge_file``), which reads untrusted paths safely."""
     try:
         with open(path, "rb") as stream:
             raw = stream.read(MAX_KNOWLEDGE_BYTES + 1)
@@ -444,11 +445,16 @@ def load(path: str) -> KnowledgeBase:
         raise KnowledgeError(f"{path}: cannot be read: {exc.strerror}") from None
     if len(raw) > MAX_KNOWLEDGE_BYTES:
         raise KnowledgeError(f"{path}: larger than {MAX_KNOWLEDGE_BYTES} bytes")
+    return from_bytes(raw, path)
+
+
+def from_bytes(raw: bytes, origin: str) -> KnowledgeBase:
+    """A knowledge file's content (JSON); ``origin`` names it in messages."""
     try:
         data = json.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, ValueError) as exc:
-        raise KnowledgeError(f"{path}: not JSON: {exc}") from None
-    return parse(data, path)
+    except (UnicodeDecodeError, ValueError, RecursionError) as exc:
+        raise KnowledgeError(f"{origin}: not JSON: {exc}") from None
+    return parse(data, origin)
 
 
 _BUNDLED: list[KnowledgeBase] = []

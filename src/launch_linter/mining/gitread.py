@@ -27,7 +27,7 @@ import stat
 import subprocess
 import tempfile
 
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within
 
 GIT_TIMEOUT_S = 120
 MAX_REF_BYTES = 4096
@@ -51,10 +51,8 @@ def _read_small(path: str, limit: int = MAX_REF_BYTES) -> str | None:
     """A small regular file's text, or None (a FIFO or device is never waited on: it is
     opened without blocking and its type checked on the open descriptor)."""
     try:
-        data = read_regular_file(path, limit + 1)
-    except (OSError, ValueError):
-        return None
-    if len(data) > limit:
+        data = read_file_within(path, limit)
+    except (OSError, ValueError):  # FileTooLarge included
         return None
     return data.decode("utf-8", "replace")
 

@@ -11,6 +11,7 @@ character data is only collected inside the elements that ask for it.
 
 from __future__ import annotations
 
+import errno
 import os
 import re
 import stat
@@ -165,6 +166,25 @@ def read_regular_file(path: str, limit: int) -> bytes:
         return data
     finally:
         os.close(descriptor)
+
+
+class FileTooLarge(OSError):
+    """A regular file with more bytes than its reader takes. An OSError, so that a caller
+    that gives up on an unreadable file gives up on this one the same way; ``strerror``
+    says why ("larger than N bytes")."""
+
+    def __init__(self, path: str, limit: int) -> None:
+        super().__init__(errno.EFBIG, f"larger than {limit:,} bytes", path)
+
+
+def read_file_within(path: str, limit: int) -> bytes:
+    """The whole regular file ``path`` when it has at most ``limit`` bytes; raises
+    :class:`FileTooLarge` otherwise (having read one byte past the limit, never the whole
+    file), or the OSError of an unreadable path (:class:`NotRegularFile` included)."""
+    data = read_regular_file(path, limit + 1)
+    if len(data) > limit:
+        raise FileTooLarge(path, limit)
+    return data
 
 
 _DECLARATION = rb"""\s*<\?xml\s[^>]{0,200}?encoding\s*=\s*["']([^"'>]{0,60})["']"""

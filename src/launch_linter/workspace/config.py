@@ -18,13 +18,15 @@ from collections.abc import Iterable, Mapping, Sequence
 from launch_linter.model.diagnostic import Severity
 from launch_linter.model.paths import shown_path
 from launch_linter.model.record import Record, _set
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within
 from launch_linter.rules._catalog import CATALOG, CATEGORY_NAMES, CATEGORY_OF
 from launch_linter.suppressions import PathIgnore
 
 TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
 if TYPE_CHECKING:
     from typing import Any
+
+    from launch_linter.knowledge import KnowledgeBase
 
 CONFIG_NAME = ".launch-linter.toml"
 PYPROJECT = "pyproject.toml"
@@ -293,12 +295,10 @@ def _severities(table: Mapping[str, Any], shown: str) -> dict[str, Severity]:
 def _read_toml(path: str) -> dict[str, Any]:
     shown = shown_path(path)  # as messages quote paths
     try:
-        data = read_regular_file(path, MAX_CONFIG_BYTES + 1)
-    except OSError as exc:
+        data = read_file_within(path, MAX_CONFIG_BYTES)
+    except OSError as exc:  # FileTooLarge included
         raise ConfigError(
             f"cannot read configuration file {shown}: {exc.strerror or exc}") from None
-    if len(data) > MAX_CONFIG_BYTES:
-        raise ConfigError(f"{shown}: larger than {MAX_CONFIG_BYTES} bytes")
 
     try:
         text = data.decode("utf-8")
@@ -390,3 +390,16 @@ def config_for(paths: Sequence[str], explicit: str | None = None) -> Config:
         )
     chosen = found.pop()
     return load_config(chosen) if chosen is not None else Config()
+
+
+def load_knowledge_file(path: str) -> KnowledgeBase:
+    """A knowledge file the configuration names (JSON, docs/knowledge.md). Its path comes
+    from a repository's configuration, so it is read as any other untrusted file: a FIFO
+    or device is refused rather than waited on, and at most its size limit is read."""
+    from launch_linter.knowledge import MAX_KNOWLEDGE_BYTES, KnowledgeError, from_bytes
+
+    try:
+        raw = read_file_within(path, MAX_KNOWLEDGE_BYTES)
+    except OSError as exc:  # NotRegularFile and FileTooLarge included
+        raise KnowledgeError(f"{path}: cannot be read: {exc.strerror or exc}") from None
+    return from_bytes(raw, path)

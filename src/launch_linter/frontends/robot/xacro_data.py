@@ -29,7 +29,7 @@ from launch_linter.resolve.eval_values import (
     function,
 )
 from launch_linter.resolve.safe_eval import EvalScope, evaluate_value
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within
 
 MAX_YAML_BYTES = 512 * 1024
 MAX_YAML_ITEMS = 20_000
@@ -46,11 +46,9 @@ def read_yaml_data(path: str) -> object:
     except ImportError:
         raise _Unknown(f"load_yaml({path!r}): reading YAML needs PyYAML") from None
     try:
-        data = read_regular_file(path, MAX_YAML_BYTES + 1)
-    except OSError as exc:
+        data = read_file_within(path, MAX_YAML_BYTES)
+    except OSError as exc:  # FileTooLarge included
         raise _Unknown(f"load_yaml({path!r}): {exc.strerror or exc}") from None
-    if len(data) > MAX_YAML_BYTES:
-        raise _Unknown(f"load_yaml({path!r}): larger than {MAX_YAML_BYTES:,} bytes")
     try:
         document: Any = yaml.load(data.decode("utf-8", "replace"), Loader=_loader(yaml))
     except (yaml.YAMLError, RecursionError, ValueError) as exc:
