@@ -39,6 +39,7 @@ from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
 from launch_linter.resolve import reads
+from launch_linter.resolve.substitution import SubstitutionError, resolve
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element
 
@@ -398,12 +399,31 @@ class Ros1Tags(Ros1Base):
         if why is not None:
             return [], why, []
         params, places = [], []
+        substituted = attrib.get("subst_value", "false")
+        if "$" in substituted:
+            substituted = resolved_text(self._resolve_text(
+                substituted, element, "subst_value", context, dict(context.anon))) or ""
         for key, value, at in ros1_params_keyed(document, ns_text):
+            if "$(" in value and substituted.strip().lower() != "false":
+                value = self._substituted(value, substituted, context)
             params.append((key, value))
             line_column = keys.get(at)
             places.append(here if line_column is None
                           else (shown, line_column[0], line_column[1]))
         return params, None, places
+
+    def _substituted(self, value: str, substituted: str, context: _Context) -> str:
+        """A value of a ``<rosparam>`` file as roslaunch loads it under ``subst_value``
+        (``substituted``, the attribute's value, '' when unresolved): its substitutions
+        resolved when the attribute is true, else (or when one cannot be resolved)
+        unknown."""
+        if substituted.strip().lower() != "true":
+            return UNKNOWN_VALUE
+        try:
+            text = resolved_text(resolve(value, self._scope(context, None)))
+        except SubstitutionError:
+            return UNKNOWN_VALUE
+        return UNKNOWN_VALUE if text is None else text
 
     def _rosparam(self, element: Element, context: _Context,
                   anon: dict[str, str] | None = None) -> None:
