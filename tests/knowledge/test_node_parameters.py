@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from launch_linter.engine import LintOptions, lint_paths
 from launch_linter.frontends.params import flat_yaml, ros2_file_params, scalar_text
 from launch_linter.knowledge import bundled
-from launch_linter.model.robot import NodeRecord
+from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.rules._nodes import view_of
 
 
@@ -44,6 +44,28 @@ def test_ros1_params_rosparam_text_files_and_names_beside_the_node(tmp_path: Pat
     assert amcl.given("odom_frame_id") == "odom_a"
     assert found["move_base"].given("local_costmap/odom_frame_id") == "odom_a"
     assert amcl.unread == ()
+
+
+def test_ros1_a_parameter_file_loaded_with_subst_value_is_substituted(tmp_path: Path) -> None:
+    """roslaunch resolves $(arg ...) in a <rosparam> file's text when subst_value is true
+    (robotont_navigation's costmap_common.yaml: robot_base_frame: $(arg prefix)base_footprint);
+    without it the text stays as written; under an unresolved subst_value it is unknown."""
+    files = {
+        "costmap.yaml": "robot_base_frame: $(arg prefix)base_footprint\n",
+        "a.launch": (
+            '<launch><arg name="prefix" default="r1/"/><arg name="s"/>'
+            '<node pkg="move_base" type="move_base" name="a">'
+            '<rosparam file="$(dirname)/costmap.yaml" subst_value="true" ns="local_costmap"/>'
+            '</node><node pkg="move_base" type="move_base" name="b">'
+            '<rosparam file="$(dirname)/costmap.yaml" ns="local_costmap"/></node>'
+            '<node pkg="move_base" type="move_base" name="c">'
+            '<rosparam file="$(dirname)/costmap.yaml" subst_value="$(arg s)" '
+            'ns="local_costmap"/></node></launch>'),
+    }
+    a, b, c = nodes(tmp_path, files, "a.launch")
+    assert a.given("local_costmap/robot_base_frame") == "r1/base_footprint"
+    assert b.given("local_costmap/robot_base_frame") == "$(arg prefix)base_footprint"
+    assert c.given("local_costmap/robot_base_frame") == UNKNOWN_VALUE
 
 
 def test_ros1_an_unresolved_parameter_file_leaves_the_node_unread(tmp_path: Path) -> None:

@@ -12,7 +12,7 @@ import os
 import re
 import textwrap
 from collections.abc import Iterable, Sequence
-from typing import Any, Dict, Tuple
+from typing import Any, Dict, NamedTuple, Tuple
 
 from launch_linter.model.record import replace
 from launch_linter.model.robot import NodeRecord
@@ -278,21 +278,88 @@ def ros2_file_params_keyed(document: object, name: str | None, namespace: str | 
     return out
 
 
-def controllers_of(manager: NodeRecord, documents: Sequence[object]) -> list[NodeRecord]:
+class PlacedDocument(NamedTuple):
+    """A parameter file's document with its path as shown and where its keys are written."""
+
+    document: object
+    shown: str
+    keys: KeyPlaces
+
+
+MAX_SECTION_MATCHES = 200_000
+"""Wildcard section keys tried against controller names, per controller manager: a file
+of thousands of ``/**/NAME`` sections for thousands of controllers stays bounded (the
+controllers past it are unread, their frames unknown)."""
+
+
+class _Sections:
+    """A parameter file's ``ros__parameters`` sections, indexed once for many node names:
+    keys without a wildcard by the full name they match, the others compiled once."""
+
+    def __init__(self, document: object) -> None:
+        self.sections = _ros2_sections_keyed(document)
+        self.exact: dict[str, list[int]] = {}
+        self.wildcard: list[tuple[int, re.Pattern[str]]] = []
+        for index, (key, _, _) in enumerate(self.sections):
+            if "*" in key:
+                self.wildcard.append((index, _section_pattern(key)))
+            else:
+                self.exact.setdefault("/" + key.lstrip("/"), []).append(index)
+
+    def params_keyed(self, full: str) -> list[tuple[str, str, tuple[str, ...]]]:
+        """:func:`ros2_file_params_keyed` for the node ``full``, sections in file order."""
+        found = list(self.exact.get(full, ()))
+        found.extend(index for index, pattern in self.wildcard if pattern.match(full))
+        out: list[tuple[str, str, tuple[str, ...]]] = []
+        for index in sorted(found):
+            _, section, keys = self.sections[index]
+            out.extend(flatten_keyed(section, ".", keys=keys))
+        return out
+
+
+def controllers_of(manager: NodeRecord, documents: Sequence[object],
+                   placed: Sequence[PlacedDocument] = ()) -> list[NodeRecord]:
     """The ros2_control controllers a controller manager is given (``NAME.type`` set to a
-    controller type), each with its own section of the same parameter files."""
-    out: list[NodeRecord] = []
+    controller type), each with its own section of the same parameter files; with
+    ``placed`` (the same files with their key places), each parameter at its key. Each
+    file's sections are indexed once (a manager may name thousands of controllers)."""
+    indexed: dict[int, _Sections] = {}
+
+    def sections(document: object) -> _Sections:
+        if id(document) not in indexed:
+            indexed[id(document)] = _Sections(document)
+        return indexed[id(document)]
+
+    # One controller per name, of the type set last (a later file wins, as in rcl), where
+    # it is first named: the same file given twice names its controllers twice.
+    named: dict[str, str] = {}
     for key, value in manager.params:
-        if not key.endswith(".type") or not _CONTROLLER_TYPE.match(value):
-            continue
-        controller = key[:-len(".type")]
-        if "." in controller:
+        if key.endswith(".type") and "." not in key[:-len(".type")] \
+                and _CONTROLLER_TYPE.match(value):
+            named[key[:-len(".type")]] = value
+    namespace = (manager.namespace or "").strip("/")
+    matches = 0
+    out: list[NodeRecord] = []
+    for controller, value in named.items():
+        full = "/" + "/".join(p for p in (namespace, controller) if p)
+        matches += sum(len(sections(d).wildcard) for d in documents)
+        if matches > MAX_SECTION_MATCHES:
+            out.append(replace(manager, executable="", name=controller, kind="controller",
+                               plugin=value, params=(), param_lines=(),
+                               unread=(*manager.unread, "too many parameter file sections "
+                                       "to match for this controller manager")))
             continue
         params: list[tuple[str, str]] = []
         for document in documents:
-            params.extend(ros2_file_params(document, controller, manager.namespace))
+            params.extend((name, text) for name, text, _ in sections(document).params_keyed(full))
+        lines: list[tuple[str, str, int, int]] = []
+        for each in placed:
+            for name, _, at in sections(each.document).params_keyed(full):
+                line_column = each.keys.get(at)
+                if line_column is not None:
+                    lines.append((name, each.shown, *line_column))
         out.append(replace(manager, executable="", name=controller, kind="controller",
-                           plugin=value, params=tuple(params), param_lines=()))
+                           plugin=value, params=tuple(params), param_lines=tuple(lines)))
     return out
 
 

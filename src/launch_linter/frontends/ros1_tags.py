@@ -39,6 +39,7 @@ from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
 from launch_linter.resolve import reads
+from launch_linter.resolve.substitution import SubstitutionError, resolve
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
 from launch_linter.resolve.xml_safe import Element
 
@@ -104,7 +105,8 @@ class Ros1Tags(Ros1Base):
         ns_value = self._resolve(element, "ns", context) or ()
         ns = text_of(ns_value)
         if not ns:
-            self._error(context, element, f"<{element.tag}> tag has an empty 'ns' attribute")
+            self._error(context, element, f"<{element.tag}> tag has an empty 'ns' attribute",
+                        attribute="ns")
             return context.ns, context.ns_unresolved
         try:
             joined = make_global_ns(ns if ns.startswith("/") else ns_join(context.ns, ns))
@@ -217,7 +219,24 @@ class Ros1Tags(Ros1Base):
                 source = self._env_in_text(text)
                 if source is not None:
                     self._env_args[name] = source
+        self._note_blank(context, element, name, value, default)
         self._declare(context, element, name, value, default, condition)
+
+    def _note_blank(self, context: _Context, element: Element, name: str,
+                    value: Value | None, default: Value | None) -> None:
+        """Remember an arg that is empty because a root file's default is: declared with
+        ``default=""`` in the root (whose command line could set it), or set empty from
+        such an arg (a default that reads it, an include passing it on)."""
+        written = value if value is not None else default
+        if written is None or resolved_text(written) != "":
+            return
+        origin = self._blank_arg_in(element.attrib.get("value" if value is not None
+                                                       else "default", ""))
+        if origin is not None:
+            self._blank_args[name] = origin
+        elif (value is None and element.attrib.get("default") == "" and context.open_args
+              and context.include_args is None and name not in context.args):
+            self._blank_args[name] = name
 
     def _param(self, element: Element, context: _Context,
                anon: dict[str, str] | None = None) -> None:
@@ -283,7 +302,8 @@ class Ros1Tags(Ros1Base):
             problem = (None if value is None
                        else _param_value_problem(value.strip(), param_type or "auto"))
             if problem is not None:
-                self._error(context, element, f"Invalid <param> tag: {problem}")
+                self._error(context, element, f"Invalid <param> tag: {problem}",
+                            attribute="value")
 
     def _description(self, element: Element, context: _Context, condition: Condition,
                      values: dict[str, Value]) -> None:
@@ -379,12 +399,31 @@ class Ros1Tags(Ros1Base):
         if why is not None:
             return [], why, []
         params, places = [], []
+        substituted = attrib.get("subst_value", "false")
+        if "$" in substituted:
+            substituted = resolved_text(self._resolve_text(
+                substituted, element, "subst_value", context, dict(context.anon))) or ""
         for key, value, at in ros1_params_keyed(document, ns_text):
+            if "$(" in value and substituted.strip().lower() != "false":
+                value = self._substituted(value, substituted, context)
             params.append((key, value))
             line_column = keys.get(at)
             places.append(here if line_column is None
                           else (shown, line_column[0], line_column[1]))
         return params, None, places
+
+    def _substituted(self, value: str, substituted: str, context: _Context) -> str:
+        """A value of a ``<rosparam>`` file as roslaunch loads it under ``subst_value``
+        (``substituted``, the attribute's value, '' when unresolved): its substitutions
+        resolved when the attribute is true, else (or when one cannot be resolved)
+        unknown."""
+        if substituted.strip().lower() != "true":
+            return UNKNOWN_VALUE
+        try:
+            text = resolved_text(resolve(value, self._scope(context, None)))
+        except SubstitutionError:
+            return UNKNOWN_VALUE
+        return UNKNOWN_VALUE if text is None else text
 
     def _rosparam(self, element: Element, context: _Context,
                   anon: dict[str, str] | None = None) -> None:
@@ -410,7 +449,7 @@ class Ros1Tags(Ros1Base):
         ) and not reads.is_file(file_text):
             self._error(context, element,
                         f"error loading <rosparam> tag: file does not exist "
-                        f"[{self._quoted(file_text)}]")
+                        f"[{self._quoted(file_text)}]", attribute="file")
         body: Value | None = (element.text,) if element.text else ()
         if substitute:
             body = self._resolve_text(element.text, element, "text", context, anon)

@@ -18,6 +18,7 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
@@ -25,6 +26,7 @@ from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     MAX_PARAMS,
     SPAWNERS,
+    PlacedDocument,
     ProcessParams,
     controllers_of,
     embedded_costmap,
@@ -50,6 +52,7 @@ from launch_linter.frontends.ros2_actions import (
     STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
     Component,
+    FileRead,
     Include,
     Params,
     ParamsFile,
@@ -72,7 +75,7 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
-from launch_linter.model.launch import Forwarded
+from launch_linter.model.launch import Forwarded, LaunchTree
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
@@ -108,10 +111,30 @@ class _NodeParams(NamedTuple):
     unread: tuple[str, ...]
     documents: list[object]
     process: list[object]
+    placed: list[PlacedDocument]
+    """The parameter files with where their keys are written (a controller's parameters
+    placed at its section's keys)."""
 
 
 class Ros2Loader(Ros2Runner):
     """Loads one ROS 2 root file (and its includes) into a :class:`LaunchTree`."""
+
+    # -- files -------------------------------------------------------------------------
+    def load(self, path: str, data: bytes | None = None) -> LaunchTree:
+        self._forget: list[Callable[[], None]] = []
+        try:
+            return super().load(path, data)
+        finally:
+            # The tree is read: no ``OpaqueFunction`` runs any more (``FileRead.forget``).
+            # Emptied as it goes: an interpreter refers back to this loader.
+            while self._forget:
+                self._forget.pop()()
+
+    def _read_file(self, absolute: str, data: bytes) -> FileRead:
+        read = super()._read_file(absolute, data)
+        if read.forget is not None:
+            self._forget.append(read.forget)
+        return read
 
     # -- transforms --------------------------------------------------------------------
     def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where,
@@ -187,7 +210,7 @@ class Ros2Loader(Ros2Runner):
         if costmap is not None:
             self.nodes.append(costmap)
         if package == "controller_manager" and documents:
-            self.nodes.extend(controllers_of(node, documents))
+            self.nodes.extend(controllers_of(node, documents, given.placed))
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
@@ -246,6 +269,7 @@ class Ros2Loader(Ros2Runner):
         places: list[tuple[str, int, int]] = [node_place] * len(scope.parameters)
         unread: list[str] = []
         documents: list[object] = []
+        placed: list[PlacedDocument] = []
         process: list[object] = []
         for group in groups:
             if isinstance(group, ParamsUnknown):
@@ -265,6 +289,7 @@ class Ros2Loader(Ros2Runner):
                 documents.append(document)
                 process.append(document)
                 shown = self._display(path)
+                placed.append(PlacedDocument(document, shown, keys))
                 for key, value, at in ros2_file_params_keyed(document, name, namespace):
                     params.append((key, value))
                     line_column = keys.get(at)
@@ -288,7 +313,7 @@ class Ros2Loader(Ros2Runner):
         own = params[:MAX_PARAMS]
         given = tuple(scope.parameters) + tuple(own)
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
-        return _NodeParams(given, lines, tuple(unread), documents, process)
+        return _NodeParams(given, lines, tuple(unread), documents, process, placed)
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:

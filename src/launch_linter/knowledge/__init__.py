@@ -150,6 +150,10 @@ class Entry(Record):
     tf_listener: bool
     """It looks up transforms at its own clock's time between frames its own configuration
     names, not a parameter (RViz's fixed frame and displays): its clock matters to tf."""
+    loads_controllers: bool
+    """It loads the ros2_control controllers its parameter files name (a controller
+    manager, a simulator's ros2_control plugin): a file it could not read leaves them
+    unknown, and the tree open."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -157,7 +161,7 @@ class Entry(Record):
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
-        "inputs", "tf_listener",
+        "inputs", "tf_listener", "loads_controllers",
     )
 
     def __init__(
@@ -187,6 +191,7 @@ class Entry(Record):
         looks_up_listed: tuple[tuple[str, str], ...] = (),
         inputs: tuple[str, ...] = (),
         tf_listener: bool = False,
+        loads_controllers: bool = False,
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -213,6 +218,7 @@ class Entry(Record):
         _set(self, "looks_up_listed", looks_up_listed)
         _set(self, "inputs", inputs)
         _set(self, "tf_listener", tf_listener)
+        _set(self, "loads_controllers", loads_controllers)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -416,6 +422,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         looks_up_listed=listed_pairs,
         inputs=_texts(data.get("inputs"), f"{where}.inputs"),
         tf_listener=bool(data.get("tf_listener", False)),
+        loads_controllers=bool(data.get("loads_controllers", False)),
     )
 
 

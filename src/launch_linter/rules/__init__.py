@@ -46,6 +46,7 @@ def _load() -> None:
         node_second_parent,
         optical_frame_rotation,
         parse_error,
+        plugin_frame_unprefixed,
         py_arguments_single_string,
         py_name_error,
         quaternion_order,

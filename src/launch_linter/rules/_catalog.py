@@ -46,6 +46,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("frame_param_slash", Category.TF),
     ("frame_without_publisher", Category.TF),
     ("robot_frame_collision", Category.TF),
+    ("plugin_frame_unprefixed", Category.TF),
     ("sim_time_mismatch", Category.TF),
     ("sim_time_not_forwarded", Category.TF),
     ("camera_frame_not_optical", Category.TF),

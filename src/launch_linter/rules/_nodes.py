@@ -174,6 +174,9 @@ def _view(context: RuleContext) -> NodeView:
         joint_states = joint_states or entry.publishes_joint_states
         sure, maybe = published(entry, node, distro=context.distro)
         if (maybe or any(e.signature is None for e in sure)
+                # A controller manager that could not read a parameter file: its
+                # controllers, and the edges they send, are unknown.
+                or (entry.loads_controllers and node.unread)
                 or (entry.publishes_description and publisher_prefix(node, context.distro)
                     is None)):
             # Edges not worked out, or a description's frames under an unknown prefix.

@@ -55,6 +55,9 @@ from launch_linter.rules._tree import edges_of, finding_on
 ID = "node_second_parent"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
+MAX_PUBLISHERS_PER_FRAME = 64
+"""Node edges of one child frame each new one is compared with (bounded work: thousands of
+controllers of one manager, one launch element, are no rivals of each other)."""
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -66,7 +69,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         earlier = by_child.setdefault(node_edge.child, [])
         other = next((e for e in earlier
                       if e.parent != node_edge.parent and rivals(e, node_edge)), None)
-        earlier.append(node_edge)
+        if len(earlier) < MAX_PUBLISHERS_PER_FRAME:
+            earlier.append(node_edge)
         if other is not None:
             yield finding_at_node(
                 node_edge.node,

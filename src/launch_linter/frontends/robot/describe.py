@@ -13,13 +13,8 @@ import re
 import typing
 from collections.abc import Callable, Hashable, Mapping, Sequence
 
-from launch_linter.frontends.params import (
-    CONTROLLER_MANAGER_NAME,
-    controllers_of,
-    read_yaml_file,
-    ros2_file_params,
-)
 from launch_linter.frontends.robot.alternatives import alternatives
+from launch_linter.frontends.robot.sim_control import simulated_controllers
 from launch_linter.frontends.robot.xacro_values import (
     DROPPED,
     FAULT_KINDS,
@@ -266,7 +261,7 @@ def attach_robot(tree: LaunchTree, packages: PackageIndex, cache: RobotCache | N
         problems_found = [problem if problem.path not in sites
                           else through_include(problem, sites[problem.path])
                           for problem in problems_found]
-    plugins = simulated_plugins(tree.nodes, robots, SearchedPrefixes(tf_prefixes))
+    plugins = simulated_plugins(tree.nodes, robots, SearchedPrefixes(tf_prefixes), display)
     return replace(tree, joints=tuple(joints), robots=tuple(robots),
                    problems=tree.problems + tuple(problems_found),
                    nodes=tree.nodes + tuple(plugins))
@@ -291,13 +286,15 @@ def _refusals(tree: LaunchTree, packages: PackageIndex, cache: RobotCache,
 
 
 def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel],
-                      tf_prefixes: SearchedPrefixes | None = None) -> list[NodeRecord]:
+                      tf_prefixes: SearchedPrefixes | None = None,
+                      display: Callable[[str], str] | None = None) -> list[NodeRecord]:
     """The Gazebo plugins of the descriptions, when the tree spawns a description into a
     simulator (a description only published by robot_state_publisher, as on the real
     robot, runs no plugin). Each runs under its description's condition and, when every
     spawner is conditional, the first spawner's; a ros2_control plugin's controller
-    parameter file gives its controllers. A ROS 1 plugin gets its robot namespace and
-    the ``tf_prefix`` found from there (``tf_prefixes``: those set in a namespace)."""
+    parameter files give its controllers (``display`` shows their paths). A ROS 1 plugin
+    gets its robot namespace and the ``tf_prefix`` found from there (``tf_prefixes``:
+    those set in a namespace)."""
     prefixes = tf_prefixes if tf_prefixes is not None else SearchedPrefixes(())
     spawners = [n for n in nodes if spawns_into_simulator(n)]
     if not spawners:
@@ -313,8 +310,9 @@ def simulated_plugins(nodes: Sequence[NodeRecord], robots: Sequence[RobotModel],
                              else plugin.condition & condition)
             if plugin.ros == 1:
                 plugin = _ros1_robot_namespace(plugin, robot.source, spawners, prefixes)
+            plugin, controllers = simulated_controllers(plugin, display)
             out.append(plugin)
-            out.extend(_simulated_controllers(plugin))
+            out.extend(controllers)
     return out
 
 
@@ -371,31 +369,6 @@ class SearchedPrefixes:
             if found is not None:
                 return found
         return ""
-
-
-_ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
-                         "libgz_ros2_control-system.so", "ign_ros2_control-system",
-                         "libign_ros2_control-system.so")
-
-
-def _simulated_controllers(plugin: NodeRecord) -> list[NodeRecord]:
-    """The controllers a simulated ros2_control plugin's ``<parameters>`` file gives
-    (its controller manager is named by ``controller_manager_name``, by default
-    ``controller_manager``)."""
-    if plugin.plugin not in _ROS2_CONTROL_PLUGINS:
-        return []
-    documents: list[object] = []
-    for key, path in plugin.params:
-        if key == "parameters" and path != UNKNOWN_VALUE:
-            document, why = read_yaml_file(path)
-            if why is None:
-                documents.append(document)
-    name = plugin.given("controller_manager_name") or CONTROLLER_MANAGER_NAME
-    params: list[tuple[str, str]] = []
-    for document in documents:
-        params.extend(ros2_file_params(document, name, plugin.namespace))
-    manager = replace(plugin, params=tuple(params))
-    return controllers_of(manager, documents)
 
 
 def read_description(source: DescriptionSource, packages: PackageIndex, cache: RobotCache,

@@ -290,6 +290,7 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
             if pose is not None:
                 params.append((SENSOR_POSE_PARAM, pose))
             namespace: str | None = "/"
+            lines: list[tuple[str, str, int, int]] = []
             for child in plugin.children:
                 inner = child.children if child.tag == "ros" else [child]
                 for element in inner:
@@ -304,12 +305,14 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                     elif element.tag in PLUGIN_TEXT_TAGS:
                         params.append((element.tag, UNKNOWN_VALUE if element.text is None
                                        else element.text))
+                        lines.append((element.tag, display(element.path), element.line,
+                                      element.column))
             out.append(NodeRecord(
                 display(plugin.path), plugin.line, plugin.column, SIMULATOR_PACKAGE, "",
                 plugin.attrib.get("name"), tuple(params),
                 outer & _condition(plugin.conditions), kind="gazebo_plugin",
                 plugin=filename, namespace=namespace,
-                ros=ros if ros is not None else _ros_of(plugin)))
+                ros=ros if ros is not None else _ros_of(plugin), param_lines=tuple(lines)))
             if len(out) >= MAX_PLUGINS:
                 return out
         out.extend(_gz_cameras(gazebo, display, outer, ros))
