@@ -45,7 +45,7 @@ def test_the_links_it_would_make_are_missing() -> None:
                  '\n<camera parent="base_link"><origin xyz="0 0 0"/></camera>'
                  + joint("j", "base_link", "cam_link"))
     (missing,) = lint(text, "noetic", "urdf_missing_link")
-    assert "cam_link" in missing.message  # type: ignore[attr-defined]
+    assert "cam_link" in missing.message and "<camera>" in missing.message  # type: ignore[attr-defined]
     assert lint(text, "melodic", "urdf_missing_link") == ()
 
 
