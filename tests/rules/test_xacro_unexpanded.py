@@ -109,3 +109,18 @@ def test_twenty_thousand_unprefixed_calls() -> None:
     found = lint(robot(link("a") + macro + calls), "noetic")
     # The expander keeps its first 1,000 problems.
     assert len(found) == 1_000 and time.perf_counter() - start < 60
+
+
+def test_a_directive_without_the_prefix() -> None:
+    text = robot('<property name="r" value="0.1"/>\n' + link("a") +
+                 '<xacro:macro name="m" params="*origin"><joint name="j" type="fixed">'
+                 '<parent link="a"/><child link="b"/>\n<insert_block name="origin"/>'
+                 '</joint></xacro:macro>' + link("b") + '<xacro:m><origin/></xacro:m>')
+    found = lint(text, "noetic")
+    assert [(f.line, f.message.split(":")[0]) for f in found] == [  # type: ignore[attr-defined]
+        (2, "<property> is the directive <xacro"), (4, "<insert_block> is the directive <xacro")]
+    assert "defines no property" in found[0].message  # type: ignore[attr-defined]
+    assert lint(text, "melodic") == ()
+    # Gazebo's <include> holds a <uri>: not xacro's.
+    assert lint(robot(link("a") + '<gazebo><include><uri>model://x</uri></include></gazebo>'),
+                "noetic") == ()

@@ -65,8 +65,8 @@ def check(context: RuleContext) -> Iterator[Finding]:
         links = first_by_name(robot.links)
         # Calls xacro left unexpanded (no xacro: prefix) may be what defines the link.
         calls = [f for f in robot.faults if f.kind is FaultKind.UNEXPANDED and f.name][:3]
-        unexpanded = "".join(f"; the call <{f.name}> at {f.path}:{f.line} is not expanded "
-                             "(written without xacro:) and may be what defines it"
+        unexpanded = "".join(f"; <{f.name}> at {f.path}:{f.line}, xacro written without "
+                             "xacro:, is not expanded and may be what defines it"
                              for f in calls)
         suggested = 0
         for joint in robot.joints:

@@ -2,7 +2,8 @@
 
 Two faults of the source that xacro does not always refuse:
 
-- A macro called without the ``xacro:`` prefix (``<ptu_d46 name="ptu"/>``). The xacro of
+- A macro called without the ``xacro:`` prefix (``<ptu_d46 name="ptu"/>``), or a directive
+  written so (``<insert_block name="origin"/>``, ``<property .../>``). The xacro of
   Noetic (1.14, ros/xacro noetic-devel 7045754) and of ROS 2 (2.x, the ros2 branch
   9d05b0e) calls a macro only for a tag that starts with ``xacro:``
   (``handle_macro_call``: ``elif not node.tagName.startswith('xacro:'): return False``);
@@ -23,7 +24,7 @@ from __future__ import annotations
 
 import re
 
-from launch_linter.frontends.robot.xacro_values import _Refused, _Table
+from launch_linter.frontends.robot.xacro_values import LEGACY_DIRECTIVES, _Refused, _Table
 from launch_linter.resolve.xml_safe import Element
 
 SILENT_LEXER_DISTROS = frozenset({"hydro", "indigo", "jade", "kinetic", "lunar"})
@@ -74,9 +75,17 @@ def unprefixed_call_of(element: Element, params: list[str]) -> bool:
     return set(element.attrib) <= names and len(element.children) == blocks
 
 
+DIRECTIVES = LEGACY_DIRECTIVES | {"include"}
+"""The xacro directives a legacy xacro reads without the prefix (an ``<include>`` only
+without element children: Gazebo's ``<include><uri>`` is not xacro's)."""
+
+
 def unprefixed_call(element: Element, table: _Table) -> bool:
-    """Whether the unprefixed ``element`` is a call of a macro defined by then that the
-    xacro of Noetic and ROS 2 leaves unexpanded (see :func:`unprefixed_call_of`)."""
+    """Whether the unprefixed ``element`` (one a legacy xacro reads as xacro's:
+    ``xacro_values.legacy_tag``) is a directive or a call of a macro defined by then that
+    the xacro of Noetic and ROS 2 leaves unexpanded (see :func:`unprefixed_call_of`)."""
+    if element.tag in DIRECTIVES:
+        return True
     macro = table.find_macro(element.tag)
     return macro is not None and unprefixed_call_of(element, macro.params)
 
