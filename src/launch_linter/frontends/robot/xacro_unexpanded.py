@@ -75,7 +75,7 @@ def unprefixed_call_of(element: Element, params: list[str]) -> bool:
     return set(element.attrib) <= names and len(element.children) == blocks
 
 
-DIRECTIVES = LEGACY_DIRECTIVES | {"include"}
+DIRECTIVES = LEGACY_DIRECTIVES.union({"include"})
 """The xacro directives a legacy xacro reads without the prefix (an ``<include>`` only
 without element children: Gazebo's ``<include><uri>`` is not xacro's)."""
 
