@@ -309,6 +309,10 @@ class Ros1Base:
         # "~" in paths, and $(env HOME) without --env is already unresolved.
         if "$(" not in text:
             return None
+        # Without an env-derived arg so far, only an ``$(env``/``$(optenv`` can answer: most
+        # values (``$(arg x)``, ``$(find p)/...``) skip the pattern.
+        if not self._env_args and "env" not in text:
+            return None
         for match in _ENV_REFERENCE.finditer(text):
             command, name = match.group(1), match.group(2)
             if command == "arg":
