@@ -347,6 +347,10 @@ class FaultKind(str, Enum):
     """A macro's body reads its own parameter X as ``$(arg X)``, which reads xacro args
     only: the value a call gives X is ignored (and xacro stops where no arg X is
     declared: then a ``REFUSED`` fault with the same path, line and name)."""
+    UNEXPANDED = "unexpanded"
+    """xacro goes on but leaves written xacro unexpanded or drops its text: a macro called
+    without the ``xacro:`` prefix (Noetic's and ROS 2's xacro; ``name`` is the macro), the
+    text after a ``${``/``$(`` never closed (xacro before 1.13.5)."""
 
 
 class DescriptionFault(Record):

@@ -79,6 +79,7 @@ def _load() -> None:
         urdf_root,
         xacro_error,
         xacro_param_as_arg,
+        xacro_unexpanded,
         xacro_unused_block,
     )
 

@@ -43,6 +43,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.model.robot import FaultKind
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._robot import first_by_name, judged, level, refused, robots_of
 
@@ -62,6 +63,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if not robot.complete or not judged(robot):
             continue
         links = first_by_name(robot.links)
+        # Calls xacro left unexpanded (no xacro: prefix) may be what defines the link.
+        calls = [f for f in robot.faults if f.kind is FaultKind.UNEXPANDED and f.name][:3]
+        unexpanded = "".join(f"; <{f.name}> at {f.path}:{f.line}, xacro written without "
+                             "xacro:, is not expanded and may be what defines it"
+                             for f in calls)
         suggested = 0
         for joint in robot.joints:
             if not joint.condition.always:
@@ -78,10 +84,10 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 yield Finding(
                     joint.path, joint.line, joint.column,
                     f"joint '{joint.name}' names {end} link '{name}', which the description "
-                    f"does not define{_closest(close)}; " + refused(said),
+                    f"does not define{_closest(close)}{unexpanded}; " + refused(said),
                     joint.name,
                     tuple(Location(links[n].path, links[n].line, links[n].column)
-                          for n in close),
+                          for n in close) + tuple(Location(f.path, f.line, 1) for f in calls),
                     severity=level(robot),
                 )
                 break

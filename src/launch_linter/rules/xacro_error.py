@@ -10,7 +10,9 @@ block, a `$(arg x)` that no `xacro:arg` declares and the xacro call does not giv
 math names, the Python builtins and namespaces it exposes, `load_yaml`; listed with their
 source in `frontends/robot/xacro_globals.py`, for Noetic's and ROS 2's xacro only), and a
 `${...}` that xacro evaluates (in a macro, once it is called) whose brackets or quotes do
-not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`).
+not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`), and a `${` or
+`$(` never closed (`rpy="0 ${pi/2 0"`), which xacro's lexer cannot read (xacro 1.13.5 and
+newer; the older xacro of Kinetic and Lunar drops the rest: `xacro_unexpanded`).
 It is an error when a launch file loads the description (with or without a
 robot_state_publisher: roslaunch runs a `<param command="xacro ...">` when it loads the
 file, for a Gazebo spawner as much as for robot_state_publisher); info when it sits under an
@@ -25,8 +27,9 @@ which reports it at the same line and level and says what to write instead.
 ## Why is this bad?
 xacro stops with an error (`unknown macro name: xacro:x`, `Undefined parameters [x]`,
 `Undefined substitution argument`, `name 'x' is not defined`, `unmatched ')' ... when
-evaluating expression`): the launch file's xacro command fails, so `robot_description` is
-never set and robot_state_publisher publishes nothing (ROS 1 `roslaunch` stops with
+evaluating expression`, `invalid expression`): the launch file's xacro command fails, so
+`robot_description` is never set and robot_state_publisher publishes nothing (ROS 1
+`roslaunch` stops with
 "Invalid <param> tag: Cannot load command parameter"; ROS 2 `ros2 launch` stops on the
 failed `Command` substitution).
 

@@ -16,10 +16,8 @@ from collections.abc import Callable, Hashable, Mapping, Sequence
 from launch_linter.frontends.robot.alternatives import alternatives
 from launch_linter.frontends.robot.sim_control import simulated_controllers
 from launch_linter.frontends.robot.xacro_values import (
-    DROPPED,
     FAULT_KINDS,
     KEPT,
-    PARAM_AS_ARG,
     REFUSED,
     TF_PREFIX_PARAM,
 )
@@ -447,7 +445,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             f"{'; '.join(joint.reasons)[:300]}",
         ))
     elements, names_known = elements_of(root, display, source.condition)
-    followed = all(p.kind in (KEPT, DROPPED, PARAM_AS_ARG) for p in problems)
+    followed = all(p.kind in (KEPT, *FAULT_KINDS) and p.kind != REFUSED for p in problems)
     robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
                        faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found

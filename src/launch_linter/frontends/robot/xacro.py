@@ -29,6 +29,7 @@ from launch_linter.frontends.robot.xacro_macros import (
     never_inserted,
     params_read_as_args,
 )
+from launch_linter.frontends.robot.xacro_unexpanded import lexed, unprefixed_call
 from launch_linter.frontends.robot.xacro_values import (
     _GLOB,
     _MATH_PREFIX,
@@ -47,6 +48,7 @@ from launch_linter.frontends.robot.xacro_values import (
     PARAM_AS_ARG,
     PLUGIN_TEXT_TAGS,
     REFUSED,
+    UNEXPANDED,
     UNKNOWN,
     ExpandedNode,
     Expansion,
@@ -224,6 +226,9 @@ class XacroExpander:
         if "$" not in text:
             return text
         self._charge()
+        text, dropped = lexed(text, self.env.get("ROS_DISTRO"))
+        if dropped is not None:
+            self._problem(self._path, self._line, dropped, UNEXPANDED)
         parts: list[str] = []
         position = 0
         size = 0  # of the parts so far (summing them per token was quadratic)
@@ -374,6 +379,8 @@ class XacroExpander:
             if not tag.startswith(_PREFIX) and legacy_tag(element, table):
                 if self._legacy:
                     tag = _PREFIX + tag
+                elif unprefixed_call(element, table):
+                    self._problem(path, element.line, f"<{tag}>", UNEXPANDED, conditions, tag)
                 # A legacy xacro (distribution not given) would define names here.
                 self._open = self._open or "ROS_DISTRO" not in self.env
             if not tag.startswith(_PREFIX):
@@ -626,17 +633,14 @@ class XacroExpander:
             return _Property(None, None, unknown.reason)
 
 
-def expand(path: str, args: Mapping[str, str | None],
-           find: Callable[[str], str | None],
+def expand(path: str, args: Mapping[str, str | None], find: Callable[[str], str | None],
            env: Mapping[str, str] | None = None, data: bytes | None = None,
-           locate: Callable[[str], str | None] | None = None,
-           budget: Budget | None = None,
+           locate: Callable[[str], str | None] | None = None, budget: Budget | None = None,
            display: Callable[[str], str] | None = None) -> Expansion:
     """Expand the xacro (or plain URDF) file ``path`` with ``args`` (``name:=value``);
-    ``data`` is expanded as if it were that file (text linted by ``lint_text``);
-    ``locate`` maps an included path that is not there to the file installed there;
-    ``budget``: the launch tree's, charged besides the expansion's own bounds;
-    ``display`` shows a path a message quotes."""
+    ``data`` is expanded as if it were that file (text linted by ``lint_text``); ``locate``
+    maps an included path that is not there to the file installed there; ``budget``: the
+    launch tree's, besides the expansion's own bounds; ``display`` shows a quoted path."""
     return XacroExpander(args, find, env, locate, budget, display).expand(path, data)
 
 

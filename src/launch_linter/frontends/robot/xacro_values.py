@@ -126,7 +126,10 @@ DROPPED = "dropped"
 """A problem kind: the real xacro silently drops content here (a block never inserted)."""
 PARAM_AS_ARG = "param_as_arg"
 """A problem kind: a macro reads its own parameter as ``$(arg)``, which never sees it."""
-FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG)
+UNEXPANDED = "unexpanded"
+"""A problem kind: xacro goes on but leaves written xacro unexpanded or drops its text (a
+macro call without the prefix, a ``${`` never closed: see ``xacro_unexpanded``)."""
+FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG, UNEXPANDED)
 """The kinds that are faults of the source itself."""
 
 
@@ -148,11 +151,12 @@ class XacroProblem(Record):
     fatal: bool
     """True when the expansion stopped (a bound was reached or the root is unreadable)."""
     kind: str
-    """``UNKNOWN``, ``KEPT``, ``REFUSED``, ``DROPPED`` or ``PARAM_AS_ARG``."""
+    """``UNKNOWN``, ``KEPT`` or one of the ``FAULT_KINDS``."""
     conditions: tuple[str, ...]
     """The undecided ``xacro:if``/``xacro:unless`` texts around it (see ExpandedNode)."""
     name: str | None
-    """The arg of a refused ``$(arg)`` or of a ``PARAM_AS_ARG`` use."""
+    """The arg of a refused ``$(arg)`` or of a ``PARAM_AS_ARG`` use; the macro of an
+    ``UNEXPANDED`` call."""
 
     __slots__ = ("path", "line", "message", "fatal", "kind", "conditions", "name")
 
