@@ -40,15 +40,17 @@ MAX_YAML_DEPTH = 64
 def read_yaml_data(path: str) -> object:
     """The YAML document at ``path`` as evaluator values (dicts readable by attribute,
     lists, text, numbers, booleans, None); raises :class:`_Unknown` when it is not read."""
+    # The file first: a missing file is missing with or without PyYAML (the standalone
+    # linter, which runs without it, then says what the installed one says).
+    try:
+        data = read_file_within(path, MAX_YAML_BYTES)
+    except OSError as exc:  # FileTooLarge included
+        raise _Unknown(f"load_yaml({path!r}): {exc.strerror or exc}") from None
     try:
         # Imported on use: PyYAML stays out of the standard-library core.
         import yaml  # type: ignore[import-untyped]
     except ImportError:
         raise _Unknown(f"load_yaml({path!r}): reading YAML needs PyYAML") from None
-    try:
-        data = read_file_within(path, MAX_YAML_BYTES)
-    except OSError as exc:  # FileTooLarge included
-        raise _Unknown(f"load_yaml({path!r}): {exc.strerror or exc}") from None
     try:
         document: Any = yaml.load(data.decode("utf-8", "replace"), Loader=_loader(yaml))
     except (yaml.YAMLError, RecursionError, ValueError) as exc:
