@@ -18,6 +18,7 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
@@ -50,6 +51,7 @@ from launch_linter.frontends.ros2_actions import (
     STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
     Component,
+    FileRead,
     Include,
     Params,
     ParamsFile,
@@ -72,7 +74,7 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
-from launch_linter.model.launch import Forwarded
+from launch_linter.model.launch import Forwarded, LaunchTree
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
@@ -112,6 +114,23 @@ class _NodeParams(NamedTuple):
 
 class Ros2Loader(Ros2Runner):
     """Loads one ROS 2 root file (and its includes) into a :class:`LaunchTree`."""
+
+    # -- files -------------------------------------------------------------------------
+    def load(self, path: str, data: bytes | None = None) -> LaunchTree:
+        self._forget: list[Callable[[], None]] = []
+        try:
+            return super().load(path, data)
+        finally:
+            # The tree is read: no ``OpaqueFunction`` runs any more (``FileRead.forget``).
+            # Emptied as it goes: an interpreter refers back to this loader.
+            while self._forget:
+                self._forget.pop()()
+
+    def _read_file(self, absolute: str, data: bytes) -> FileRead:
+        read = super()._read_file(absolute, data)
+        if read.forget is not None:
+            self._forget.append(read.forget)
+        return read
 
     # -- transforms --------------------------------------------------------------------
     def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where,
