@@ -49,6 +49,8 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("plugin_frame_unprefixed", Category.TF),
     ("sim_time_mismatch", Category.TF),
     ("sim_time_not_forwarded", Category.TF),
+    ("sim_clock_not_bridged", Category.TF),
+    ("node_executable_missing", Category.LAUNCH),
     ("camera_frame_not_optical", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),

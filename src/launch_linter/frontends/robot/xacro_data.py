@@ -40,7 +40,8 @@ MAX_YAML_DEPTH = 64
 def read_yaml_data(path: str) -> object:
     """The YAML document at ``path`` as evaluator values (dicts readable by attribute,
     lists, text, numbers, booleans, None); raises :class:`_Unknown` when it is not read."""
-    # The file first: a missing one is said as missing, with or without PyYAML.
+    # The file first: a missing file is missing with or without PyYAML (the standalone
+    # linter, which runs without it, then says what the installed one says).
     try:
         data = read_file_within(path, MAX_YAML_BYTES)
     except OSError as exc:  # FileTooLarge included

@@ -1,0 +1,93 @@
+"""A node whose executable its package's release for the target distribution lacks.
+
+## What it does
+Reports a launched node (ROS 1 `type`, ROS 2 `executable`) of a package whose installed
+executables for the target distribution (`--ros-distro`, the `ros-distro` key or
+`ROS_DISTRO`) the knowledge base knows, read from the package's build file
+(`knowledge/programs.py`, docs/knowledge.md), when that executable is not among them:
+robot_state_publisher's `state_publisher`, built until Melodic (1.14) and gone from
+Noetic's release (1.15.0 installs `robot_state_publisher` alone; ROS 2 never had it).
+An error when the distribution is known; without one, an info when a known ROS 1
+release no longer installs it.
+
+## Why is this bad?
+roslaunch cannot start the node ("cannot launch node of type [robot_state_publisher/
+state_publisher]: can't locate node [state_publisher]") and launches the rest without
+it; ros2 launch stops at the executable it cannot find in the package's libexec folder.
+Nothing then publishes what the node would: for robot_state_publisher, the robot's link
+transforms.
+
+## Example
+```xml
+<launch>
+  <node name="robot_state_publisher" pkg="robot_state_publisher" type="state_publisher"/>
+</launch>
+```
+
+## Use instead
+```xml
+<launch>
+  <node name="robot_state_publisher" pkg="robot_state_publisher"
+        type="robot_state_publisher"/>
+</launch>
+```
+
+## Known problems
+A source checkout of an older release in the workspace shadows the installed package
+and may still build the old executable.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launch_linter.knowledge.programs import installed
+from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._nodes import finding_at_node
+
+ID = "node_executable_missing"
+CATEGORY = Category.LAUNCH
+SEVERITY = Severity.ERROR
+EXAMPLE_PATH = "example.launch"
+EXAMPLE_DISTRO = "noetic"
+
+
+def _distro_of(context: RuleContext, ros: int | None) -> str | None:
+    """The target distribution when it is one of the node's ROS version."""
+    distro = context.distro
+    if (ros == 1 and distro in ROS1_DISTROS) or (ros == 2 and distro in ROS2_DISTROS):
+        return distro
+    return None
+
+
+def check(context: RuleContext) -> Iterator[Finding]:
+    for node in context.tree.nodes:
+        if node.kind != "node" or node.plugin is not None or not node.executable:
+            continue
+        distro = _distro_of(context, node.ros)
+        if distro is not None:
+            fact = installed(node.package, node.ros, distro)
+            if fact is None or node.executable in fact.executables:
+                continue
+            yield finding_at_node(node, (
+                f"{node.package}'s release for {distro.capitalize()} installs no "
+                f"executable '{node.executable}' (only {', '.join(fact.executables)}): "
+                f"the node cannot start; use "
+                f"{node.package}/{fact.executables[0]}"))
+            continue
+        if node.ros != 1 or context.distro is not None:
+            continue
+        newest = installed(node.package, 1, ROS1_DISTROS[-1])
+        if newest is None or node.executable in newest.executables:
+            continue
+        gone_from = next((d for d in ROS1_DISTROS
+                          if (f := installed(node.package, 1, d)) is not None
+                          and node.executable not in f.executables), ROS1_DISTROS[-1])
+        yield Finding(node.path, node.line, node.column, (
+            f"{node.package} installs no executable '{node.executable}' from "
+            f"{gone_from.capitalize()} on (only {', '.join(newest.executables)}): there the "
+            f"node cannot start (set --ros-distro to know); use "
+            f"{node.package}/{newest.executables[0]}"), node=node.name,
+            severity=Severity.INFO)
