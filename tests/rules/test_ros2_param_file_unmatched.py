@@ -35,35 +35,59 @@ KEYED = "{key}:\n  ros__parameters:\n    base_frame: base_link\n"
 def test_a_key_naming_another_node_is_reported_at_the_key(tmp_path: Path) -> None:
     launch = PY.format(nodes=NODE.format(extra=", name='driver'"))
     assert run(tmp_path, launch, KEYED.format(key="driver_node")) == [
-        ("params.yaml", 1, "warning")]
-    # Nested: at the innermost key (the node's own name under its namespace key).
+        ("params.yaml", 1, "error")]
+    # Nested: at the innermost key; info, since a namespace given may make it match.
     nested = "# x\nother:\n  driver_node:\n    ros__parameters:\n      a: 1\n"
-    assert run(tmp_path, launch, nested) == [("params.yaml", 3, "warning")]
+    assert run(tmp_path, launch, nested) == [("params.yaml", 3, "info")]
 
 
 def test_keys_that_match_as_rclcpp_matches_them_are_silent(tmp_path: Path) -> None:
     launch = PY.format(nodes=NODE.format(extra=", name='driver', namespace='robot'"))
-    for key in ("driver_node", "/robot/driver_x", "driver"):
-        assert run(tmp_path, launch, KEYED.format(key=key)) == [("params.yaml", 1, "warning")]
+    # Another name: an error whatever the namespace; a key of the node's own name or with
+    # a namespace part misses only with these launch arguments (a namespace may change).
+    for key, level in (("driver_node", "error"), ("/robot/driver_x", "info"),
+                       ("driver", "info"), ("/*/*/driver", "info")):
+        assert run(tmp_path, launch, KEYED.format(key=key)) == [("params.yaml", 1, level)]
     for key in ("/**", "/robot/driver", "robot/driver", "/*/driver", "/**/driver", "/robot/*"):
         assert run(tmp_path, launch, KEYED.format(key=key)) == [], key
     nested = "robot:\n  driver:\n    ros__parameters:\n      a: 1\n"
     assert run(tmp_path, launch, nested) == []
 
 
-def test_a_file_shared_by_nodes_is_judged_for_each_node(tmp_path: Path) -> None:
+def test_a_name_from_a_launch_argument_is_info(tmp_path: Path) -> None:
+    launch = PY.replace("def generate_launch_description():",
+                        "from launch.substitutions import LaunchConfiguration as C\n"
+                        "from launch.actions import DeclareLaunchArgument as D\n"
+                        "def generate_launch_description():").format(
+        nodes="D('n', default_value='driver'), " + NODE.format(extra=", name=C('n')"))
+    assert run(tmp_path, launch, KEYED.format(key="driver_node")) == [
+        ("params.yaml", 1, "info")]
+
+
+def test_a_file_shared_by_nodes_is_reported_only_when_it_reaches_none(tmp_path: Path) -> None:
     shared = KEYED.format(key="left") + KEYED.format(key="right")
     two = ", ".join(NODE.format(extra=f", name='{n}'") for n in ("left", "right"))
     assert run(tmp_path, PY.format(nodes=two), shared) == []
+    # A third node given the same file takes nothing from it, but the file was written
+    # for the others (teleop_twist_joy's launch gives joy_node the teleop node's file).
     three = two + ", " + NODE.format(extra=", name='middle'")
-    assert run(tmp_path, PY.format(nodes=three), shared) == [("params.yaml", 1, "warning")]
+    assert run(tmp_path, PY.format(nodes=three), shared) == []
+    # Reaching none of the nodes it is given to: each node reported.
+    apart = ", ".join(NODE.format(extra=f", name='{n}'") for n in ("up", "down"))
+    assert run(tmp_path, PY.format(nodes=apart), shared) == [
+        ("params.yaml", 1, "error"), ("params.yaml", 1, "error")]
+    # A node of unknown name given the file may take it: silent.
+    unknown = apart + ", " + NODE.format(extra="")
+    assert run(tmp_path, PY.format(nodes=unknown), shared) == []
 
 
 def test_pushed_namespace_is_part_of_the_name(tmp_path: Path) -> None:
     pushed = ("GroupAction([PushRosNamespace('robot'), "
               + NODE.format(extra=", name='driver'") + "])")
     assert run(tmp_path, PY.format(nodes=pushed), KEYED.format(key="driver")) == [
-        ("params.yaml", 1, "warning")]
+        ("params.yaml", 1, "info")]
+    assert run(tmp_path, PY.format(nodes=pushed), KEYED.format(key="driver_node")) == [
+        ("params.yaml", 1, "error")]
     assert run(tmp_path, PY.format(nodes=pushed), KEYED.format(key="robot/driver")) == []
 
 
@@ -92,7 +116,7 @@ def test_xml_param_from_and_composable_nodes(tmp_path: Path) -> None:
     xml = ('<launch>\n  <node pkg="p" exec="e" name="driver">\n'
            '    <param from="$(dirname)/params.yaml"/>\n  </node>\n</launch>\n')
     assert run(tmp_path, xml, KEYED.format(key="driver_node"), "a.launch.xml") == [
-        ("params.yaml", 1, "warning")]
+        ("params.yaml", 1, "error")]
     assert run(tmp_path, xml.replace('name="driver"', 'name="driver" ros_args="-r __node:=q"'),
                KEYED.format(key="driver_node"), "a.launch.xml") == []
     composable = ("ComposableNodeContainer(name='c', namespace='', package='rclcpp_components',"
@@ -103,7 +127,7 @@ def test_xml_param_from_and_composable_nodes(tmp_path: Path) -> None:
                     "Node, PushRosNamespace, ComposableNodeContainer\n"
                     "from launch_ros.descriptions import ComposableNode")
     assert run(tmp_path, py.format(nodes=composable.format(name="driver")),
-               KEYED.format(key="driver_node")) == [("params.yaml", 1, "warning")]
+               KEYED.format(key="driver_node")) == [("params.yaml", 1, "error")]
     assert run(tmp_path, py.format(nodes=composable.format(name="driver_node")),
                KEYED.format(key="driver_node")) == []
 

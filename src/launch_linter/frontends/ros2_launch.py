@@ -112,6 +112,11 @@ own names (a controller manager's controllers, a container's components): a file
 whose keys names the process's own node still reaches them."""
 
 
+def _literal(subs: Subs | None) -> bool:
+    """Written as text: no launch configuration or other substitution in it."""
+    return subs is not None and all(isinstance(sub, Text) for sub in subs)
+
+
 class _NodeParams(NamedTuple):
     """What :meth:`Ros2Loader._node_params` reads: the parameters in order (SetParameter's
     first), where each is written (``NodeRecord.param_lines``), why some are not read,
@@ -127,6 +132,8 @@ class _NodeParams(NamedTuple):
     unmatched: tuple[tuple[str, tuple[tuple[str, int, int], ...]], ...] = ()
     """Each parameter file none of whose node keys matches the node (its shown path and
     node keys with their places), when its name and namespace are known."""
+    files: tuple[str, ...] = ()
+    """The parameter files read, shown."""
 
 
 class Ros2Loader(Ros2Runner):
@@ -135,11 +142,15 @@ class Ros2Loader(Ros2Runner):
     def __init__(self, options: LoadOptions) -> None:
         super().__init__(options)
         self.unmatched_param_files: list[UnmatchedParamFile] = []
+        self.reached_param_files: set[str] = set()
+        """Parameter files that some node of the tree takes (or may take) a section of."""
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
-        return replace(super()._tree(status, undeclared),
-                       unmatched_param_files=tuple(self.unmatched_param_files))
+        # A file that reaches another node it is given to was written for that one.
+        unmatched = tuple(u for u in self.unmatched_param_files
+                          if u.file not in self.reached_param_files)
+        return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched)
 
     # -- transforms --------------------------------------------------------------------
     def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where,
@@ -210,9 +221,10 @@ class Ros2Loader(Ros2Runner):
             included_at=frame.sites,
         )
         self.nodes.append(node)
-        if (name is not None and not action.may_rename and package not in MANY_NODE_PACKAGES
-                and (package, executable) not in EMBEDDED_COSTMAPS):
-            self._unmatched(node, executable or "", given.unmatched)
+        checked = (name is not None and not action.may_rename
+                   and package not in MANY_NODE_PACKAGES
+                   and (package, executable) not in EMBEDDED_COSTMAPS)
+        self._unmatched(node, executable or "", given, checked, _literal(action.name))
         documents = given.documents
         costmap = embedded_costmap(node, given.process, scope.parameters)
         if costmap is not None:
@@ -223,14 +235,19 @@ class Ros2Loader(Ros2Runner):
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
 
-    def _unmatched(self, node: NodeRecord, program: str,
-                   files: tuple[tuple[str, tuple[tuple[str, int, int], ...]], ...]) -> None:
-        """Keep the parameter files that give ``node``, named in its action, nothing."""
-        for shown, keys in files:
+    def _unmatched(self, node: NodeRecord, program: str, given: _NodeParams,
+                   checked: bool, name_literal: bool) -> None:
+        """Keep the parameter files that give ``node`` nothing when its name as launched
+        is known (``checked``); the others it is given reach it, or may."""
+        missed = {shown for shown, _ in given.unmatched} if checked else set()
+        self.reached_param_files.update(f for f in given.files if f not in missed)
+        if not checked:
+            return
+        for shown, keys in given.unmatched:
             self.unmatched_param_files.append(UnmatchedParamFile(
                 node.path, node.line, node.column, node.condition,
                 node_full_name(node.name, node.namespace), node.package, program, shown,
-                keys))
+                keys, name_literal))
 
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         """An include, its arguments kept as :class:`Forwarded` (marked not followed when
@@ -288,6 +305,7 @@ class Ros2Loader(Ros2Runner):
         documents: list[object] = []
         process: list[object] = []
         unmatched: list[tuple[str, tuple[tuple[str, int, int], ...]]] = []
+        files: list[str] = []
         for group in groups:
             if isinstance(group, ParamsUnknown):
                 unread.append(group.reason)
@@ -306,6 +324,7 @@ class Ros2Loader(Ros2Runner):
                 documents.append(document)
                 process.append(document)
                 shown = self._display(path)
+                files.append(shown)
                 others = (None if name is None or namespace is None
                           else unmatched_node_keys(document, name, namespace))
                 if others is not None:
@@ -334,7 +353,8 @@ class Ros2Loader(Ros2Runner):
         own = params[:MAX_PARAMS]
         given = tuple(scope.parameters) + tuple(own)
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
-        return _NodeParams(given, lines, tuple(unread), documents, process, tuple(unmatched))
+        return _NodeParams(given, lines, tuple(unread), documents, process, tuple(unmatched),
+                           tuple(files))
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
@@ -386,8 +406,8 @@ class Ros2Loader(Ros2Runner):
                 plugin=plugin_text, unread=given.unread,
                 namespace=None if pending else namespace, ros=2, param_lines=given.lines,
                 included_at=here.sites))
-            if name is not None:
-                self._unmatched(self.nodes[-1], plugin_text, given.unmatched)
+            self._unmatched(self.nodes[-1], plugin_text, given, name is not None,
+                            _literal(component.name))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

@@ -156,7 +156,8 @@ class UnmatchedParamFile(Record):
     node keys (the keys above ``ros__parameters``) matches the node's full name ``node``
     as rclcpp matches them: the node takes nothing from it. At the node (``path``,
     ``line``, ``column``); ``file`` is the parameter file, ``keys`` its node keys as
-    matched (nested keys joined with ``/``) with where each is written (0, 0 unknown)."""
+    matched (nested keys joined with ``/``) with where each is written (0, 0 unknown);
+    ``name_literal``: the node's name is written as text (no launch configuration in it)."""
 
     path: str
     line: int
@@ -168,13 +169,14 @@ class UnmatchedParamFile(Record):
     """The executable, or the composable node's plugin."""
     file: str
     keys: tuple[tuple[str, int, int], ...]
+    name_literal: bool
 
     __slots__ = ("path", "line", "column", "condition", "node", "package", "executable",
-                 "file", "keys")
+                 "file", "keys", "name_literal")
 
     def __init__(self, path: str, line: int, column: int, condition: Condition, node: str,
                  package: str, executable: str, file: str,
-                 keys: tuple[tuple[str, int, int], ...]) -> None:
+                 keys: tuple[tuple[str, int, int], ...], name_literal: bool = False) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
         _set(self, "column", column)
@@ -184,6 +186,7 @@ class UnmatchedParamFile(Record):
         _set(self, "executable", executable)
         _set(self, "file", file)
         _set(self, "keys", keys)
+        _set(self, "name_literal", name_literal)
 
 
 class LaunchTree(Record):
