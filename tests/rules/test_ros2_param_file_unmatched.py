@@ -119,6 +119,11 @@ def test_xml_param_from_and_composable_nodes(tmp_path: Path) -> None:
         ("params.yaml", 1, "error")]
     assert run(tmp_path, xml.replace('name="driver"', 'name="driver" ros_args="-r __node:=q"'),
                KEYED.format(key="driver_node"), "a.launch.xml") == []
+    yaml = ("launch:\n- node:\n    pkg: p\n    exec: e\n    name: driver\n    param:\n"
+            "    - from: $(dirname)/params.yaml\n")
+    assert run(tmp_path, yaml, KEYED.format(key="driver_node"), "a.launch.yaml") == [
+        ("params.yaml", 1, "error")]
+    assert run(tmp_path, yaml, KEYED.format(key="driver"), "a.launch.yaml") == []
     composable = ("ComposableNodeContainer(name='c', namespace='', package='rclcpp_components',"
                   " executable='component_container', composable_node_descriptions=["
                   "ComposableNode(package='p', plugin='p::P', name='{name}', "
