@@ -4,7 +4,7 @@
     python benchmarks/bench_parse.py [--corpus DIR] [--runs 5] [--every N]
                                      [--profile N [--format ros1|python] [--measure read|check]]
                                      [--repeat N --format ros1|python --measure floor|read|check]
-                                     [--against SRC [--rounds N]]
+                                     [--against SRC [--rounds N]] [--collect]
 
 Over the latest version of every corpus file (``manifest.jsonl``, ``latest: true``;
 ``../shared/corpus`` relative to the repository root by default), grouped by format (the
@@ -40,6 +40,11 @@ both see the same load; it prints
 each run's ratios (front-end / floor and check / floor, medians of its passes) and, per
 format, the median over the rounds of this checkout's ratio divided by SRC's.
 
+``--collect`` ends every timed pass with ``gc.collect()``: a pass then pays for the reference
+cycles it leaves, which the collector would otherwise free during a later pass (charged
+to whichever measure runs then; the collector runs every 50,000 allocations, as the
+command sets it).
+
 ``--repeat N`` runs only that pass, N times after one warm-up pass, and prints nothing: for
 an instruction counter, which the machine's load does not move (docs/performance.md):
 
@@ -56,6 +61,7 @@ from __future__ import annotations
 
 import argparse
 import cProfile
+import gc
 import json
 import os
 import pstats
@@ -137,10 +143,23 @@ def make_check_pass() -> Pass:
     return check_pass
 
 
-def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass]) -> dict[str, float]:
+def collecting(function: Pass) -> Pass:
+    """``function``, then a collection of the reference cycles it left (``--collect``)."""
+
+    def collected(paths: Sequence[str]) -> None:
+        function(paths)
+        gc.collect()
+
+    return collected
+
+
+def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass],
+            collect: bool = False) -> dict[str, float]:
     """Print the figures of ``name``'s files; return each pass's median ratio to the floor."""
     floor_label, floor = FLOORS[name]
     measures = {floor_label: floor, **passes}
+    if collect:
+        measures = {label: collecting(function) for label, function in measures.items()}
     cpu: Timings = {label: [] for label in measures}
     wall: Timings = {label: [] for label in measures}
     for _ in range(runs):
@@ -171,7 +190,8 @@ RATIOS = "ratios: "
 def compare(ns: argparse.Namespace, against: str) -> int:
     """``--against``: this checkout and ``against`` in alternating runs."""
     argv = [sys.executable, os.path.abspath(__file__), "--corpus", ns.corpus, "--runs",
-            str(ns.runs), "--every", str(ns.every), "--no-roslaunch"]
+            str(ns.runs), "--every", str(ns.every), "--no-roslaunch",
+            *(["--collect"] if ns.collect else [])]
     sides = {"this": os.path.join(ROOT, "src"), "other": os.path.abspath(against)}
     found: dict[str, list[dict[str, dict[str, float]]]] = {side: [] for side in sides}
     print(f"this: {sides['this']}; other: {sides['other']}; {ns.rounds} rounds; "
@@ -225,6 +245,9 @@ def main() -> int:
     parser.add_argument("--against", metavar="SRC",
                         help="compare with another checkout's src, in alternating runs")
     parser.add_argument("--rounds", type=int, default=3, help="rounds of --against")
+    parser.add_argument("--collect", action="store_true",
+                        help="end every timed pass with gc.collect(), so that a pass pays "
+                             "for the reference cycles it leaves")
     ns = parser.parse_args()
     if ns.against:
         return compare(ns, ns.against)
@@ -251,7 +274,7 @@ def main() -> int:
     ratios = {}
     for name, paths in groups.items():
         if paths:
-            ratios[name] = measure(name, paths, ns.runs, passes)
+            ratios[name] = measure(name, paths, ns.runs, passes, ns.collect)
     print(RATIOS + json.dumps(ratios))
     ros1 = groups["ROS 1 XML"]
     measured = None if ns.no_roslaunch or not ros1 else roslaunch_per_file(ros1, ns.runs)

@@ -269,7 +269,7 @@ class Ros1Loader(Ros1Tags):
                 return
             if located.path is None:
                 self._error(context, element,
-                            f"included file not found: {self._quoted(path)}")
+                            f"included file not found: {self._quoted(path)}", attribute="file")
                 return
             absolute = located.path
         call = include_call(absolute, child.args)

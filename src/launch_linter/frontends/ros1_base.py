@@ -65,8 +65,10 @@ def relative_to_cwd(path: str) -> str:
 
 
 _VALUE_ERRORS = ("Invalid <param> tag", "included file not found", "<group> tag has an empty",
-                 "<node> tag has an empty", "cannot turn")
-"""Errors about a value that may come from the environment (a syntax error never does)."""
+                 "<node> tag has an empty", "cannot turn",
+                 "error loading <rosparam> tag: file does not exist")
+"""Errors about a value that may come from the environment or the command line (a syntax
+error never does)."""
 _ENV_REFERENCE = re.compile(r"\$\((optenv|env|arg)\s+([^\s)]+)")
 """``$(optenv NAME ...)``, ``$(env NAME)``, ``$(arg NAME)`` in attribute text."""
 
@@ -227,6 +229,9 @@ class Ros1Base:
         self._missing_reported: set[tuple[str, str]] = set()
         self._element: Element | None = None
         self._env_args: dict[str, str] = {}
+        self._blank_args: dict[str, str] = {}
+        """Args left at an empty default of the root file (directly or through other
+        args) -> the root's arg whose default it is."""
         self._child_values: dict[Element, Value] = {}
         """The resolved ``value`` of each ``<param>`` inside a node whose text names no
         anonymous name: the node's record reads it again (see ``_frame_node``)."""
@@ -253,17 +258,42 @@ class Ros1Base:
         site = self._included_at.get(path) if rule == "unresolved" else None
         self.problems.append(problem if site is None else through_include(problem, site))
 
-    def _error(self, context: _Context, element: Element | None, message: str) -> None:
-        source = (
-            None if element is None or self.options.study_errors
-            or not message.startswith(_VALUE_ERRORS) else self._env_source(element)
-        )
+    def _error(self, context: _Context, element: Element | None, message: str,
+               attribute: str | None = None) -> None:
+        """A roslaunch refusal; ``attribute`` names the attribute whose value it refuses
+        (the one checked for the environment and for a root arg left at an empty
+        default; every attribute of the element when it is not known)."""
+        checkable = (element is not None and not self.options.study_errors
+                     and message.startswith(_VALUE_ERRORS))
+        source = None
+        if checkable and element is not None:
+            source = (self._env_source(element) if attribute is None
+                      else self._env_in_text(element.attrib.get(attribute, "")))
         if source is not None:
             self._report("unresolved", context.filename, element,
                          f"{message}, but the value depends on the environment ({source}): "
                          f"not checked (give it with --env)")
             return
+        blank = (self._blank_arg_in(element.attrib.get(attribute, ""))
+                 if checkable and element is not None and attribute is not None else None)
+        if blank is not None:
+            # roslaunch refuses the root's own default here, so the file cannot have been
+            # meant to run with it: like an arg without default, the command line gives it.
+            self._report("unresolved", context.filename, element,
+                         f"{message} with arg '{blank}' at its empty default, which the "
+                         f"root file cannot run with, so the command line gives it: not "
+                         f"checked (give it with --arg {blank}:=VALUE)")
+            return
         self._report("roslaunch_error", context.filename, element, message)
+
+    def _blank_arg_in(self, text: str) -> str | None:
+        """The root arg left at its empty default that ``text`` reads, if any."""
+        if "$(arg" not in text:
+            return None
+        for match in _ENV_REFERENCE.finditer(text):
+            if match.group(1) == "arg" and match.group(2) in self._blank_args:
+                return self._blank_args[match.group(2)]
+        return None
 
     def _env_source(self, element: Element) -> str | None:
         """The environment substitution (or home path) one of the element's attributes
@@ -278,6 +308,10 @@ class Ros1Base:
         # A leading "~" is a private name here, not a home directory: roslaunch expands no
         # "~" in paths, and $(env HOME) without --env is already unresolved.
         if "$(" not in text:
+            return None
+        # Without an env-derived arg so far, only an ``$(env``/``$(optenv`` can answer: most
+        # values (``$(arg x)``, ``$(find p)/...``) skip the pattern.
+        if not self._env_args and "env" not in text:
             return None
         for match in _ENV_REFERENCE.finditer(text):
             command, name = match.group(1), match.group(2)

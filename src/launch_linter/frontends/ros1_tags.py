@@ -104,7 +104,8 @@ class Ros1Tags(Ros1Base):
         ns_value = self._resolve(element, "ns", context) or ()
         ns = text_of(ns_value)
         if not ns:
-            self._error(context, element, f"<{element.tag}> tag has an empty 'ns' attribute")
+            self._error(context, element, f"<{element.tag}> tag has an empty 'ns' attribute",
+                        attribute="ns")
             return context.ns, context.ns_unresolved
         try:
             joined = make_global_ns(ns if ns.startswith("/") else ns_join(context.ns, ns))
@@ -217,7 +218,24 @@ class Ros1Tags(Ros1Base):
                 source = self._env_in_text(text)
                 if source is not None:
                     self._env_args[name] = source
+        self._note_blank(context, element, name, value, default)
         self._declare(context, element, name, value, default, condition)
+
+    def _note_blank(self, context: _Context, element: Element, name: str,
+                    value: Value | None, default: Value | None) -> None:
+        """Remember an arg that is empty because a root file's default is: declared with
+        ``default=""`` in the root (whose command line could set it), or set empty from
+        such an arg (a default that reads it, an include passing it on)."""
+        written = value if value is not None else default
+        if written is None or resolved_text(written) != "":
+            return
+        origin = self._blank_arg_in(element.attrib.get("value" if value is not None
+                                                       else "default", ""))
+        if origin is not None:
+            self._blank_args[name] = origin
+        elif (value is None and element.attrib.get("default") == "" and context.open_args
+              and context.include_args is None and name not in context.args):
+            self._blank_args[name] = name
 
     def _param(self, element: Element, context: _Context,
                anon: dict[str, str] | None = None) -> None:
@@ -283,7 +301,8 @@ class Ros1Tags(Ros1Base):
             problem = (None if value is None
                        else _param_value_problem(value.strip(), param_type or "auto"))
             if problem is not None:
-                self._error(context, element, f"Invalid <param> tag: {problem}")
+                self._error(context, element, f"Invalid <param> tag: {problem}",
+                            attribute="value")
 
     def _description(self, element: Element, context: _Context, condition: Condition,
                      values: dict[str, Value]) -> None:
@@ -410,7 +429,7 @@ class Ros1Tags(Ros1Base):
         ) and not reads.is_file(file_text):
             self._error(context, element,
                         f"error loading <rosparam> tag: file does not exist "
-                        f"[{self._quoted(file_text)}]")
+                        f"[{self._quoted(file_text)}]", attribute="file")
         body: Value | None = (element.text,) if element.text else ()
         if substitute:
             body = self._resolve_text(element.text, element, "text", context, anon)

@@ -10,7 +10,7 @@ conditions and includes behave the same whatever the format.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Union
 
 from launch_linter.model.transform import LaunchFormat
@@ -38,6 +38,13 @@ class Where:
     path: str
     line: int
     column: int
+
+    def __init__(self, path: str, line: int, column: int) -> None:
+        # Made for every action and call the interpreter evaluates: the fields are put in
+        # the instance's dict, at less than half the cost of the frozen dataclass's
+        # ``object.__setattr__`` per field (assignment is still refused).
+        fields = self.__dict__
+        fields["path"], fields["line"], fields["column"] = path, line, column
 
 
 @dataclass(frozen=True)
@@ -297,3 +304,8 @@ class FileRead:
     comments: tuple[tuple[int, str], ...] = ()
     element_lines: tuple[int, ...] = ()
     problems: tuple[Problem, ...] = ()
+    forget: Callable[[], None] | None = field(default=None, compare=False, repr=False)
+    """Lets go of what the file's ``OpaqueFunction`` actions (:class:`Deferred`) keep to
+    run later (the scopes of a Python file's interpreter), once the launch tree is read:
+    those scopes and the actions refer to each other, a cycle that would otherwise leave
+    the file's syntax tree and its evaluation to the garbage collector."""

@@ -18,6 +18,7 @@ outlives that condition (an include or an unscoped group), becomes a hole.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
@@ -54,6 +55,7 @@ from launch_linter.frontends.ros2_actions import (
     STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
     Component,
+    FileRead,
     Include,
     Params,
     ParamsFile,
@@ -151,6 +153,23 @@ class Ros2Loader(Ros2Runner):
         unmatched = tuple(u for u in self.unmatched_param_files
                           if u.file not in self.reached_param_files)
         return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched)
+
+    # -- files -------------------------------------------------------------------------
+    def load(self, path: str, data: bytes | None = None) -> LaunchTree:
+        self._forget: list[Callable[[], None]] = []
+        try:
+            return super().load(path, data)
+        finally:
+            # The tree is read: no ``OpaqueFunction`` runs any more (``FileRead.forget``).
+            # Emptied as it goes: an interpreter refers back to this loader.
+            while self._forget:
+                self._forget.pop()()
+
+    def _read_file(self, absolute: str, data: bytes) -> FileRead:
+        read = super()._read_file(absolute, data)
+        if read.forget is not None:
+            self._forget.append(read.forget)
+        return read
 
     # -- transforms --------------------------------------------------------------------
     def _namespace(self, subs: Subs | None, scope: _Scope, frame: _Frame, where: Where,

@@ -48,6 +48,12 @@ class Text:
 
     text: str
 
+    def __init__(self, text: str) -> None:
+        # Made for every literal piece of every substitution: put in the instance's dict,
+        # cheaper than the frozen dataclass's ``object.__setattr__`` (assignment is still
+        # refused).
+        self.__dict__["text"] = text
+
 
 @dataclass(frozen=True)
 class Call:

@@ -15,8 +15,10 @@ later, info when it is not known. The nodes' own defaults are not reported.
 ## Why is this bad?
 tf2 refuses a frame id that starts with `/` ("Invalid argument "/map" passed to
 canTransform argument target_frame in tf2 frame_ids cannot start with a '/'"): every
-lookup of that frame fails, and a transform published under it is not the frame the rest
-of the tree calls by its name without the slash (two trees that never join). The slash is
+lookup of that frame fails. A transform *published* under it is kept without the slash by
+tf2 buffers (`BufferCore::setTransformImpl` strips one leading `/`, geometry2 on every
+ROS 2 distribution), but the messages on `/tf` carry it: tools that build the tree from
+`/tf` themselves (Foxglove, bag tools) show two trees that never join. The slash is
 a habit from tf 1, whose `tf_prefix` resolution accepted it; costmaps, map_server's map,
 slam_toolbox and robot_localization on tf2 do not, nor a `frame_prefix` built as
 `namespace + '/'` with an empty namespace.
@@ -106,8 +108,10 @@ def _finding(entry: Entry, node: NodeRecord, name: str, value: str,
             if level is Severity.INFO else "")
     if entry.prefix is not None and name == entry.prefix.param:
         what = (f"{program} parameter '{name}' is '{value}': every frame it publishes "
-                f"starts with '/', which tf2 frame ids cannot{when}; the tree splits from "
-                f"the frames others publish without it")
+                f"starts with '/', which tf2 frame ids cannot{when}; tf2 buffers drop the "
+                f"slash they receive, but /tf carries it, so tools that read /tf "
+                f"themselves (Foxglove, bag tools) show a second tree; add the slash only "
+                f"to a non-empty prefix")
     else:
         what = (f"{program} parameter '{name}' is '{value}': tf2 frame ids cannot start "
                 f"with '/', so lookups of it fail{when}; write '{value.lstrip('/')}'")

@@ -79,9 +79,10 @@ depthimage_to_laserscan#71, husky#244); on 57 whole public repositories nobody h
 28 node/file pairs checked, one finding, judged not a defect (the joy_node file above),
 removed by the shared-file condition: no finding is left there, far from the 20 a warning
 needs, so the level rests on the proof (rclcpp's and launch_ros's source), not on a
-measured precision. A `LifecycleNode` is not read as a node (not checked). A file without any `ros__parameters` key is left to
-rcl (it refuses such a file at start-up). rclpy nodes are judged with rclcpp's matching
-(the wider one: what it does not match, an exact or `/**` match does not match either).
+measured precision. A `LifecycleNode` is not read as a node (not checked). A file
+without any `ros__parameters` key is left to rcl (it refuses such a file at start-up).
+rclpy nodes are judged with rclcpp's matching (the wider one: what it does not match, an
+exact or `/**` match does not match either).
 """
 
 from __future__ import annotations

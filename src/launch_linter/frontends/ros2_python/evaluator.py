@@ -90,6 +90,11 @@ class Evaluator:
     def forget_scopes(self) -> None:
         if self.deferring:
             return
+        self.forget_deferred_scopes()
+
+    def forget_deferred_scopes(self) -> None:
+        """Empties every scope, also those an ``OpaqueFunction`` would still run in: for
+        when the launch tree is read and no function will run any more."""
         for env in self.scopes:
             env.vars.clear()
             env.parent = None

@@ -95,7 +95,8 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         # The interpreter's own step limit bounds one file; the root file's budget bounds
         # a file included many times.
         budget.step(interpreter.steps)
-    return FileRead(FORMAT, actions, comments, tuple(lines), tuple(interpreter.problems))
+    return FileRead(FORMAT, actions, comments, tuple(lines), tuple(interpreter.problems),
+                    interpreter.forget_deferred_scopes if interpreter.deferring else None)
 
 
 ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
