@@ -19,7 +19,7 @@ RULES_DIR = ROOT / "src" / "launch_linter" / "rules"
 SNAKE_CASE = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
 SECTIONS = ("## What it does", "## Why is this bad?", "## Example", "## Use instead")
 OPTIONAL_SECTIONS = ("## Known problems", "## Options", "## Fix")
-XML_BLOCK = re.compile(r"```(?:xml|python)\n(.*?)```", re.DOTALL)
+XML_BLOCK = re.compile(r"```(?:xml|python|yaml)\n(.*?)```", re.DOTALL)
 MODULES = {m.ID: m for m in RULE_MODULES}
 
 # The rules table of DESIGN.md (a contract): id -> (category, severity). The severities are

@@ -210,12 +210,13 @@ def json_pair(
 
 def _names_yaml(path: str) -> bool:
     """Whether a launch file names a YAML parameter file (``<rosparam file=>``,
-    ``parameters=[...yaml]``): its tree then reads YAML that ``tree.files`` does not list."""
+    ``parameters=[...yaml]``) or a xacro file reads one (``load_yaml(name)``, the name
+    perhaps from a property): its tree then reads YAML that ``tree.files`` does not list."""
     try:
         text = (REPO / path).read_text(encoding="utf-8", errors="replace")
     except OSError:
         return False
-    return ".yaml" in text or ".yml" in text
+    return ".yaml" in text or ".yml" in text or "load_yaml(" in text
 
 
 def launch_fixtures(yaml: bool = True) -> list[str]:
@@ -230,5 +231,7 @@ def launch_fixtures(yaml: bool = True) -> list[str]:
     with_yaml = {
         tree.root for tree in result.trees
         if any(f.endswith((".yaml", ".yml")) or _names_yaml(f) for f in tree.files)
+        # A description's xacro files are not in tree.files: those its joints are written in.
+        or any(_names_yaml(joint.path) for joint in tree.joints)
     }
     return [p for p in paths if p not in with_yaml]

@@ -138,6 +138,18 @@ class RunNode:
     uses: tuple[Subs, ...] = ()
     """Every other substitution the action performs when it runs (remappings, parameters,
     other attributes), resolved only to check the launch configurations they read."""
+    may_rename: bool = False
+    """Its arguments or ROS arguments may remap its name or namespace (``__node:=``,
+    ``__ns:=``, written or not known): its name as launched is then not ``name``."""
+
+
+RENAMING_WORDS = ("__node", "__name", "__ns")
+"""rcl's node name and namespace remappings (``__name`` the older spelling)."""
+
+
+def may_rename(words: Sequence[str] | None) -> bool:
+    """Arguments that may rename a node: not known (None), or naming a remapping of it."""
+    return words is None or any(w in word for word in words for w in RENAMING_WORDS)
 
 
 def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:

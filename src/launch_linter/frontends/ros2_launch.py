@@ -24,17 +24,20 @@ from typing import NamedTuple
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
+    EMBEDDED_COSTMAPS,
     MAX_PARAMS,
     SPAWNERS,
     PlacedDocument,
     ProcessParams,
     controllers_of,
     embedded_costmap,
+    node_full_name,
     read_yaml_file,
     read_yaml_file_placed,
     ros2_file_params_keyed,
     spawned_controllers,
     spawner_words,
+    unmatched_node_keys,
 )
 from launch_linter.frontends.record import (
     Command,
@@ -48,6 +51,7 @@ from launch_linter.frontends.robot.sources import (
     from_ros2_value,
     is_description_name,
 )
+from launch_linter.frontends.ros1 import LoadOptions
 from launch_linter.frontends.ros2_actions import (
     STATIC_TF_EXECUTABLE,
     STATIC_TF_PACKAGE,
@@ -75,7 +79,13 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
-from launch_linter.model.launch import Forwarded, LaunchTree
+from launch_linter.model.launch import (
+    FileStatus,
+    Forwarded,
+    LaunchTree,
+    UndeclaredUse,
+    UnmatchedParamFile,
+)
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
@@ -99,6 +109,17 @@ def reads_configuration(subs: Subs, name: str) -> bool:
     return False
 
 
+MANY_NODE_PACKAGES = ("controller_manager", "rclcpp_components")
+"""Packages whose processes run other nodes that take the same parameter files under their
+own names (a controller manager's controllers, a container's components): a file none of
+whose keys names the process's own node still reaches them."""
+
+
+def _literal(subs: Subs | None) -> bool:
+    """Written as text: no launch configuration or other substitution in it."""
+    return subs is not None and all(isinstance(sub, Text) for sub in subs)
+
+
 class _NodeParams(NamedTuple):
     """What :meth:`Ros2Loader._node_params` reads: the parameters in order (SetParameter's
     first), where each is written (``NodeRecord.param_lines``), why some are not read,
@@ -114,10 +135,28 @@ class _NodeParams(NamedTuple):
     placed: list[PlacedDocument]
     """The parameter files with where their keys are written (a controller's parameters
     placed at its section's keys)."""
+    unmatched: tuple[tuple[str, tuple[tuple[str, int, int], ...]], ...] = ()
+    """Each parameter file none of whose node keys matches the node (its shown path and
+    node keys with their places), when its name and namespace are known."""
+    files: tuple[str, ...] = ()
+    """The parameter files read, shown."""
 
 
 class Ros2Loader(Ros2Runner):
     """Loads one ROS 2 root file (and its includes) into a :class:`LaunchTree`."""
+
+    def __init__(self, options: LoadOptions) -> None:
+        super().__init__(options)
+        self.unmatched_param_files: list[UnmatchedParamFile] = []
+        self.reached_param_files: set[str] = set()
+        """Parameter files that some node of the tree takes (or may take) a section of."""
+
+    def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
+              ) -> LaunchTree:
+        # A file that reaches another node it is given to was written for that one.
+        unmatched = tuple(u for u in self.unmatched_param_files
+                          if u.file not in self.reached_param_files)
+        return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched)
 
     # -- files -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
@@ -205,6 +244,10 @@ class Ros2Loader(Ros2Runner):
             included_at=frame.sites,
         )
         self.nodes.append(node)
+        checked = (name is not None and not action.may_rename
+                   and package not in MANY_NODE_PACKAGES
+                   and (package, executable) not in EMBEDDED_COSTMAPS)
+        self._unmatched(node, executable or "", given, checked, _literal(action.name))
         documents = given.documents
         costmap = embedded_costmap(node, given.process, scope.parameters)
         if costmap is not None:
@@ -214,6 +257,20 @@ class Ros2Loader(Ros2Runner):
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
+
+    def _unmatched(self, node: NodeRecord, program: str, given: _NodeParams,
+                   checked: bool, name_literal: bool) -> None:
+        """Keep the parameter files that give ``node`` nothing when its name as launched
+        is known (``checked``); the others it is given reach it, or may."""
+        missed = {shown for shown, _ in given.unmatched} if checked else set()
+        self.reached_param_files.update(f for f in given.files if f not in missed)
+        if not checked:
+            return
+        for shown, keys in given.unmatched:
+            self.unmatched_param_files.append(UnmatchedParamFile(
+                node.path, node.line, node.column, node.condition,
+                node_full_name(node.name, node.namespace), node.package, program, shown,
+                keys, name_literal))
 
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         """An include, its arguments kept as :class:`Forwarded` (marked not followed when
@@ -271,6 +328,8 @@ class Ros2Loader(Ros2Runner):
         documents: list[object] = []
         placed: list[PlacedDocument] = []
         process: list[object] = []
+        unmatched: list[tuple[str, tuple[tuple[str, int, int], ...]]] = []
+        files: list[str] = []
         for group in groups:
             if isinstance(group, ParamsUnknown):
                 unread.append(group.reason)
@@ -290,6 +349,12 @@ class Ros2Loader(Ros2Runner):
                 process.append(document)
                 shown = self._display(path)
                 placed.append(PlacedDocument(document, shown, keys))
+                files.append(shown)
+                others = (None if name is None or namespace is None
+                          else unmatched_node_keys(document, name, namespace))
+                if others is not None:
+                    unmatched.append((shown, tuple(
+                        ("/".join(at), *keys.get(at, (0, 0))) for _, at in others)))
                 for key, value, at in ros2_file_params_keyed(document, name, namespace):
                     params.append((key, value))
                     line_column = keys.get(at)
@@ -313,7 +378,8 @@ class Ros2Loader(Ros2Runner):
         own = params[:MAX_PARAMS]
         given = tuple(scope.parameters) + tuple(own)
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
-        return _NodeParams(given, lines, tuple(unread), documents, process, placed)
+        return _NodeParams(given, lines, tuple(unread), documents, process, placed,
+                           tuple(unmatched), tuple(files))
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
@@ -365,6 +431,8 @@ class Ros2Loader(Ros2Runner):
                 plugin=plugin_text, unread=given.unread,
                 namespace=None if pending else namespace, ros=2, param_lines=given.lines,
                 included_at=here.sites))
+            self._unmatched(self.nodes[-1], plugin_text, given, name is not None,
+                            _literal(component.name))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

@@ -32,6 +32,7 @@ from launch_linter.frontends.ros2_actions import (
     SetVar,
     Uses,
     Where,
+    may_rename,
     ros2_run,
     shell_reads_as_words,
 )
@@ -264,6 +265,8 @@ class _Reader:
             args_written=entity.attrs.get("args", ""),
             parameters=self.params(entity.lists.get("param", [])),
             uses=self.performed(entity),
+            may_rename=may_rename([entity.attrs.get("args", ""),
+                                   entity.attrs.get("ros_args", "")]),
         )
 
     def executable(self, entity: Entity, where: Where, condition: Predicate | None

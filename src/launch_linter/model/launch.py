@@ -150,6 +150,45 @@ class Forwarded(Record):
         _set(self, "followed", followed)
 
 
+class UnmatchedParamFile(Record):
+    """A ROS 2 parameter file given to a node of known name (``name=`` written, its
+    namespace resolved, no ``__node``/``__ns`` remapping among its arguments) none of whose
+    node keys (the keys above ``ros__parameters``) matches the node's full name ``node``
+    as rclcpp matches them: the node takes nothing from it. At the node (``path``,
+    ``line``, ``column``); ``file`` is the parameter file, ``keys`` its node keys as
+    matched (nested keys joined with ``/``) with where each is written (0, 0 unknown);
+    ``name_literal``: the node's name is written as text (no launch configuration in it)."""
+
+    path: str
+    line: int
+    column: int
+    condition: Condition
+    node: str
+    package: str
+    executable: str
+    """The executable, or the composable node's plugin."""
+    file: str
+    keys: tuple[tuple[str, int, int], ...]
+    name_literal: bool
+
+    __slots__ = ("path", "line", "column", "condition", "node", "package", "executable",
+                 "file", "keys", "name_literal")
+
+    def __init__(self, path: str, line: int, column: int, condition: Condition, node: str,
+                 package: str, executable: str, file: str,
+                 keys: tuple[tuple[str, int, int], ...], name_literal: bool = False) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "condition", condition)
+        _set(self, "node", node)
+        _set(self, "package", package)
+        _set(self, "executable", executable)
+        _set(self, "file", file)
+        _set(self, "keys", keys)
+        _set(self, "name_literal", name_literal)
+
+
 class LaunchTree(Record):
     """Everything read from one root file, its includes included."""
 
@@ -177,11 +216,13 @@ class LaunchTree(Record):
     test, never started): not one running system (``workspace/launch_checks.py``)."""
     forwarded: tuple[Forwarded, ...]
     """ROS 2 launch configurations passed on under their own name (``Forwarded``)."""
+    unmatched_param_files: tuple[UnmatchedParamFile, ...]
+    """ROS 2 parameter files that give the node they are passed to nothing."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
         "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
-        "forwarded",
+        "forwarded", "unmatched_param_files",
     )
 
     def __init__(
@@ -200,6 +241,7 @@ class LaunchTree(Record):
         undeclared: tuple[UndeclaredUse, ...] = (),
         parse_check_only: bool = False,
         forwarded: tuple[Forwarded, ...] = (),
+        unmatched_param_files: tuple[UnmatchedParamFile, ...] = (),
     ) -> None:
         _open(self)  # made for every root file: see _open
         self.root = root
@@ -216,4 +258,5 @@ class LaunchTree(Record):
         self.undeclared = undeclared
         self.parse_check_only = parse_check_only
         self.forwarded = forwarded
+        self.unmatched_param_files = unmatched_param_files
         _seal(self)

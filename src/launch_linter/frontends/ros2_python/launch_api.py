@@ -31,6 +31,7 @@ from launch_linter.frontends.ros2_actions import (
     Uses,
     Where,
     may_publish_static_tf,
+    may_rename,
     ros2_run,
     shell_reads_as_words,
 )
@@ -184,6 +185,7 @@ class Interpreter(Calls):
             unknown=unknown,
             parameters=self.parameters(kwargs.get("parameters"), node),
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),
+            may_rename=may_rename(_words(arguments, kwargs.get("ros_arguments"))),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
@@ -608,3 +610,18 @@ def _parameter_text(value: object) -> object:
     if isinstance(value, (int, float)):
         return repr(value)
     return value
+
+
+def _words(*lists: object) -> list[str] | None:
+    """The literal text of ``Node`` arguments lists (an item made of pieces joined), for
+    :func:`may_rename`; None when a list is not known (not a list, not literal pieces)."""
+    out: list[str] = []
+    for value in lists:
+        if value is None:
+            continue
+        if not isinstance(value, (list, tuple)):
+            return None
+        for item in value:
+            pieces = item if isinstance(item, (list, tuple)) else (item,)
+            out.append("".join(p for p in pieces if isinstance(p, str)))
+    return out

@@ -1,0 +1,148 @@
+"""ros2_param_file_unmatched: a ROS 2 parameter file whose node keys reach no node it is
+given to (rclcpp's key matching: a leading `/` added, `/*` one name, `/**` any)."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from launch_linter.engine import LintOptions, lint_paths
+
+RULE = "ros2_param_file_unmatched"
+
+
+def run(tmp_path: Path, launch: str, params: str, name: str = "a.launch.py"
+        ) -> list[tuple[str, int, str]]:
+    (tmp_path / "params.yaml").write_text(params)
+    path = tmp_path / name
+    path.write_text(launch)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    return [(Path(d.path).name, d.line, d.severity.value)
+            for d in lint_paths([str(path)], options).diagnostics]
+
+
+PY = ("import os\n"
+      "from launch import LaunchDescription\n"
+      "from launch_ros.actions import Node, PushRosNamespace\n"
+      "from launch.actions import GroupAction\n"
+      "def generate_launch_description():\n"
+      "    f = os.path.join(os.path.dirname(__file__), 'params.yaml')\n"
+      "    return LaunchDescription([{nodes}])\n")
+NODE = "Node(package='p', executable='e', parameters=[f]{extra})"
+KEYED = "{key}:\n  ros__parameters:\n    base_frame: base_link\n"
+
+
+def test_a_key_naming_another_node_is_reported_at_the_key(tmp_path: Path) -> None:
+    launch = PY.format(nodes=NODE.format(extra=", name='driver'"))
+    assert run(tmp_path, launch, KEYED.format(key="driver_node")) == [
+        ("params.yaml", 1, "error")]
+    # Nested: at the innermost key; info, since a namespace given may make it match.
+    nested = "# x\nother:\n  driver_node:\n    ros__parameters:\n      a: 1\n"
+    assert run(tmp_path, launch, nested) == [("params.yaml", 3, "info")]
+
+
+def test_keys_that_match_as_rclcpp_matches_them_are_silent(tmp_path: Path) -> None:
+    launch = PY.format(nodes=NODE.format(extra=", name='driver', namespace='robot'"))
+    # Another name: an error whatever the namespace; a key of the node's own name or with
+    # a namespace part misses only with these launch arguments (a namespace may change).
+    for key, level in (("driver_node", "error"), ("/robot/driver_x", "info"),
+                       ("driver", "info"), ("/*/*/driver", "info")):
+        assert run(tmp_path, launch, KEYED.format(key=key)) == [("params.yaml", 1, level)]
+    for key in ("/**", "/robot/driver", "robot/driver", "/*/driver", "/**/driver", "/robot/*"):
+        assert run(tmp_path, launch, KEYED.format(key=key)) == [], key
+    nested = "robot:\n  driver:\n    ros__parameters:\n      a: 1\n"
+    assert run(tmp_path, launch, nested) == []
+
+
+def test_a_name_from_a_launch_argument_is_info(tmp_path: Path) -> None:
+    launch = PY.replace("def generate_launch_description():",
+                        "from launch.substitutions import LaunchConfiguration as C\n"
+                        "from launch.actions import DeclareLaunchArgument as D\n"
+                        "def generate_launch_description():").format(
+        nodes="D('n', default_value='driver'), " + NODE.format(extra=", name=C('n')"))
+    assert run(tmp_path, launch, KEYED.format(key="driver_node")) == [
+        ("params.yaml", 1, "info")]
+
+
+def test_a_file_shared_by_nodes_is_reported_only_when_it_reaches_none(tmp_path: Path) -> None:
+    shared = KEYED.format(key="left") + KEYED.format(key="right")
+    two = ", ".join(NODE.format(extra=f", name='{n}'") for n in ("left", "right"))
+    assert run(tmp_path, PY.format(nodes=two), shared) == []
+    # A third node given the same file takes nothing from it, but the file was written
+    # for the others (teleop_twist_joy's launch gives joy_node the teleop node's file).
+    three = two + ", " + NODE.format(extra=", name='middle'")
+    assert run(tmp_path, PY.format(nodes=three), shared) == []
+    # Reaching none of the nodes it is given to: each node reported.
+    apart = ", ".join(NODE.format(extra=f", name='{n}'") for n in ("up", "down"))
+    assert run(tmp_path, PY.format(nodes=apart), shared) == [
+        ("params.yaml", 1, "error"), ("params.yaml", 1, "error")]
+    # A node of unknown name given the file may take it: silent.
+    unknown = apart + ", " + NODE.format(extra="")
+    assert run(tmp_path, PY.format(nodes=unknown), shared) == []
+
+
+def test_pushed_namespace_is_part_of_the_name(tmp_path: Path) -> None:
+    pushed = ("GroupAction([PushRosNamespace('robot'), "
+              + NODE.format(extra=", name='driver'") + "])")
+    assert run(tmp_path, PY.format(nodes=pushed), KEYED.format(key="driver")) == [
+        ("params.yaml", 1, "info")]
+    assert run(tmp_path, PY.format(nodes=pushed), KEYED.format(key="driver_node")) == [
+        ("params.yaml", 1, "error")]
+    assert run(tmp_path, PY.format(nodes=pushed), KEYED.format(key="robot/driver")) == []
+
+
+def test_unknown_names_and_remappings_and_many_node_processes_are_silent(
+        tmp_path: Path) -> None:
+    other = KEYED.format(key="someone_else")
+    for extra in ("",  # the executable's own name: not known
+                  ", name='driver', arguments=['--ros-args', '-r', '__node:=someone_else']",
+                  ", name='driver', ros_arguments=['-r', '__ns:=/x']",
+                  ", name='driver', arguments=ARGS",
+                  ", name=NAME"):
+        assert run(tmp_path, PY.format(nodes=NODE.format(extra=extra)), other) == [], extra
+    for package, executable in (("controller_manager", "ros2_control_node"),
+                                ("rclcpp_components", "component_container"),
+                                ("nav2_controller", "controller_server")):
+        node = (f"Node(package='{package}', executable='{executable}', name='x', "
+                "parameters=[f])")
+        assert run(tmp_path, PY.format(nodes=node), other) == [], package
+    # A file without ros__parameters, or one not read, says nothing here.
+    launch = PY.format(nodes=NODE.format(extra=", name='driver'"))
+    assert run(tmp_path, launch, "driver_node:\n  a: 1\n") == []
+    assert run(tmp_path, launch, "[unclosed\n") == []
+
+
+def test_xml_param_from_and_composable_nodes(tmp_path: Path) -> None:
+    xml = ('<launch>\n  <node pkg="p" exec="e" name="driver">\n'
+           '    <param from="$(dirname)/params.yaml"/>\n  </node>\n</launch>\n')
+    assert run(tmp_path, xml, KEYED.format(key="driver_node"), "a.launch.xml") == [
+        ("params.yaml", 1, "error")]
+    assert run(tmp_path, xml.replace('name="driver"', 'name="driver" ros_args="-r __node:=q"'),
+               KEYED.format(key="driver_node"), "a.launch.xml") == []
+    yaml = ("launch:\n- node:\n    pkg: p\n    exec: e\n    name: driver\n    param:\n"
+            "    - from: $(dirname)/params.yaml\n")
+    assert run(tmp_path, yaml, KEYED.format(key="driver_node"), "a.launch.yaml") == [
+        ("params.yaml", 1, "error")]
+    assert run(tmp_path, yaml, KEYED.format(key="driver"), "a.launch.yaml") == []
+    composable = ("ComposableNodeContainer(name='c', namespace='', package='rclcpp_components',"
+                  " executable='component_container', composable_node_descriptions=["
+                  "ComposableNode(package='p', plugin='p::P', name='{name}', "
+                  "parameters=[f])])")
+    py = PY.replace("Node, PushRosNamespace",
+                    "Node, PushRosNamespace, ComposableNodeContainer\n"
+                    "from launch_ros.descriptions import ComposableNode")
+    assert run(tmp_path, py.format(nodes=composable.format(name="driver")),
+               KEYED.format(key="driver_node")) == [("params.yaml", 1, "error")]
+    assert run(tmp_path, py.format(nodes=composable.format(name="driver_node")),
+               KEYED.format(key="driver_node")) == []
+
+
+def test_hostile_file_of_20000_node_keys(tmp_path: Path) -> None:
+    # 20,000 node keys, one section shared through an alias (small enough to be read).
+    keys = "n: &s {ros__parameters: {a: 1}}\n" + "".join(f"n{i}: *s\n" for i in range(20000))
+    launch = PY.format(nodes=NODE.format(extra=", name='driver'"))
+    start = time.process_time()
+    found = run(tmp_path, launch, keys)
+    assert time.process_time() - start < 20
+    # Bounded: the sections kept (MAX_PARAMS) are judged, one finding.
+    assert len(found) == 1 and found[0][0] == "params.yaml"
