@@ -356,11 +356,10 @@ def controllers_of(manager: NodeRecord, documents: Sequence[object],
         if key.endswith(".type") and "." not in key[:-len(".type")] \
                 and _CONTROLLER_TYPE.match(value):
             named[key[:-len(".type")]] = value
-    namespace = (manager.namespace or "").strip("/")
     matches = 0
     out: list[NodeRecord] = []
     for controller, value in named.items():
-        full = "/" + "/".join(p for p in (namespace, controller) if p)
+        full = node_full_name(controller, manager.namespace)
         matches += sum(len(sections(d).wildcard) for d in documents)
         if matches > MAX_SECTION_MATCHES:
             out.append(replace(manager, executable="", name=controller, kind="controller",
@@ -411,8 +410,7 @@ def embedded_costmap(server: NodeRecord, process: Sequence[object],
     name = EMBEDDED_COSTMAPS.get((server.package, server.executable))
     if name is None:
         return None
-    namespace = (None if server.namespace is None
-                 else "/" + "/".join(p for p in (server.namespace.strip("/"), name) if p))
+    namespace = None if server.namespace is None else node_full_name(name, server.namespace)
     params = list(scope_params)
     for item in process:
         if isinstance(item, ProcessParams):
