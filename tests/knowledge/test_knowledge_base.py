@@ -9,7 +9,14 @@ from pathlib import Path
 
 import pytest
 
-from launch_linter.knowledge import KnowledgeError, bundled, bundled_path, load, parse
+from launch_linter.knowledge import (
+    PROGRAMS_FILE,
+    KnowledgeError,
+    bundled,
+    bundled_path,
+    load,
+    parse,
+)
 from launch_linter.knowledge.publish import published
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.workspace.config import load_knowledge_file
@@ -25,11 +32,14 @@ REQUIRED = ("amcl", "nav2_amcl", "robot_localization_filter", "navsat_transform"
 
 def test_every_bundled_entry_is_well_formed_and_cites_a_read_source() -> None:
     path = bundled_path()
-    assert path is not None
+    programs = bundled_path(PROGRAMS_FILE)
+    assert path is not None and programs is not None
     base = load(path)
     ids = {entry.id for entry in base.entries}
     assert set(REQUIRED) <= ids
-    for entry in base.entries:
+    facts = load(programs).programs.facts
+    assert facts and not ids & {fact.id for fact in facts}
+    for entry in (*base.entries, *facts):
         assert entry.sources, entry.id
         for source in entry.sources:
             assert len(source.commit) == 40 and source.file and source.repository, entry.id

@@ -10,6 +10,7 @@ become code or comments.
 from __future__ import annotations
 
 import math
+import os
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -17,7 +18,7 @@ from dataclasses import dataclass
 import jinja2
 
 from launch_linter.generate.embed import Embedding
-from launch_linter.knowledge import bundled_path
+from launch_linter.knowledge import DATA_FILE, PROGRAMS_FILE, bundled_path
 from launch_linter.model.beliefs import BELIEF_CLASSES, BELIEF_FORMAT, BeliefSet
 from launch_linter.model.diagnostic import Belief
 
@@ -230,14 +231,15 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
         notes=list(embedding.notes),
         min_python=MIN_PYTHON,
         python=Code(".".join(str(v) for v in MIN_PYTHON)),
-        knowledge=source_literal(_knowledge_text()),
+        knowledge=Code("(" + "".join(source_literal(_knowledge_text(name)) + ", "
+                                     for name in (DATA_FILE, PROGRAMS_FILE)) + ")"),
     )
 
 
-def _knowledge_text() -> str:
-    """The bundled knowledge base's JSON, which the standalone linter carries as text."""
-    path = bundled_path()
-    if path is None:
-        raise RenderError("the package's knowledge base file cannot be found")
+def _knowledge_text(name: str) -> str:
+    """A bundled knowledge file's JSON, which the standalone linter carries as text."""
+    path = bundled_path(name)
+    if path is None or not os.path.isfile(path):
+        raise RenderError(f"the package's knowledge base file {name} cannot be found")
     with open(path, encoding="utf-8") as stream:
         return stream.read()

@@ -5,8 +5,11 @@ An entry says, for a node (ROS 1 ``pkg``/``type``, ROS 2 ``package``/``executabl
 composable node's plugin), a Gazebo plugin (``filename``) or a ros2_control controller
 (``type``), which tf edges it publishes as templates over its parameters (with the node's
 defaults), which parameters switch publishing off (``when``), and which frames it looks up.
-Users add entries of the same form in a JSON file named by the configuration's
-``knowledge`` key (docs/knowledge.md). Standard library only: the core reads it.
+Format 2 adds entries about programs (``programs.json``, :mod:`.programs`): what a
+package's release installs and what a program does with ``/clock``; a file of format 1
+loads as before. Users add entries of the same forms in a JSON file named by the
+configuration's ``knowledge`` key (docs/knowledge.md). Standard library only: the core
+reads it.
 """
 
 from __future__ import annotations
@@ -14,13 +17,29 @@ from __future__ import annotations
 import json
 import os
 import re
+from collections import Counter
 from typing import Any, Mapping, Sequence
 
+from launch_linter.knowledge.fields import KnowledgeError as KnowledgeError
+from launch_linter.knowledge.fields import Source as Source
+from launch_linter.knowledge.fields import _source, _text, _texts
+from launch_linter.knowledge.programs import (
+    PROGRAM_KINDS,
+    ClockFact,
+    Installed,
+    Programs,
+    parse_program_entry,
+)
 from launch_linter.model.record import Record, _set
 
-FORMAT = 1
+FORMAT = 2
+"""The format this version writes; it reads every one of ``FORMATS``."""
+FORMATS = (1, 2)
 DATA_FILE = "tf_publishers.json"
+PROGRAMS_FILE = "programs.json"
+"""The bundled entries about programs (format 2), beside the tf entries."""
 KINDS = ("node", "gazebo_plugin", "controller")
+"""The kinds of format 1; format 2 adds ``installed`` and ``clock`` (:mod:`.programs`)."""
 ROLES = ("localization", "odometry", "sensor", "robot")
 ROS1_DISTROS = ("kinetic", "lunar", "melodic", "noetic")
 """ROS 1 distributions in release order (``ros1_tf2_from`` names one)."""
@@ -28,43 +47,8 @@ MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
 ANY = "*"
 PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 """A ``{param}`` in a frame template (the parameter's value stands there)."""
-_COMMIT = re.compile(r"^[0-9a-f]{40}$")
 
 SCALARS = (str, bool, int, float)
-
-
-class KnowledgeError(ValueError):
-    """A knowledge file that does not follow the format; the message names the entry."""
-
-
-class Source(Record):
-    """Where an entry's facts were read: the repository, package, file, branch or tag,
-    commit and lines."""
-
-    repository: str
-    package: str
-    file: str
-    ref: str
-    commit: str
-    lines: str
-
-    __slots__ = ("repository", "package", "file", "ref", "commit", "lines")
-
-    def __init__(
-        self,
-        repository: str,
-        package: str,
-        file: str,
-        ref: str,
-        commit: str,
-        lines: str,
-    ) -> None:
-        _set(self, "repository", repository)
-        _set(self, "package", package)
-        _set(self, "file", file)
-        _set(self, "ref", ref)
-        _set(self, "commit", commit)
-        _set(self, "lines", lines)
 
 
 class EdgeSpec(Record):
@@ -232,10 +216,14 @@ class Entry(Record):
 
 
 class KnowledgeBase:
-    """Entries by what they match; a user's entry overrides a bundled one of its id."""
+    """Entries by what they match; a user's entry overrides a bundled one of its id.
+    ``facts`` are the entries about programs (:mod:`.programs`), looked up through
+    :meth:`installed`, :meth:`clock_program` and :meth:`clock_launch`."""
 
-    def __init__(self, entries: Sequence[Entry]) -> None:
+    def __init__(self, entries: Sequence[Entry],
+                 facts: Sequence[Installed | ClockFact] = ()) -> None:
         self.entries = tuple(entries)
+        self.programs: Programs = Programs(tuple(facts))
         # Every launched node is looked up (several times per node, by several rules): the
         # node entries by package, in the base's order, so a lookup reads only those.
         self._nodes: dict[str, list[Entry]] = {}
@@ -260,10 +248,25 @@ class KnowledgeBase:
                 found.append(entry)
         return _of_version(found, ros)
 
+    def installed(self, package: str, ros: int | None, distro: str | None
+                  ) -> Installed | None:
+        """What ``package``'s release for ``distro`` installs (None: not known)."""
+        return self.programs.installed(package, ros, distro)
+
+    def clock_program(self, package: str, executable: str, ros: int = 2) -> ClockFact | None:
+        """What a node's program does with /clock, None when not known."""
+        return self.programs.clock_program(package, executable, ros)
+
+    def clock_launch(self, package: str, launch: str, ros: int = 2) -> ClockFact | None:
+        """What a package's launch file (its path in the share folder) does with /clock."""
+        return self.programs.clock_launch(package, launch, ros)
+
     def extended(self, other: KnowledgeBase) -> KnowledgeBase:
         """This base with ``other``'s entries first, replacing entries of the same id."""
-        ids = {e.id for e in other.entries}
-        return KnowledgeBase(other.entries + tuple(e for e in self.entries if e.id not in ids))
+        ids = {e.id for e in other.entries} | {f.id for f in other.programs.facts}
+        return KnowledgeBase(
+            other.entries + tuple(e for e in self.entries if e.id not in ids),
+            other.programs.facts + tuple(f for f in self.programs.facts if f.id not in ids))
 
 
 def _glob(pattern: str, name: str) -> bool:
@@ -279,30 +282,6 @@ def _of_version(found: list[Entry], ros: int | None) -> Entry | None:
         if ros is None or ros in entry.ros:
             return entry
     return found[0]
-
-
-def _text(value: Any, where: str) -> str:
-    if not isinstance(value, str) or not value:
-        raise KnowledgeError(f"{where} must be a non-empty string")
-    return value
-
-
-def _texts(value: Any, where: str) -> tuple[str, ...]:
-    if value is None:
-        return ()
-    if not isinstance(value, list):
-        raise KnowledgeError(f"{where} must be a list of strings")
-    return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
-
-
-def _source(data: Any, where: str) -> Source:
-    if not isinstance(data, dict):
-        raise KnowledgeError(f"{where} must be an object")
-    fields = {key: _text(data.get(key), f"{where}.{key}")
-              for key in ("repository", "package", "file", "ref", "commit", "lines")}
-    if not _COMMIT.match(fields["commit"]):
-        raise KnowledgeError(f"{where}.commit must be a 40-digit commit hash")
-    return Source(**fields)
 
 
 def _placeholders(template: str) -> list[str]:
@@ -328,18 +307,24 @@ def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:
     return edge
 
 
-def parse_entry(data: Any, where: str, origin: str) -> Entry:
-    """One entry, checked against the format; :class:`KnowledgeError` names the fault."""
+def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
+                ) -> Entry | Installed | ClockFact:
+    """One entry of a file of ``file_format``, checked against it; :class:`KnowledgeError`
+    names the fault."""
     if not isinstance(data, dict):
         raise KnowledgeError(f"{where} must be an object")
     entry_id = _text(data.get("id"), f"{where}.id")
     where = f"{where} ({entry_id})"
     kind = _text(data.get("kind"), f"{where}.kind")
-    if kind not in KINDS:
-        raise KnowledgeError(f"{where}.kind must be one of {', '.join(KINDS)}")
+    kinds = KINDS + (PROGRAM_KINDS if file_format >= 2 else ())
+    if kind not in kinds:
+        later = " (format 2 adds installed, clock)" if kind in PROGRAM_KINDS else ""
+        raise KnowledgeError(f"{where}.kind must be one of {', '.join(kinds)}{later}")
     ros = data.get("ros")
     if not isinstance(ros, list) or not ros or any(v not in (1, 2) for v in ros):
         raise KnowledgeError(f"{where}.ros must be a list of 1 and/or 2")
+    if kind in PROGRAM_KINDS:
+        return parse_program_entry(data, kind, tuple(ros), where, origin)
     match = data.get("match")
     if not isinstance(match, dict):
         raise KnowledgeError(f"{where}.match must be an object")
@@ -427,23 +412,28 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
 
 
 def parse(data: Any, origin: str) -> KnowledgeBase:
-    """A knowledge base from a decoded JSON document (``{"format": 1, "entries": [...]}``)."""
-    if not isinstance(data, dict) or data.get("format") != FORMAT:
-        raise KnowledgeError(f"{origin}: not a knowledge file of format {FORMAT}")
+    """A knowledge base from a decoded JSON document (``{"format": 2, "entries": [...]}``;
+    format 1 as before, without the entries about programs)."""
+    file_format = data.get("format") if isinstance(data, dict) else None
+    if file_format not in FORMATS:
+        raise KnowledgeError(f"{origin}: not a knowledge file of format "
+                             f"{' or '.join(map(str, FORMATS))}")
     entries = data.get("entries")
     if not isinstance(entries, list):
         raise KnowledgeError(f"{origin}: 'entries' must be a list")
-    parsed = [parse_entry(item, f"{origin}: entries[{i}]", origin)
+    parsed = [parse_entry(item, f"{origin}: entries[{i}]", origin, file_format)
               for i, item in enumerate(entries)]
-    ids = [e.id for e in parsed]
-    duplicates = sorted({i for i in ids if ids.count(i) > 1})
+    # Counted once: a file of tens of thousands of entries is checked in linear time.
+    duplicates = sorted(i for i, n in Counter(e.id for e in parsed).items() if n > 1)
     if duplicates:
-        raise KnowledgeError(f"{origin}: entry ids used twice: {', '.join(duplicates)}")
-    return KnowledgeBase(parsed)
+        shown = ", ".join(duplicates[:10]) + (" ..." if len(duplicates) > 10 else "")
+        raise KnowledgeError(f"{origin}: entry ids used twice: {shown}")
+    return KnowledgeBase([e for e in parsed if isinstance(e, Entry)],
+                         [e for e in parsed if not isinstance(e, Entry)])
 
 
 def load(path: str) -> KnowledgeBase:
-    """The bundled knowledge file. A user's files are read by the configuration layer
+    """A bundled knowledge file. A user's files are read by the configuration layer
     (``workspace.config.load_knowledge_file``), which reads untrusted paths safely."""
     try:
         with open(path, "rb") as stream:
@@ -467,22 +457,30 @@ def from_bytes(raw: bytes, origin: str) -> KnowledgeBase:
 _BUNDLED: list[KnowledgeBase] = []
 
 
-def bundled_path() -> str | None:
-    """The bundled data file, None where the modules run without their files (the
-    standalone linter, which installs its embedded copy with :func:`use_bundled`)."""
+def bundled_path(name: str = DATA_FILE) -> str | None:
+    """A bundled data file (the tf entries' unless named), None where the modules run
+    without their files (the standalone linter, which installs its embedded copies with
+    :func:`use_bundled`)."""
     here = globals().get("__file__")
     return None if here is None else os.path.join(os.path.dirname(os.path.abspath(here)),
-                                                  DATA_FILE)
+                                                  name)
 
 
-def use_bundled(text: str) -> None:
-    """Make ``text`` (the data file's JSON) the bundled knowledge base."""
-    _BUNDLED[:] = [parse(json.loads(text), "bundled")]
+def _joined(bases: Sequence[KnowledgeBase]) -> KnowledgeBase:
+    """The bundled files' entries as one base, in the files' order."""
+    return KnowledgeBase([e for b in bases for e in b.entries],
+                         [f for b in bases for f in b.programs.facts])
+
+
+def use_bundled(*texts: str) -> None:
+    """Make ``texts`` (the data files' JSON, ``DATA_FILE``'s then ``PROGRAMS_FILE``'s)
+    the bundled knowledge base."""
+    _BUNDLED[:] = [_joined([parse(json.loads(text), "bundled") for text in texts])]
 
 
 def bundled() -> KnowledgeBase:
     """The knowledge base shipped with the linter (read once per process)."""
     if not _BUNDLED:
-        path = bundled_path()
-        _BUNDLED.append(load(path) if path is not None else KnowledgeBase(()))
+        paths = [bundled_path(name) for name in (DATA_FILE, PROGRAMS_FILE)]
+        _BUNDLED.append(_joined([load(p) for p in paths if p is not None]))
     return _BUNDLED[0]

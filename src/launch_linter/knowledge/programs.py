@@ -1,147 +1,150 @@
-"""What ROS packages install and which programs give ROS 2 its ``/clock``, per release:
-data read from the packages' sources, each fact citing the file, branch and commit it was
-read from (docs/knowledge.md; checked by tests/knowledge/test_programs.py).
+"""Knowledge of programs, not of their tf: what a package's release installs, and which
+programs give ROS 2 its ``/clock``. Entries of kinds ``installed`` and ``clock`` in a
+knowledge file of format 2 (the bundled ones in ``programs.json``, each citing the file,
+branch and commit it was read from; docs/knowledge.md), read by the loader of
+:mod:`launch_linter.knowledge` and extended by a user's files as the tf entries are.
 
-- :data:`INSTALLED`: the executables a package's release for a distribution installs
+- ``installed``: the executables a package's release for some distributions installs
   (its build file's install rules): a node of that package with another ``type`` or
-  ``executable`` cannot start on that distribution.
-- :data:`CLOCK`: the programs and launch files that start Gazebo Sim without bridging
-  its clock to ROS, those that publish or may bridge ``/clock``, and the programs known
-  to publish no ``/clock``. ROS 2 nodes given ``use_sim_time`` true take their time from
-  ``/clock`` alone (ros2/design, articles/130_ros_time.md: "the time will be zero until
-  a message arrives on /clock"); Gazebo classic's ``gazebo_ros`` publishes it, Gazebo
-  Sim publishes its clock on its own transport only, which ``ros_gz_bridge`` bridges.
+  ``executable`` cannot start there (``node_executable_missing``).
+- ``clock``: the programs and launch files that start Gazebo Sim without bridging its
+  clock to ROS, those that publish or may bridge ``/clock``, and those known to publish
+  none (``sim_clock_not_bridged``). ROS 2 nodes given ``use_sim_time`` true take their
+  time from ``/clock`` alone (ros2/design, articles/130_ros_time.md: "the time will be
+  zero until a message arrives on /clock"); Gazebo classic's ``gazebo_ros`` publishes it,
+  Gazebo Sim publishes its clock on its own transport only, which ``ros_gz_bridge``
+  bridges.
 
 Standard library only: the core reads it.
 """
 
 from __future__ import annotations
 
-from launch_linter.knowledge import Source
+from typing import Any
+
+from launch_linter.knowledge.fields import KnowledgeError, Source, _source, _text, _texts
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+
+PROGRAM_KINDS = ("installed", "clock")
+"""Entry kinds of format 2 that describe programs (format 1 knows none of them)."""
+CLOCK_ROLES = ("publishes", "may_bridge", "gz_sim", "none")
+ANY = "*"
 
 
 class Installed:
-    """A package's executables in the releases of ``distros`` (ROS ``ros``)."""
+    """A package's executables in the releases of ``distros`` (ROS versions ``ros``)."""
 
-    __slots__ = ("package", "ros", "distros", "executables", "sources")
+    __slots__ = ("id", "package", "ros", "distros", "executables", "sources", "origin")
 
-    def __init__(self, package: str, ros: int, distros: tuple[str, ...],
-                 executables: tuple[str, ...], sources: tuple[Source, ...]) -> None:
+    def __init__(self, id: str, package: str, ros: tuple[int, ...], distros: tuple[str, ...],
+                 executables: tuple[str, ...], sources: tuple[Source, ...],
+                 origin: str) -> None:
+        self.id = id
         self.package = package
         self.ros = ros
         self.distros = distros
         self.executables = executables
         self.sources = sources
+        self.origin = origin
 
 
 class ClockFact:
-    """A program (``package``, ``executable``: a node, ``*`` any of the package's) or a
-    launch file (``package``, ``launch``: its path in the package's share folder) and
-    what it does with ``/clock``: ``publishes`` (Gazebo classic), ``may_bridge`` (a
-    bridge whose configuration may include /clock), ``gz_sim`` (starts or feeds Gazebo
-    Sim and bridges nothing) or ``none`` (publishes no clock)."""
+    """Programs (``executables`` of ``package``, ``*`` any of them) or launch files
+    (``launch_files``: paths in the package's share folder, ``*`` any) and what they do
+    with ``/clock`` (``clock``): ``publishes`` (Gazebo classic), ``may_bridge`` (a bridge
+    whose configuration may include /clock), ``gz_sim`` (starts or feeds Gazebo Sim and
+    bridges nothing) or ``none`` (publishes no clock)."""
 
-    __slots__ = ("package", "executable", "launch", "does", "sources")
+    __slots__ = ("id", "package", "ros", "executables", "launch_files", "clock", "sources",
+                 "origin")
 
-    def __init__(self, package: str, does: str, sources: tuple[Source, ...],
-                 executable: str | None = None, launch: str | None = None) -> None:
+    def __init__(self, id: str, package: str, ros: tuple[int, ...],
+                 executables: tuple[str, ...], launch_files: tuple[str, ...], clock: str,
+                 sources: tuple[Source, ...], origin: str) -> None:
+        self.id = id
         self.package = package
-        self.does = does
+        self.ros = ros
+        self.executables = executables
+        self.launch_files = launch_files
+        self.clock = clock
         self.sources = sources
-        self.executable = executable
-        self.launch = launch
+        self.origin = origin
 
 
-CLOCK_ROLES = ("publishes", "may_bridge", "gz_sim", "none")
 
-_RSP = "ros/robot_state_publisher"
-_RSP_1_13 = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "kinetic-devel",
-                   "d8600f658aa09c3cb68f034feec357dc1d24bb72", "32-37, 72")
-_RSP_1_14 = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "melodic-devel",
-                   "cd1c43cae1c9cbcdc0591bdb8a6a0a4c3a944299", "51-56, 98")
-_RSP_1_15 = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "1.15.0",
-                   "2bb8b4a5189f8c33ee025f8b5f9425f639f9cae0", "51, 97")
-_RSP_NOETIC = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "noetic-devel",
-                     "9afecc81119decb3535bb461d234193e796e68ff", "44, 85")
-_RSP_FOXY = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "foxy",
-                   "a1346e963b04b2c452eccdcbf69c7b8f81db314d", "44-46")
-_RSP_HUMBLE = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "humble",
-                     "8b5af4f31e0f754c7c262eb487ccd3956cb788cc", "48-50")
-_RSP_ROLLING = Source(_RSP, "robot_state_publisher", "CMakeLists.txt", "rolling",
-                      "e0f77e62457ae01f8dbf3b5c4cc62d15fa36dfad", "50-52")
-
-INSTALLED: tuple[Installed, ...] = (
-    # Until Melodic (1.13, 1.14) the deprecated ``state_publisher`` was built from the
-    # same source; 1.15.0, Noetic's release, installs robot_state_publisher alone.
-    Installed("robot_state_publisher", 1, ("kinetic", "lunar", "melodic"),
-              ("robot_state_publisher", "state_publisher"), (_RSP_1_13, _RSP_1_14)),
-    Installed("robot_state_publisher", 1, ("noetic",), ("robot_state_publisher",),
-              (_RSP_1_15, _RSP_NOETIC)),
-    Installed("robot_state_publisher", 2, ROS2_DISTROS[ROS2_DISTROS.index("foxy"):],
-              ("robot_state_publisher",), (_RSP_FOXY, _RSP_HUMBLE, _RSP_ROLLING)),
-)
-
-_GZ = "gazebosim/ros_gz"
-_GZ_SIM_HUMBLE = Source(_GZ, "ros_gz_sim", "ros_gz_sim/launch/gz_sim.launch.py.in", "humble",
-                        "5cc92f804739b8b72f71aa2551a4be893d74efc0", "142-149")
-_GZ_SIM_IRON = Source(_GZ, "ros_gz_sim", "ros_gz_sim/launch/gz_sim.launch.py.in", "iron",
-                      "14e4465305ac96beb4c93c506552783fbf6a46a0", "142-149")
-_GZ_SIM_JAZZY = Source(_GZ, "ros_gz_sim", "ros_gz_sim/launch/gz_sim.launch.py.in", "jazzy",
-                       "739cb42a5846cd12a526b97ba051a2d8cdbe034b", "129-136")
-_IGN_GAZEBO = Source(_GZ, "ros_ign_gazebo", "ros_ign_gazebo/launch/ign_gazebo.launch.py.in",
-                     "galactic", "6ffa8271e9db31ce8bdae4c491c23bb4271737cd", "40-63")
-_CREATE = Source(_GZ, "ros_gz_sim", "ros_gz_sim/src/create.cpp", "humble",
-                 "5cc92f804739b8b72f71aa2551a4be893d74efc0", "37 (no publisher)")
-_BRIDGE = Source(_GZ, "ros_gz_bridge", "ros_gz_bridge/src/parameter_bridge.cpp", "rolling",
-                 "a4d00a90a1a5f753a0d0fbfe8e1e142540aebadd", "31-61")
-_GZ_SIM_LAUNCH = Source(_GZ, "ros_gz_sim", "ros_gz_sim/launch/ros_gz_sim.launch.py", "rolling",
-                        "a4d00a90a1a5f753a0d0fbfe8e1e142540aebadd", "86-108")
-_GZ_SERVER = Source(_GZ, "ros_gz_sim", "ros_gz_sim/launch/gz_server.launch.py", "rolling",
-                    "a4d00a90a1a5f753a0d0fbfe8e1e142540aebadd", "43-95")
-_GAZEBO_ROS_INIT = Source("ros-simulation/gazebo_ros_pkgs", "gazebo_ros",
-                          "gazebo_ros/src/gazebo_ros_init.cpp", "ros2",
-                          "d52f7c471d1d2fd9425bf8621290bc4831be8dea", "161-165")
-
-CLOCK: tuple[ClockFact, ...] = (
-    # gz_sim.launch.py runs ``gz sim`` (ExecuteProcess) and nothing else, in every branch.
-    ClockFact("ros_gz_sim", "gz_sim", (_GZ_SIM_HUMBLE, _GZ_SIM_IRON, _GZ_SIM_JAZZY),
-              launch="launch/gz_sim.launch.py"),
-    ClockFact("ros_ign_gazebo", "gz_sim", (_IGN_GAZEBO,), launch="launch/ign_gazebo.launch.py"),
-    ClockFact("ros_gz_sim", "gz_sim", (_CREATE,), executable="create"),
-    ClockFact("ros_ign_gazebo", "gz_sim", (_CREATE,), executable="create"),
-    ClockFact("ros_gz_sim", "gz_sim", (_GZ_SERVER,), executable="gzserver"),
-    ClockFact("ros_gz_sim", "gz_sim", (_GZ_SERVER,), launch="launch/gz_server.launch.py"),
-    # parameter_bridge bridges the topics its arguments or configuration file name.
-    ClockFact("ros_gz_bridge", "may_bridge", (_BRIDGE,), executable="*"),
-    ClockFact("ros_ign_bridge", "may_bridge", (_BRIDGE,), executable="*"),
-    ClockFact("ros_gz_sim", "may_bridge", (_GZ_SIM_LAUNCH,), launch="launch/ros_gz_sim.launch.py"),
-    ClockFact("gazebo_ros", "publishes", (_GAZEBO_ROS_INIT,), executable="*"),
-    ClockFact("gazebo_ros", "publishes", (_GAZEBO_ROS_INIT,), launch="*"),
-)
-
-DISTROS = ROS1_DISTROS + ROS2_DISTROS
+def _sources(data: dict[str, Any], where: str) -> tuple[Source, ...]:
+    sources = data.get("sources")
+    if not isinstance(sources, list) or not sources:
+        raise KnowledgeError(f"{where}.sources must list where the entry was read")
+    return tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources))
 
 
-def installed(package: str, ros: int | None, distro: str | None) -> Installed | None:
-    """What ``package`` installs in ``distro`` (None: not known)."""
-    for fact in INSTALLED:
-        if fact.package == package and fact.ros == ros and distro in fact.distros:
-            return fact
-    return None
+def parse_program_entry(data: dict[str, Any], kind: str, ros: tuple[int, ...], where: str,
+                        origin: str) -> Installed | ClockFact:
+    """An ``installed`` or ``clock`` entry (its id, kind and ``ros`` already checked);
+    :class:`KnowledgeError` names the fault."""
+    entry_id = str(data.get("id"))
+    match = data.get("match")
+    if not isinstance(match, dict):
+        raise KnowledgeError(f"{where}.match must be an object")
+    package = _text(match.get("package"), f"{where}.match.package")
+    if kind == "installed":
+        distros = _texts(data.get("distros"), f"{where}.distros")
+        known = (ROS1_DISTROS if 1 in ros else ()) + (ROS2_DISTROS if 2 in ros else ())
+        unknown = [d for d in distros if d not in known]
+        if not distros or unknown:
+            raise KnowledgeError(f"{where}.distros must list distributions of ROS "
+                                 f"{'/'.join(map(str, ros))} ({', '.join(known)})")
+        executables = _texts(data.get("installs"), f"{where}.installs")
+        if not executables:
+            raise KnowledgeError(f"{where}.installs must list the executables installed")
+        return Installed(entry_id, package, ros, distros, executables,
+                         _sources(data, where), origin)
+    executables = _texts(match.get("executables"), f"{where}.match.executables")
+    launch_files = _texts(match.get("launch_files"), f"{where}.match.launch_files")
+    if not executables and not launch_files:
+        raise KnowledgeError(f"{where}.match needs executables or launch_files for a "
+                             f"clock entry")
+    clock = data.get("clock")
+    if clock not in CLOCK_ROLES:
+        raise KnowledgeError(f"{where}.clock must be one of {', '.join(CLOCK_ROLES)}")
+    return ClockFact(entry_id, package, ros, executables, launch_files, str(clock),
+                     _sources(data, where), origin)
 
 
-def clock_program(package: str, executable: str) -> ClockFact | None:
-    """What a node's program does with /clock, None when not known here."""
-    for fact in CLOCK:
-        if fact.package == package and fact.executable in (executable, "*"):
-            return fact
-    return None
+class Programs:
+    """The ``installed`` and ``clock`` facts of a knowledge base, by package, in the
+    base's order (a user's first): a look-up answers with the first that matches."""
 
+    def __init__(self, facts: tuple[Installed | ClockFact, ...]) -> None:
+        self.facts = facts
+        self._installed: dict[str, list[Installed]] = {}
+        self._clock: dict[str, list[ClockFact]] = {}
+        for fact in facts:
+            if isinstance(fact, Installed):
+                self._installed.setdefault(fact.package, []).append(fact)
+            else:
+                self._clock.setdefault(fact.package, []).append(fact)
 
-def clock_launch(package: str, launch: str) -> ClockFact | None:
-    """What a package's launch file (its path in the share folder) does with /clock."""
-    for fact in CLOCK:
-        if fact.package == package and fact.launch in (launch, "*"):
-            return fact
-    return None
+    def installed(self, package: str, ros: int | None, distro: str | None
+                  ) -> Installed | None:
+        """What ``package`` installs in ``distro`` (None: not known)."""
+        for fact in self._installed.get(package, ()):
+            if ros in fact.ros and distro in fact.distros:
+                return fact
+        return None
+
+    def clock_program(self, package: str, executable: str, ros: int) -> ClockFact | None:
+        """What a node's program does with /clock, None when not known."""
+        for fact in self._clock.get(package, ()):
+            if ros in fact.ros and (executable in fact.executables
+                                    or ANY in fact.executables):
+                return fact
+        return None
+
+    def clock_launch(self, package: str, launch: str, ros: int) -> ClockFact | None:
+        """What a package's launch file (its path in the share folder) does with /clock."""
+        for fact in self._clock.get(package, ()):
+            if ros in fact.ros and (launch in fact.launch_files or ANY in fact.launch_files):
+                return fact
+        return None

@@ -4,7 +4,7 @@
 Reports a launched node (ROS 1 `type`, ROS 2 `executable`) of a package whose installed
 executables for the target distribution (`--ros-distro`, the `ros-distro` key or
 `ROS_DISTRO`) the knowledge base knows, read from the package's build file
-(`knowledge/programs.py`, docs/knowledge.md), when that executable is not among them:
+(`knowledge/programs.json`, docs/knowledge.md), when that executable is not among them:
 robot_state_publisher's `state_publisher`, built until Melodic (1.14) and gone from
 Noetic's release (1.15.0 installs `robot_state_publisher` alone; ROS 2 never had it).
 An error when the distribution is known; without one, an info when a known ROS 1
@@ -41,7 +41,6 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.knowledge.programs import installed
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
 from launch_linter.rules._api import Finding, RuleContext
@@ -63,12 +62,13 @@ def _distro_of(context: RuleContext, ros: int | None) -> str | None:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    knowledge = context.knowledge
     for node in context.tree.nodes:
         if node.kind != "node" or node.plugin is not None or not node.executable:
             continue
         distro = _distro_of(context, node.ros)
         if distro is not None:
-            fact = installed(node.package, node.ros, distro)
+            fact = knowledge.installed(node.package, node.ros, distro)
             if fact is None or node.executable in fact.executables:
                 continue
             yield finding_at_node(node, (
@@ -79,11 +79,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
             continue
         if node.ros != 1 or context.distro is not None:
             continue
-        newest = installed(node.package, 1, ROS1_DISTROS[-1])
+        newest = knowledge.installed(node.package, 1, ROS1_DISTROS[-1])
         if newest is None or node.executable in newest.executables:
             continue
         gone_from = next((d for d in ROS1_DISTROS
-                          if (f := installed(node.package, 1, d)) is not None
+                          if (f := knowledge.installed(node.package, 1, d)) is not None
                           and node.executable not in f.executables), ROS1_DISTROS[-1])
         yield Finding(node.path, node.line, node.column, (
             f"{node.package} installs no executable '{node.executable}' from "

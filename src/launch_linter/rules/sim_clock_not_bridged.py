@@ -7,7 +7,7 @@ spawner or the `gzserver` node) and gives nodes `use_sim_time` true, while nothi
 tree publishes or bridges `/clock`: no `ros_gz_bridge`/`ros_ign_bridge` node, no
 `ros_gz_sim.launch.py` (which starts a bridge), no Gazebo classic (`gazebo_ros`, whose
 `gazebo_ros_init` publishes `/clock`). What each program and launch file does with the
-clock is knowledge read from its source (docs/knowledge.md, `knowledge/programs.py`):
+clock is knowledge read from its source (docs/knowledge.md, `knowledge/programs.json`):
 ros_gz_sim's `gz_sim.launch.py` runs `gz sim` and nothing else in every branch.
 The proof must be complete: a node the knowledge base does not know, or an include not
 followed (other than the known launch files), could bridge the clock, so the tree stays
@@ -74,7 +74,6 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
-from launch_linter.knowledge.programs import clock_launch, clock_program
 from launch_linter.knowledge.publish import truth
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
@@ -132,20 +131,20 @@ def check(context: RuleContext) -> Iterator[Finding]:
             continue
         matched = _NOT_FOLLOWED.match(problem.message)
         target = _include_target(matched.group(2)) if matched else None
-        launch_fact = clock_launch(*target) if target else None
+        launch_fact = context.knowledge.clock_launch(*target) if target else None
         if launch_fact is None or target is None:
             open_because = open_because or (
                 f"the include at {problem.path}:{problem.line} is not followed")
             continue
-        if launch_fact.does != "gz_sim":
+        if launch_fact.clock != "gz_sim":
             return
         includes.append(_Evidence(Location(problem.path, problem.line, problem.column),
                                   Condition(), f"{target[0]}'s {target[1]}"))
     for node in nodes:
-        fact = clock_program(node.package, node.executable)
-        if fact is not None and fact.does in ("publishes", "may_bridge"):
+        fact = context.knowledge.clock_program(node.package, node.executable)
+        if fact is not None and fact.clock in ("publishes", "may_bridge"):
             return
-        if fact is not None and fact.does == "gz_sim":
+        if fact is not None and fact.clock == "gz_sim":
             spawners.append(_Evidence(Location(node.path, node.line, node.column),
                                       node.condition, program_of(node)))
         elif fact is None and entry_of(context, node) is None:
@@ -156,8 +155,9 @@ def check(context: RuleContext) -> Iterator[Finding]:
     if not evidence:
         return
     simulator = evidence[0]
-    waiting = [n for n in nodes if _on_sim_time(n) and clock_program(n.package, n.executable)
-               is None and not simulator.condition.excludes(n.condition)]
+    waiting = [n for n in nodes if _on_sim_time(n)
+               and context.knowledge.clock_program(n.package, n.executable) is None
+               and not simulator.condition.excludes(n.condition)]
     if not waiting:
         return
     shown = ", ".join(f"{program_of(n)} ({n.path}:{n.line})" for n in waiting[:MAX_SHOWN])
