@@ -6,6 +6,8 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import pytest
+
 from launch_linter.engine import LintOptions, lint_paths
 
 RULE = "ros2_param_file_unmatched"
@@ -146,3 +148,26 @@ def test_hostile_file_of_20000_node_keys(tmp_path: Path) -> None:
     assert time.process_time() - start < 20
     # Bounded: the sections kept (MAX_PARAMS) are judged, one finding.
     assert len(found) == 1 and found[0][0] == "params.yaml"
+
+
+def test_a_parameter_file_is_walked_once_per_node(tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """The node's parameters and the keys that miss it come from one walk of the file's
+    sections (they were two walks, each matching every key's pattern)."""
+    from launch_linter.frontends import params
+
+    walks: list[object] = []
+    walk = params._ros2_sections_keyed
+
+    def counted(document: object) -> list[tuple[str, dict[object, object], tuple[str, ...]]]:
+        walks.append(document)
+        return walk(document)
+
+    monkeypatch.setattr(params, "_ros2_sections_keyed", counted)
+    launch = PY.format(nodes=NODE.format(extra=", name='driver'"))
+    assert run(tmp_path, launch, KEYED.format(key="driver_node")) == [
+        ("params.yaml", 1, "error")]
+    assert len(walks) == 1
+    walks.clear()
+    assert run(tmp_path, launch, KEYED.format(key="driver")) == []
+    assert len(walks) == 1

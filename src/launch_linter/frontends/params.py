@@ -270,31 +270,33 @@ def ros2_file_params(document: object, name: str | None, namespace: str | None
 def ros2_file_params_keyed(document: object, name: str | None, namespace: str | None
                            ) -> list[tuple[str, str, tuple[str, ...]]]:
     """:func:`ros2_file_params`, each with its path of keys in the file."""
+    return ros2_file_params_and_misses(document, name, namespace)[0]
+
+
+def ros2_file_params_and_misses(
+    document: object, name: str | None, namespace: str | None,
+) -> tuple[list[tuple[str, str, tuple[str, ...]]], list[tuple[str, tuple[str, ...]]] | None]:
+    """:func:`ros2_file_params_keyed`, and the node keys of the file (each with its path of
+    keys) when it has some and none matches the node (see :func:`ros2_file_params`): the
+    node takes nothing from the file; None when one matches or it has no node key. One
+    walk of the file's sections answers both (a front-end asks both of every parameter
+    file it gives a node)."""
     full = node_full_name(name, namespace)
     out: list[tuple[str, str, tuple[str, ...]]] = []
+    missed: list[tuple[str, tuple[str, ...]]] = []
+    matched = False
     for key, section, keys in _ros2_sections_keyed(document):
         if _section_pattern(key).match(full):
+            matched = True
             out.extend(flatten_keyed(section, ".", keys=keys))
-    return out
+        elif not matched:
+            missed.append((key, keys[:-1]))
+    return out, None if matched or not missed else missed
 
 
 def node_full_name(name: str | None, namespace: str | None) -> str:
     """``/namespace/name`` as rclcpp's fully qualified name writes it."""
     return "/" + "/".join(p for p in ((namespace or "").strip("/"), name or "") if p)
-
-
-def unmatched_node_keys(document: object, name: str, namespace: str
-                        ) -> list[tuple[str, tuple[str, ...]]] | None:
-    """The node keys of a ROS 2 parameter file (each with its path of keys) when it has
-    some and none matches the node ``namespace/name`` (see :func:`ros2_file_params`): the
-    node takes nothing from the file. None when one matches or it has no node key."""
-    full = node_full_name(name, namespace)
-    keys: list[tuple[str, tuple[str, ...]]] = []
-    for key, _, path in _ros2_sections_keyed(document):
-        if _section_pattern(key).match(full):
-            return None
-        keys.append((key, path[:-1]))
-    return keys or None
 
 
 class PlacedDocument(NamedTuple):

@@ -34,10 +34,9 @@ from launch_linter.frontends.params import (
     node_full_name,
     read_yaml_file,
     read_yaml_file_placed,
-    ros2_file_params_keyed,
+    ros2_file_params_and_misses,
     spawned_controllers,
     spawner_words,
-    unmatched_node_keys,
 )
 from launch_linter.frontends.record import (
     Command,
@@ -350,12 +349,12 @@ class Ros2Loader(Ros2Runner):
                 shown = self._display(path)
                 placed.append(PlacedDocument(document, shown, keys))
                 files.append(shown)
-                others = (None if name is None or namespace is None
-                          else unmatched_node_keys(document, name, namespace))
+                from_file, missed = ros2_file_params_and_misses(document, name, namespace)
+                others = None if name is None or namespace is None else missed
                 if others is not None:
                     unmatched.append((shown, tuple(
                         ("/".join(at), *keys.get(at, (0, 0))) for _, at in others)))
-                for key, value, at in ros2_file_params_keyed(document, name, namespace):
+                for key, value, at in from_file:
                     params.append((key, value))
                     line_column = keys.get(at)
                     places.append(node_place if line_column is None
