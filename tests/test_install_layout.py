@@ -6,6 +6,8 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import pytest
+
 from launch_linter.engine import LintOptions, lint_paths
 from launch_linter.workspace.cmake_install import commands, read_cmake_layout
 from launch_linter.workspace.install_layout import read_layout
@@ -332,3 +334,28 @@ def test_a_ros1_find_of_a_ros2_package_proves_nothing_absent(tmp_path: Path) -> 
     found = findings(top)
     assert not [f for f in found if f[0] == "roslaunch_error"]
     assert any("builds for ROS 2" in m for r, m in found if r == "unresolved")
+
+
+def test_a_package_xml_is_parsed_once_for_both_questions(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Which ROS an XML launch file is (the engine) and whether the package has an install
+    layout (``building_for`` 2) are answered from one parse of its package.xml."""
+    from launch_linter.workspace import packages
+
+    parsed: list[tuple[str, ...]] = []
+    parse = packages.parse_xml
+
+    def counted(data: bytes, text_tags: tuple[str, ...] = ()) -> object:
+        if "build_type" in text_tags:
+            parsed.append(text_tags)
+        return parse(data, text_tags=text_tags)
+
+    monkeypatch.setattr(packages, "parse_xml", counted)
+    pkg = ament_package(tmp_path / "src", "demo",
+                        "install(DIRECTORY bringup/launch DESTINATION share/${PROJECT_NAME})")
+    write(pkg / "bringup" / "launch" / "inner.launch.py", INNER)
+    top = write(pkg / "bringup" / "launch" / "top.launch.xml",
+                '<launch>\n  <include file="$(find-pkg-share demo)/launch/inner.launch.py"/>\n'
+                '</launch>\n')
+    assert transforms(top) == ["b"]
+    assert len(parsed) == 1

@@ -198,33 +198,27 @@ content: ROS 1 files left in migrated ament packages are common."""
 
 
 if TYPE_CHECKING:
-    Versions = Dict[str, Tuple[Optional[int], reads.ReadLog]]
-    """Each ``package.xml``'s ROS version, with what reading it read (``remembered``)."""
     Packages = Dict[Tuple[str, ...], Tuple[PackageIndex, reads.ReadLog]]
     """Package indexes by roots, and by folder (see ``load_options_for``)."""
 
 
-def ros_version_for(path: str, options: LintOptions, cache: Versions) -> int | None:
-    """``--ros`` if given; else, for ``*.xml`` files, the nearest package's build type."""
+def ros_version_for(path: str, options: LintOptions, index: PackageIndex) -> int | None:
+    """``--ros`` if given; else, for ``*.xml`` files, the nearest package's build type
+    (its manifest parsed once per index, which the install layout reads too)."""
     if options.ros is not None:
         return options.ros
     if not path.lower().endswith(PACKAGE_DECIDES_SUFFIXES):
         return None
-    from launch_linter.workspace.packages import nearest_package_xml, package_ros_version
-
-    manifest = nearest_package_xml(path)
-    if manifest is None:
-        return None
-    return reads.remembered(cache, manifest, lambda: package_ros_version(manifest))
+    return index.ros_version_of(path)
 
 
 def load_options_for(
     item: InputFile, options: LintOptions, cache: Packages,
-    robots: RobotCache | None = None, versions: Versions | None = None,
+    robots: RobotCache | None = None,
 ) -> LoadOptions:
-    """How to load ``item``. ``cache``, ``robots`` and ``versions`` (each package.xml's ROS
-    version) are shared by the files of one run, so each is worked out once (and each
-    file depends on what working it out read: ``reads.remembered``)."""
+    """How to load ``item``. ``cache`` (package indexes, each with its manifests' ROS
+    versions) and ``robots`` are shared by the files of one run, so each is worked out
+    once (and each file depends on what working it out read: ``reads.remembered``)."""
     from launch_linter.workspace.packages import default_package_roots
 
     if options.package_paths is not None:
@@ -248,7 +242,7 @@ def load_options_for(
         packages=index,
         display_path=_display_function(item),  # type: ignore[arg-type]
         study_errors=options.profile == "study",
-        ros_version=ros_version_for(item.path, options, {} if versions is None else versions),
+        ros_version=ros_version_for(item.path, options, index),
         robots=robots,
     )
 
@@ -369,8 +363,7 @@ MAX_INTERNAL_MESSAGE = 500
 
 
 def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
-              cache: Packages, robots: RobotCache | None = None,
-              versions: Versions | None = None) -> Linted:
+              cache: Packages, robots: RobotCache | None = None) -> Linted:
     """One file, isolated: an unexpected exception costs this file only."""
     from launch_linter.frontends import python_trees
     from launch_linter.frontends.dispatch import load_tree
@@ -379,7 +372,7 @@ def _lint_one(item: InputFile, options: LintOptions, rules: Sequence[Rule],
         # The fixes are located while the front-end's Python syntax trees are at hand, so
         # that no file is parsed twice (and the results cache keeps them located).
         with python_trees.keeping() as trees:
-            tree = load_tree(item.path, load_options_for(item, options, cache, robots, versions))
+            tree = load_tree(item.path, load_options_for(item, options, cache, robots))
             found = check_tree(tree, rules, options)
         located = _with_located_fixes(found, options.ros_distro, trees=trees)
         return tree, _file_record(item, tree), list(located)
@@ -413,16 +406,14 @@ def _lint_chunk(
     from launch_linter.frontends.robot.describe import RobotCache
 
     robots = RobotCache()
-    versions: Versions = {}
     out: list[Recorded] = []
     for item in items:
         log = None
         if record:
             with reads.recording() as log:
-                tree, found_record, found = _lint_one(
-                    item, options, rules, cache, robots, versions)
+                tree, found_record, found = _lint_one(item, options, rules, cache, robots)
         else:
-            tree, found_record, found = _lint_one(item, options, rules, cache, robots, versions)
+            tree, found_record, found = _lint_one(item, options, rules, cache, robots)
         # Without the trees a run's memory stays flat: each is dropped once its rules ran.
         kept = tree if keep_trees or tree is None else _directives_only(tree)
         out.append(((kept, found_record, found), log))

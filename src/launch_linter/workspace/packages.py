@@ -56,6 +56,7 @@ class PackageIndex:
         self._installed: set[str] = set()
         self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
         self._manifests: dict[str, tuple[str | None, reads.ReadLog]] = {}
+        self._builds: dict[str, tuple[BuildDeclarations | None, reads.ReadLog]] = {}
         self._read = reads.ReadLog()
         """What the crawl read: every file that asks for a package depends on it."""
 
@@ -73,6 +74,20 @@ class PackageIndex:
         depends on what it looked at (``reads.remembered``)."""
         directory = os.path.dirname(os.path.abspath(path))
         return reads.remembered(self._manifests, directory, lambda: nearest_package_xml(path))
+
+    def ros_version_of(self, path: str) -> int | None:
+        """Which ROS the package holding ``path`` builds for, as its nearest
+        ``package.xml`` says (None: no manifest, or it does not say)."""
+        manifest = self.package_xml_of(path)
+        return None if manifest is None else self.build_ros_version(manifest)
+
+    def build_ros_version(self, manifest: str, building_for: int | None = None) -> int | None:
+        """:func:`package_ros_version` with the manifest parsed once in this index's life:
+        the engine (which ROS a launch file is) and the install layout (``building_for``
+        2) both ask it, and each asker depends on what the parse read."""
+        declarations = reads.remembered(self._builds, manifest,
+                                        lambda: read_build_declarations(manifest))
+        return None if declarations is None else declarations.ros_version(building_for)
 
     def _all(self) -> dict[str, str]:
         if self._packages is None:
@@ -178,7 +193,7 @@ class PackageIndex:
         runs from the source folder: ``$(find)`` is it, in the devel space)."""
         def read() -> Layout | None:
             manifest = os.path.join(directory, "package.xml")
-            ros2 = reads.is_file(manifest) and package_ros_version(manifest, 2) == 2
+            ros2 = reads.is_file(manifest) and self.build_ros_version(manifest, 2) == 2
             # Imported here: install rules are read only when a file is not where the
             # source folder would have it.
             from launch_linter.workspace.install_layout import read_layout
@@ -401,11 +416,55 @@ def _holds(condition: str | None, ros_version: int | None) -> bool | None:
     return (ros_version == int(match.group(2))) == (match.group(1) == "==")
 
 
-def package_ros_version(manifest: str, building_for: int | None = None) -> int | None:
-    """Which ROS a ``package.xml`` builds for: 2 for an ``ament_*`` build type (or
-    buildtool), 1 for catkin; None when it does not say (or cannot be read). A package
-    that builds for both (``<build_type condition="$ROS_VERSION == 1">catkin</build_type>``
-    beside ``ament_python`` for 2) says which only for ``building_for`` given."""
+class BuildDeclarations:
+    """What a ``package.xml`` says about its build, parsed once: its ``<export>``'s
+    ``build_type`` and its ``buildtool_depend`` elements in document order, each with its
+    condition, and the manifest's format; :meth:`ros_version` answers for any target."""
+
+    __slots__ = ("declared", "format")
+
+    def __init__(self, declared: tuple[tuple[str, str | None, str], ...],
+                 manifest_format: str | None) -> None:
+        self.declared = declared
+        """``(tag, condition, text)``: tag ``build_type`` or ``buildtool_depend``."""
+        self.format = manifest_format
+
+    def ros_version(self, building_for: int | None = None) -> int | None:
+        """Which ROS the package builds for: 2 for an ``ament_*`` build type (or
+        buildtool), 1 for catkin; None when it does not say. A package that builds for
+        both (``<build_type condition="$ROS_VERSION == 1">catkin</build_type>`` beside
+        ``ament_python`` for 2) says which only for ``building_for`` given."""
+        build_type: str | None = None
+        buildtools: list[str] = []
+        for tag, condition, text in self.declared:
+            if tag == "build_type" and build_type is not None:
+                continue
+            holds = _holds(condition, building_for)
+            if holds is None:
+                return None
+            if holds and tag == "build_type":
+                build_type = text
+            elif holds:
+                buildtools.append(text)
+        if build_type is not None:
+            if build_type.startswith("ament"):
+                return 2
+            if build_type == "catkin":
+                return 1
+            return None
+        if any(tool.startswith("ament") for tool in buildtools):
+            return 2
+        if "catkin" in buildtools:
+            return 1
+        # ``ament_python`` packages often name no buildtool; without a build type a
+        # format-1 manifest is ROS 1 (ROS 2 packages use format 2 or 3).
+        if self.format in (None, "1"):
+            return 1
+        return None
+
+
+def read_build_declarations(manifest: str) -> BuildDeclarations | None:
+    """A ``package.xml``'s :class:`BuildDeclarations`, None when it cannot be read."""
     try:
         document = parse_xml(
             read_regular_file(manifest, MAX_MANIFEST_BYTES),
@@ -413,36 +472,18 @@ def package_ros_version(manifest: str, building_for: int | None = None) -> int |
         )
     except (OSError, XmlError):
         return None
-    build_type: str | None = None
-    buildtools: list[str] = []
+    declared: list[tuple[str, str | None, str]] = []
     for child in document.root.children:
         if child.tag == "export":
-            for grandchild in child.children:
-                if grandchild.tag != "build_type" or build_type is not None:
-                    continue
-                holds = _holds(grandchild.get("condition"), building_for)
-                if holds is None:
-                    return None
-                if holds:
-                    build_type = grandchild.text.strip()
+            declared.extend(("build_type", grandchild.get("condition"), grandchild.text.strip())
+                            for grandchild in child.children if grandchild.tag == "build_type")
         elif child.tag == "buildtool_depend":
-            holds = _holds(child.get("condition"), building_for)
-            if holds is None:
-                return None
-            if holds:
-                buildtools.append(child.text.strip())
-    if build_type is not None:
-        if build_type.startswith("ament"):
-            return 2
-        if build_type == "catkin":
-            return 1
-        return None
-    if any(tool.startswith("ament") for tool in buildtools):
-        return 2
-    if "catkin" in buildtools:
-        return 1
-    # ``ament_python`` packages often name no buildtool; without a build type a
-    # format-1 manifest is ROS 1 (ROS 2 packages use format 2 or 3).
-    if document.root.get("format") in (None, "1"):
-        return 1
-    return None
+            declared.append(("buildtool_depend", child.get("condition"), child.text.strip()))
+    return BuildDeclarations(tuple(declared), document.root.get("format"))
+
+
+def package_ros_version(manifest: str, building_for: int | None = None) -> int | None:
+    """Which ROS a ``package.xml`` builds for (:meth:`BuildDeclarations.ros_version`);
+    None when it does not say or cannot be read."""
+    declarations = read_build_declarations(manifest)
+    return None if declarations is None else declarations.ros_version(building_for)
