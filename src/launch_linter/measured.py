@@ -10,21 +10,52 @@ import json
 import math
 import os
 from functools import lru_cache
+from typing import Any
 
 DATA = "precision.json"
+VERDICTS = "verdicts.json"
+"""The verdicts recorded per rule in docs/evaluation's verdict files, counted as written
+(``scripts/verdict_counts.py``): different samples and code states, not one precision."""
+
+
+def _rules_of(name: str) -> dict[str, Any]:
+    # A plain file next to the module: a standalone linter (which embeds modules without
+    # their data) finds none and says "not measured".
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
+    try:
+        with open(path, encoding="utf-8") as handle:
+            rules = json.load(handle).get("rules", {})
+    except (OSError, ValueError, AttributeError):
+        return {}
+    return rules if isinstance(rules, dict) else {}
 
 
 @lru_cache(maxsize=None)
 def _table() -> dict[str, dict[str, dict[str, float]]]:
-    # A plain file next to the module: a standalone linter (which embeds modules without
-    # their data) finds none and says "not measured".
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", DATA)
-    try:
-        with open(path, encoding="utf-8") as handle:
-            rules = json.load(handle).get("rules", {})
-    except (OSError, ValueError):
-        return {}
-    return rules if isinstance(rules, dict) else {}
+    return _rules_of(DATA)
+
+
+@lru_cache(maxsize=None)
+def _verdicts() -> dict[str, list[list[Any]]]:
+    return _rules_of(VERDICTS)
+
+
+def _label(label: str) -> str:
+    """A verdict label as written, quoted when it is more than one word."""
+    return label if label.replace("_", "").isalnum() else repr(label)
+
+
+def _recorded(rule_id: str) -> str:
+    """``not measured``, with the verdicts recorded for the rule where there are some:
+    each verdict file and its labels as written, never merged into a rate."""
+    files = _verdicts().get(rule_id)
+    if not isinstance(files, list) or not files:
+        return "not measured"
+    shown = "; ".join(
+        f"{name} " + ", ".join(f"{count} {_label(label)}" for label, count in labels.items())
+        for name, labels in files)
+    return ("not measured on one sample; verdicts recorded in docs/evaluation (different "
+            f"samples and code states, not a rate): {shown}")
 
 
 SMALL_SAMPLE = 30
@@ -57,10 +88,11 @@ def precision_text(rule_id: str) -> str:
     """The precision at the current levels with its sample size (``100% of 6 judged,
     small sample: 95% interval 61% to 100%``), or that of a rule whose warnings and errors
     went away (``... at the study's level``), or of one judged at warning after the study
-    and lowered since (``... at warning, now info``), or ``not measured``."""
+    and lowered since (``... at warning, now info``), or ``not measured`` (with the
+    verdicts recorded for it elsewhere, per file, where there are some)."""
     entry = _table().get(rule_id)
     if not entry:
-        return "not measured"
+        return _recorded(rule_id)
     after, before = entry.get("after"), entry.get("before")
     if after:
         return _rate(after)
@@ -69,4 +101,4 @@ def precision_text(rule_id: str) -> str:
     judged = entry.get("judged")
     if judged:
         return f"{_rate(judged)}; at warning, now info"
-    return "not measured"
+    return _recorded(rule_id)
