@@ -52,6 +52,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("sim_clock_not_bridged", Category.TF),
     ("node_executable_missing", Category.LAUNCH),
     ("camera_frame_not_optical", Category.TF),
+    ("optical_rotated_twice", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),
     ("ros2_schema", Category.LAUNCH),

@@ -121,7 +121,8 @@ UNPUBLISHED_LEVEL = Severity.INFO
 """A camera frame no link of a complete description and nothing in the tree publishes."""
 
 
-def _product(a: Quaternion, b: Quaternion) -> Quaternion:
+def compose(a: Quaternion, b: Quaternion) -> Quaternion:
+    """The Hamilton product: ``b`` expressed in the frame ``a`` turns to."""
     ax, ay, az, aw = a
     bx, by, bz, bw = b
     return (aw * bx + ax * bw + ay * bz - az * by,
@@ -158,7 +159,7 @@ def _down_to(chain: list[tuple[str, Edge | None]], ancestor: str) -> Quaternion 
         if edge is None or edge.rotation is None or (
                 edge.joint is not None and edge.joint.dynamic):
             return None
-        rotation = _product(edge.rotation, rotation)
+        rotation = compose(edge.rotation, rotation)
     return None
 
 
@@ -183,7 +184,7 @@ def relative_rotation(body: str, frame: str, parents: dict[str, Edge]) -> Quater
     body_rotation, frame_rotation = _down_to(body_chain, common), _down_to(frame_chain, common)
     if body_rotation is None or frame_rotation is None:
         return None
-    return _product(_inverse(body_rotation), frame_rotation)
+    return compose(_inverse(body_rotation), frame_rotation)
 
 
 def camera_in_link(node: NodeRecord) -> Quaternion | None:
@@ -199,7 +200,7 @@ def camera_in_link(node: NodeRecord) -> Quaternion | None:
         if turn is None:
             return None
         roll, pitch, yaw = turn
-        rotation = _product(rotation, quaternion_from_ypr(yaw, pitch, roll))
+        rotation = compose(rotation, quaternion_from_ypr(yaw, pitch, roll))
     return rotation
 
 
@@ -272,7 +273,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             rotation = (None if body is None or camera is None
                         else relative_rotation(body, frame, parents))
             if rotation is not None and camera is not None:
-                rotation = _product(_inverse(camera), rotation)
+                rotation = compose(_inverse(camera), rotation)
                 if same_rotation(rotation, OPTICAL, 1e-3):
                     continue
                 turned = "" if camera == IDENTITY else " (and the sensor's <pose>)"
