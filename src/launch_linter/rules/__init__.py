@@ -28,6 +28,7 @@ def _load() -> None:
         bad_number,
         bad_quaternion,
         camera_frame_not_optical,
+        camera_streams_one_frame,
         component_default_frames,
         conflicting_transform,
         dup_name,

@@ -53,6 +53,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("node_executable_missing", Category.LAUNCH),
     ("camera_frame_not_optical", Category.TF),
     ("optical_rotated_twice", Category.TF),
+    ("camera_streams_one_frame", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),
     ("ros2_schema", Category.LAUNCH),
