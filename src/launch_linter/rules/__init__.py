@@ -56,6 +56,7 @@ def _load() -> None:
         rep105_order,
         reversed_name,
         robot_frame_collision,
+        ros1_unused_arg,
         ros2_bad_flag,
         ros2_param_file_unmatched,
         ros2_positional_args,
