@@ -30,11 +30,19 @@ def test_an_argument_an_include_gets_another_value_for_is_a_warning(tmp_path: Pa
     assert found(fixed) == []
 
 
-def test_a_parameter_of_the_same_name_given_another_value_is_a_warning() -> None:
+def test_a_frame_parameter_of_its_name_written_out_is_a_warning() -> None:
+    xml = ('<launch>\n<arg name="odom_frame" default="odom"/>\n'
+           '<node pkg="p" type="t" name="n">\n'
+           '<param name="odom_frame" value="odom"/>\n</node>\n</launch>')
+    assert found(xml) == [(2, "warning", (4,))]
+    assert found(xml.replace('value="odom"', 'value="base_frame"')) == [(2, "warning", (4,))]
+
+
+def test_a_frame_tied_to_another_argument_is_info() -> None:
     xml = ('<launch>\n<arg name="odom_frame" default="odom"/>\n<arg name="base_frame"/>\n'
            '<node pkg="p" type="t" name="n">\n'
            '<param name="odom_frame" value="$(arg base_frame)"/>\n</node>\n</launch>')
-    assert found(xml) == [(2, "warning", (5,))]
+    assert found(xml) == [(2, "info", ())]
 
 
 def test_an_argument_nothing_names_is_info() -> None:
@@ -70,9 +78,15 @@ def test_value_arguments_and_group_arguments_are_not_the_interface() -> None:
 
 
 def test_an_unclosed_read_is_no_read() -> None:
-    xml = ('<launch>\n<arg name="clock" default="false"/>\n'
-           '<param name="clock" value="$(arg clock"/>\n</launch>')
+    xml = ('<launch>\n<arg name="frame" default="a"/>\n'
+           '<param name="frame" value="$(arg frame"/>\n</launch>')
     assert [level for _, level, _ in found(xml)] == ["warning"]
+
+
+def test_another_setting_the_file_fixes_is_info() -> None:
+    xml = ('<launch>\n<arg name="headless" default="false"/>\n'
+           '<param name="headless" value="true"/>\n</launch>')
+    assert found(xml) == [(2, "info", ())]
 
 
 def test_twenty_thousand_arguments_take_linear_time() -> None:

@@ -448,7 +448,9 @@ class Ros1Base:
                            f"value instead, so {arg.name}:=... given to this file is "
                            f"dropped without a word; pass value=\"$(arg {arg.name})\" "
                            f"there")
-                related = (Location(display, arg.passed[0], arg.passed[1]),)
+                # The related place marks the warning (ros1_unused_arg): a frame dropped.
+                related = ((Location(display, arg.passed[0], arg.passed[1]),)
+                           if arg.frame_dropped else ())
             self.problems.append(Problem("ros1_unused_arg", display, arg.line, arg.column,
                                          message, related=related))
 

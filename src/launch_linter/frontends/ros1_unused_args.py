@@ -43,16 +43,33 @@ def _hands_on(element: Element) -> bool:
 class UnusedArg:
     """A declared argument of one file that nothing in the file reads."""
 
-    __slots__ = ("column", "line", "name", "passed")
+    __slots__ = ("column", "default", "instead", "line", "name", "passed")
 
-    def __init__(self, name: str, line: int, column: int,
-                 passed: tuple[int, int] | None) -> None:
+    def __init__(self, name: str, line: int, column: int, default: str | None = None,
+                 passed: tuple[int, int] | None = None, instead: str | None = None) -> None:
         self.name = name
         self.line = line
         self.column = column
+        self.default = default
+        """Its ``default`` as written (None without one)."""
         self.passed = passed
         """Where the file gives an include's argument or a parameter of the same name
-        another value (line, column): the declared one was meant to go there."""
+        a value of its own (line, column): the declared one was meant to go there."""
+        self.instead = instead
+        """That value as written (None when it is no ``value`` attribute)."""
+
+    @property
+    def frame_dropped(self) -> bool:
+        """Whether it names a frame (``frame`` in its name) that the file sets otherwise,
+        to a value that is its own default copied or that reads no other argument: the
+        user's frame is dropped where a tf lookup or a stamp needs it. A value built
+        from other arguments (hector's ``odom_frame`` tied to ``$(arg base_frame)``) is
+        a deliberate tie that leaves the argument dead, not a frame lost (the level of
+        ``ros1_unused_arg``: docs/evaluation/camera_frames.md)."""
+        if self.passed is None or self.instead is None or "frame" not in self.name.lower():
+            return False
+        return self.instead == self.default or not ARG_READ.search(self.instead) and not (
+            EVAL.search(self.instead))
 
 
 def _texts(element: Element) -> list[str]:
@@ -73,7 +90,9 @@ def unused_args(root: Element) -> list[UnusedArg]:
     declared: list[tuple[str, Element]] = []
     passed: dict[str, Element] = {}
     read: set[str] = set()
-    stack: list[tuple[Element, str]] = [(child, INTERFACE) for child in root.children]
+    # In document order (the first include argument or parameter of a name is the one
+    # named).
+    stack: list[tuple[Element, str]] = [(child, INTERFACE) for child in reversed(root.children)]
     while stack:
         element, parent = stack.pop()
         tag = element.tag.lower()
@@ -92,12 +111,14 @@ def unused_args(root: Element) -> list[UnusedArg]:
             # argument was declared to carry (``<param name="odom_frame" value="$(arg
             # base_frame)"/>`` beside an unread ``odom_frame``).
             passed.setdefault(name.rsplit("/", 1)[-1], element)
-        stack.extend((child, tag) for child in element.children)
+        stack.extend((child, tag) for child in reversed(element.children))
     out: list[UnusedArg] = []
     for name, element in sorted(declared, key=lambda item: (item[1].line, item[1].column)):
         if name in read:
             continue
         given = passed.get(name)
-        out.append(UnusedArg(name, element.line, element.column,
-                             None if given is None else (given.line, given.column)))
+        out.append(UnusedArg(
+            name, element.line, element.column, element.attrib.get("default"),
+            None if given is None else (given.line, given.column),
+            None if given is None else given.attrib.get("value")))
     return out

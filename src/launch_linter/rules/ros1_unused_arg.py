@@ -6,10 +6,13 @@ directly under `<launch>` or a `<group>`, when nothing in the same file reads it
 `$(arg NAME)` in any attribute or `<rosparam>` text, no word of an `$(eval ...)` naming
 it, whatever the conditions (a read in a skipped branch counts). A file with an
 `<include pass_all_args="true">`, or a `<rosparam file=... subst_value="true">` (its
-file may read arguments), is not judged. When the file passes an `<include>` an
-argument of the same name with another value, the declared argument was meant to go
-there: that is a warning, with the include's argument as related place; otherwise it is
-info.
+file may read arguments), is not judged. When the argument names a frame (`frame` in
+its name) and the file gives an `<include>`'s argument or a `<param>` of the same name
+a value of its own that is the argument's default copied or reads no other argument,
+the frame the user sets never reaches what stamps or looks it up: that is a warning,
+with that place as related. Any other unread argument is info: dead, a setting the file
+fixes on purpose, or a value tied to other arguments (hector's `odom_frame` given
+`$(arg base_frame)` when there is no odometry).
 
 ## Why is this bad?
 roslaunch scopes arguments to their file and accepts a setting of any declared one, so
@@ -59,15 +62,15 @@ CATEGORY = Category.LAUNCH
 SEVERITY = Severity.WARNING
 EXAMPLE_PATH = "example.launch"
 
-UNPASSED_LEVEL = Severity.INFO
-"""An unused argument no include of its file is passed under its name: dead, or kept for
-callers on purpose; a convention (docs/severity.md)."""
+OTHER_LEVEL = Severity.INFO
+"""An unread argument that is no frame set otherwise in its file: dead, kept for callers,
+or a setting the file fixes on purpose (docs/evaluation/camera_frames.md)."""
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
     if context.study:
         return
     for finding in frontend_findings(context, ID):
-        # The front-end names the include's argument as the related place when the file
-        # passes one of the same name (ros1_base._unused_args).
-        yield finding if finding.related else replace(finding, severity=UNPASSED_LEVEL)
+        # The front-end names a related place only for a frame the file sets otherwise
+        # (ros1_base._unused_args, UnusedArg.frame_dropped).
+        yield finding if finding.related else replace(finding, severity=OTHER_LEVEL)
