@@ -68,8 +68,8 @@ class UnusedArg:
         ``ros1_unused_arg``: docs/evaluation/camera_frames.md)."""
         if self.passed is None or self.instead is None or "frame" not in self.name.lower():
             return False
-        return self.instead == self.default or not ARG_READ.search(self.instead) and not (
-            EVAL.search(self.instead))
+        return self.instead == self.default or (not ARG_READ.search(self.instead) and not (
+            EVAL.search(self.instead)))
 
 
 def _texts(element: Element) -> list[str]:
