@@ -1,6 +1,9 @@
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Callable, List, Tuple
+
+from _urdf import lint_loaded
 
 from conftest import run_rule
 
@@ -57,3 +60,53 @@ def test_an_unresolved_value_is_not_compared() -> None:
            '<param name="left_frame_id" value="$(env NOPE_X)"/>'
            '<param name="right_frame_id" value="$(env NOPE_X)"/></node></launch>')
     assert found(xml) == []
+
+
+def camera_sensor(link: str, frame: str | None, pose: str | None = None) -> str:
+    name = f"<frame_name>{frame}</frame_name>" if frame else ""
+    placed = f"<pose>{pose}</pose>" if pose else ""
+    return (f'<gazebo reference="{link}"><sensor name="s_{link}_{pose}" '
+            f'type="camera">{placed}<plugin name="p" filename="libgazebo_ros_camera.so">'
+            f'{name}</plugin></sensor></gazebo>')
+
+
+def simulated(tmp_path: Path, sensors: list[str]) -> list[tuple[str, str]]:
+    links = "".join(f'<link name="{n}"/>' for n in ("base_link", "left", "right"))
+    joints = "".join(
+        f'<joint name="j_{n}" type="fixed"><parent link="base_link"/><child link="{n}"/>'
+        f'<origin xyz="0 {y} 0"/></joint>' for n, y in (("left", 0.06), ("right", -0.06)))
+    text = f'<robot name="r">{links}{joints}\n' + "\n".join(sensors) + "\n</robot>"
+    found = lint_loaded(tmp_path, text, RULE)
+    return [(d.path.rsplit("/", 1)[-1], d.severity.value) for d in found]
+
+
+def test_two_simulated_cameras_on_two_links_with_one_frame_are_info(tmp_path: Path) -> None:
+    assert simulated(tmp_path, [camera_sensor("left", "stereo_optical"),
+                                camera_sensor("right", "stereo_optical")]) == [
+        ("robot.urdf.xacro", "info")]
+
+
+def test_two_simulated_cameras_with_their_own_frames_are_silent(tmp_path: Path) -> None:
+    assert simulated(tmp_path, [camera_sensor("left", "left_optical"),
+                                camera_sensor("right", "right_optical")]) == []
+
+
+def test_two_sensors_rendering_from_one_place_may_share_a_frame(tmp_path: Path) -> None:
+    assert simulated(tmp_path, [camera_sensor("left", "rgbd_optical"),
+                                camera_sensor("left", "rgbd_optical")]) == []
+    # ROS 1's camera plugins stamp 'world' without a frameName (gazebo_ros_camera_utils).
+    assert simulated(tmp_path, [camera_sensor("left", None, "0 0.06 0 0 0 0"),
+                                camera_sensor("left", None, "0 -0.06 0 0 0 0")]) == [
+        ("robot.urdf.xacro", "info")]
+
+
+def test_two_camera_drivers_given_one_frame_are_info() -> None:
+    xml = ('<launch>\n<node pkg="zed_cpu_ros" type="zed_cpu_ros" name="a">'
+           '<param name="left_frame_id" value="l"/><param name="right_frame_id" value="r"/>'
+           '</node>\n<node pkg="zed_cpu_ros" type="zed_cpu_ros" name="b">'
+           '<param name="left_frame_id" value="l"/><param name="right_frame_id" value="r2"/>'
+           '</node>\n</launch>')
+    assert found(xml) == [(3, "info", (3, 2))]
+    alternatives = xml.replace('name="a">', 'name="a" if="$(arg x)">').replace(
+        'name="b">', 'name="b" unless="$(arg x)">').replace("<launch>", '<launch><arg name="x"/>')
+    assert found(alternatives) == []

@@ -211,7 +211,7 @@ def _camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, st
     return frames_named(entry, node, entry.camera_frames)
 
 
-def _plugins(context: RuleContext) -> list[tuple[NodeRecord, frozenset[str] | None]]:
+def plugins_of(context: RuleContext) -> list[tuple[NodeRecord, frozenset[str] | None]]:
     """The plugins of every description the tree reads (spawned or not: the fault is the
     description's), once each, in the tree's ROS version where the plugin does not say,
     each with the links of its description when that is complete (None otherwise); not a
@@ -259,7 +259,7 @@ def _unpublished(frame: str, links: frozenset[str] | None,
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    plugins = _plugins(context)
+    plugins = plugins_of(context)
     if not plugins:
         return
     # The plugins name the description's links as written, before any publisher's prefix.
