@@ -110,3 +110,10 @@ def test_two_camera_drivers_given_one_frame_are_info() -> None:
     alternatives = xml.replace('name="a">', 'name="a" if="$(arg x)">').replace(
         'name="b">', 'name="b" unless="$(arg x)">').replace("<launch>", '<launch><arg name="x"/>')
     assert found(alternatives) == []
+
+
+def test_twenty_thousand_left_and_right_frame_parameters_take_linear_time() -> None:
+    params = "".join(f'<param name="left_{i}_frame" value="f{i}"/>'
+                     f'<param name="right_{i}_frame" value="f{i}"/>' for i in range(20_000))
+    xml = f'<launch><node pkg="p" type="t" name="n">{params}</node></launch>'
+    assert len(run_rule(xml, RULE)) == 20_000
