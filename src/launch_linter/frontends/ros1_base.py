@@ -432,11 +432,11 @@ class Ros1Base:
             self.problems.append(Problem("parse_error", display, where.line, where.column, message))
             return None
         if first_read:
-            self._unused_args(display, launches[0])
+            self._unused_args(display, launches[0], data)
         return launches[0]
 
-    def _unused_args(self, display: str, launch: Element) -> None:
-        for arg in unused_args(launch):
+    def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
+        for arg in unused_args(launch, data):
             if arg.passed is None:
                 message = (f"argument '{arg.name}' is declared, but nothing in this file "
                            f"reads it: roslaunch accepts {arg.name}:=... and drops it "

@@ -15,6 +15,7 @@ import re
 from launch_linter.resolve.xml_safe import Element
 
 ARG_READ = re.compile(r"\$\(\s*arg\s+([^\s()]+)\s*\)")
+ARG_READ_BYTES = re.compile(rb"\$\(\s*arg\s+([^\s()]+)\s*\)")
 EVAL = re.compile(r"\$\(\s*eval\s")
 WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 """In ``$(eval ...)`` an argument is read as a bare name (roslaunch's eval resolves
@@ -27,6 +28,11 @@ their user; inside ``<include>`` an ``<arg>`` passes one."""
 
 
 HANDS_ON = ("include", "rosparam")
+WALK_WORDS = (b"$(eval", b"pass_all_args", b"subst_value")
+"""What only the element walk reads right: an ``$(eval)``'s bare names, and the tags that
+hand arguments on unseen (:func:`_hands_on`)."""
+FRAME = "frame"
+"""An argument or setting whose name says it names a frame."""
 
 
 def _hands_on(element: Element) -> bool:
@@ -53,8 +59,9 @@ class UnusedArg:
         self.default = default
         """Its ``default`` as written (None without one)."""
         self.passed = passed
-        """Where the file gives an include's argument or a parameter of the same name
-        a value of its own (line, column): the declared one was meant to go there."""
+        """For a frame argument: where the file gives an include's argument or a
+        parameter of the same name a value of its own (line, column), where the declared
+        one was meant to go."""
         self.instead = instead
         """That value as written (None when it is no ``value`` attribute)."""
 
@@ -66,55 +73,83 @@ class UnusedArg:
         from other arguments (hector's ``odom_frame`` tied to ``$(arg base_frame)``) is
         a deliberate tie that leaves the argument dead, not a frame lost (the level of
         ``ros1_unused_arg``: docs/evaluation/camera_frames.md)."""
-        if self.passed is None or self.instead is None or "frame" not in self.name.lower():
+        if self.passed is None or self.instead is None or FRAME not in self.name.lower():
             return False
         return self.instead == self.default or (not ARG_READ.search(self.instead) and not (
             EVAL.search(self.instead)))
 
 
-def _texts(element: Element) -> list[str]:
-    return [*element.attrib.values(), element.text]
-
-
-def _reads(text: str, out: set[str]) -> None:
+def _reads(text: str, pending: set[str], eval_only: bool) -> None:
+    """Drop from ``pending`` the arguments ``text`` reads (only through ``$(eval)`` when
+    the ``$(arg)`` reads are already dropped)."""
     if "$(" not in text:
         return
-    out.update(ARG_READ.findall(text))
+    if not eval_only:
+        pending.difference_update(ARG_READ.findall(text))
     if EVAL.search(text):
-        out.update(WORD.findall(text))
+        pending.difference_update(WORD.findall(text))
 
 
-def unused_args(root: Element) -> list[UnusedArg]:
-    """The arguments ``root`` (a file's ``<launch>``) declares directly with a ``default``
-    or no value and never reads; none when an ``<include pass_all_args>`` hands them all on."""
-    declared: list[tuple[str, Element]] = []
+def _declared(root: Element) -> list[tuple[str, Element]]:
+    """The arguments of the file's interface: ``<arg>`` directly under ``<launch>`` with
+    a literal name and no ``value``."""
+    out: list[tuple[str, Element]] = []
+    for child in root.children:
+        name = child.attrib.get("name", "")
+        if (child.tag.lower() == "arg" and name and "$(" not in name
+                and "value" not in child.attrib):
+            out.append((name, child))
+    return out
+
+
+def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
+    """The arguments ``root`` (a file's ``<launch>``, parsed from ``data`` when given)
+    declares directly with a ``default`` or no value and never reads; none when an
+    ``<include pass_all_args>`` hands them all on."""
+    declared = _declared(root)
+    pending = {name for name, _ in declared}
+    if pending and data is not None:
+        # Every ``$(arg NAME)`` of the file's bytes in one pass: settles most files (every
+        # argument read) before any element is walked, and leaves the walk only the
+        # ``$(eval)`` names. A read in an XML comment counts here, which can only leave
+        # an argument unreported.
+        pending.difference_update(
+            read.decode("utf-8", "replace") for read in ARG_READ_BYTES.findall(data))
+        if not pending or not any(word in data for word in WALK_WORDS) and not any(
+                FRAME in name.lower() for name in pending):
+            # Nothing the walk could add: no eval, no argument handed on unseen, and no
+            # frame argument whose namesake setting it would look for.
+            return [UnusedArg(name, element.line, element.column, element.attrib.get("default"))
+                    for name, element in declared if name in pending]
+    eval_only = data is not None
     passed: dict[str, Element] = {}
-    read: set[str] = set()
     # In document order (the first include argument or parameter of a name is the one
     # named).
     stack: list[tuple[Element, str]] = [(child, INTERFACE) for child in reversed(root.children)]
-    while stack:
+    while stack and pending:
         element, parent = stack.pop()
         tag = element.tag.lower()
         if tag in HANDS_ON and _hands_on(element):
             return []
-        for text in _texts(element):
-            _reads(text, read)
+        for value in element.attrib.values():
+            _reads(value, pending, eval_only)
+        if element.text:
+            _reads(element.text, pending, eval_only)
         name = element.attrib.get("name", "")
-        if tag == "arg" and name and "$(" not in name:
-            if parent == INTERFACE and "value" not in element.attrib:
-                declared.append((name, element))
-            elif parent == "include":
-                passed.setdefault(name, element)
-        elif tag == "param" and name and "$(" not in name:
+        if tag == "arg" and parent == "include" and FRAME in name.lower():
+            passed.setdefault(name, element)
+        elif tag == "param" and FRAME in name.lower() and "$(" not in name:
             # A parameter of the argument's name given something else: the value the
             # argument was declared to carry (``<param name="odom_frame" value="$(arg
             # base_frame)"/>`` beside an unread ``odom_frame``).
             passed.setdefault(name.rsplit("/", 1)[-1], element)
         stack.extend((child, tag) for child in reversed(element.children))
+    if not pending:
+        # Every argument read: whatever comes after (even a pass_all_args) changes nothing.
+        return []
     out: list[UnusedArg] = []
-    for name, element in sorted(declared, key=lambda item: (item[1].line, item[1].column)):
-        if name in read:
+    for name, element in declared:
+        if name not in pending:
             continue
         given = passed.get(name)
         out.append(UnusedArg(
