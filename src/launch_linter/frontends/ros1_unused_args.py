@@ -115,8 +115,8 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
         # an argument unreported.
         pending.difference_update(
             read.decode("utf-8", "replace") for read in ARG_READ_BYTES.findall(data))
-        if not pending or not any(word in data for word in WALK_WORDS) and not any(
-                FRAME in name.lower() for name in pending):
+        if not pending or (not any(word in data for word in WALK_WORDS) and not any(
+                FRAME in name.lower() for name in pending)):
             # Nothing the walk could add: no eval, no argument handed on unseen, and no
             # frame argument whose namesake setting it would look for.
             return [UnusedArg(name, element.line, element.column, element.attrib.get("default"))
