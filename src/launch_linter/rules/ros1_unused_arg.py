@@ -46,9 +46,9 @@ followed the argument.
 An argument kept for compatibility with callers that still pass it (deprecated, now
 unused on purpose) is reported at info. A `$(arg NAME)` inside an XML comment counts as a
 read (the file's text is searched for reads before its elements are walked, which keeps
-the check cheap), so an argument read only in commented-out XML is not reported. Arguments read only by a file the linter does
-not parse (a YAML file loaded without `subst_value` reads none) are not missed: roslaunch
-substitutes nowhere else. Judged in docs/evaluation/camera_frames.md.
+the check cheap), so an argument read only in commented-out XML is not reported.
+Arguments read only by a file the linter does not parse (a YAML file loaded without
+`subst_value` reads none) are not missed: roslaunch substitutes nowhere else. Judged in docs/evaluation/camera_frames.md.
 """
 
 from __future__ import annotations
