@@ -48,7 +48,8 @@ unused on purpose) is reported at info. A `$(arg NAME)` inside an XML comment co
 read (the file's text is searched for reads before its elements are walked, which keeps
 the check cheap), so an argument read only in commented-out XML is not reported.
 Arguments read only by a file the linter does not parse (a YAML file loaded without
-`subst_value` reads none) are not missed: roslaunch substitutes nowhere else. Judged in docs/evaluation/camera_frames.md.
+`subst_value` reads none) are not missed: roslaunch substitutes nowhere else. Judged in
+docs/evaluation/camera_frames.md.
 """
 
 from __future__ import annotations
