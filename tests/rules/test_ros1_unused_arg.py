@@ -95,3 +95,8 @@ def test_twenty_thousand_arguments_take_linear_time() -> None:
     root = parse_xml(f"<launch>{args}{reads}</launch>".encode(),
                      collect=("launch",)).collected[0]
     assert len(unused_args(root)) == 10_000
+
+
+def test_an_eval_spaced_otherwise_is_still_read() -> None:
+    assert found('<launch><arg name="x" default="1"/>'
+                 '<param name="a" value="$( eval x + 1)"/></launch>') == []

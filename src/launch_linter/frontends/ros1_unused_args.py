@@ -28,9 +28,9 @@ their user; inside ``<include>`` an ``<arg>`` passes one."""
 
 
 HANDS_ON = ("include", "rosparam")
-WALK_WORDS = (b"$(eval", b"pass_all_args", b"subst_value")
-"""What only the element walk reads right: an ``$(eval)``'s bare names, and the tags that
-hand arguments on unseen (:func:`_hands_on`)."""
+WALK_WORDS = (b"eval", b"pass_all_args", b"subst_value")
+"""What only the element walk reads right: an ``$(eval)``'s bare names (however spaced),
+and the tags that hand arguments on unseen (:func:`_hands_on`)."""
 FRAME = "frame"
 """An argument or setting whose name says it names a frame."""
 
