@@ -1,8 +1,9 @@
 """A ROS 1 launch argument declared for its user that nothing in its file reads.
 
 ## What it does
-Reports an `<arg>` a ROS 1 launch file declares with a `default` (or with no value),
-directly under `<launch>` or a `<group>`, when nothing in the same file reads it: no
+Reports an `<arg>` a ROS 1 launch file declares with a `default` (or with no value)
+directly under `<launch>` (one in a `<group>` is a branch's local variable, not judged),
+when nothing in the same file reads it: no
 `$(arg NAME)` in any attribute or `<rosparam>` text, no word of an `$(eval ...)` naming
 it, whatever the conditions (a read in a skipped branch counts). A file with an
 `<include pass_all_args="true">`, or a `<rosparam file=... subst_value="true">` (its
