@@ -1,0 +1,148 @@
+"""The drivers block of the knowledge base (base drivers, LiDAR odometry, laser, camera and
+joystick drivers): the edges each entry gives, as the rules read them, positive and
+negative."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.knowledge import bundled
+from launch_linter.model.diagnostic import Diagnostic, Severity
+from launch_linter.rules._nodes import view_of
+
+HEADER = ("from launch import LaunchDescription\n"
+          "from launch_ros.actions import Node\n"
+          "def generate_launch_description():\n"
+          "    return LaunchDescription([\n")
+EKF = ("        Node(package='robot_localization', executable='ekf_node', name='ekf',\n"
+       "             parameters=[{'world_frame': 'odom', 'odom_frame': 'odom',\n"
+       "                          'base_link_frame': 'base_footprint', 'odom0': 'odom'}]),\n")
+
+
+def launch(tmp_path: Path, nodes: str) -> Path:
+    path = tmp_path / "bringup.launch.py"
+    path.write_text(HEADER + nodes + "    ])\n")
+    return path
+
+
+def findings(path: Path, rule: str) -> list[Diagnostic]:
+    options = LintOptions(package_paths=(), select=frozenset({rule}))
+    return [d for d in lint_paths([str(path)], options).diagnostics if d.rule == rule]
+
+
+def edges(path: Path) -> tuple[set[tuple[str, str]], bool]:
+    """The node edges of the file's tree, and whether the tree is closed."""
+    tree = lint_paths([str(path)], LintOptions(package_paths=())).trees[0]
+    view = view_of(tree, bundled())
+    return {(e.parent, e.child) for e in view.edges}, view.open_because is None
+
+
+BASE_DRIVERS = [
+    ("kobuki_node", "kobuki_ros_node", "base_footprint"),
+    ("create_driver", "create_driver", "base_footprint"),
+]
+
+
+@pytest.mark.parametrize(("package", "executable", "base"), BASE_DRIVERS)
+def test_a_base_driver_odometry_tf_against_an_ekf_is_a_duplicate(
+        tmp_path: Path, package: str, executable: str, base: str) -> None:
+    path = launch(tmp_path, (
+        f"        Node(package='{package}', executable='{executable}',\n"
+        f"             parameters=[{{'base_frame': '{base}'}}]),\n" + EKF))
+    found = findings(path, "duplicate_publisher")
+    assert len(found) == 1 and found[0].severity is Severity.ERROR
+    assert "'odom' -> 'base_footprint'" in found[0].message
+
+
+@pytest.mark.parametrize(("package", "executable", "base"), BASE_DRIVERS)
+def test_a_base_driver_with_publish_tf_off_leaves_the_edge_to_the_ekf(
+        tmp_path: Path, package: str, executable: str, base: str) -> None:
+    path = launch(tmp_path, (
+        f"        Node(package='{package}', executable='{executable}',\n"
+        f"             parameters=[{{'base_frame': '{base}', 'publish_tf': False}}]),\n"
+        + EKF))
+    assert findings(path, "duplicate_publisher") == []
+    published, closed = edges(path)
+    assert published == {("odom", "base_footprint")} and closed
+
+
+def test_kobuki_ros_default_base_frame_is_base(tmp_path: Path) -> None:
+    path = launch(tmp_path, "        Node(package='kobuki_node', executable='kobuki_ros_node'),\n")
+    assert edges(path) == ({("odom", "base")}, True)
+
+
+def test_kiss_icp_sends_its_odometry_frame_to_the_base_frame(tmp_path: Path) -> None:
+    path = launch(tmp_path, (
+        "        Node(package='kiss_icp', executable='kiss_icp_node',\n"
+        "             parameters=[{'base_frame': 'base_footprint', 'lidar_odom_frame': 'odom',\n"
+        "                          'publish_odom_tf': True, 'invert_odom_tf': False}]),\n"
+        + EKF))
+    assert edges(path)[0] == {("odom", "base_footprint")}
+    assert len(findings(path, "duplicate_publisher")) == 1
+
+
+def test_kiss_icp_inverted_sends_the_reverse_edge(tmp_path: Path) -> None:
+    path = launch(tmp_path, (
+        "        Node(package='kiss_icp', executable='kiss_icp_node',\n"
+        "             parameters=[{'base_frame': 'base_link', 'publish_odom_tf': True,\n"
+        "                          'invert_odom_tf': True}]),\n"))
+    assert edges(path) == ({("base_link", "odom_lidar")}, True)
+
+
+def test_kiss_icp_without_its_switches_or_base_frame_keeps_the_tree_open(
+        tmp_path: Path) -> None:
+    # publish_odom_tf has no static default; an empty base_frame means the cloud's frame.
+    unswitched = launch(tmp_path, (
+        "        Node(package='kiss_icp', executable='kiss_icp_node',\n"
+        "             parameters=[{'base_frame': 'base_link'}]),\n"))
+    assert edges(unswitched) == (set(), False)
+    unnamed = launch(tmp_path, (
+        "        Node(package='kiss_icp', executable='kiss_icp_node',\n"
+        "             parameters=[{'publish_odom_tf': True, 'invert_odom_tf': False}]),\n"))
+    assert edges(unnamed) == (set(), False)
+
+
+LASERS = [
+    ("sllidar_ros2", "sllidar_node"),
+    ("rplidar_ros", "rplidar_composition"),
+    ("ydlidar_ros2_driver", "ydlidar_ros2_driver_node"),
+    ("ldlidar_stl_ros2", "ldlidar_stl_ros2_node"),
+    ("velodyne_driver", "velodyne_driver_node"),
+]
+
+
+@pytest.mark.parametrize(("package", "executable"), LASERS)
+def test_a_laser_driver_closes_the_tree_and_its_slashed_frame_is_reported(
+        tmp_path: Path, package: str, executable: str) -> None:
+    plain = launch(tmp_path, (
+        f"        Node(package='{package}', executable='{executable}',\n"
+        f"             parameters=[{{'frame_id': 'laser'}}]),\n"))
+    assert edges(plain) == (set(), True)
+    assert findings(plain, "frame_param_slash") == []
+    slashed = launch(tmp_path, (
+        f"        Node(package='{package}', executable='{executable}',\n"
+        f"             parameters=[{{'frame_id': '/laser'}}]),\n"))
+    found = findings(slashed, "frame_param_slash")
+    assert len(found) == 1 and found[0].severity is Severity.WARNING
+
+
+def test_urg_node2_strips_the_slash_of_its_frame(tmp_path: Path) -> None:
+    path = launch(tmp_path, (
+        "        Node(package='urg_node2', executable='urg_node2_node',\n"
+        "             parameters=[{'frame_id': '/laser'}]),\n"))
+    assert edges(path) == (set(), True)
+    assert findings(path, "frame_param_slash") == []
+
+
+@pytest.mark.parametrize(("package", "executable"), [
+    ("teleop_twist_joy", "teleop_node"), ("joy", "joy_node"), ("joy", "game_controller_node"),
+    ("joy_linux", "joy_linux_node"), ("usb_cam", "usb_cam_node_exe"),
+    ("velodyne_laserscan", "velodyne_laserscan_node"),
+])
+def test_nodes_that_send_no_tf_close_the_tree(
+        tmp_path: Path, package: str, executable: str) -> None:
+    path = launch(tmp_path, f"        Node(package='{package}', executable='{executable}'),\n")
+    assert edges(path) == (set(), True)
