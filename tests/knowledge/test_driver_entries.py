@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from launch_linter.engine import LintOptions, lint_paths
-from launch_linter.knowledge import bundled
+from launch_linter.knowledge import KnowledgeError, bundled, parse
 from launch_linter.model.diagnostic import Diagnostic, Severity
 from launch_linter.rules._nodes import view_of
 
@@ -146,3 +146,58 @@ def test_nodes_that_send_no_tf_close_the_tree(
         tmp_path: Path, package: str, executable: str) -> None:
     path = launch(tmp_path, f"        Node(package='{package}', executable='{executable}'),\n")
     assert edges(path) == (set(), True)
+
+
+SICK = ("        Node(package='sick_scan_xd', executable='sick_generic_caller',\n"
+        "             parameters=[{{'scanner_type': '{kind}', 'frame_id': 'laser',\n"
+        "                          'publish_frame_id': 'world_lidar'{extra}}}]),\n")
+
+
+@pytest.mark.parametrize(("kind", "extra", "expected"), [
+    ("sick_tim_7xx", ", 'tf_publish_rate': 10.0", {("map", "laser")}),
+    ("sick_multiscan", ", 'tf_publish_rate': 10.0", {("map", "world_lidar")}),
+    ("sick_picoscan", ", 'tf_publish_rate': 10.0, 'tf_base_frame_id': 'base_link'",
+     {("base_link", "world_lidar")}),
+    ("sick_nav_350", ", 'tf_publish_rate': 10.0", {("map", "laser"), ("map", "nav")}),
+    ("sick_tim_7xx", ", 'tf_publish_rate': 0.0", set()),
+    ("sick_ldmrs", ", 'tf_publish_rate': 10.0", set()),
+])
+def test_sick_scan_xd_edges_follow_its_scanner_type(
+        tmp_path: Path, kind: str, extra: str, expected: set[tuple[str, str]]) -> None:
+    path = launch(tmp_path, SICK.format(kind=kind, extra=extra))
+    assert edges(path) == (expected, True)
+
+
+def test_sick_scan_xd_without_a_rate_or_a_type_leaves_the_tree_open(tmp_path: Path) -> None:
+    # Drivers before 3.4.0 send no tf: the rate's code default is not assumed.
+    unrated = launch(tmp_path, SICK.format(kind="sick_tim_7xx", extra=""))
+    assert edges(unrated) == (set(), False)
+    untyped = launch(tmp_path, (
+        "        Node(package='sick_scan_xd', executable='sick_generic_caller',\n"
+        "             parameters=[{'tf_publish_rate': 10.0}]),\n"))
+    assert edges(untyped) == (set(), False)
+
+
+def test_a_sick_scanner_and_a_static_transform_on_one_edge_is_a_duplicate(
+        tmp_path: Path) -> None:
+    path = launch(tmp_path, SICK.format(kind="sick_tim_5xx", extra=", 'tf_publish_rate': 10.0")
+                  + "        Node(package='tf2_ros', executable='static_transform_publisher',\n"
+                    "             arguments=['--frame-id', 'map', '--child-frame-id', 'laser',\n"
+                    "                        '--x', '2']),\n")
+    assert len(findings(path, "duplicate_publisher")) == 1
+
+
+def test_a_text_condition_names_a_declared_parameter() -> None:
+    entry = {"id": "device", "kind": "node", "ros": [2],
+             "match": {"package": "p", "executables": ["e"]},
+             "parameters": {"model": None},
+             "publishes": [{"parent": "map", "child": "x", "when": ["!nope=a"],
+                            "role": "sensor"}],
+             "looks_up": [],
+             "sources": [{"repository": "a/b", "package": "p", "file": "f", "ref": "r",
+                          "commit": "0" * 40, "lines": "1"}]}
+    with pytest.raises(KnowledgeError, match="nope"):
+        parse({"format": 1, "entries": [entry]}, "user.json")
+    entry["publishes"] = [{"parent": "map", "child": "x", "when": ["!model=a"],
+                           "role": "sensor"}]
+    assert parse({"format": 1, "entries": [entry]}, "user.json").entries[0].id == "device"
