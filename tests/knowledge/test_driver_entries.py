@@ -201,3 +201,53 @@ def test_a_text_condition_names_a_declared_parameter() -> None:
     entry["publishes"] = [{"parent": "map", "child": "x", "when": ["!model=a"],
                            "role": "sensor"}]
     assert parse({"format": 1, "entries": [entry]}, "user.json").entries[0].id == "device"
+
+
+def test_ouster_sends_its_sensor_frames_unless_switched_off(tmp_path: Path) -> None:
+    path = launch(tmp_path, (
+        "        Node(package='ouster_ros', executable='os_driver',\n"
+        "             parameters=[{'sensor_frame': 'lidar_base'}]),\n"))
+    assert edges(path) == ({("lidar_base", "os_lidar"), ("lidar_base", "os_imu")}, True)
+    off = launch(tmp_path, (
+        "        Node(package='ouster_ros', executable='os_cloud',\n"
+        "             parameters=[{'pub_static_tf': False}]),\n"))
+    assert edges(off) == (set(), True)
+
+
+def test_fast_lio_sends_its_fixed_frames(tmp_path: Path) -> None:
+    path = launch(tmp_path, "        Node(package='fast_lio', executable='fastlio_mapping'),\n")
+    assert edges(path) == ({("camera_init", "body")}, True)
+
+
+def write_ros1(tmp_path: Path, body: str) -> Path:
+    path = tmp_path / "bringup.launch"
+    path.write_text(f"<launch>\n{body}</launch>\n")
+    return path
+
+
+def test_fake_localization_beside_amcl_is_a_duplicate(tmp_path: Path) -> None:
+    fake = "  <node pkg='fake_localization' type='fake_localization' name='fake'/>\n"
+    amcl = "  <node pkg='amcl' type='amcl' name='amcl'/>\n"
+    alone = write_ros1(tmp_path, fake)
+    assert edges(alone) == ({("map", "odom")}, True)
+    assert findings(alone, "duplicate_publisher") == []
+    both = write_ros1(tmp_path, fake + amcl)
+    assert len(findings(both, "duplicate_publisher")) == 1
+
+
+@pytest.mark.parametrize("node", [
+    "<node pkg='sick_scan' type='sick_generic_caller' name='lidar'/>",
+    "<node pkg='laser_filters' type='scan_to_scan_filter_chain' name='filter'/>",
+    "<node pkg='ldlidar_stl_ros' type='ldlidar_stl_ros_node' name='ld'/>",
+    "<node pkg='uvc_camera' type='uvc_camera_node' name='camera'/>",
+    "<node pkg='teleop_twist_keyboard' type='teleop_twist_keyboard.py' name='teleop'/>",
+])
+def test_ros1_nodes_that_send_no_tf_close_the_tree(tmp_path: Path, node: str) -> None:
+    assert edges(write_ros1(tmp_path, f"  {node}\n")) == (set(), True)
+
+
+def test_ros2_depth_image_proc_and_laser_filters_close_the_tree(tmp_path: Path) -> None:
+    path = launch(tmp_path, (
+        "        Node(package='depth_image_proc', executable='point_cloud_xyz_node'),\n"
+        "        Node(package='laser_filters', executable='scan_to_scan_filter_chain'),\n"))
+    assert edges(path) == (set(), True)
