@@ -225,14 +225,15 @@ def write_ros1(tmp_path: Path, body: str) -> Path:
     return path
 
 
-def test_fake_localization_beside_amcl_is_a_duplicate(tmp_path: Path) -> None:
+def test_fake_localization_sends_only_with_a_ground_truth_nobody_reads(tmp_path: Path) -> None:
+    # Its map -> odom waits for base_pose_ground_truth, a topic: not assumed, so a static
+    # map -> odom beside it (rbx1's fake robot, no ground truth) is no finding.
     fake = "  <node pkg='fake_localization' type='fake_localization' name='fake'/>\n"
-    amcl = "  <node pkg='amcl' type='amcl' name='amcl'/>\n"
-    alone = write_ros1(tmp_path, fake)
-    assert edges(alone) == ({("map", "odom")}, True)
-    assert findings(alone, "duplicate_publisher") == []
-    both = write_ros1(tmp_path, fake + amcl)
-    assert len(findings(both, "duplicate_publisher")) == 1
+    static = "  <node pkg='tf' type='static_transform_publisher' name='s' " \
+             "args='0 0 0 0 0 0 /map /odom 100'/>\n"
+    path = write_ros1(tmp_path, fake + static)
+    assert edges(path) == (set(), False)
+    assert findings(path, "frame_authority") == []
 
 
 @pytest.mark.parametrize("node", [
