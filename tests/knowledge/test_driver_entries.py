@@ -252,3 +252,16 @@ def test_ros2_depth_image_proc_and_laser_filters_close_the_tree(tmp_path: Path) 
         "        Node(package='depth_image_proc', executable='point_cloud_xyz_node'),\n"
         "        Node(package='laser_filters', executable='scan_to_scan_filter_chain'),\n"))
     assert edges(path) == (set(), True)
+
+
+def test_lio_sam_sends_odometry_to_the_base_and_its_lidar_link(tmp_path: Path) -> None:
+    path = launch(tmp_path, (
+        "        Node(package='lio_sam', executable='lio_sam_imuPreintegration',\n"
+        "             parameters=[{'lidarFrame': 'velodyne'}]),\n"
+        "        Node(package='lio_sam', executable='lio_sam_mapOptimization'),\n"
+        "        Node(package='lio_sam', executable='lio_sam_imageProjection'),\n"))
+    assert edges(path) == ({("odom", "base_link"), ("odom", "lidar_link")}, True)
+    same = launch(tmp_path, (
+        "        Node(package='lio_sam', executable='lio_sam_imuPreintegration',\n"
+        "             parameters=[{'lidarFrame': 'base_link'}]),\n"))
+    assert edges(same) == (set(), True)
