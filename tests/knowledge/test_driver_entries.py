@@ -242,6 +242,8 @@ def test_fake_localization_sends_only_with_a_ground_truth_nobody_reads(tmp_path:
     "<node pkg='ldlidar_stl_ros' type='ldlidar_stl_ros_node' name='ld'/>",
     "<node pkg='uvc_camera' type='uvc_camera_node' name='camera'/>",
     "<node pkg='teleop_twist_keyboard' type='teleop_twist_keyboard.py' name='teleop'/>",
+    "<node pkg='bluefox2' type='bluefox2_single_node' name='camera'/>",
+    "<node pkg='nodelet' type='nodelet' name='camera' args='standalone bluefox2/SingleNodelet'/>",
 ])
 def test_ros1_nodes_that_send_no_tf_close_the_tree(tmp_path: Path, node: str) -> None:
     assert edges(write_ros1(tmp_path, f"  {node}\n")) == (set(), True)
