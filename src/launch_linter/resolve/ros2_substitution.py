@@ -66,6 +66,13 @@ class Call:
     """(line, column) where the substitution is made, in the file of the action that
     performs it (a Python ``LaunchConfiguration(...)``); None: the action's own place."""
 
+    def __init__(self, name: str, args: tuple[Subs, ...], written: str,
+                 at: tuple[int, int] | None = None) -> None:
+        # Made for every substitution call: the fields go in the instance's dict, as
+        # :class:`Text`'s (assignment is still refused).
+        fields = self.__dict__
+        fields["name"], fields["args"], fields["written"], fields["at"] = name, args, written, at
+
 
 @dataclass(frozen=True)
 class Opaque:
