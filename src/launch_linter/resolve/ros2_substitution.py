@@ -68,10 +68,7 @@ class Call:
 
     def __init__(self, name: str, args: tuple[Subs, ...], written: str,
                  at: tuple[int, int] | None = None) -> None:
-        # Made for every substitution call: the fields go in the instance's dict, as
-        # :class:`Text`'s (assignment is still refused).
-        fields = self.__dict__
-        fields["name"], fields["args"], fields["written"], fields["at"] = name, args, written, at
+        self.__dict__.update(name=name, args=args, written=written, at=at)  # as Text's
 
 
 @dataclass(frozen=True)
