@@ -52,6 +52,8 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("sim_clock_not_bridged", Category.TF),
     ("node_executable_missing", Category.LAUNCH),
     ("camera_frame_not_optical", Category.TF),
+    ("optical_rotated_twice", Category.TF),
+    ("camera_streams_one_frame", Category.TF),
     ("rep105_order", Category.TF),
     ("quaternion_order", Category.TF),
     ("ros2_schema", Category.LAUNCH),
@@ -68,6 +70,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_undeclared_arg", Category.LAUNCH),
     ("py_name_error", Category.LAUNCH),
     ("ros2_unused_include_arg", Category.LAUNCH),
+    ("ros1_unused_arg", Category.LAUNCH),
     ("ros2_param_file_unmatched", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
