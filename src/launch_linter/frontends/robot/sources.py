@@ -17,6 +17,7 @@ from launch_linter.frontends.robot.describe import (
     Word,
     literal_kind,
     xacro_command,
+    xacro_options,
 )
 from launch_linter.frontends.tokens import shell_words
 from launch_linter.model.record import replace
@@ -102,7 +103,8 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
                                  _absolute(file, directory), args, condition, reason=reason,
                                  open_args=open_args,
-                                 open_file=None if file else _open_word(words, command))
+                                 open_file=None if file else _open_word(words, command),
+                                 near=directory, xacro_options=xacro_options(words))
     textfile = values.get("textfile")
     if textfile is not None:
         file = resolved_text(textfile)
@@ -155,7 +157,8 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
                                  _absolute(file, "/"), args, condition, node, reason=reason,
                                  open_args=open_args,
                                  open_file=None if file else _open_word(words_of(command),
-                                                                        command))
+                                                                        command),
+                                 xacro_options=xacro_options(words_of(command)))
     text = resolved_text(value)
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
