@@ -72,10 +72,14 @@ class DescriptionSource(Record):
     launch file is; None for ROS 2 (its launch files run from the install space)."""
     xacro_options: tuple[str, ...]
     """The option words of the xacro call (``--inorder``, ``-i``, ``--legacy``)."""
+    wrapper: str | None
+    """The program the command runs xacro through (``env_run <config file> xacro ...``),
+    which may set the environment xacro reads; None when the command runs xacro itself."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
         "open_args", "open_file", "namespace", "included_at", "near", "xacro_options",
+        "wrapper",
     )
 
     def __init__(
@@ -96,6 +100,7 @@ class DescriptionSource(Record):
         included_at: tuple[Location, ...] = (),
         near: str | None = None,
         xacro_options: tuple[str, ...] = (),
+        wrapper: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -113,6 +118,7 @@ class DescriptionSource(Record):
         _set(self, "included_at", included_at)
         _set(self, "near", near)
         _set(self, "xacro_options", xacro_options)
+        _set(self, "wrapper", wrapper)
 
 
 class RobotJoint(Record):

@@ -148,6 +148,21 @@ def _xacro_words_start(words: Sequence[Word]) -> int | None:
     return None
 
 
+_RUNNERS = frozenset({"xacro", "xacro.py", "rosrun", "python", "python2", "python3"})
+"""Programs that run xacro without changing its environment."""
+
+
+def xacro_wrapper(words: Sequence[Word]) -> str | None:
+    """The first word of a command that runs xacro through another program (a script that
+    sources a configuration first, ``env X=1``), when there is one: that program may set
+    the environment variables xacro reads."""
+    start = _xacro_words_start(words)
+    if start is None or start == 0:
+        return None
+    first = words[0][0].rstrip("/").rsplit("/", 1)[-1].strip("'\"")
+    return None if first in _RUNNERS else words[0][0]
+
+
 def xacro_options(words: Sequence[Word]) -> tuple[str, ...]:
     """The option words (``--inorder``, ``-i``, ``--legacy``, ...) of a xacro call."""
     start = _xacro_words_start(words)
@@ -403,6 +418,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     problems_found: list[Problem] = []
     defines_macros = False
     files: list[str] = []
+    env_read: frozenset[str] = frozenset()
     if source.kind is DescriptionKind.LITERAL or source.file is None:
         root, problems = literal_root(source.text or "", source.path, source.line,
                                       own_lines=standalone)
@@ -414,7 +430,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                            source.text.encode("utf-8"),
                            lambda path: packages.locate(path).path, budget, display)
         root, problems, files = expansion.root, expansion.problems, expansion.files
-        defines_macros = expansion.defines_macros
+        defines_macros, env_read = expansion.defines_macros, expansion.env_read
     else:
         # A share path (FindPackageShare/$(find) of a ROS 2 package) is read from the
         # source file its install rules name; one nobody can prove absent stays unknown.
@@ -429,7 +445,7 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
                                     packages, env, budget, display)
         root, problems, files = expansion.root, expansion.problems, expansion.files
-        defines_macros = expansion.defines_macros
+        defines_macros, env_read = expansion.defines_macros, expansion.env_read
     faults = _faults(problems, source, display) + legacy_order_refusal(
         files, env, source.xacro_options, display)
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
@@ -466,7 +482,15 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         ))
     elements, names_known = elements_of(root, display, source.condition)
     followed = all(p.kind in (KEPT, *FAULT_KINDS) and p.kind != REFUSED for p in problems)
-    robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
+    # Variables read as unset that the wrapper may set: what they decide is not known.
+    wrapped = sorted(n for n in env_read if n not in env) if source.wrapper else []
+    if wrapped:
+        problems_found.append(_unresolved(source, (
+            f"robot description: the command runs xacro through "
+            f"{os.path.basename(source.wrapper or '')}, which may "
+            f"set {', '.join(wrapped[:5])}; the links and joints they decide are not known")))
+    robot = RobotModel(source, tuple(elements), tuple(found),
+                       names_known and followed and not wrapped,
                        faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found
 

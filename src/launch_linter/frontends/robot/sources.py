@@ -18,6 +18,7 @@ from launch_linter.frontends.robot.describe import (
     literal_kind,
     xacro_command,
     xacro_options,
+    xacro_wrapper,
 )
 from launch_linter.frontends.tokens import shell_words
 from launch_linter.model.record import replace
@@ -104,7 +105,8 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
                                  _absolute(file, directory), args, condition, reason=reason,
                                  open_args=open_args,
                                  open_file=None if file else _open_word(words, command),
-                                 near=directory, xacro_options=xacro_options(words))
+                                 near=directory, xacro_options=xacro_options(words),
+                                 wrapper=xacro_wrapper(words))
     textfile = values.get("textfile")
     if textfile is not None:
         file = resolved_text(textfile)
@@ -158,7 +160,8 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
                                  open_args=open_args,
                                  open_file=None if file else _open_word(words_of(command),
                                                                         command),
-                                 xacro_options=xacro_options(words_of(command)))
+                                 xacro_options=xacro_options(words_of(command)),
+                                 wrapper=xacro_wrapper(words_of(command)))
     text = resolved_text(value)
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
