@@ -3,6 +3,7 @@ there, and (legacy processing order) an include whose file name needs a property
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 from _urdf import link, robot
@@ -109,3 +110,18 @@ def test_an_undeclared_arg_in_an_elements_text(tmp_path: Path) -> None:
     (tmp_path / "robot.urdf.xacro").write_text(robot(
         '<xacro:arg name="namespace" default="r"/>' + link("a") + "\n" + plugin))
     assert _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro") == ()
+
+
+def test_many_includes_in_the_legacy_order_stay_linear(tmp_path: Path) -> None:
+    # 20,000 includes in a macro never called: the legacy order walks every one (with a
+    # ${pi} the linter reads) and finds none that stops it; then one more that does.
+    includes = "".join(f'<xacro:include filename="p{i}${{pi}}.xacro"/>' for i in range(20_000))
+    text = robot('<xacro:macro name="never">' + includes + '</xacro:macro>' + link("a"))
+    (tmp_path / "robot.urdf.xacro").write_text(text)
+    started = time.perf_counter()
+    assert _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro", distro="kinetic") == ()
+    assert time.perf_counter() - started < 30
+    (tmp_path / "robot.urdf.xacro").write_text(text.replace(
+        "</robot>", '<xacro:include filename="${n}.xacro"/></robot>'))
+    (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro", distro="kinetic")
+    assert "'n'" in found.message

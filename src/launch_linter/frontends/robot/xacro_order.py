@@ -30,8 +30,11 @@ LEGACY_ORDER_DISTROS = frozenset({"hydro", "indigo", "jade", "kinetic", "lunar"}
 """Distributions whose xacro runs in the legacy order unless given ``--inorder``."""
 LEGACY_OPTION_DISTROS = frozenset({"melodic"})
 """Distributions whose xacro runs in the legacy order when given ``--legacy``."""
-MAX_EXPRESSION = 4096
-"""Longest ``${...}`` of a file name read (a longer one is not judged)."""
+MAX_EXPRESSION = 256
+MAX_NESTING = 16
+"""Longest ``${...}`` of a file name judged, and most brackets or unary signs in it (a
+file name's expression is short; a deeper one would strain Python 3.8's parser, which
+says so on stderr): beyond them nothing is claimed."""
 _EXPRESSION = re.compile(r"(?<!\$)\$\{([^}]*)\}")
 """A ``${...}`` of xacro's lexer (``$${`` is an escaped dollar)."""
 IN_ORDER_OPTIONS = frozenset({"--inorder", "-i", "--check-order"})
@@ -52,19 +55,20 @@ def property_needed(expression: str) -> str | None:
     xacro symbol defines: evaluated with no properties, it stops xacro. None when there
     is none, and when the expression binds names of its own (a lambda, a comprehension)
     or is no Python the linter reads (then nothing is claimed)."""
-    if len(expression) > MAX_EXPRESSION:
+    if len(expression) > MAX_EXPRESSION or sum(
+            expression.count(sign) for sign in "([{-+~") > MAX_NESTING:
         return None
     try:
         tree = ast.parse(expression.strip(), mode="eval")
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return None
-    names: list[str] = []
+    names: list[tuple[int, str]] = []
     for node in ast.walk(tree):
         if isinstance(node, (ast.Lambda, ast.comprehension)):
             return None
         if isinstance(node, ast.Name) and not xacro_defines(node.id):
-            names.append(node.id)
-    return names[0] if names else None
+            names.append((node.col_offset, node.id))
+    return min(names)[1] if names else None
 
 
 def legacy_include_refusal(filename: str) -> str | None:
