@@ -46,3 +46,8 @@ def test_which_programs_wrap_xacro() -> None:
     assert xacro_wrapper(words("python /opt/xacro.py r.xacro")) is None
     assert xacro_wrapper(words("xacro r.xacro")) is None
     assert xacro_wrapper(words("cat r.urdf")) is None
+
+
+def test_xacro_named_by_an_unresolved_word_is_no_wrapper() -> None:
+    assert xacro_wrapper([("FindExecutable(name='xacro')", False), ("r.xacro", True)]) is None
+    assert xacro_wrapper([("$(find-exec xacro)", False), ("r.xacro", True)]) is None

@@ -135,17 +135,25 @@ XacroCall = typing.Tuple[
 ]
 
 
-def _xacro_words_start(words: Sequence[Word]) -> int | None:
-    """Where the words given to xacro begin (after ``xacro``, ``$(find xacro)/xacro``,
-    ``rosrun xacro xacro``); None when ``words`` do not run xacro."""
+def _xacro_word(words: Sequence[Word]) -> int | None:
+    """Which of the first words names xacro (``xacro``, ``$(find xacro)/xacro``, the
+    first ``xacro`` of ``rosrun xacro xacro``); None when ``words`` do not run xacro."""
     for index, (text, resolved) in enumerate(words[:4]):
         base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
         named = not resolved and _XACRO_NAMED.search(text) is not None
         if base in ("xacro", "xacro.py") or named:
-            if index + 1 < len(words) and words[index + 1][0] in ("xacro", "xacro.py"):
-                return index + 2
-            return index + 1
+            return index
     return None
+
+
+def _xacro_words_start(words: Sequence[Word]) -> int | None:
+    """Where the words given to xacro begin; None when ``words`` do not run xacro."""
+    index = _xacro_word(words)
+    if index is None:
+        return None
+    if index + 1 < len(words) and words[index + 1][0] in ("xacro", "xacro.py"):
+        return index + 2
+    return index + 1
 
 
 _RUNNERS = frozenset({"xacro", "xacro.py", "rosrun", "python", "python2", "python3"})
@@ -156,8 +164,8 @@ def xacro_wrapper(words: Sequence[Word]) -> str | None:
     """The first word of a command that runs xacro through another program (a script that
     sources a configuration first, ``env X=1``), when there is one: that program may set
     the environment variables xacro reads."""
-    start = _xacro_words_start(words)
-    if start is None or start == 0:
+    index = _xacro_word(words)
+    if not index:  # xacro itself first, or no xacro
         return None
     first = words[0][0].rstrip("/").rsplit("/", 1)[-1].strip("'\"")
     return None if first in _RUNNERS else words[0][0]
