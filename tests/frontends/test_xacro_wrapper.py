@@ -51,3 +51,16 @@ def test_which_programs_wrap_xacro() -> None:
 def test_xacro_named_by_an_unresolved_word_is_no_wrapper() -> None:
     assert xacro_wrapper([("FindExecutable(name='xacro')", False), ("r.xacro", True)]) is None
     assert xacro_wrapper([("$(find-exec xacro)", False), ("r.xacro", True)]) is None
+
+
+def test_a_wrapper_of_a_description_without_variables_changes_nothing(tmp_path: Path) -> None:
+    (tmp_path / "plain.urdf.xacro").write_text(
+        '<robot name="r"><link name="a"/><link name="b"/></robot>', encoding="utf-8")
+    (tmp_path / "robot.launch").write_text(
+        '<launch><param name="robot_description" command="$(dirname)/env_run cfg '
+        'xacro $(dirname)/plain.urdf.xacro"/>'
+        '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+        '</launch>', encoding="utf-8")
+    options = LintOptions(package_paths=(), select=frozenset({"urdf_root", "unresolved"}))
+    (found,) = lint_paths([str(tmp_path / "robot.launch")], options).diagnostics
+    assert found.rule == "urdf_root"

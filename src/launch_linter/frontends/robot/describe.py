@@ -491,7 +491,8 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
     elements, names_known = elements_of(root, display, source.condition)
     followed = all(p.kind in (KEPT, *FAULT_KINDS) and p.kind != REFUSED for p in problems)
     # Variables read as unset that the wrapper may set: what they decide is not known.
-    wrapped = sorted(n for n in env_read if n not in env) if source.wrapper else []
+    wrapped = sorted(n for n in env_read if n not in env and n != "ROS_DISTRO") if (
+        source.wrapper) else []
     if wrapped:
         problems_found.append(_unresolved(source, (
             f"robot description: the command runs xacro through "
