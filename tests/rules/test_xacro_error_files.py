@@ -47,6 +47,17 @@ def test_a_xacro_file_missing_in_a_ros1_package_found(tmp_path: Path) -> None:
     assert _launch(package / "launch", fixed, roots=(str(tmp_path / "src"),)) == ()
 
 
+def test_a_xacro_file_missing_beside_the_launch_files_folder(tmp_path: Path) -> None:
+    # $(dirname)/../urdf/: written relative to the launch file, its folder here.
+    (tmp_path / "urdf").mkdir()
+    command = "$(dirname)/../scripts/env_run cfg xacro $(dirname)/../urdf/robot.urdf.xacro"
+    (found,) = _launch(tmp_path / "launch", command)
+    assert found.line == 2 and "urdf/robot.urdf.xacro" in found.message
+    # The same file named by an absolute path written out: another machine may have it.
+    absolute = f"$(dirname)/env_run cfg xacro {tmp_path}/urdf/robot.urdf.xacro"
+    assert _launch(tmp_path / "launch", absolute) == ()
+
+
 def test_a_file_the_build_may_make_is_not_proven_absent(tmp_path: Path) -> None:
     # xacro_add_files writes robot.urdf from robot.urdf.xacro: a missing .urdf may be made.
     assert _launch(tmp_path, "xacro $(dirname)/robot.urdf") == ()

@@ -15,8 +15,9 @@ not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`), and a `$
 newer; the older xacro of Kinetic and Lunar drops the rest: `xacro_unexpanded`). The same
 refusals in an element's text (`<robotNamespace>/$(arg namespace)</robotNamespace>`:
 xacro evaluates text as it does attributes). A xacro file the launch file's command names
-that is provably not there (under the ROS 1 launch file's own folder, `$(dirname)`, or
-in a ROS 1 package found; a `*.xacro` name, which no build step makes), reported at the
+that is provably not there (under the ROS 1 launch file's own folder; written from
+`$(dirname)` with its folder there, as a `<rosparam file>` is judged; or in a ROS 1
+package found; a `*.xacro` name, which no build step makes), reported at the
 `<param>`. Without `--inorder` on Hydro to Lunar (and with `--legacy` on Melodic), xacro
 runs in the legacy order, which replaces every include first, before any property:
 an include whose file name reads one (`filename="${arm}_macro.xacro"`) stops it with
