@@ -144,8 +144,10 @@ def test_a_description_that_cannot_be_read_is_named_once(
 ) -> None:
     monkeypatch.chdir(tree / "pkg2")
     (found,) = [m for m in _messages(capsys, ".") if "m.xacro" in m]
-    assert found == ("robot description urdf/m.xacro:1: cannot read the file: No such file or "
-                     "directory; its joints are not read")
+    # Not in its package, which is found: xacro stops on it (xacro_error).
+    assert found == ("xacro stops here (no such file urdf/m.xacro): the xacro command fails, "
+                     "so robot_description is not set and robot_state_publisher publishes "
+                     "nothing")
 
 
 def test_outside_the_current_folder_paths_stay_absolute(

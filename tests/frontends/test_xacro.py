@@ -99,12 +99,16 @@ def test_bombs_in_values_stay_unresolved() -> None:
 
 
 def test_hostile_launch_file_gives_diagnostics_not_a_crash() -> None:
-    options = LintOptions(package_paths=(str(WS),), select=frozenset({"unresolved"}))
+    options = LintOptions(package_paths=(str(WS),), select=frozenset({"unresolved",
+                                                                      "xacro_error"}))
     result = lint_paths([str(WS / "src" / "hostile" / "launch" / "hostile.launch")], options)
-    text = "\n".join(d.message for d in result.diagnostics)
-    for expected in ("macros nested deeper", "include cycle", "longer than", "cannot read",
+    text = "\n".join(d.message for d in result.diagnostics if d.rule == "unresolved")
+    for expected in ("macros nested deeper", "include cycle", "longer than",
                      "not a xacro call", "URDF joint 'j'"):
         assert expected in text
+    # missing.xacro is not in its package, which is found: xacro stops on it.
+    (missing,) = [d for d in result.diagnostics if d.rule == "xacro_error"]
+    assert "no such file" in missing.message and missing.line == 7
 
 
 def test_variant_b_escape_keeps_literal_text() -> None:

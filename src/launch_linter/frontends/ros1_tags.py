@@ -308,7 +308,8 @@ class Ros1Tags(Ros1Base):
     def _description(self, element: Element, context: _Context, condition: Condition,
                      values: dict[str, Value]) -> None:
         source = from_ros1_param(values, self._display(context.filename), element.line,
-                                 element.column, condition, os.path.dirname(context.filename))
+                                 element.column, condition, os.path.dirname(context.filename),
+                                 element.attrib.get("command", ""))
         if source is not None:
             namespace = None if context.ns_unresolved else context.ns
             self.descriptions.append(replace(source, namespace=namespace))

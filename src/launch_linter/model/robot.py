@@ -66,10 +66,20 @@ class DescriptionSource(Record):
     included_at: tuple[Location, ...]
     """The include actions through which the launch file giving it was run (ROS 2), from
     the root's: one line run through two includes gives two sources."""
+    near: str | None
+    """The folder of the ROS 1 launch file that gives it (roslaunch's ``$(dirname)``): a
+    description file named under it that is not there is provably absent, as an included
+    launch file is; None for ROS 2 (its launch files run from the install space)."""
+    xacro_options: tuple[str, ...]
+    """The option words of the xacro call (``--inorder``, ``-i``, ``--legacy``)."""
+    wrapper: str | None
+    """The program the command runs xacro through (``env_run <config file> xacro ...``),
+    which may set the environment xacro reads; None when the command runs xacro itself."""
 
     __slots__ = (
         "path", "line", "column", "kind", "file", "args", "condition", "node", "text", "reason",
-        "open_args", "open_file", "namespace", "included_at",
+        "open_args", "open_file", "namespace", "included_at", "near", "xacro_options",
+        "wrapper",
     )
 
     def __init__(
@@ -88,6 +98,9 @@ class DescriptionSource(Record):
         open_file: tuple[str, str, str] | None = None,
         namespace: str | None = None,
         included_at: tuple[Location, ...] = (),
+        near: str | None = None,
+        xacro_options: tuple[str, ...] = (),
+        wrapper: str | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -103,6 +116,9 @@ class DescriptionSource(Record):
         _set(self, "open_file", open_file)
         _set(self, "namespace", namespace)
         _set(self, "included_at", included_at)
+        _set(self, "near", near)
+        _set(self, "xacro_options", xacro_options)
+        _set(self, "wrapper", wrapper)
 
 
 class RobotJoint(Record):

@@ -12,7 +12,17 @@ source in `frontends/robot/xacro_globals.py`, for Noetic's and ROS 2's xacro onl
 `${...}` that xacro evaluates (in a macro, once it is called) whose brackets or quotes do
 not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`), and a `${` or
 `$(` never closed (`rpy="0 ${pi/2 0"`), which xacro's lexer cannot read (xacro 1.13.5 and
-newer; the older xacro of Kinetic and Lunar drops the rest: `xacro_unexpanded`).
+newer; the older xacro of Kinetic and Lunar drops the rest: `xacro_unexpanded`). The same
+refusals in an element's text (`<robotNamespace>/$(arg namespace)</robotNamespace>`:
+xacro evaluates text as it does attributes). A xacro file the launch file's command names
+that is provably not there (under the ROS 1 launch file's own folder; written from
+`$(dirname)` with its folder there, as a `<rosparam file>` is judged; or in a ROS 1
+package found; a `*.xacro` name, which no build step makes), reported at the
+`<param>`. Without `--inorder` on Hydro to Lunar (and with `--legacy` on Melodic), xacro
+runs in the legacy order, which replaces every include first, before any property:
+an include whose file name reads one (`filename="${arm}_macro.xacro"`) stops it with
+"variable filename is supported with --inorder option only" (ros/xacro kinetic-devel
+33fabd8, `cli.py` and `get_include_files`).
 It is an error when a launch file loads the description (with or without a
 robot_state_publisher: roslaunch runs a `<param command="xacro ...">` when it loads the
 file, for a Gazebo spawner as much as for robot_state_publisher); info when it sits under an

@@ -15,6 +15,7 @@ from collections.abc import Callable, Hashable, Mapping, Sequence
 
 from launch_linter.frontends.robot.alternatives import alternatives
 from launch_linter.frontends.robot.sim_control import simulated_controllers
+from launch_linter.frontends.robot.xacro_order import legacy_order_refusal
 from launch_linter.frontends.robot.xacro_values import (
     FAULT_KINDS,
     KEPT,
@@ -134,21 +135,58 @@ XacroCall = typing.Tuple[
 ]
 
 
+def _xacro_word(words: Sequence[Word]) -> int | None:
+    """Which of the first words names xacro (``xacro``, ``$(find xacro)/xacro``, the
+    first ``xacro`` of ``rosrun xacro xacro``); None when ``words`` do not run xacro."""
+    for index, (text, resolved) in enumerate(words[:4]):
+        base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
+        named = not resolved and _XACRO_NAMED.search(text) is not None
+        if base in ("xacro", "xacro.py") or named:
+            return index
+    return None
+
+
+def _xacro_words_start(words: Sequence[Word]) -> int | None:
+    """Where the words given to xacro begin; None when ``words`` do not run xacro."""
+    index = _xacro_word(words)
+    if index is None:
+        return None
+    if index + 1 < len(words) and words[index + 1][0] in ("xacro", "xacro.py"):
+        return index + 2
+    return index + 1
+
+
+_RUNNERS = frozenset({"xacro", "xacro.py", "rosrun", "python", "python2", "python3"})
+"""Programs that run xacro without changing its environment."""
+
+
+def xacro_wrapper(words: Sequence[Word]) -> str | None:
+    """The first word of a command that runs xacro through another program (a script that
+    sources a configuration first, ``env X=1``), when there is one: that program may set
+    the environment variables xacro reads."""
+    index = _xacro_word(words)
+    if not index:  # xacro itself first, or no xacro
+        return None
+    first = words[0][0].rstrip("/").rsplit("/", 1)[-1].strip("'\"")
+    return None if first in _RUNNERS else words[0][0]
+
+
+def xacro_options(words: Sequence[Word]) -> tuple[str, ...]:
+    """The option words (``--inorder``, ``-i``, ``--legacy``, ...) of a xacro call."""
+    start = _xacro_words_start(words)
+    if start is None:
+        return ()
+    return tuple(text for text, resolved in words[start:]
+                 if resolved and text.startswith("-") and ":=" not in text)
+
+
 def xacro_command(words: Sequence[Word], command: Value = ()) -> XacroCall | None:
     """``(file, args, reason, open_args)`` when ``words`` (of the value ``command``) run
     xacro (``xacro``, ``xacro.py``, ``$(find xacro)/xacro``, ``rosrun xacro xacro``,
     ``--inorder`` and other options skipped); None when the command is not xacro. ``file``
     is None when unresolved, and ``reason`` names what blocks it; ``open_args`` is true
     when an unresolved word may give more args."""
-    start = None
-    for index, (text, resolved) in enumerate(words[:4]):
-        base = text.rstrip("/").rsplit("/", 1)[-1].strip("'\"")
-        named = not resolved and _XACRO_NAMED.search(text) is not None
-        if base in ("xacro", "xacro.py") or named:
-            start = index + 1
-            if index + 1 < len(words) and words[index + 1][0] in ("xacro", "xacro.py"):
-                start = index + 2
-            break
+    start = _xacro_words_start(words)
     if start is None:
         return None
     file: str | None = None
@@ -387,6 +425,8 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
 
     problems_found: list[Problem] = []
     defines_macros = False
+    files: list[str] = []
+    env_read: frozenset[str] = frozenset()
     if source.kind is DescriptionKind.LITERAL or source.file is None:
         root, problems = literal_root(source.text or "", source.path, source.line,
                                       own_lines=standalone)
@@ -397,21 +437,25 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         expansion = expand(source.file, dict(source.args), packages.find, env,
                            source.text.encode("utf-8"),
                            lambda path: packages.locate(path).path, budget, display)
-        root, problems = expansion.root, expansion.problems
-        defines_macros = expansion.defines_macros
+        root, problems, files = expansion.root, expansion.problems, expansion.files
+        defines_macros, env_read = expansion.defines_macros, expansion.env_read
     else:
         # A share path (FindPackageShare/$(find) of a ROS 2 package) is read from the
         # source file its install rules name; one nobody can prove absent stays unknown.
-        located = packages.locate(source.file)
+        located = packages.locate(source.file, near=source.near,
+                                  ros_version=1 if source.near is not None else None)
         if located.path is None and not located.absent:
             return None, [_unresolved(source, f"robot description {display(source.file)} "
                                               f"not read: {located.reason}")]
+        if located.path is None and _xacro_source(source):
+            return _absent(source, display(source.file), located.reason), []
         args = source.args if source.kind is DescriptionKind.XACRO else ()
         expansion = cache.expansion(located.path or os.path.abspath(source.file), args,
                                     packages, env, budget, display)
-        root, problems = expansion.root, expansion.problems
-        defines_macros = expansion.defines_macros
-    faults = _faults(problems, source, display)
+        root, problems, files = expansion.root, expansion.problems, expansion.files
+        defines_macros, env_read = expansion.defines_macros, expansion.env_read
+    faults = _faults(problems, source, display) + legacy_order_refusal(
+        files, env, source.xacro_options, display)
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
     followed_up = [p for p in _causes(problems)
                    if (display(p.path), p.line, p.message) not in proven]
@@ -446,9 +490,36 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         ))
     elements, names_known = elements_of(root, display, source.condition)
     followed = all(p.kind in (KEPT, *FAULT_KINDS) and p.kind != REFUSED for p in problems)
-    robot = RobotModel(source, tuple(elements), tuple(found), names_known and followed,
+    # Variables read as unset that the wrapper may set: what they decide is not known.
+    wrapped = sorted(n for n in env_read if n not in env and n != "ROS_DISTRO") if (
+        source.wrapper) else []
+    if wrapped:
+        problems_found.append(_unresolved(source, (
+            f"robot description: the command runs xacro through "
+            f"{os.path.basename(source.wrapper or '')}, which may "
+            f"set {', '.join(wrapped[:5])}; the links and joints they decide are not known")))
+    robot = RobotModel(source, tuple(elements), tuple(found),
+                       names_known and followed and not wrapped,
                        faults, defines_macros, standalone, tuple(plugins))
     return robot, problems_found
+
+
+def _xacro_source(source: DescriptionSource) -> bool:
+    """Whether ``source`` runs xacro on a file written as a xacro source (``*.xacro``):
+    only such a file is never made by the build (``xacro_add_files`` writes its output
+    without the ``.xacro``, xacro's ``cmake/xacro-extras.cmake.em``)."""
+    return (source.kind is DescriptionKind.XACRO and source.file is not None
+            and ".xacro" in os.path.basename(source.file))
+
+
+def _absent(source: DescriptionSource, shown: str, reason: str) -> RobotModel:
+    """The robot of a xacro call whose file is provably absent: xacro stops at once
+    ("No such file or directory"), so the launch file's command fails; the fault is
+    placed at the launch file's line that names the file."""
+    fault = DescriptionFault(source.path, source.line, FaultKind.REFUSED,
+                             f"no such file {shown}"
+                             + ("" if reason == "not found" else f": {reason}"))
+    return RobotModel(source, (), (), False, (fault,), False, False, ())
 
 
 _FOLLOWED = (KEPT, *FAULT_KINDS)

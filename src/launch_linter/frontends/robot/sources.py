@@ -17,6 +17,8 @@ from launch_linter.frontends.robot.describe import (
     Word,
     literal_kind,
     xacro_command,
+    xacro_options,
+    xacro_wrapper,
 )
 from launch_linter.frontends.tokens import shell_words
 from launch_linter.model.record import replace
@@ -27,6 +29,7 @@ from launch_linter.model.robot import (
     NodeRecord,
 )
 from launch_linter.model.transform import Condition
+from launch_linter.resolve import reads
 from launch_linter.resolve.value import (
     Hole,
     Value,
@@ -83,8 +86,10 @@ def words_of(value: Value) -> list[Word]:
 
 
 def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
-                    condition: Condition, directory: str) -> DescriptionSource | None:
-    """The description a ROS 1 ``<param name="robot_description" ...>`` gives."""
+                    condition: Condition, directory: str, written: str = ""
+                    ) -> DescriptionSource | None:
+    """The description a ROS 1 ``<param name="robot_description" ...>`` gives
+    (``written``: its ``command`` attribute as written)."""
     command = values.get("command")
     if command is not None:
         words = words_of(command)
@@ -102,7 +107,10 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
         return DescriptionSource(path, line, column, DescriptionKind.XACRO,
                                  _absolute(file, directory), args, condition, reason=reason,
                                  open_args=open_args,
-                                 open_file=None if file else _open_word(words, command))
+                                 open_file=None if file else _open_word(words, command),
+                                 near=_judged_in(directory, words, file, written),
+                                 xacro_options=xacro_options(words),
+                                 wrapper=xacro_wrapper(words))
     textfile = values.get("textfile")
     if textfile is not None:
         file = resolved_text(textfile)
@@ -116,6 +124,53 @@ def from_ros1_param(values: dict[str, Value], path: str, line: int, column: int,
             return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
                                      condition=condition, text=text)
     return None
+
+
+def _judged_in(directory: str, words: list[Word], file: str | None, written: str) -> str:
+    """The folder a missing description file is judged in (``DescriptionSource.near``):
+    the launch file's own; the file's own when the command as written names it from
+    ``$(dirname)`` and its folder is here, a path relative to the launch file that is the
+    same on every machine (as a ``<rosparam file>`` is judged:
+    ``ros1_checks._checkable_path``)."""
+    if file is None:
+        return directory
+    raw = _written_words(written)
+    index = next((i for i, (text, resolved) in enumerate(words)
+                  if resolved and text == file), None)
+    if index is None or len(raw) != len(words):
+        return directory  # a substitution gave several words: which is the file's is unsure
+    folder = os.path.dirname(_absolute(file, directory) or directory)
+    # Its folder here, the file not: the layout around the launch file is this one (a
+    # folder not here may be another repository's, cloned beside it elsewhere).
+    if raw[index].strip("'\"").startswith("$(dirname)") and reads.is_dir(folder):
+        return folder
+    return directory
+
+
+def _written_words(written: str) -> list[str]:
+    """A command attribute as written, split at the spaces outside ``$(...)`` and
+    quotes (the words before substitution)."""
+    words: list[str] = []
+    current: list[str] = []
+    depth, quote = 0, ""
+    for position, char in enumerate(written):
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "'\"":
+            quote = char
+        elif written.startswith("$(", position):
+            depth += 1
+        elif char == ")" and depth:
+            depth -= 1
+        elif char.isspace() and not depth:
+            if current:
+                words.append("".join(current))
+                current = []
+            continue
+        current.append(char)
+    if current:
+        words.append("".join(current))
+    return words
 
 
 def _absolute(file: str | None, directory: str) -> str | None:
@@ -155,7 +210,9 @@ def from_ros2_value(value: Value, command: Value | None, path: str, line: int,
                                  _absolute(file, "/"), args, condition, node, reason=reason,
                                  open_args=open_args,
                                  open_file=None if file else _open_word(words_of(command),
-                                                                        command))
+                                                                        command),
+                                 xacro_options=xacro_options(words_of(command)),
+                                 wrapper=xacro_wrapper(words_of(command)))
     text = resolved_text(value)
     if text is not None and literal_kind(text):
         return DescriptionSource(path, line, column, DescriptionKind.LITERAL, None,
