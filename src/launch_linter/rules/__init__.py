@@ -57,6 +57,7 @@ def _load() -> None:
         ros2_bad_flag,
         ros2_param_file_unmatched,
         ros2_positional_args,
+        ros2_missing_keyword,
         ros2_removed_keyword,
         ros2_schema,
         ros2_undeclared_arg,
