@@ -31,6 +31,8 @@ PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 _COMMIT = re.compile(r"^[0-9a-f]{40}$")
 
 SCALARS = (str, bool, int, float)
+PARAMETER_TYPES = ("bool", "integer", "double", "string")
+"""The scalar types a ROS 2 node declares a parameter with (rclcpp's ``ParameterType``)."""
 
 
 class KnowledgeError(ValueError):
@@ -154,6 +156,10 @@ class Entry(Record):
     """It loads the ros2_control controllers its parameter files name (a controller
     manager, a simulator's ros2_control plugin): a file it could not read leaves them
     unknown, and the tree open."""
+    parameter_types: tuple[tuple[str, str], ...]
+    """ROS 2: parameters the node declares with a typed default (``declare_parameter(name,
+    30.0)``), each with its type (:data:`PARAMETER_TYPES`): rclcpp throws when the value
+    given has another type, and the node dies."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -161,7 +167,7 @@ class Entry(Record):
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
-        "inputs", "tf_listener", "loads_controllers",
+        "inputs", "tf_listener", "loads_controllers", "parameter_types",
     )
 
     def __init__(
@@ -192,6 +198,7 @@ class Entry(Record):
         inputs: tuple[str, ...] = (),
         tf_listener: bool = False,
         loads_controllers: bool = False,
+        parameter_types: tuple[tuple[str, str], ...] = (),
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -219,6 +226,7 @@ class Entry(Record):
         _set(self, "inputs", inputs)
         _set(self, "tf_listener", tf_listener)
         _set(self, "loads_controllers", loads_controllers)
+        _set(self, "parameter_types", parameter_types)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -403,6 +411,11 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         (_text(item.get("list"), f"{where}.looks_up_listed[{i}].list"),
          _text(item.get("frame"), f"{where}.looks_up_listed[{i}].frame"))
         for i, item in enumerate(listed))
+    types_data = data.get("parameter_types", {})
+    if not isinstance(types_data, dict) or not all(
+            isinstance(value, str) and value in PARAMETER_TYPES for value in types_data.values()):
+        raise KnowledgeError(f"{where}.parameter_types must map names to one of "
+                             f"{', '.join(PARAMETER_TYPES)}")
     return Entry(
         id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
         plugins=plugins, filenames=filenames, types=types,
@@ -423,6 +436,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         inputs=_texts(data.get("inputs"), f"{where}.inputs"),
         tf_listener=bool(data.get("tf_listener", False)),
         loads_controllers=bool(data.get("loads_controllers", False)),
+        parameter_types=tuple((str(k), v) for k, v in types_data.items()),
     )
 
 
