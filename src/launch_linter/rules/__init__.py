@@ -82,6 +82,7 @@ def _load() -> None:
         urdf_missing_link,
         urdf_repeated_origin,
         urdf_root,
+        use_sim_time_misspelt,
         xacro_error,
         xacro_param_as_arg,
         xacro_unexpanded,

@@ -23,10 +23,10 @@ component container (its components), the nav2 servers that run a costmap node
 (`controller_server`, `planner_server`).
 
 Error when no launch argument can change the outcome: the node's name is written as text
-(or fixed by its program) and every key is a bare node name other than it (a bare key is `/name`: it reaches only a
-node of that name in the root namespace). Info otherwise (the name comes from a launch
-argument, a key has a namespace part or a wildcard, or is the node's own name under
-another namespace): it holds for the default launch arguments.
+(or fixed by its program) and every key is a bare node name other than it (a bare key is
+`/name`: it reaches only a node of that name in the root namespace). Info otherwise (the
+name comes from a launch argument, a key has a namespace part or a wildcard, or is the
+node's own name under another namespace): it holds for the default launch arguments.
 
 ## Why is this bad?
 rclcpp applies a parameter file's entries only under the keys that match the node's fully
