@@ -74,3 +74,12 @@ def test_unknown_keyword_arguments_are_not_judged(tmp_path: Path) -> None:
 def test_a_plain_node_needs_neither(tmp_path: Path) -> None:
     assert _found(tmp_path, "Node", "Node(package='lidar', executable='lidar_node')",
                   "humble") == []
+
+
+def test_foxy_keywords_are_named(tmp_path: Path) -> None:
+    call = ("LifecycleNode(package='lidar', node_executable='lidar_node', node_name='lidar', "
+            "node_namespace='/')")
+    ((_, level, message),) = _found(tmp_path, "LifecycleNode", call, "humble")
+    assert level == "error"
+    assert ("without name= and namespace= (node_executable, node_name, node_namespace= "
+            "removed after Foxy)") in message

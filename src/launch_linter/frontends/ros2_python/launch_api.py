@@ -111,8 +111,10 @@ class Interpreter(Calls):
             return _substitution("param", 2)(self, args, kwargs, node)
         missing = missing_keywords(name, kwargs)
         if missing:  # ros2_missing_keyword decides with the target distribution
+            legacy = [k for k in _LEGACY_NODE_KEYWORDS if k in kwargs]
             self.problem("ros2_missing_keyword", node, f"{name}(...) without "
-                         + " and ".join(f"{k}=" for k in missing))
+                         + " and ".join(f"{k}=" for k in missing)
+                         + (f" ({', '.join(legacy)}= removed after Foxy)" if legacy else ""))
         handler = HANDLERS.get(name)
         if handler is None:
             if name in ("ParameterValue", "ParameterFile") and args:
