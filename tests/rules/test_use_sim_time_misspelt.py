@@ -61,3 +61,9 @@ def test_near_miss() -> None:
     assert [near_miss(n) for n in ("use_sime_time", "usesimtime", "use_sim_time",
                                    "use_sim_time_x", "publish_tf", "")] == [
         True, True, False, False, False, False]
+
+
+def test_a_ros1_node_is_left_out(tmp_path: Path) -> None:
+    ros1 = ('<launch>\n  <node pkg="robot_state_publisher" type="robot_state_publisher" '
+            'name="rsp">\n    <param name="use_sime_time" value="true"/>\n  </node>\n</launch>\n')
+    assert _found(tmp_path, ros1, "a.launch") == []

@@ -1,7 +1,7 @@
 """A node given a misspelt `use_sim_time` (`use_sime_time`, `use_simtime`): it stays on wall time.
 
 ## What it does
-Reports a parameter given to a node whose name is one or two letters away from
+Reports a parameter given to a ROS 2 node whose name is one or two letters away from
 `use_sim_time` (`use_sime_time`, `use_sim_tim`, `use_simtime`, `Use_sim_time`) and that
 does not contain `use_sim_time` itself (`use_sim_timestep` is another parameter), unless
 its value is false. It reports at the line that sets it, the node related.
@@ -37,8 +37,9 @@ gazebo (due to time synchronization)").
 ## Known problems
 A node that declares a parameter of such a name itself is reported too (none was seen
 among launch files; one node in public code declares `use_sim_times`, which the rule
-leaves out as it contains `use_sim_time`). ROS 1 global parameters outside a node are not
-read. Judged sample (docs/evaluation/batch5_ros2.jsonl): every node parameter of such a
+leaves out as it contains `use_sim_time`). ROS 1 is left out: there the clock is the one
+global `/use_sim_time`, which a node's private parameter does not set even when spelt
+right. Judged sample (docs/evaluation/batch5_ros2.jsonl): every node parameter of such a
 name in public code found by searching for the misspellings (`use_sime_time`,
 `use_sim_tim`, `use_simtime`) and in the corpus, 5 in 5 repositories, all typos.
 """
@@ -84,7 +85,7 @@ def _distance(a: str, b: str) -> int:
 
 def check(context: RuleContext) -> Iterator[Finding]:
     for node in context.tree.nodes:
-        if node.kind != "node":
+        if node.kind != "node" or node.ros != 2:
             continue
         seen: set[str] = set()
         for key, _ in node.params:
