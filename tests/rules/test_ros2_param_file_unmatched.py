@@ -171,3 +171,57 @@ def test_a_parameter_file_is_walked_once_per_node(tmp_path: Path,
     walks.clear()
     assert run(tmp_path, launch, KEYED.format(key="driver")) == []
     assert len(walks) == 1
+
+
+def test_a_partial_wildcard_repeats_the_character_before_it(tmp_path: Path) -> None:
+    # rclcpp turns only `/*` into a name wildcard; `/driver*` is a std::regex: `/drive`
+    # and any number of `r`, so it reaches `driver` and `driverr`, never `driver_x`.
+    for name, found in (("driver", []), ("driverr", []),
+                        ("driver_x", [("params.yaml", 1, "error")])):
+        launch = PY.format(nodes=NODE.format(extra=f", name='{name}'"))
+        assert run(tmp_path, launch, KEYED.format(key="/driver*")) == found, name
+
+
+UNNAMED = "Node(package='{package}', executable='{executable}', parameters=[f]{extra})"
+
+
+def test_a_node_without_a_name_is_checked_under_its_programs_names(tmp_path: Path) -> None:
+    launch = PY.format(nodes=UNNAMED.format(package="lio_sam",
+                                            executable="lio_sam_imuPreintegration", extra=""))
+    # The program runs two nodes; a key naming either reaches it.
+    assert run(tmp_path, launch, KEYED.format(key="/lio_sam*")) == [("params.yaml", 1, "error")]
+    for key in ("lio_sam_transformFusion", "/lio_sam_imu_preintegration", "/**", "/*"):
+        assert run(tmp_path, launch, KEYED.format(key=key)) == [], key
+
+
+def test_plugin_nodes_under_the_programs_node(tmp_path: Path) -> None:
+    # mavros_node's plugins are nodes named after themselves under /NS/mavros.
+    launch = PY.format(nodes=UNNAMED.format(package="mavros", executable="mavros_node",
+                                            extra=", namespace='mavros'"))
+    for key in ("/mavros/**/conn", "/mavros/mavros", "/mavros/mavros/conn", "/mavros/**"):
+        assert run(tmp_path, launch, KEYED.format(key=key)) == [], key
+    # The ROS 1 keys: /mavros names a node in the root namespace; info, as a namespace
+    # given may make it match.
+    for key in ("/mavros", "/mavros/conn"):
+        assert run(tmp_path, launch, KEYED.format(key=key)) == [("params.yaml", 1, "info")]
+
+
+def test_a_program_whose_names_are_unknown_is_not_checked(tmp_path: Path) -> None:
+    launch = PY.format(nodes=UNNAMED.format(package="p", executable="e", extra=""))
+    assert run(tmp_path, launch, KEYED.format(key="/anything")) == []
+    # A random name: no key can name it, but it is never proven.
+    launch = PY.format(nodes=UNNAMED.format(package="tf2_ros",
+                                            executable="static_transform_publisher",
+                                            extra=""))
+    assert run(tmp_path, launch, KEYED.format(key="static_transform_publisher")) == []
+    assert run(tmp_path, launch, KEYED.format(key="other")) == [("params.yaml", 1, "info")]
+
+
+def test_many_keys_against_a_programs_names_stay_bounded(tmp_path: Path) -> None:
+    launch = PY.format(nodes=UNNAMED.format(package="mavros", executable="mavros_node",
+                                            extra=""))
+    params = "n: &s {ros__parameters: {a: 1}}\n" + "".join(f"k{i}x*: *s\n"
+                                                            for i in range(20_000))
+    start = time.process_time()
+    assert [level for _, _, level in run(tmp_path, launch, params)] == ["info"]
+    assert time.process_time() - start < 30

@@ -220,17 +220,39 @@ def _section_pattern(key: str) -> re.Pattern[str]:
     """A ROS 2 parameter file's node key as a pattern over ``/namespace/name``, made as
     rclcpp makes it: a leading ``/`` added, each ``/*`` one ``/NAME`` and a ``*`` right
     after it a repeat (``/**``: any number of names, none included, so ``/**/amcl``
-    matches ``/amcl``)."""
+    matches ``/amcl``); any other ``*`` repeats the character before it, as in the
+    ``std::regex`` rclcpp builds (``/lio_sam*`` is ``/lio_sa`` and any number of ``m``:
+    it matches no ``/lio_sam_x``). A key std::regex would refuse matches everything
+    (unknown, never a finding)."""
     text = "/" + key.lstrip("/")  # nested keys are joined with '/' by ros2_sections
     pieces = text.split("/*")
-    pattern = re.escape(pieces[0])
+    pattern = _key_piece(pieces[0])
     for piece in pieces[1:]:
         pattern += "(/[A-Za-z0-9_]+)"
         if piece.startswith("*"):
             pattern += "*"
             piece = piece[1:]
-        pattern += re.escape(piece)
-    return re.compile(f"^{pattern}$")
+        pattern += _key_piece(piece)
+    try:
+        return re.compile(f"^{pattern}$")
+    except re.error:
+        return re.compile("")
+
+
+def _key_piece(piece: str) -> str:
+    """Literal text of a node key, its ``*`` kept as the regex repeat rclcpp reads."""
+    return "*".join(re.escape(part) for part in piece.split("*"))
+
+
+def node_keys(document: object) -> list[tuple[str, tuple[str, ...]]]:
+    """The node keys of a ROS 2 parameter file (nested keys joined with ``/``), each with
+    its path of keys."""
+    return [(key, path[:-1]) for key, _, path in _ros2_sections_keyed(document)]
+
+
+def key_matches(key: str, full: str) -> bool:
+    """Whether the node key ``key`` reaches the node ``full`` (rclcpp's matching)."""
+    return _section_pattern(key).match(full) is not None
 
 
 def ros2_sections(document: object) -> list[tuple[str, dict[Any, Any]]]:

@@ -22,6 +22,7 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.node_names import default_node_names, unmatched_default_keys
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     EMBEDDED_COSTMAPS,
@@ -222,8 +223,9 @@ class Ros2Loader(Ros2Runner):
         # A controller manager without a name reads its file by its default name.
         section = (CONTROLLER_MANAGER_NAME if name is None and package == "controller_manager"
                    and executable == "ros2_control_node" else name)
+        defaults = default_node_names(package, executable) if name is None else ()
         given = self._node_params(action.parameters, scope, frame, where, section,
-                                  known_namespace)
+                                  known_namespace, defaults)
         described = False
         for group in action.parameters:
             if isinstance(group, Params):
@@ -243,10 +245,11 @@ class Ros2Loader(Ros2Runner):
             included_at=frame.sites,
         )
         self.nodes.append(node)
-        checked = (name is not None and not action.may_rename
+        checked = ((name is not None or bool(defaults)) and not action.may_rename
                    and package not in MANY_NODE_PACKAGES
                    and (package, executable) not in EMBEDDED_COSTMAPS)
-        self._unmatched(node, executable or "", given, checked, _literal(action.name))
+        self._unmatched(node, executable or "", given, checked,
+                        _literal(action.name) or bool(defaults), defaults)
         documents = given.documents
         costmap = embedded_costmap(node, given.process, scope.parameters)
         if costmap is not None:
@@ -258,18 +261,19 @@ class Ros2Loader(Ros2Runner):
             self._spawned(node, action, scope, frame)
 
     def _unmatched(self, node: NodeRecord, program: str, given: _NodeParams,
-                   checked: bool, name_literal: bool) -> None:
+                   checked: bool, name_literal: bool, defaults: tuple[str, ...] = ()) -> None:
         """Keep the parameter files that give ``node`` nothing when its name as launched
         is known (``checked``); the others it is given reach it, or may."""
         missed = {shown for shown, _ in given.unmatched} if checked else set()
         self.reached_param_files.update(f for f in given.files if f not in missed)
         if not checked:
             return
+        shown_node = ", ".join(node_full_name(name, node.namespace)
+                               for name in (defaults or (node.name,)))
         for shown, keys in given.unmatched:
             self.unmatched_param_files.append(UnmatchedParamFile(
-                node.path, node.line, node.column, node.condition,
-                node_full_name(node.name, node.namespace), node.package, program, shown,
-                keys, name_literal))
+                node.path, node.line, node.column, node.condition, shown_node,
+                node.package, program, shown, keys, name_literal, defaults))
 
     def _include(self, action: Include, scope: _Scope, frame: _Frame) -> None:
         """An include, its arguments kept as :class:`Forwarded` (marked not followed when
@@ -315,7 +319,7 @@ class Ros2Loader(Ros2Runner):
 
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,
-                     namespace: str | None) -> _NodeParams:
+                     namespace: str | None, defaults: tuple[str, ...] = ()) -> _NodeParams:
         """The parameters a node is given (dictionaries and parameter files, in order),
         where each is written, why some are not read, and the parameter files' documents.
         A value's place: its dictionary key, its file's key (PyYAML's marks), else the
@@ -350,7 +354,10 @@ class Ros2Loader(Ros2Runner):
                 placed.append(PlacedDocument(document, shown, keys))
                 files.append(shown)
                 from_file, missed = ros2_file_params_and_misses(document, name, namespace)
-                others = None if name is None or namespace is None else missed
+                others = (None if namespace is None
+                          else missed if name
+                          else unmatched_default_keys(document, defaults, namespace)
+                          if defaults else None)
                 if others is not None:
                     unmatched.append((shown, tuple(
                         ("/".join(at), *keys.get(at, (0, 0))) for _, at in others)))

@@ -49,6 +49,8 @@ PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 """A ``{param}`` in a frame template (the parameter's value stands there)."""
 
 SCALARS = (str, bool, int, float)
+PARAMETER_TYPES = ("bool", "integer", "double", "string")
+"""The scalar types a ROS 2 node declares a parameter with (rclcpp's ``ParameterType``)."""
 
 
 class EdgeSpec(Record):
@@ -143,6 +145,10 @@ class Entry(Record):
     """Frames it stamps the streams of sensors at different places with, one template
     each (a stereo pair's left and right camera): two of them given one frame put one
     sensor's data at the other's pose (``camera_streams_one_frame``)."""
+    parameter_types: tuple[tuple[str, str], ...]
+    """ROS 2: parameters the node declares with a typed default (``declare_parameter(name,
+    30.0)``), each with its type (:data:`PARAMETER_TYPES`): rclcpp throws when the value
+    given has another type, and the node dies."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -151,6 +157,7 @@ class Entry(Record):
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
         "inputs", "tf_listener", "loads_controllers", "stream_frames",
+        "parameter_types",
     )
 
     def __init__(
@@ -182,6 +189,7 @@ class Entry(Record):
         tf_listener: bool = False,
         loads_controllers: bool = False,
         stream_frames: tuple[str, ...] = (),
+        parameter_types: tuple[tuple[str, str], ...] = (),
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -210,6 +218,7 @@ class Entry(Record):
         _set(self, "tf_listener", tf_listener)
         _set(self, "loads_controllers", loads_controllers)
         _set(self, "stream_frames", stream_frames)
+        "parameter_types",
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -405,6 +414,11 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
         (_text(item.get("list"), f"{where}.looks_up_listed[{i}].list"),
          _text(item.get("frame"), f"{where}.looks_up_listed[{i}].frame"))
         for i, item in enumerate(listed))
+    types_data = data.get("parameter_types", {})
+    if not isinstance(types_data, dict) or not all(
+            isinstance(value, str) and value in PARAMETER_TYPES for value in types_data.values()):
+        raise KnowledgeError(f"{where}.parameter_types must map names to one of "
+                             f"{', '.join(PARAMETER_TYPES)}")
     return Entry(
         id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
         plugins=plugins, filenames=filenames, types=types,
@@ -426,6 +440,7 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
         tf_listener=bool(data.get("tf_listener", False)),
         loads_controllers=bool(data.get("loads_controllers", False)),
         stream_frames=streams,
+        parameter_types=tuple((str(k), v) for k, v in types_data.items()),
     )
 
 

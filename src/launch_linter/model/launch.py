@@ -157,7 +157,10 @@ class UnmatchedParamFile(Record):
     as rclcpp matches them: the node takes nothing from it. At the node (``path``,
     ``line``, ``column``); ``file`` is the parameter file, ``keys`` its node keys as
     matched (nested keys joined with ``/``) with where each is written (0, 0 unknown);
-    ``name_literal``: the node's name is written as text (no launch configuration in it)."""
+    ``name_literal``: the node's name is written as text (no launch configuration in it),
+    or the launch file names none and ``names`` are those its program gives its nodes.
+    ``names``: the names (without namespace) of the process's nodes the keys were matched
+    against; empty: the node's own name, the last part of ``node``."""
 
     path: str
     line: int
@@ -170,13 +173,15 @@ class UnmatchedParamFile(Record):
     file: str
     keys: tuple[tuple[str, int, int], ...]
     name_literal: bool
+    names: tuple[str, ...]
 
     __slots__ = ("path", "line", "column", "condition", "node", "package", "executable",
-                 "file", "keys", "name_literal")
+                 "file", "keys", "name_literal", "names")
 
     def __init__(self, path: str, line: int, column: int, condition: Condition, node: str,
                  package: str, executable: str, file: str,
-                 keys: tuple[tuple[str, int, int], ...], name_literal: bool = False) -> None:
+                 keys: tuple[tuple[str, int, int], ...], name_literal: bool = False,
+                 names: tuple[str, ...] = ()) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
         _set(self, "column", column)
@@ -187,6 +192,7 @@ class UnmatchedParamFile(Record):
         _set(self, "file", file)
         _set(self, "keys", keys)
         _set(self, "name_literal", name_literal)
+        _set(self, "names", names)
 
 
 class LaunchTree(Record):

@@ -72,6 +72,9 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros1_unused_arg", Category.LAUNCH),
     ("ros2_param_file_unmatched", Category.LAUNCH),
+    ("ros2_missing_keyword", Category.LAUNCH),
+    ("ros2_param_type", Category.LAUNCH),
+    ("use_sim_time_misspelt", Category.TF),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -7,9 +7,12 @@ from="file"/>` in XML, `param: [{from: file}]` in YAML launch, `ComposableNode(p
 keys joined) and none of them matches the node's fully qualified name as launched: its
 `name=` under its namespace (its own and the namespaces pushed around it). Keys are
 matched as rclcpp matches them: a leading `/` added, `/*` one name, `/**` any number of
-names. It reports at the file's first node key, the node related. Only nodes whose name
-is written in the launch file are checked (the name an executable gives itself is read
-from its source, which the linter does not have), and not a node whose arguments may
+names, any other `*` a repeat of the character before it (rclcpp builds a `std::regex`:
+`/lio_sam*` reaches `/lio_sam`, never `/lio_sam_x`). It reports at the file's first node
+key, the node related. A node whose name the launch file does not write is checked under
+the names its program gives its nodes when the linter knows them from the program's
+source (`frontends/node_names.py`: mavros_node's nodes and its plugins' nodes, LIO-SAM's,
+static_transform_publisher's), else not; and not a node whose arguments may
 remap its name or namespace (`__node:=`, `__ns:=`, or arguments not known). A file given
 to several nodes is reported only when it reaches none of them (teleop_twist_joy's launch
 file gives `joy_node` the teleop node's file: written for the other node, nothing of
@@ -20,10 +23,10 @@ component container (its components), the nav2 servers that run a costmap node
 (`controller_server`, `planner_server`).
 
 Error when no launch argument can change the outcome: the node's name is written as text
-and every key is a bare node name other than it (a bare key is `/name`: it reaches only a
-node of that name in the root namespace). Info otherwise (the name comes from a launch
-argument, a key has a namespace part or a wildcard, or is the node's own name under
-another namespace): it holds for the default launch arguments.
+(or fixed by its program) and every key is a bare node name other than it (a bare key is
+`/name`: it reaches only a node of that name in the root namespace). Info otherwise (the
+name comes from a launch argument, a key has a namespace part or a wildcard, or is the
+node's own name under another namespace): it holds for the default launch arguments.
 
 ## Why is this bad?
 rclcpp applies a parameter file's entries only under the keys that match the node's fully
@@ -71,9 +74,9 @@ depthimage_to_laserscan:
 ```
 
 ## Known problems
-A node whose name the launch file does not write is not checked, even where its
-executable's default name is known (velodyne's launch files name no node; their files
-are keyed by the executables' default names). Judged sample
+A node whose name the launch file does not write is checked only for the programs whose
+node names the linter knows (velodyne's launch files name no node; their files are keyed
+by the executables' default names, which are not listed yet). Judged sample
 (docs/evaluation/ros2_param_file_unmatched.md): 3 real faults found (create_robot#79,
 depthimage_to_laserscan#71, husky#244); on 57 whole public repositories nobody had used,
 28 node/file pairs checked, one finding, judged not a defect (the joy_node file above),
@@ -87,6 +90,7 @@ exact or `/**` match does not match either).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Location, Severity
@@ -102,13 +106,30 @@ EXAMPLE_INCLUDED = "params.yaml"
 
 
 def proven(unmatched: UnmatchedParamFile) -> bool:
-    """Whatever the launch arguments: the node's name is written as text and every key is
-    a bare node name (``/name`` once a ``/`` is added, matching only a node of that name in
-    the root namespace) other than the node's, so no namespace can make one match."""
-    name = unmatched.node.rsplit("/", 1)[-1]
+    """Whatever the launch arguments: the node's names are known (written as text, or
+    those its program gives its nodes) and every key is a bare node name (``/name`` once
+    a ``/`` is added, matching only a node in the root namespace; a ``*`` in it repeats
+    the character before it, as in rclcpp's regex) that matches none of the node's
+    names, so no namespace can make one match."""
+    names = unmatched.names or (unmatched.node.rsplit("/", 1)[-1],)
     return unmatched.name_literal and all(
-        "/" not in key.lstrip("/") and "*" not in key and key.lstrip("/") != name
+        _root_only(key.lstrip("/")) and not any(_bare_match(key.lstrip("/"), name)
+                                                for name in names)
         for key, _, _ in unmatched.keys)
+
+
+def _root_only(key: str) -> bool:
+    """A key without a namespace part or a wildcard name (``*`` first, ``/*``)."""
+    return bool(key) and "/" not in key and not key.startswith("*") and "**" not in key
+
+
+def _bare_match(key: str, name: str) -> bool:
+    """Whether the bare key reaches a root-namespace node called ``name`` (a ``*`` of a
+    name the program makes up: any name)."""
+    if "*" in name or "/" in name:
+        return True
+    pattern = "*".join(re.escape(part) for part in key.split("*"))
+    return re.fullmatch(pattern, name) is not None
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
@@ -120,11 +141,19 @@ def check(context: RuleContext) -> Iterator[Finding]:
         names = ", ".join(key for key, _, _ in keys[:5])
         more = "" if len(keys) <= 5 else f" and {len(keys) - 5} more"
         sure = proven(unmatched)
-        message = (f"none of this parameter file's node keys ({names}{more}) matches the "
-                   f"node {unmatched.node} ({unmatched.package} {unmatched.executable}) it "
-                   f"is given to{'' if sure else ' with the default launch arguments'}: "
+        if unmatched.names:
+            target = (f"any node {unmatched.package} {unmatched.executable} runs when the "
+                      f"launch file names none ({unmatched.node})")
+            key_as = "/** (or with the name of one of these nodes)"
+        else:
+            target = (f"the node {unmatched.node} ({unmatched.package} "
+                      f"{unmatched.executable})")
+            key_as = f"{unmatched.node} (or /**)"
+        message = (f"none of this parameter file's node keys ({names}{more}) matches "
+                   f"{target} it is given to"
+                   f"{'' if sure else ' with the default launch arguments'}: "
                    f"rclcpp applies only the keys that match the node's name, so the node "
-                   f"runs on its defaults; key the file {unmatched.node} (or /**), or name "
+                   f"runs on its defaults; key the file {key_as}, or name "
                    f"the node as the file does")
         severity = None if sure else Severity.INFO
         node_place = Location(unmatched.path, unmatched.line, unmatched.column)

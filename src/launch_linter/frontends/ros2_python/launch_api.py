@@ -56,6 +56,7 @@ from launch_linter.frontends.ros2_python.values import (
     _keyword,
     _OutOfSteps,
     _starts_actions,
+    missing_keywords,
     performed,
 )
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, Text, literal, written
@@ -108,6 +109,12 @@ class Interpreter(Calls):
         if name == "Parameter" and ".substitutions" in dotted:
             # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
             return _substitution("param", 2)(self, args, kwargs, node)
+        missing = missing_keywords(name, kwargs)
+        if missing:  # ros2_missing_keyword decides with the target distribution
+            legacy = [k for k in _LEGACY_NODE_KEYWORDS if k in kwargs]
+            self.problem("ros2_missing_keyword", node, f"{name}(...) without "
+                         + " and ".join(f"{k}=" for k in missing)
+                         + (f" ({', '.join(legacy)}= removed after Foxy)" if legacy else ""))
         handler = HANDLERS.get(name)
         if handler is None:
             if name in ("ParameterValue", "ParameterFile") and args:

@@ -33,6 +33,23 @@ _LEGACY_NODE_KEYWORDS = {
 }
 """launch_ros ``Node`` keywords of Foxy and before, and what replaced them."""
 
+REQUIRED_KEYWORDS = {
+    "LifecycleNode": ("name", "namespace"),
+    "ComposableNodeContainer": ("name", "namespace"),
+}
+"""launch_ros actions whose constructor has keyword-only parameters without a default from
+Galactic on (``def __init__(self, *, name, namespace, ...)`` in launch_ros/actions/
+lifecycle_node.py and composable_node_container.py, galactic 31e27eb, humble 25a207c,
+jazzy 62c56e5, rolling f9ab937; ros2/launch_ros#157 made LifecycleNode's namespace
+mandatory): a call without one raises TypeError and ``ros2 launch`` refuses the file.
+Foxy's gave both a default (foxy 68e2b62)."""
+
+
+def missing_keywords(name: str, kwargs: dict[str, object]) -> tuple[str, ...]:
+    """The keywords ``name``'s constructor requires from Galactic on that ``kwargs`` lacks
+    (a Foxy-era ``node_name=``/``node_namespace=`` does not stand for one there)."""
+    return tuple(k for k in REQUIRED_KEYWORDS.get(name, ()) if k not in kwargs)
+
 
 # -- values -----------------------------------------------------------------------------
 
