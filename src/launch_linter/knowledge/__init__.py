@@ -218,7 +218,7 @@ class Entry(Record):
         _set(self, "tf_listener", tf_listener)
         _set(self, "loads_controllers", loads_controllers)
         _set(self, "stream_frames", stream_frames)
-        "parameter_types",
+        _set(self, "parameter_types", parameter_types)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
