@@ -64,6 +64,7 @@ from launch_linter.frontends.ros2_actions import (
     RunNode,
     Where,
 )
+from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -79,6 +80,7 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import (
     FileStatus,
     Forwarded,
@@ -89,7 +91,7 @@ from launch_linter.model.launch import (
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs, Text
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
 
 
@@ -150,6 +152,9 @@ class Ros2Loader(Ros2Runner):
         self.unmatched_param_files: list[UnmatchedParamFile] = []
         self.reached_param_files: set[str] = set()
         """Parameter files that some node of the tree takes (or may take) a section of."""
+        self._root_file = ""
+        self._empty_defaults: dict[str, dict[str, Where]] = {}
+        """The launch arguments each file read declares with an empty default."""
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
@@ -161,6 +166,7 @@ class Ros2Loader(Ros2Runner):
     # -- files -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
         self._forget: list[Callable[[], None]] = []
+        self._root_file = os.path.abspath(path)
         try:
             return super().load(path, data)
         finally:
@@ -171,6 +177,8 @@ class Ros2Loader(Ros2Runner):
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:
         read = super()._read_file(absolute, data)
+        if read.actions is not None:
+            self._empty_defaults[absolute] = empty_defaults(read.actions)
         if read.forget is not None:
             self._forget.append(read.forget)
         return read
@@ -341,8 +349,12 @@ class Ros2Loader(Ros2Runner):
                 if path is None:
                     unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
                     continue
+                if not path:
+                    unread.append(self._empty_param_file(group.path, frame, where))
+                    continue
                 document, why, keys = read_yaml_file_placed(path)
                 if why is not None:
+                    self._absent_param_file(path, frame, where)
                     unread.append(why)
                     continue
                 documents.append(document)
@@ -380,6 +392,51 @@ class Ros2Loader(Ros2Runner):
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
         return _NodeParams(given, lines, tuple(unread), documents, process, placed,
                            tuple(unmatched), tuple(files))
+
+    def _empty_param_file(self, path: Subs, frame: _Frame, where: Where) -> str:
+        """Report a parameter-file path that resolves to empty (launch_ros leaves it out of
+        the node's parameters: :mod:`.ros2_param_paths`); the reason it is unread."""
+        calls = configurations_read(path)
+        names = [written(call.args[0]) for call in calls]
+        at = next((call.at for call in calls if call.at is not None), None)
+        place = Where(frame.filename, *at) if at is not None else where
+        shown = " and ".join(f"launch argument {n!r}" for n in dict.fromkeys(names)) \
+            or "its text"
+        roots = self._empty_defaults.get(self._root_file, {})
+        left_to_user = [n for n in names if n in roots and n not in self.options.args]
+        node = Location(self._display(frame.filename), where.line, where.column)
+        if left_to_user or not frame.condition.always:
+            why = (f"the root file's launch argument {left_to_user[0]!r} is left at its empty "
+                   f"default, usually given on the command line" if left_to_user
+                   else "the node runs under a condition")
+            self._report("unresolved", place, f"parameter file path is empty ({shown}), so "
+                         f"launch_ros would leave it out of the node's parameters; not "
+                         f"decided: {why}")
+        else:
+            declared = self._empty_defaults.get(frame.filename, {})
+            related = tuple(Location(self._display(d.path), d.line, d.column)
+                            for d in (declared.get(n) for n in dict.fromkeys(names)) if d)
+            self.problems.append(Problem(
+                "ros2_param_file_missing", self._display(place.path), place.line,
+                place.column, f"parameter file path is empty ({shown} at an empty value): "
+                f"launch_ros leaves a path that is not a file out of the node's parameters "
+                f"('Parameter file path is not a file'), so the node starts without them",
+                related=(node, *related)))
+        return f"parameter file path {written(path)!r} is empty"
+
+    def _absent_param_file(self, path: str, frame: _Frame, where: Where) -> None:
+        """Report a parameter file that is provably absent: under a package found, no
+        install rule provides it, or under the linted tree, it is not there."""
+        if not os.path.isabs(path) or not frame.condition.always:
+            return
+        located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)
+        if not located.absent:
+            return
+        self.problems.append(Problem(
+            "ros2_param_file_missing", self._display(frame.filename), where.line, where.column,
+            f"parameter file {self._quoted(path)!r} does not exist ({located.reason}): "
+            f"launch_ros leaves a path that is not a file out of the node's parameters "
+            f"('Parameter file path is not a file'), so the node starts without them"))
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:

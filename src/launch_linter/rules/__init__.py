@@ -55,6 +55,7 @@ def _load() -> None:
         reversed_name,
         robot_frame_collision,
         ros2_bad_flag,
+        ros2_param_file_missing,
         ros2_param_file_unmatched,
         ros2_positional_args,
         ros2_removed_keyword,

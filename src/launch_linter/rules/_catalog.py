@@ -69,6 +69,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("py_name_error", Category.LAUNCH),
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros2_param_file_unmatched", Category.LAUNCH),
+    ("ros2_param_file_missing", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 
