@@ -22,6 +22,7 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.known_launch import Started, started_by
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     EMBEDDED_COSTMAPS,
@@ -287,14 +288,32 @@ class Ros2Loader(Ros2Runner):
         super()._include(action, scope, frame)
         # A file read is recorded with a new site: none new, the include was not followed.
         followed = any(id(site) not in sites for site in self._included_at.values())
+        given: dict[str, str | None] = {}
         for name_subs, value_subs in action.args:
             name = resolved_text(self._resolve(name_subs, scope, frame, action.where))
             if name is not None:
                 value = resolved_text(self._resolve(value_subs, scope, frame, action.where))
+                given[name] = value
                 self.forwarded.append(Forwarded(
                     name, "include", self._display(frame.filename), action.where.line,
                     action.where.column, frame.condition, value,
                     reads_configuration(value_subs, name), followed))
+        if not followed and action.args_known:
+            path = text_of(self._resolve(action.path, scope, frame, action.where))
+            for started in started_by(path, 2, given):
+                self._started(started, scope, frame, action.where)
+
+    def _started(self, started: Started, scope: _Scope, frame: _Frame, where: Where) -> None:
+        """A known node that a launch file not followed starts (:mod:`.known_launch`), at
+        the include, with the parameter file it is given read as that file gives it (the
+        file's keys as written: nav2_bringup roots them at its namespace itself)."""
+        given = self._node_params((ParamsFile((Text(started.parameter_file),)),), scope,
+                                  frame, where, started.name, "/")
+        self.nodes.append(NodeRecord(
+            self._display(frame.filename), where.line, where.column, started.package,
+            started.executable, started.name, given.params, frame.condition,
+            unread=given.unread, namespace=started.namespace, ros=2,
+            param_lines=given.lines, included_at=frame.sites))
 
     def _description_argument(self, first: Subs, scope: _Scope, frame: _Frame, where: Where,
                               node: str | None) -> None:

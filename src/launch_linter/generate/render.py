@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import jinja2
 
 from launch_linter.generate.embed import Embedding
-from launch_linter.knowledge import bundled_path
+from launch_linter.knowledge import bundled_path, values
 from launch_linter.model.beliefs import BELIEF_CLASSES, BELIEF_FORMAT, BeliefSet
 from launch_linter.model.diagnostic import Belief
 
@@ -231,12 +231,14 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
         min_python=MIN_PYTHON,
         python=Code(".".join(str(v) for v in MIN_PYTHON)),
         knowledge=source_literal(_knowledge_text()),
+        value_knowledge=source_literal(_knowledge_text(values.bundled_path())),
     )
 
 
-def _knowledge_text() -> str:
-    """The bundled knowledge base's JSON, which the standalone linter carries as text."""
-    path = bundled_path()
+def _knowledge_text(path: str | None = None) -> str:
+    """The bundled knowledge base's JSON (or the data file ``path``), which the standalone
+    linter carries as text."""
+    path = path or bundled_path()
     if path is None:
         raise RenderError("the package's knowledge base file cannot be found")
     with open(path, encoding="utf-8") as stream:

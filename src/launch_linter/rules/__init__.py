@@ -46,6 +46,7 @@ def _load() -> None:
         node_executable_missing,
         node_second_parent,
         optical_frame_rotation,
+        param_value_refused,
         parse_error,
         plugin_frame_unprefixed,
         py_arguments_single_string,

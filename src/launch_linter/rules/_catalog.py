@@ -70,6 +70,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros2_param_file_unmatched", Category.LAUNCH),
     ("ros2_param_file_missing", Category.LAUNCH),
+    ("param_value_refused", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 
