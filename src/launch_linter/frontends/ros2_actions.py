@@ -141,6 +141,9 @@ class RunNode:
     may_rename: bool = False
     """Its arguments or ROS arguments may remap its name or namespace (``__node:=``,
     ``__ns:=``, written or not known): its name as launched is then not ``name``."""
+    remappings: tuple[tuple[Subs, Subs], ...] | None = None
+    """Its topic remappings (from, to) as written; None when not known (not read, or not
+    a list of pairs)."""
 
 
 RENAMING_WORDS = ("__node", "__name", "__ns")

@@ -62,9 +62,11 @@ from launch_linter.frontends.ros2_actions import (
     Params,
     ParamsFile,
     ParamsUnknown,
+    PushNamespace,
     RunNode,
     Where,
 )
+from launch_linter.frontends.ros2_namespaces import NamespaceWatch, tf_topic
 from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
@@ -154,6 +156,7 @@ class Ros2Loader(Ros2Runner):
         self.reached_param_files: set[str] = set()
         """Parameter files that some node of the tree takes (or may take) a section of."""
         self._root_file = ""
+        self.namespaces = NamespaceWatch()
         self._empty_defaults: dict[str, dict[str, Where]] = {}
         """The launch arguments each file read declares with an empty default."""
 
@@ -162,7 +165,17 @@ class Ros2Loader(Ros2Runner):
         # A file that reaches another node it is given to was written for that one.
         unmatched = tuple(u for u in self.unmatched_param_files
                           if u.file not in self.reached_param_files)
-        return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched)
+        return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched,
+                       doubled_namespaces=self.namespaces.records())
+
+    def _push_namespace(self, action: PushNamespace, scope: _Scope, frame: _Frame) -> None:
+        before = scope.configs.get(NAMESPACE_KEY)
+        super()._push_namespace(action, scope, frame)
+        after = scope.configs.get(NAMESPACE_KEY)
+        self.namespaces.pushed(
+            "/" if before is None else resolved_text(before),
+            None if after is None else resolved_text(after),
+            Location(self._display(action.where.path), action.where.line, action.where.column))
 
     # -- files -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
@@ -253,6 +266,8 @@ class Ros2Loader(Ros2Runner):
             included_at=frame.sites,
         )
         self.nodes.append(node)
+        if known_namespace is not None:
+            self._watch_namespace(node, action, scope, frame)
         checked = (name is not None and not action.may_rename
                    and package not in MANY_NODE_PACKAGES
                    and (package, executable) not in EMBEDDED_COSTMAPS)
@@ -266,6 +281,20 @@ class Ros2Loader(Ros2Runner):
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
+
+    def _watch_namespace(self, node: NodeRecord, action: RunNode, scope: _Scope,
+                         frame: _Frame) -> None:
+        """Tell the namespace watch where the node runs and its tf topic."""
+        def text(subs: Subs) -> str | None:
+            return resolved_text(self._resolve(subs, scope, frame, action.where))
+
+        base = scope.configs.get(NAMESPACE_KEY)
+        remaps = (None if action.remappings is None
+                  else [(text(a), text(b)) for a, b in action.remappings])
+        self.namespaces.node(
+            node, "/" if base is None else resolved_text(base),
+            None if action.namespace is None else text(action.namespace),
+            f"{node.package}/{node.executable}", tf_topic(node.namespace or "/", remaps))
 
     def _unmatched(self, node: NodeRecord, program: str, given: _NodeParams,
                    checked: bool, name_literal: bool) -> None:

@@ -42,6 +42,7 @@ def _load() -> None:
         name_implication,
         name_null_disp,
         name_null_rot,
+        namespace_pushed_twice,
         ned_transform,
         node_executable_missing,
         node_second_parent,
