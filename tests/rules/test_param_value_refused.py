@@ -111,3 +111,21 @@ def test_a_renamed_controller_type(tmp_path: Path) -> None:
     assert [f[2] for f in run(tmp_path, launch, "humble", "a.launch.py",
                               {"c.yaml": params})] == ["error"]
     assert run(tmp_path, launch, "foxy", "a.launch.py", {"c.yaml": params}) == []
+
+
+def test_the_file_nav2_bringup_reads_itself_is_not_a_missing_parameter_file(tmp_path: Path
+                                                                           ) -> None:
+    launch = ("import os\nfrom launch import LaunchDescription\n"
+              "from launch.actions import IncludeLaunchDescription\n"
+              "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+              "from ament_index_python.packages import get_package_share_directory\n"
+              "def generate_launch_description():\n"
+              "    d = os.path.join(get_package_share_directory('nav2_bringup'), 'launch')\n"
+              "    f = os.path.join(os.path.dirname(__file__), 'gone.yaml')\n"
+              "    return LaunchDescription([IncludeLaunchDescription(\n"
+              "        PythonLaunchDescriptionSource([d, '/bringup_launch.py']),\n"
+              "        launch_arguments={'params_file': f}.items())])\n")
+    path = tmp_path / "a.launch.py"
+    path.write_text(launch)
+    options = LintOptions(package_paths=(), select=frozenset({"ros2_param_file_missing"}))
+    assert lint_paths([str(path)], options).diagnostics == []

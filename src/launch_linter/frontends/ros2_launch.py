@@ -156,6 +156,8 @@ class Ros2Loader(Ros2Runner):
         self.reached_param_files: set[str] = set()
         """Parameter files that some node of the tree takes (or may take) a section of."""
         self._root_file = ""
+        self._judging_files = True
+        """False while reading a file that a known launch file, not launch_ros, opens."""
         self.namespaces = NamespaceWatch()
         self._empty_defaults: dict[str, dict[str, Where]] = {}
         """The launch arguments each file read declares with an empty default."""
@@ -336,8 +338,14 @@ class Ros2Loader(Ros2Runner):
         """A known node that a launch file not followed starts (:mod:`.known_launch`), at
         the include, with the parameter file it is given read as that file gives it (the
         file's keys as written: nav2_bringup roots them at its namespace itself)."""
-        given = self._node_params((ParamsFile((Text(started.parameter_file),)),), scope,
-                                  frame, where, started.name, "/")
+        # The launch file reads the file itself (nav2's RewrittenYaml), not launch_ros:
+        # whether it is there is not this node's parameter-file question.
+        self._judging_files = False
+        try:
+            given = self._node_params((ParamsFile((Text(started.parameter_file),)),),
+                                      scope, frame, where, started.name, "/")
+        finally:
+            self._judging_files = True
         self.nodes.append(NodeRecord(
             self._display(frame.filename), where.line, where.column, started.package,
             started.executable, started.name, given.params, frame.condition,
@@ -475,7 +483,7 @@ class Ros2Loader(Ros2Runner):
     def _absent_param_file(self, path: str, frame: _Frame, where: Where) -> None:
         """Report a parameter file that is provably absent: under a package found, no
         install rule provides it, or under the linted tree, it is not there."""
-        if not os.path.isabs(path) or not frame.condition.always:
+        if not os.path.isabs(path) or not frame.condition.always or not self._judging_files:
             return
         located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)
         if not located.absent:
