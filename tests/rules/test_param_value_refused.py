@@ -128,4 +128,4 @@ def test_the_file_nav2_bringup_reads_itself_is_not_a_missing_parameter_file(tmp_
     path = tmp_path / "a.launch.py"
     path.write_text(launch)
     options = LintOptions(package_paths=(), select=frozenset({"ros2_param_file_missing"}))
-    assert lint_paths([str(path)], options).diagnostics == []
+    assert not lint_paths([str(path)], options).diagnostics
