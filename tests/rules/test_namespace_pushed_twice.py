@@ -73,3 +73,24 @@ def test_many_pushes_stay_fast(tmp_path: Path) -> None:
     start = time.process_time()
     assert run(tmp_path, f"GroupAction([{pushes}])") == []
     assert time.process_time() - start < 60
+
+
+def test_xml_remappings_are_read_for_the_tf_topic(tmp_path: Path) -> None:
+    (tmp_path / "inner.launch.xml").write_text(
+        '<launch>\n  <arg name="namespace" default=""/>\n  <group>\n'
+        '    <push-ros-namespace namespace="$(var namespace)"/>\n'
+        '    <node pkg="slam_toolbox" exec="async_slam_toolbox_node" name="slam">\n'
+        '      <remap from="/tf" to="tf"/>\n    </node>\n  </group>\n</launch>\n')
+    root = tmp_path / "root.launch.xml"
+    root.write_text(
+        '<launch>\n  <group>\n    <push-ros-namespace namespace="robot1"/>\n'
+        '    <node pkg="tf2_ros" exec="static_transform_publisher"\n'
+        '          args="--frame-id base_link --child-frame-id laser">\n'
+        '      <remap from="/tf" to="tf"/>\n    </node>\n'
+        '    <include file="$(dirname)/inner.launch.xml">\n'
+        '      <arg name="namespace" value="robot1"/>\n    </include>\n'
+        '  </group>\n</launch>\n')
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = [(Path(d.path).name, d.line, d.severity.value)
+             for d in lint_paths([str(root)], options).diagnostics]
+    assert found == [("inner.launch.xml", 4, "error")]

@@ -59,9 +59,9 @@ def generate_launch_description():
 ```
 
 ## Known problems
-ROS 2 only. The remappings of XML and YAML launch files are not read, so their nodes'
-tf topics are not known: those findings stay info. A namespace deliberately nested under
-a namespace of the same name (`/camera/camera`) is reported at info too.
+ROS 2 only (Python, XML and YAML launch files). A remapping the linter cannot resolve
+leaves the node's tf topic unknown: the finding stays info. A namespace deliberately
+nested under a namespace of the same name (`/camera/camera`) is reported at info too.
 """
 
 from __future__ import annotations
