@@ -104,6 +104,23 @@ def test_no_default_roots_outside_a_package(tmp_path: Path) -> None:
     assert default_package_roots(str(tmp_path / "a.launch")) == []
 
 
+def test_a_file_outside_the_packages_of_a_repository_has_the_repository(
+        tmp_path: Path) -> None:
+    """precision trial 6, Autonomous-Racing-PG/ar-tu-do: ros_ws/launch/*.launch, beside the
+    workspace's ros_ws/src/<packages>, include $(find car_control)/... (every package of
+    the repository was "not found under the package path")."""
+    repo = tmp_path / "repo"
+    (repo / ".git").mkdir(parents=True)
+    package(repo / "ros_ws" / "src" / "car_control", "car_control")
+    launch = repo / "ros_ws" / "launch" / "car.launch"
+    assert default_package_roots(str(launch)) == [str(repo)]
+    assert PackageIndex(default_package_roots(str(launch))).find("car_control") == str(
+        repo / "ros_ws" / "src" / "car_control")
+    assert default_package_roots(str(repo / "top.launch")) == [str(repo)]
+    # Too far below the repository's top: no roots, as outside any repository.
+    assert default_package_roots(str(repo / "a" / "b" / "c" / "x.launch")) == []
+
+
 def test_the_engine_finds_the_roots_once_per_real_folder(tmp_path: Path) -> None:
     from launch_linter.engine import InputFile, LintOptions, load_options_for
 

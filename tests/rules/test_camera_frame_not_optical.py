@@ -241,3 +241,60 @@ def test_a_namespace_prefix_on_the_links_is_not_another_frame(tmp_path: Path) ->
     prefixed = text.replace('"camera_link', '"rov/camera_link').replace(
         ">camera_link_optical<", ">camera_link_optical<")
     assert all("nothing in this tree publishes" not in m for _, m in run(tmp_path, prefixed))
+
+
+
+CAMERA_MODEL = """<robot name="camera">
+  <link name="camera"/>
+  <gazebo reference="camera">
+    <sensor name="camera" type="camera">
+      <plugin name="camera_controller" filename="libgazebo_ros_camera.so">
+        <frameName>camera</frameName>
+      </plugin>
+    </sensor>
+  </gazebo>
+</robot>
+"""
+
+DIFF_DRIVE = """<gazebo>
+    <plugin name="diff_drive" filename="libgazebo_ros_diff_drive.so">
+      <odometryFrame>odom</odometryFrame><robotBaseFrame>camera</robotBaseFrame>
+      <publishOdomTF>true</publishOdomTF>
+    </plugin>
+  </gazebo>
+</robot>"""
+
+
+def test_a_sensor_link_nothing_in_its_description_places_is_not_proven(
+        tmp_path: Path) -> None:
+    """autonomous_exploration_development_environment: a one-link camera model, spawned
+    into Gazebo and moved by the simulator with the vehicle, while tf's 'camera' is a
+    static transform (in another launch file) from the vehicle-aligned 'sensor' at the
+    optical rotation. A root link is placed in tf by whatever publishes its parent, not
+    by the description: how the Gazebo link stands against that tf frame is unknown, so
+    the frame is judged by its name, at info."""
+    (found,) = run(tmp_path, CAMERA_MODEL)
+    assert "is not known" in found[1]
+    (tmp_path / "robot.urdf").write_text(CAMERA_MODEL)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (diagnostic,) = lint_paths([str(tmp_path / "robot.urdf")], options).diagnostics
+    assert diagnostic.severity.value == "info"
+
+
+def test_a_root_sensor_link_a_known_plugin_tracks_is_still_proven(tmp_path: Path) -> None:
+    """A root link that an odometry plugin of the description publishes (odom -> the
+    link, the model's own pose) is the Gazebo link: stamped with it, still a warning."""
+    (tmp_path / "robot.urdf").write_text(CAMERA_MODEL.replace("</robot>", DIFF_DRIVE))
+    launch = tmp_path / "sim.launch"
+    launch.write_text(
+        '<launch><param name="robot_description" textfile="$(dirname)/robot.urdf"/>'
+        '<node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>'
+        '<node pkg="gazebo_ros" type="spawn_model" name="spawn" '
+        'args="-urdf -param robot_description -model r"/></launch>')
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(launch)], options).diagnostics
+    assert found.severity.value == "warning" and "its sensor link itself" in found.message
+    # Without the plugin nothing places the root link: its rotation is not known.
+    (tmp_path / "robot.urdf").write_text(CAMERA_MODEL)
+    (untracked,) = lint_paths([str(launch)], options).diagnostics
+    assert untracked.severity.value == "info" and "is not known" in untracked.message

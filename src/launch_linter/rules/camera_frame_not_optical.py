@@ -68,7 +68,15 @@ when it names its images' frame: its camera's `<optical_frame_id>`, else the sen
 `<gz_frame_id>` (before it `<ignition_frame_id>`), as gz-sensors stamps them; without one
 its images carry the sensor's scoped name, no tf frame, and with the newest `<frame_id>`
 it is not read. Drivers of real cameras (realsense, openni) publish
-their own optical frames and are not checked. A path through a movable joint (a
+their own optical frames and are not checked. The rotation is proven only for a
+sensor link whose tf frame is where Gazebo has the link: the child of a URDF joint, or of
+an edge a known node or plugin publishes (odometry, the model's own pose). A root link
+that a static transform places, or nothing does (a camera model spawned on its own and
+moved by a simulator, a description linted alone), stands in tf where that transform
+says and in Gazebo where the model is put: judged by the name only, at info
+(autonomous_exploration_development_environment's camera model against its launch
+files' static `sensor -> camera` at the optical rotation; precision-trial6.md). A
+path through a movable joint (a
 pan-tilt unit), a pose with attributes (`relative_to`, `degrees`) and a multicamera whose
 cameras turn differently leave the rotation unknown: judged by the name only, at info.
 A joint whose origin is an `<insert_block>` without the `xacro:` prefix has an unknown
@@ -257,15 +265,31 @@ def _unpublished(frame: str, links: frozenset[str] | None,
         link.endswith(ending) for link in links)
 
 
+def _placed(context: RuleContext) -> frozenset[str]:
+    """The links whose tf frame is where Gazebo has the link: the child of a URDF joint
+    (robot_state_publisher sends the description's own placement) or of an edge a known
+    node or plugin publishes (odometry: the model's pose). A root link placed by a static
+    transform, or by nothing, stands in tf wherever that transform says, while Gazebo has
+    it wherever the model is spawned or moved: no file ties the two together."""
+    joints = {as_written(e).child for e in edges_of(context) if e.joint is not None}
+    tracked = {e.child for e in nodes_of(context).edges}
+    return frozenset(frame.lstrip("/") for frame in joints | tracked)
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     plugins = _plugins(context)
     if not plugins:
         return
     # The plugins name the description's links as written, before any publisher's prefix.
     parents = parents_of(tuple(as_written(e) for e in edges_of(context)))
+    placed = _placed(context)
     published: frozenset[str] | None = None
     for node, links in plugins:
         body = node.given(SENSOR_LINK)
+        if body is not None and body.lstrip("/") not in placed:
+            # The rotation below is the image frame's in tf against the link in Gazebo:
+            # unknown when nothing ties the link's tf frame to where Gazebo has it.
+            body = None
         camera = camera_in_link(node)
         for frame, param in _camera_frames(context, node):
             frame = frame.lstrip("/")

@@ -323,7 +323,10 @@ def default_package_roots(launch_file: str) -> list[str]:
     package's parent folder is the root, and then the repository that holds the package
     a few folders further up (``repo/moveit_cfgs/<pkg>`` beside ``repo/<pkg>_support``:
     cloned into a workspace's ``src``, all its packages are built together). A file
-    outside any package has no roots."""
+    outside any package has the repository that holds it, within a few folders, as its
+    root (``repo/ros_ws/launch/x.launch`` beside ``repo/ros_ws/src/<pkg>``: roslaunch
+    finds ``$(find pkg)`` on the ROS_PACKAGE_PATH that sourcing the workspace built from
+    that repository sets); outside any package and repository it has no roots."""
     # os.path.realpath, not Path.resolve: on Python 3.8 resolve() leaves a reference cycle
     # (a recursive closure) behind for every call; os.path, not pathlib, which (with
     # urllib.parse) would be start-up time for every run.
@@ -335,10 +338,11 @@ def default_package_roots(launch_file: str) -> list[str]:
             break
         parent = os.path.dirname(directory)
         if parent == directory:
-            return []
+            break
         directory = parent
     if package is None:
-        return []
+        holder = _repository_holding(os.path.dirname(os.path.realpath(launch_file)))
+        return [] if holder is None else [holder]
     # A package's own ``src`` (its C++ sources) is not a workspace: only a ``src`` that
     # holds the package counts.
     directory = os.path.dirname(package)
@@ -361,15 +365,22 @@ a ``.git`` is more likely a home folder kept in git than the package's repositor
 def _repository_above(folder: str) -> list[str]:
     """The folder above ``folder`` (not ``folder`` itself) that holds a ``.git``, when
     there is one within ``MAX_REPOSITORY_DEPTH`` folders."""
+    holder = _repository_holding(folder)
+    return [] if holder is None or holder == folder else [holder]
+
+
+def _repository_holding(folder: str) -> str | None:
+    """``folder`` or the folder above it that holds a ``.git``, within
+    ``MAX_REPOSITORY_DEPTH`` folders."""
     directory = folder
     for _ in range(MAX_REPOSITORY_DEPTH):
         if reads.exists(os.path.join(directory, ".git")):
-            return [] if directory == folder else [directory]
+            return directory
         parent = os.path.dirname(directory)
         if parent == directory:
             break
         directory = parent
-    return []
+    return None
 
 
 def nearest_package_xml(launch_file: str) -> str | None:
