@@ -12,6 +12,7 @@ from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.robot.sources import with_node_params
 from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
+from launch_linter.frontends.ros1_unused_args import unused_args
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
@@ -405,7 +406,8 @@ class Ros1Base:
 
     def _parse(self, absolute: str, data: bytes) -> Element | None:
         display = self._display(absolute)
-        if display not in self.files:
+        first_read = display not in self.files
+        if first_read:
             self.files.append(display)
         try:
             document = parse_xml(data, text_tags=("rosparam",), collect=("launch",),
@@ -429,7 +431,28 @@ class Ros1Base:
             )
             self.problems.append(Problem("parse_error", display, where.line, where.column, message))
             return None
+        if first_read:
+            self._unused_args(display, launches[0], data)
         return launches[0]
+
+    def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
+        for arg in unused_args(launch, data):
+            if arg.passed is None:
+                message = (f"argument '{arg.name}' is declared, but nothing in this file "
+                           f"reads it: roslaunch accepts {arg.name}:=... and drops it "
+                           f"without a word; read it or remove it")
+                related: tuple[Location, ...] = ()
+            else:
+                message = (f"argument '{arg.name}' is declared, but nothing in this file "
+                           f"reads it: line {arg.passed[0]} gives '{arg.name}' another "
+                           f"value instead, so {arg.name}:=... given to this file is "
+                           f"dropped without a word; pass value=\"$(arg {arg.name})\" "
+                           f"there")
+                # The related place marks the warning (ros1_unused_arg): a frame dropped.
+                related = ((Location(display, arg.passed[0], arg.passed[1]),)
+                           if arg.frame_dropped else ())
+            self.problems.append(Problem("ros1_unused_arg", display, arg.line, arg.column,
+                                         message, related=related))
 
     def _launch_conditions(self, launch: Element, context: _Context) -> None:
         """roslaunch evaluates ``if``/``unless`` on ``<launch>`` and ignores the outcome;

@@ -154,6 +154,10 @@ class Entry(Record):
     """It loads the ros2_control controllers its parameter files name (a controller
     manager, a simulator's ros2_control plugin): a file it could not read leaves them
     unknown, and the tree open."""
+    stream_frames: tuple[str, ...]
+    """Frames it stamps the streams of sensors at different places with, one template
+    each (a stereo pair's left and right camera): two of them given one frame put one
+    sensor's data at the other's pose (``camera_streams_one_frame``)."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -161,7 +165,7 @@ class Entry(Record):
         "publishes_joint_states", "publishes_description", "parameters_elsewhere",
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
-        "inputs", "tf_listener", "loads_controllers",
+        "inputs", "tf_listener", "loads_controllers", "stream_frames",
     )
 
     def __init__(
@@ -192,6 +196,7 @@ class Entry(Record):
         inputs: tuple[str, ...] = (),
         tf_listener: bool = False,
         loads_controllers: bool = False,
+        stream_frames: tuple[str, ...] = (),
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -219,6 +224,7 @@ class Entry(Record):
         _set(self, "inputs", inputs)
         _set(self, "tf_listener", tf_listener)
         _set(self, "loads_controllers", loads_controllers)
+        _set(self, "stream_frames", stream_frames)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -369,7 +375,8 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
     looks_up = _texts(data.get("looks_up"), f"{where}.looks_up")
     cameras = _texts(data.get("camera_frames"), f"{where}.camera_frames")
     headers = _texts(data.get("header_frames"), f"{where}.header_frames")
-    for template in looks_up + cameras + headers:
+    streams = _texts(data.get("stream_frames"), f"{where}.stream_frames")
+    for template in looks_up + cameras + headers + streams:
         for name in _placeholders(template):
             if name not in params:
                 raise KnowledgeError(f"{where} names parameter {name!r}, which the entry "
@@ -423,6 +430,7 @@ def parse_entry(data: Any, where: str, origin: str) -> Entry:
         inputs=_texts(data.get("inputs"), f"{where}.inputs"),
         tf_listener=bool(data.get("tf_listener", False)),
         loads_controllers=bool(data.get("loads_controllers", False)),
+        stream_frames=streams,
     )
 
 

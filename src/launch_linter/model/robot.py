@@ -131,10 +131,13 @@ class RobotJoint(Record):
     defined: tuple[str, int, int] | None
     """For a joint a xacro macro made: where its ``<joint>`` is written in the macro
     (``path``/``line`` are then the outermost call of the macro)."""
+    origin_at: tuple[str, int, int] | None
+    """Where its ``<origin>`` is (the call, as for the joint, when a macro made it): a
+    finding about the joint's values points there; None without an ``<origin>``."""
 
     __slots__ = (
         "path", "line", "column", "name", "joint_type", "parent", "child", "translation", "rpy",
-        "source", "condition", "unresolved", "reasons", "defined",
+        "source", "condition", "unresolved", "reasons", "defined", "origin_at",
     )
 
     def __init__(
@@ -153,6 +156,7 @@ class RobotJoint(Record):
         unresolved: tuple[str, ...] = (),
         reasons: tuple[str, ...] = (),
         defined: tuple[str, int, int] | None = None,
+        origin_at: tuple[str, int, int] | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -168,6 +172,7 @@ class RobotJoint(Record):
         _set(self, "unresolved", unresolved)
         _set(self, "reasons", reasons)
         _set(self, "defined", defined)
+        _set(self, "origin_at", origin_at)
 
     @property
     def dynamic(self) -> bool:

@@ -129,7 +129,8 @@ UNPUBLISHED_LEVEL = Severity.INFO
 """A camera frame no link of a complete description and nothing in the tree publishes."""
 
 
-def _product(a: Quaternion, b: Quaternion) -> Quaternion:
+def compose(a: Quaternion, b: Quaternion) -> Quaternion:
+    """The Hamilton product: ``b`` expressed in the frame ``a`` turns to."""
     ax, ay, az, aw = a
     bx, by, bz, bw = b
     return (aw * bx + ax * bw + ay * bz - az * by,
@@ -166,7 +167,7 @@ def _down_to(chain: list[tuple[str, Edge | None]], ancestor: str) -> Quaternion 
         if edge is None or edge.rotation is None or (
                 edge.joint is not None and edge.joint.dynamic):
             return None
-        rotation = _product(edge.rotation, rotation)
+        rotation = compose(edge.rotation, rotation)
     return None
 
 
@@ -191,7 +192,7 @@ def relative_rotation(body: str, frame: str, parents: dict[str, Edge]) -> Quater
     body_rotation, frame_rotation = _down_to(body_chain, common), _down_to(frame_chain, common)
     if body_rotation is None or frame_rotation is None:
         return None
-    return _product(_inverse(body_rotation), frame_rotation)
+    return compose(_inverse(body_rotation), frame_rotation)
 
 
 def camera_in_link(node: NodeRecord) -> Quaternion | None:
@@ -207,7 +208,7 @@ def camera_in_link(node: NodeRecord) -> Quaternion | None:
         if turn is None:
             return None
         roll, pitch, yaw = turn
-        rotation = _product(rotation, quaternion_from_ypr(yaw, pitch, roll))
+        rotation = compose(rotation, quaternion_from_ypr(yaw, pitch, roll))
     return rotation
 
 
@@ -218,7 +219,7 @@ def _camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, st
     return frames_named(entry, node, entry.camera_frames)
 
 
-def _plugins(context: RuleContext) -> list[tuple[NodeRecord, frozenset[str] | None]]:
+def plugins_of(context: RuleContext) -> list[tuple[NodeRecord, frozenset[str] | None]]:
     """The plugins of every description the tree reads (spawned or not: the fault is the
     description's), once each, in the tree's ROS version where the plugin does not say,
     each with the links of its description when that is complete (None otherwise); not a
@@ -277,7 +278,7 @@ def _placed(context: RuleContext) -> frozenset[str]:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    plugins = _plugins(context)
+    plugins = plugins_of(context)
     if not plugins:
         return
     # The plugins name the description's links as written, before any publisher's prefix.
@@ -296,7 +297,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             rotation = (None if body is None or camera is None
                         else relative_rotation(body, frame, parents))
             if rotation is not None and camera is not None:
-                rotation = _product(_inverse(camera), rotation)
+                rotation = compose(_inverse(camera), rotation)
                 if same_rotation(rotation, OPTICAL, 1e-3):
                     continue
                 turned = "" if camera == IDENTITY else " (and the sensor's <pose>)"

@@ -109,6 +109,8 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
         # A joint a macro made is shown at the call (the instance a user edits), and
         # its <joint> in the macro as the place it is written.
         at = joint.call or (joint.path, joint.line, joint.column)
+        placed = None if origin is None else (
+            origin.call or (origin.path, origin.line, origin.column))
         out.append(RobotJoint(
             path=display(at[0]), line=at[1], column=at[2],
             defined=None if joint.call is None else (display(joint.path), joint.line,
@@ -117,6 +119,7 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
             parent=frames["parent"], child=frames["child"], translation=xyz, rpy=rpy,
             source=source, condition=outer & _condition(joint.conditions),
             unresolved=tuple(unresolved), reasons=tuple(reasons),
+            origin_at=None if placed is None else (display(placed[0]), placed[1], placed[2]),
         ))
     return out
 

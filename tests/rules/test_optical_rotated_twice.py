@@ -1,0 +1,79 @@
+from __future__ import annotations
+
+from typing import Callable, List, Tuple
+
+from _urdf import link, lint_urdf, robot
+
+RULE = "optical_rotated_twice"
+OPTICAL_RPY = "-1.5707963 0 -1.5707963"
+Lint = Callable[..., List[Tuple[str, int]]]
+
+
+def joint(name: str, parent: str, child: str, rpy: str = "0 0 0", kind: str = "fixed") -> str:
+    return (f'<joint name="{name}" type="{kind}"><parent link="{parent}"/>'
+            f'<child link="{child}"/>\n<origin xyz="0 0 0" rpy="{rpy}"/></joint>')
+
+
+def camera(depth_rpy: str, optical_rpy: str, kind: str = "fixed") -> str:
+    return robot("\n".join([
+        link("camera_link"), link("camera_depth_frame"), link("camera_depth_optical_frame"),
+        joint("depth_joint", "camera_link", "camera_depth_frame", depth_rpy, kind),
+        joint("optical_joint", "camera_depth_frame", "camera_depth_optical_frame",
+              optical_rpy),
+    ]))
+
+
+def found(text: str) -> list[tuple[int, str, tuple[int, ...]]]:
+    return [(d.line, d.severity.value, tuple(r.line for r in d.related))
+            for d in lint_urdf(text, RULE)]
+
+
+def test_optical_joint_under_a_frame_already_turned_optical_is_found_at_its_origin() -> None:
+    # Lines: 1 <robot>, 2-4 links, 5-6 depth_joint, 7-8 optical_joint.
+    assert found(camera(OPTICAL_RPY, OPTICAL_RPY)) == [(8, "warning", (7, 5))]
+
+
+def test_one_optical_rotation_is_silent() -> None:
+    assert found(camera("0 0 0", OPTICAL_RPY)) == []
+    assert found(camera(OPTICAL_RPY, "0 0 0")) == []
+
+
+def test_the_first_rotation_split_over_identity_edges_is_still_seen() -> None:
+    text = robot("\n".join([
+        link("head"), link("cam"), link("cam_mount"), link("cam_optical_frame"),
+        joint("a", "head", "cam", OPTICAL_RPY), joint("b", "cam", "cam_mount"),
+        joint("c", "cam_mount", "cam_optical_frame", OPTICAL_RPY),
+    ]))
+    assert [line for line, _, _ in found(text)] == [11]
+
+
+def test_a_movable_joint_on_the_way_leaves_it_unknown() -> None:
+    assert found(camera(OPTICAL_RPY, OPTICAL_RPY, kind="revolute")) == []
+
+
+def test_a_child_not_named_optical_is_info() -> None:
+    text = robot("\n".join([
+        link("a"), link("b"), link("c"),
+        joint("ab", "a", "b", OPTICAL_RPY), joint("bc", "b", "c", OPTICAL_RPY),
+    ]))
+    assert [level for _, level, _ in found(text)] == ["info"]
+
+
+def test_static_transform_with_the_optical_quaternion_under_an_optical_frame(
+        lint: Lint) -> None:
+    xml = ('<launch>\n'
+           '<node pkg="tf2_ros" type="static_transform_publisher" name="a" args="0 0 0 '
+           '-0.5 0.5 -0.5 0.5 camera_link camera_color_frame"/>\n'
+           '<node pkg="tf2_ros" type="static_transform_publisher" name="b" args="0 0 0 '
+           '-1.5707963 0 -1.5707963 camera_color_frame camera_color_optical_frame"/>\n'
+           '</launch>')
+    assert lint(xml, RULE) == [(RULE, 3)]
+    once = xml.replace("-0.5 0.5 -0.5 0.5", "0 0 0 1")
+    assert lint(once, RULE) == []
+
+
+def test_a_chain_of_twenty_thousand_optical_joints_is_bounded() -> None:
+    names = [f"f{i}" for i in range(20_000)]
+    body = "\n".join([link(n) for n in names] + [
+        joint(f"j{i}", names[i], names[i + 1], OPTICAL_RPY) for i in range(len(names) - 1)])
+    assert len(lint_urdf(robot(body), RULE)) > 0
