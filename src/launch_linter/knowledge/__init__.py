@@ -70,7 +70,8 @@ class Source(Record):
 class EdgeSpec(Record):
     """One edge a publisher sends: parent and child as templates (``{param}`` replaced by
     the parameter's value), the conditions under which it does (``param`` true,
-    ``!param`` false, ``a|b`` either true, ``a==b`` equal values), and its REP 105 role."""
+    ``!param`` false, ``a|b`` either true, ``a==b`` equal values, ``param=text`` the value
+    is that text), and its REP 105 role."""
 
     parent: str
     child: str
@@ -315,6 +316,15 @@ def _placeholders(template: str) -> list[str]:
     return PLACEHOLDER.findall(template)
 
 
+def condition_parameters(condition: str) -> list[str]:
+    """The parameters a ``when`` condition reads: ``p``, ``!p``, ``a==b``, ``a|b``, and
+    ``p=text`` (the value of ``p`` is the text)."""
+    bare = condition.lstrip("!")
+    if "==" not in bare and "=" in bare:
+        return [bare.split("=", 1)[0]]
+    return re.split(r"==|\|", bare)
+
+
 def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:
     if not isinstance(data, dict):
         raise KnowledgeError(f"{where} must be an object")
@@ -326,7 +336,7 @@ def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:
                     _texts(data.get("when"), f"{where}.when"), role)
     named = _placeholders(edge.parent) + _placeholders(edge.child)
     for condition in edge.when:
-        named.extend(re.split(r"==|\|", condition.lstrip("!")))
+        named.extend(condition_parameters(condition))
     for name in named:
         if name not in params:
             raise KnowledgeError(f"{where} names parameter {name!r}, which the entry "

@@ -103,7 +103,8 @@ class Parameters:
         return None if unknown else filled
 
     def holds(self, condition: str) -> bool | None:
-        """Whether one ``when`` condition holds (None: unknown)."""
+        """Whether one ``when`` condition holds (None: unknown): ``p``, ``!p``, ``a==b``,
+        ``p=text``, ``a|b``."""
         if condition.startswith("!"):
             inner = self.holds(condition[1:])
             return None if inner is None else not inner
@@ -111,6 +112,11 @@ class Parameters:
             left, right = condition.split("==", 1)
             a, b = self.value(left), self.value(right)
             return None if a is None or b is None else a == b
+        if "=" in condition:
+            # ``p=text``: the parameter's value is that text (a device type).
+            name, text = condition.split("=", 1)
+            value = self.value(name)
+            return None if value is None else value == text
         if "|" in condition:
             values = [truth(self.value(name)) for name in condition.split("|")]
             if any(v is True for v in values):

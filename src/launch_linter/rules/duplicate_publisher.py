@@ -72,7 +72,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.knowledge import PLACEHOLDER
+from launch_linter.knowledge import PLACEHOLDER, condition_parameters
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.record import replace
 from launch_linter.rules._api import Finding, RuleContext
@@ -103,8 +103,7 @@ def _switches(edge: NodeEdge) -> list[str]:
     spec = edge.spec
     if spec is None:
         return names
-    words = [w for c in spec.when for part in c.lstrip("!").split("==")
-             for w in part.split("|")]
+    words = [w for c in spec.when for w in condition_parameters(c)]
     words += PLACEHOLDER.findall(spec.parent) + PLACEHOLDER.findall(spec.child)
     for name in words:
         if name and name not in names:
