@@ -43,7 +43,12 @@ format, the median over the rounds of this checkout's ratio divided by SRC's.
 ``--collect`` ends every timed pass with ``gc.collect()``: a pass then pays for the reference
 cycles it leaves, which the collector would otherwise free during a later pass (charged
 to whichever measure runs then; the collector runs every 50,000 allocations, as the
-command sets it).
+command sets it). What the warm-up left (the imported front-ends and rules, their caches)
+is frozen first (``gc.freeze``), as the command freezes what start-up made: a full
+collection then walks only what was made since, so each pass, the floor's too, pays for
+what it leaves and not for a walk of every object of the process (which made the floor
+dearer and the ratios low). The cost of a collection after a pass that leaves nothing is
+printed beside the figures.
 
 ``--repeat N`` runs only that pass, N times after one warm-up pass, and prints nothing: for
 an instruction counter, which the machine's load does not move (docs/performance.md):
@@ -68,6 +73,7 @@ import pstats
 import statistics
 import subprocess
 import sys
+import time
 from typing import Dict, List, Sequence
 
 from bench_common import (  # benchmarks/ is on the path (the script's folder)
@@ -151,6 +157,17 @@ def collecting(function: Pass) -> Pass:
         gc.collect()
 
     return collected
+
+
+def idle_collection(times: int = 20) -> float:
+    """The median CPU seconds of ``gc.collect()`` when nothing was made since the last."""
+    gc.collect()
+    costs = []
+    for _ in range(times):
+        start = time.process_time()
+        gc.collect()
+        costs.append(time.process_time() - start)
+    return statistics.median(costs)
 
 
 def measure(name: str, paths: list[str], runs: int, passes: dict[str, Pass],
@@ -266,6 +283,13 @@ def main() -> int:
     for paths in groups.values():  # warm-up: imports, regular expressions, page cache
         for function in passes.values():
             function(paths)
+    if ns.collect:
+        # What exists now lives as long as the process: frozen, so that a collection
+        # after a pass walks what the pass made, not everything imported (see above).
+        gc.collect()
+        gc.freeze()
+        print(f"--collect: an idle full collection costs {idle_collection() * 1e6:.0f} µs "
+              f"of CPU ({gc.get_freeze_count():,} objects frozen)")
     if ns.profile:
         profile(groups[FORMATS[ns.format]], passes[ns.measure], ns.profile)
         return 0

@@ -121,6 +121,27 @@ class Ros2Decoded:
     unresolved: frozenset[Field] = frozenset()
     """Those of the four fields read from an unresolved input item."""
 
+    def __init__(self, form: ArgForm, parent: str | None, child: str | None,
+                 translation: tuple[float, float, float] | None, rotation: Rotation | None,
+                 arity_issue: str | None, number_issues: tuple[NumberIssue, ...],
+                 arg_issues: tuple[ArgIssue, ...],
+                 sources: Mapping[Field, tuple[int, ...]] | None = None,
+                 unresolved: frozenset[Field] = frozenset()) -> None:
+        # One per static transform publisher, ten fields: put in the instance's dict,
+        # a fifth of the cost of the frozen dataclass's ``object.__setattr__`` per field
+        # (assignment is still refused). ``sources`` defaults to a new empty dict.
+        fields = self.__dict__
+        fields["form"] = form
+        fields["parent"] = parent
+        fields["child"] = child
+        fields["translation"] = translation
+        fields["rotation"] = rotation
+        fields["arity_issue"] = arity_issue
+        fields["number_issues"] = number_issues
+        fields["arg_issues"] = arg_issues
+        fields["sources"] = {} if sources is None else sources
+        fields["unresolved"] = unresolved
+
 
 def _flag_like(word: str) -> bool:
     return word.startswith("-") and len(word) > 1 and stod(word)[1] == "invalid"

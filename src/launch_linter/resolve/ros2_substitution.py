@@ -66,6 +66,10 @@ class Call:
     """(line, column) where the substitution is made, in the file of the action that
     performs it (a Python ``LaunchConfiguration(...)``); None: the action's own place."""
 
+    def __init__(self, name: str, args: tuple[Subs, ...], written: str,
+                 at: tuple[int, int] | None = None) -> None:
+        self.__dict__.update(name=name, args=args, written=written, at=at)  # as Text's
+
 
 @dataclass(frozen=True)
 class Opaque:

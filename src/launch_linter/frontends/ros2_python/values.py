@@ -45,6 +45,14 @@ class Unknown:
     text: str
     line: int
 
+    def __init__(self, reason: str, text: str, line: int) -> None:
+        # The interpreter's frozen values are made by the thousand per file: each puts its
+        # fields in the instance's dict, at a third to a half of the cost of the frozen
+        # dataclass's ``object.__setattr__`` per field (assignment is still refused; a
+        # subclass such as PartlyKnownList keeps its generated ``__init__``).
+        fields = self.__dict__
+        fields["reason"], fields["text"], fields["line"] = reason, text, line
+
     def describe(self) -> str:
         return f"line {self.line}: {self.text}: {self.reason}"
 
@@ -120,6 +128,9 @@ class SubsVal:
 
     subs: Subs
 
+    def __init__(self, subs: Subs) -> None:
+        self.__dict__["subs"] = subs  # see Unknown.__init__
+
 
 @dataclass(frozen=True)
 class OpenFile:
@@ -136,6 +147,10 @@ class LazyStr:
 
     subs: Subs
     path: bool = False
+
+    def __init__(self, subs: Subs, path: bool = False) -> None:
+        fields = self.__dict__  # see Unknown.__init__
+        fields["subs"], fields["path"] = subs, path
 
 
 @dataclass
@@ -164,6 +179,9 @@ class ModuleVal:
 
     dotted: str
 
+    def __init__(self, dotted: str) -> None:
+        self.__dict__["dotted"] = dotted  # see Unknown.__init__
+
     @property
     def root(self) -> str:
         return self.dotted.split(".", 1)[0]
@@ -190,6 +208,9 @@ class LaunchObject:
 class Builtin:
     name: str
 
+    def __init__(self, name: str) -> None:
+        self.__dict__["name"] = name  # see Unknown.__init__
+
 
 @dataclass
 class FuncVal:
@@ -202,6 +223,10 @@ class FuncVal:
 class BoundMethod:
     target: object
     name: str
+
+    def __init__(self, target: object, name: str) -> None:
+        fields = self.__dict__  # see Unknown.__init__
+        fields["target"], fields["name"] = target, name
 
 
 @dataclass(frozen=True)
