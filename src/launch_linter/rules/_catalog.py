@@ -72,6 +72,9 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros1_unused_arg", Category.LAUNCH),
     ("ros2_param_file_unmatched", Category.LAUNCH),
+    ("ros2_param_file_missing", Category.LAUNCH),
+    ("param_value_refused", Category.LAUNCH),
+    ("namespace_pushed_twice", Category.TF),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 
