@@ -148,14 +148,18 @@ class RunNode:
     may_rename: bool = False
     """Its arguments or ROS arguments may remap its name or namespace (``__node:=``,
     ``__ns:=``, written or not known): its name as launched is then not ``name``."""
+    remappings: tuple[tuple[Subs, Subs], ...] | None = None
+    """Its topic remappings (from, to) as written; None when not known (not read, or not
+    a list of pairs)."""
 
     def __init__(self, where: Where, condition: Predicate | None, package: Subs | None,
                  executable: Subs | None, name: Subs | None, namespace: Subs | None,
                  arguments: tuple[Subs, ...] | None, args_written: str, unknown: str = "",
                  pushed_namespace: bool = True,
                  parameters: tuple[Params | ParamsFile | ParamsUnknown, ...] = (),
-                 uses: tuple[Subs, ...] = (), may_rename: bool = False) -> None:
-        # One per node, thirteen fields: put in the instance's dict, a fifth of the cost of
+                 uses: tuple[Subs, ...] = (), may_rename: bool = False,
+                 remappings: tuple[tuple[Subs, Subs], ...] | None = None) -> None:
+        # One per node, fourteen fields: put in the instance's dict, a fifth of the cost of
         # the frozen dataclass's ``object.__setattr__`` per field (see Where).
         fields = self.__dict__
         fields["where"] = where
@@ -171,6 +175,7 @@ class RunNode:
         fields["parameters"] = parameters
         fields["uses"] = uses
         fields["may_rename"] = may_rename
+        fields["remappings"] = remappings
 
 
 RENAMING_WORDS = ("__node", "__name", "__ns")

@@ -22,6 +22,7 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
+from launch_linter.frontends.known_launch import Started, started_by
 from launch_linter.frontends.node_names import default_node_names, unmatched_default_keys
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
@@ -61,9 +62,12 @@ from launch_linter.frontends.ros2_actions import (
     Params,
     ParamsFile,
     ParamsUnknown,
+    PushNamespace,
     RunNode,
     Where,
 )
+from launch_linter.frontends.ros2_namespaces import NamespaceWatch, tf_topic
+from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -79,6 +83,7 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import (
     FileStatus,
     Forwarded,
@@ -89,7 +94,7 @@ from launch_linter.model.launch import (
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs, Text
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
 
 
@@ -150,17 +155,34 @@ class Ros2Loader(Ros2Runner):
         self.unmatched_param_files: list[UnmatchedParamFile] = []
         self.reached_param_files: set[str] = set()
         """Parameter files that some node of the tree takes (or may take) a section of."""
+        self._root_file = ""
+        self._judging_files = True
+        """False while reading a file that a known launch file, not launch_ros, opens."""
+        self.namespaces = NamespaceWatch()
+        self._empty_defaults: dict[str, dict[str, Where]] = {}
+        """The launch arguments each file read declares with an empty default."""
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
         # A file that reaches another node it is given to was written for that one.
         unmatched = tuple(u for u in self.unmatched_param_files
                           if u.file not in self.reached_param_files)
-        return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched)
+        return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched,
+                       doubled_namespaces=self.namespaces.records())
+
+    def _push_namespace(self, action: PushNamespace, scope: _Scope, frame: _Frame) -> None:
+        before = scope.configs.get(NAMESPACE_KEY)
+        super()._push_namespace(action, scope, frame)
+        after = scope.configs.get(NAMESPACE_KEY)
+        self.namespaces.pushed(
+            "/" if before is None else resolved_text(before),
+            None if after is None else resolved_text(after),
+            Location(self._display(action.where.path), action.where.line, action.where.column))
 
     # -- files -------------------------------------------------------------------------
     def load(self, path: str, data: bytes | None = None) -> LaunchTree:
         self._forget: list[Callable[[], None]] = []
+        self._root_file = os.path.abspath(path)
         try:
             return super().load(path, data)
         finally:
@@ -171,6 +193,8 @@ class Ros2Loader(Ros2Runner):
 
     def _read_file(self, absolute: str, data: bytes) -> FileRead:
         read = super()._read_file(absolute, data)
+        if read.actions is not None:
+            self._empty_defaults[absolute] = empty_defaults(read.actions)
         if read.forget is not None:
             self._forget.append(read.forget)
         return read
@@ -245,6 +269,8 @@ class Ros2Loader(Ros2Runner):
             included_at=frame.sites,
         )
         self.nodes.append(node)
+        if known_namespace is not None:
+            self._watch_namespace(node, action, scope, frame)
         checked = ((name is not None or bool(defaults)) and not action.may_rename
                    and package not in MANY_NODE_PACKAGES
                    and (package, executable) not in EMBEDDED_COSTMAPS)
@@ -259,6 +285,20 @@ class Ros2Loader(Ros2Runner):
         if package == "controller_manager" and executable in SPAWNERS \
                 and action.arguments is not None:
             self._spawned(node, action, scope, frame)
+
+    def _watch_namespace(self, node: NodeRecord, action: RunNode, scope: _Scope,
+                         frame: _Frame) -> None:
+        """Tell the namespace watch where the node runs and its tf topic."""
+        def text(subs: Subs) -> str | None:
+            return resolved_text(self._resolve(subs, scope, frame, action.where))
+
+        base = scope.configs.get(NAMESPACE_KEY)
+        remaps = (None if action.remappings is None
+                  else [(text(a), text(b)) for a, b in action.remappings])
+        self.namespaces.node(
+            node, "/" if base is None else resolved_text(base),
+            None if action.namespace is None else text(action.namespace),
+            f"{node.package}/{node.executable}", tf_topic(node.namespace or "/", remaps))
 
     def _unmatched(self, node: NodeRecord, program: str, given: _NodeParams,
                    checked: bool, name_literal: bool, defaults: tuple[str, ...] = ()) -> None:
@@ -282,14 +322,38 @@ class Ros2Loader(Ros2Runner):
         super()._include(action, scope, frame)
         # A file read is recorded with a new site: none new, the include was not followed.
         followed = any(id(site) not in sites for site in self._included_at.values())
+        given: dict[str, str | None] = {}
         for name_subs, value_subs in action.args:
             name = resolved_text(self._resolve(name_subs, scope, frame, action.where))
             if name is not None:
                 value = resolved_text(self._resolve(value_subs, scope, frame, action.where))
+                given[name] = value
                 self.forwarded.append(Forwarded(
                     name, "include", self._display(frame.filename), action.where.line,
                     action.where.column, frame.condition, value,
                     reads_configuration(value_subs, name), followed))
+        if not followed and action.args_known:
+            path = text_of(self._resolve(action.path, scope, frame, action.where))
+            for started in started_by(path, 2, given):
+                self._started(started, scope, frame, action.where)
+
+    def _started(self, started: Started, scope: _Scope, frame: _Frame, where: Where) -> None:
+        """A known node that a launch file not followed starts (:mod:`.known_launch`), at
+        the include, with the parameter file it is given read as that file gives it (the
+        file's keys as written: nav2_bringup roots them at its namespace itself)."""
+        # The launch file reads the file itself (nav2's RewrittenYaml), not launch_ros:
+        # whether it is there is not this node's parameter-file question.
+        self._judging_files = False
+        try:
+            given = self._node_params((ParamsFile((Text(started.parameter_file),)),),
+                                      scope, frame, where, started.name, "/")
+        finally:
+            self._judging_files = True
+        self.nodes.append(NodeRecord(
+            self._display(frame.filename), where.line, where.column, started.package,
+            started.executable, started.name, given.params, frame.condition,
+            unread=given.unread, namespace=started.namespace, ros=2,
+            param_lines=given.lines, included_at=frame.sites))
 
     def _description_argument(self, first: Subs, scope: _Scope, frame: _Frame, where: Where,
                               node: str | None) -> None:
@@ -344,8 +408,12 @@ class Ros2Loader(Ros2Runner):
                 if path is None:
                     unread.append(f"parameter file {text_of(path_value)!r} is not resolved")
                     continue
+                if not path:
+                    unread.append(self._empty_param_file(group.path, frame, where))
+                    continue
                 document, why, keys = read_yaml_file_placed(path)
                 if why is not None:
+                    self._absent_param_file(path, frame, where)
                     unread.append(why)
                     continue
                 documents.append(document)
@@ -386,6 +454,51 @@ class Ros2Loader(Ros2Runner):
         lines = tuple((key, *place) for (key, _), place in zip(given, places))
         return _NodeParams(given, lines, tuple(unread), documents, process, placed,
                            tuple(unmatched), tuple(files))
+
+    def _empty_param_file(self, path: Subs, frame: _Frame, where: Where) -> str:
+        """Report a parameter-file path that resolves to empty (launch_ros leaves it out of
+        the node's parameters: :mod:`.ros2_param_paths`); the reason it is unread."""
+        calls = configurations_read(path)
+        names = [written(call.args[0]) for call in calls]
+        at = next((call.at for call in calls if call.at is not None), None)
+        place = Where(frame.filename, *at) if at is not None else where
+        shown = " and ".join(f"launch argument {n!r}" for n in dict.fromkeys(names)) \
+            or "its text"
+        roots = self._empty_defaults.get(self._root_file, {})
+        left_to_user = [n for n in names if n in roots and n not in self.options.args]
+        node = Location(self._display(frame.filename), where.line, where.column)
+        if left_to_user or not frame.condition.always:
+            why = (f"the root file's launch argument {left_to_user[0]!r} is left at its empty "
+                   f"default, usually given on the command line" if left_to_user
+                   else "the node runs under a condition")
+            self._report("unresolved", place, f"parameter file path is empty ({shown}), so "
+                         f"launch_ros would leave it out of the node's parameters; not "
+                         f"decided: {why}")
+        else:
+            declared = self._empty_defaults.get(frame.filename, {})
+            related = tuple(Location(self._display(d.path), d.line, d.column)
+                            for d in (declared.get(n) for n in dict.fromkeys(names)) if d)
+            self.problems.append(Problem(
+                "ros2_param_file_missing", self._display(place.path), place.line,
+                place.column, f"parameter file path is empty ({shown} at an empty value): "
+                f"launch_ros leaves a path that is not a file out of the node's parameters "
+                f"('Parameter file path is not a file'), so the node starts without them",
+                related=(node, *related)))
+        return f"parameter file path {written(path)!r} is empty"
+
+    def _absent_param_file(self, path: str, frame: _Frame, where: Where) -> None:
+        """Report a parameter file that is provably absent: under a package found, no
+        install rule provides it, or under the linted tree, it is not there."""
+        if not os.path.isabs(path) or not frame.condition.always or not self._judging_files:
+            return
+        located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)
+        if not located.absent:
+            return
+        self.problems.append(Problem(
+            "ros2_param_file_missing", self._display(frame.filename), where.line, where.column,
+            f"parameter file {self._quoted(path)!r} does not exist ({located.reason}): "
+            f"launch_ros leaves a path that is not a file out of the node's parameters "
+            f"('Parameter file path is not a file'), so the node starts without them"))
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:

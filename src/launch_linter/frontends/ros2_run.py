@@ -638,7 +638,7 @@ _ACTIONS: dict[type, Callable[[Ros2Runner, Any, _Scope, _Frame], None]] = {
     DeclareArg: Ros2Runner._declare,
     SetVar: Ros2Runner._let,
     SetEnv: Ros2Runner._set_env,
-    PushNamespace: Ros2Runner._push_namespace,
+    PushNamespace: lambda runner, *given: runner._push_namespace(*given),  # the subclass's
     Group: Ros2Runner._group,
     Include: lambda runner, *given: runner._include(*given),  # the subclass's (its record)
     RunNode: _run_node,

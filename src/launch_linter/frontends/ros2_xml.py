@@ -267,7 +267,18 @@ class _Reader:
             uses=self.performed(entity),
             may_rename=may_rename([entity.attrs.get("args", ""),
                                    entity.attrs.get("ros_args", "")]),
+            remappings=self.remappings(entity.lists.get("remap", [])),
         )
+
+    def remappings(self, remaps: list[Entity]) -> tuple[tuple[Subs, Subs], ...] | None:
+        """``<remap from= to=>`` pairs (YAML ``remap:``); None when one is incomplete."""
+        pairs: list[tuple[Subs, Subs]] = []
+        for remap in remaps:
+            source, target = self.subs(remap, "from"), self.subs(remap, "to")
+            if source is None or target is None:
+                return None
+            pairs.append((source, target))
+        return tuple(pairs)
 
     def executable(self, entity: Entity, where: Where, condition: Predicate | None
                    ) -> RunNode | Uses | None:

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import jinja2
 
 from launch_linter.generate.embed import Embedding
-from launch_linter.knowledge import DATA_FILE, PROGRAMS_FILE, bundled_path
+from launch_linter.knowledge import DATA_FILE, PROGRAMS_FILE, bundled_path, values
 from launch_linter.model.beliefs import BELIEF_CLASSES, BELIEF_FORMAT, BeliefSet
 from launch_linter.model.diagnostic import Belief
 
@@ -233,12 +233,17 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
         python=Code(".".join(str(v) for v in MIN_PYTHON)),
         knowledge=Code("(" + "".join(source_literal(_knowledge_text(name)) + ", "
                                      for name in (DATA_FILE, PROGRAMS_FILE)) + ")"),
+        value_knowledge=source_literal(_read_data(values.bundled_path(), values.DATA_FILE)),
     )
 
 
 def _knowledge_text(name: str) -> str:
     """A bundled knowledge file's JSON, which the standalone linter carries as text."""
-    path = bundled_path(name)
+    return _read_data(bundled_path(name), name)
+
+
+def _read_data(path: str | None, name: str) -> str:
+    """The text of the bundled data file ``name`` at ``path``."""
     if path is None or not os.path.isfile(path):
         raise RenderError(f"the package's knowledge base file {name} cannot be found")
     with open(path, encoding="utf-8") as stream:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from enum import Enum
 
-from launch_linter.model.diagnostic import Problem
+from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.record import Record, _open, _seal, _set
 from launch_linter.model.robot import DescriptionSource, NodeRecord, RobotJoint, RobotModel
 from launch_linter.model.transform import Condition, StaticTransform
@@ -195,6 +195,44 @@ class UnmatchedParamFile(Record):
         _set(self, "names", names)
 
 
+class DoubledNamespace(Record):
+    """A ROS 2 node launched under a namespace whose last name was pushed twice: an outer
+    push (a group's ``PushRosNamespace``, an include's) and an inner one of the same name
+    (the included file's own push, or the node's relative ``namespace=``). ``namespace``
+    is the node's as launched (``/robot1/robot1``), ``pushes`` the outer and inner push's
+    places, ``tf_topic`` the topic the node's tf goes to (None when its remappings are not
+    known) and ``tree_tf_topic`` the one the tree's other nodes under the namespace pushed
+    once use (None when none is known)."""
+
+    path: str
+    line: int
+    column: int
+    condition: Condition
+    node: str
+    program: str
+    namespace: str
+    pushes: tuple[Location, Location]
+    tf_topic: str | None
+    tree_tf_topic: str | None
+
+    __slots__ = ("path", "line", "column", "condition", "node", "program", "namespace",
+                 "pushes", "tf_topic", "tree_tf_topic")
+
+    def __init__(self, path: str, line: int, column: int, condition: Condition, node: str,
+                 program: str, namespace: str, pushes: tuple[Location, Location],
+                 tf_topic: str | None = None, tree_tf_topic: str | None = None) -> None:
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "condition", condition)
+        _set(self, "node", node)
+        _set(self, "program", program)
+        _set(self, "namespace", namespace)
+        _set(self, "pushes", pushes)
+        _set(self, "tf_topic", tf_topic)
+        _set(self, "tree_tf_topic", tree_tf_topic)
+
+
 class LaunchTree(Record):
     """Everything read from one root file, its includes included."""
 
@@ -224,11 +262,13 @@ class LaunchTree(Record):
     """ROS 2 launch configurations passed on under their own name (``Forwarded``)."""
     unmatched_param_files: tuple[UnmatchedParamFile, ...]
     """ROS 2 parameter files that give the node they are passed to nothing."""
+    doubled_namespaces: tuple[DoubledNamespace, ...]
+    """ROS 2 nodes under a namespace pushed twice (``DoubledNamespace``)."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
         "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
-        "forwarded", "unmatched_param_files",
+        "forwarded", "unmatched_param_files", "doubled_namespaces",
     )
 
     def __init__(
@@ -248,6 +288,7 @@ class LaunchTree(Record):
         parse_check_only: bool = False,
         forwarded: tuple[Forwarded, ...] = (),
         unmatched_param_files: tuple[UnmatchedParamFile, ...] = (),
+        doubled_namespaces: tuple[DoubledNamespace, ...] = (),
     ) -> None:
         _open(self)  # made for every root file: see _open
         self.root = root
@@ -265,4 +306,5 @@ class LaunchTree(Record):
         self.parse_check_only = parse_check_only
         self.forwarded = forwarded
         self.unmatched_param_files = unmatched_param_files
+        self.doubled_namespaces = doubled_namespaces
         _seal(self)

@@ -75,6 +75,9 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_missing_keyword", Category.LAUNCH),
     ("ros2_param_type", Category.LAUNCH),
     ("use_sim_time_misspelt", Category.TF),
+    ("ros2_param_file_missing", Category.LAUNCH),
+    ("param_value_refused", Category.LAUNCH),
+    ("namespace_pushed_twice", Category.TF),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -193,7 +193,23 @@ class Interpreter(Calls):
             parameters=self.parameters(kwargs.get("parameters"), node),
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),
             may_rename=may_rename(_words(arguments, kwargs.get("ros_arguments"))),
+            remappings=self.remappings(kwargs.get("remappings"), node),
         )
+
+    def remappings(self, value: object, node: ast.Call) -> tuple[tuple[Subs, Subs], ...] | None:
+        """``remappings=[(from, to), ...]`` as written; none given is no remapping; None
+        when it is not a list of pairs."""
+        if value is None:
+            return ()
+        if not isinstance(value, (list, tuple)):
+            return None
+        pairs: list[tuple[Subs, Subs]] = []
+        for item in value:
+            if not isinstance(item, (list, tuple)) or len(item) != 2:
+                return None
+            pairs.append((self.subs(item[0], node, "remapping"),
+                          self.subs(item[1], node, "remapping")))
+        return tuple(pairs)
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
                               node: ast.Call) -> object:

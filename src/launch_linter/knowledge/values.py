@@ -1,0 +1,265 @@
+"""What values nodes accept for their enumerated parameters, per distribution, and which
+launch files of installed packages start which known nodes from a parameter file: data
+(``param_values.json``, each fact citing the file, branch, commit and lines it was read
+from; docs/knowledge.md), loaded in the style of the tf publishers' knowledge base.
+
+- :class:`ValueFact`: a node's (or a ros2_control controller's) parameter, the values its
+  release for ``distros`` accepts, and what it does with another: ``fails`` (it refuses
+  and stops, or fails to configure) or ``falls_back`` (it uses ``fallback`` instead).
+  ``closed``: the accepted values are all there are (a string compared in the node's
+  code); else other packages may add values (pluginlib classes), and only a value with
+  the package's own ``owned_prefix`` or listed in ``refuses`` is known to be refused.
+- :class:`LaunchFact`: a launch file of an installed package that starts known nodes
+  with the parameter file one of its arguments names (nav2_bringup's ``params_file``):
+  an include of it the linter cannot follow still tells those nodes' parameters.
+
+Standard library only: the core reads it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+from typing import Any
+
+from launch_linter.knowledge import MAX_KNOWLEDGE_BYTES
+from launch_linter.knowledge.fields import KnowledgeError, Source, _source
+from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+
+DATA_FILE = "param_values.json"
+FORMAT = 1
+OUTCOMES = ("fails", "falls_back")
+
+
+class ValueFact:
+    """See the module's docstring. ``parameter`` may hold ``*`` for one name of a nested
+    parameter (``*.plugin``: every costmap layer's plugin); ``controller`` matches a
+    ros2_control controller, whose ``type`` is the value checked."""
+
+    __slots__ = ("id", "ros", "packages", "executables", "plugins", "controller",
+                 "parameter", "distros", "accepts", "closed", "owned_prefix", "refuses",
+                 "outcome", "fallback", "effect", "sources", "_pattern")
+
+    def __init__(self, id: str, ros: int, packages: tuple[str, ...],
+                 executables: tuple[str, ...], plugins: tuple[str, ...], controller: bool,
+                 parameter: str, distros: tuple[str, ...], accepts: tuple[str, ...],
+                 closed: bool, owned_prefix: str | None, refuses: tuple[str, ...],
+                 outcome: str, fallback: str | None, effect: str,
+                 sources: tuple[Source, ...]) -> None:
+        self.id = id
+        self.ros = ros
+        self.packages = packages
+        self.executables = executables
+        self.plugins = plugins
+        self.controller = controller
+        self.parameter = parameter
+        self.distros = distros
+        self.accepts = accepts
+        self.closed = closed
+        self.owned_prefix = owned_prefix
+        self.refuses = refuses
+        self.outcome = outcome
+        self.fallback = fallback
+        self.effect = effect
+        self.sources = sources
+        self._pattern = re.compile(
+            "^" + "[^./]+".join(re.escape(part) for part in parameter.split("*")) + "$")
+
+    def names(self, parameter: str) -> bool:
+        """Whether ``parameter`` (a node's parameter name) is the fact's parameter."""
+        return self._pattern.match(parameter) is not None
+
+    def refused(self, value: str) -> bool:
+        """Whether this release provably does not accept ``value``."""
+        if value in self.accepts:
+            return False
+        if self.closed or value in self.refuses:
+            return True
+        return self.owned_prefix is not None and value.startswith(self.owned_prefix)
+
+
+class LaunchFact:
+    """A launch file (``package`` and its paths in the share folder) that starts
+    ``nodes`` (package, executable, name) with the parameter file its argument
+    ``parameter_file_argument`` names, under the namespace ``namespace_argument`` names,
+    and starts none of them when ``unless_argument`` is true."""
+
+    __slots__ = ("id", "ros", "package", "launch", "parameter_file_argument",
+                 "namespace_argument", "unless_argument", "nodes", "sources")
+
+    def __init__(self, id: str, ros: int, package: str, launch: tuple[str, ...],
+                 parameter_file_argument: str, namespace_argument: str | None,
+                 unless_argument: str | None, nodes: tuple[tuple[str, str, str], ...],
+                 sources: tuple[Source, ...]) -> None:
+        self.id = id
+        self.ros = ros
+        self.package = package
+        self.launch = launch
+        self.parameter_file_argument = parameter_file_argument
+        self.namespace_argument = namespace_argument
+        self.unless_argument = unless_argument
+        self.nodes = nodes
+        self.sources = sources
+
+
+def _text(value: Any, where: str) -> str:
+    if not isinstance(value, str) or not value:
+        raise KnowledgeError(f"{where} must be a non-empty string")
+    return value
+
+
+def _texts(value: Any, where: str, empty: bool = True) -> tuple[str, ...]:
+    if not isinstance(value, list) or (not empty and not value):
+        raise KnowledgeError(f"{where} must be a list of strings")
+    return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
+
+
+def _sources(data: Any, where: str) -> tuple[Source, ...]:
+    if not isinstance(data, list) or not data:
+        raise KnowledgeError(f"{where} must list where the fact was read")
+    return tuple(_source(item, f"{where}[{i}]") for i, item in enumerate(data))
+
+
+def _ros(value: Any, where: str) -> int:
+    if value not in (1, 2):
+        raise KnowledgeError(f"{where} must be 1 or 2")
+    return int(value)
+
+
+def parse_value(data: Any, where: str) -> ValueFact:
+    if not isinstance(data, dict):
+        raise KnowledgeError(f"{where} must be an object")
+    fact_id = _text(data.get("id"), f"{where}.id")
+    where = f"{where} ({fact_id})"
+    ros = _ros(data.get("ros"), f"{where}.ros")
+    match = data.get("match")
+    if not isinstance(match, dict):
+        raise KnowledgeError(f"{where}.match must be an object")
+    controller = match.get("controller") is True
+    package = match.get("package")
+    packages = () if package is None else (_text(package, f"{where}.match.package"),)
+    executables = _texts(match.get("executables", []), f"{where}.match.executables")
+    plugins = _texts(match.get("plugins", []), f"{where}.match.plugins")
+    if not controller and not (packages and executables) and not plugins:
+        raise KnowledgeError(f"{where}.match needs package and executables, plugins, or "
+                             f"controller: true")
+    known = ROS1_DISTROS if ros == 1 else ROS2_DISTROS
+    distros = _texts(data.get("distros"), f"{where}.distros", empty=False)
+    unknown = [d for d in distros if d not in known]
+    if unknown:
+        raise KnowledgeError(f"{where}.distros names {unknown[0]!r}, not a ROS {ros} "
+                             f"distribution")
+    outcome = _text(data.get("otherwise"), f"{where}.otherwise")
+    if outcome not in OUTCOMES:
+        raise KnowledgeError(f"{where}.otherwise must be one of {', '.join(OUTCOMES)}")
+    fallback = data.get("fallback")
+    if (outcome == "falls_back") != (fallback is not None):
+        raise KnowledgeError(f"{where}.fallback is given exactly when otherwise is "
+                             f"falls_back")
+    owned = data.get("owned_prefix")
+    return ValueFact(
+        fact_id, ros, packages, executables, plugins, controller,
+        _text(data.get("parameter"), f"{where}.parameter"), distros,
+        _texts(data.get("accepts"), f"{where}.accepts"), data.get("closed") is True,
+        None if owned is None else _text(owned, f"{where}.owned_prefix"),
+        _texts(data.get("refuses", []), f"{where}.refuses"), outcome,
+        None if fallback is None else _text(fallback, f"{where}.fallback"),
+        _text(data.get("effect"), f"{where}.effect"),
+        _sources(data.get("sources"), f"{where}.sources"))
+
+
+def parse_launch(data: Any, where: str) -> LaunchFact:
+    if not isinstance(data, dict):
+        raise KnowledgeError(f"{where} must be an object")
+    fact_id = _text(data.get("id"), f"{where}.id")
+    where = f"{where} ({fact_id})"
+    nodes = data.get("nodes")
+    if not isinstance(nodes, list) or not nodes or not all(isinstance(n, dict) for n in nodes):
+        raise KnowledgeError(f"{where}.nodes must be a list of objects")
+    namespace = data.get("namespace_argument")
+    unless = data.get("unless_argument")
+    return LaunchFact(
+        fact_id, _ros(data.get("ros"), f"{where}.ros"),
+        _text(data.get("package"), f"{where}.package"),
+        _texts(data.get("launch"), f"{where}.launch", empty=False),
+        _text(data.get("parameter_file_argument"), f"{where}.parameter_file_argument"),
+        None if namespace is None else _text(namespace, f"{where}.namespace_argument"),
+        None if unless is None else _text(unless, f"{where}.unless_argument"),
+        tuple((_text(n.get("package"), f"{where}.nodes[{i}].package"),
+               _text(n.get("executable"), f"{where}.nodes[{i}].executable"),
+               _text(n.get("name"), f"{where}.nodes[{i}].name"))
+              for i, n in enumerate(nodes)),
+        _sources(data.get("sources"), f"{where}.sources"))
+
+
+class ValueKnowledge:
+    """The facts, by what they match."""
+
+    def __init__(self, values: tuple[ValueFact, ...], launch: tuple[LaunchFact, ...]) -> None:
+        self.values = values
+        self.launch = launch
+
+    def facts_for(self, ros: int | None, package: str, executable: str,
+                  plugin: str | None, controller: bool) -> list[ValueFact]:
+        """The value facts of a launched node (all distributions)."""
+        return [f for f in self.values if f.ros == ros and (
+            (controller and f.controller)
+            or (not controller and package in f.packages and executable in f.executables)
+            or (not controller and plugin is not None and plugin in f.plugins))]
+
+    def launch_file(self, package: str, path: str) -> LaunchFact | None:
+        """The fact of the launch file ``path`` of ``package``'s share folder."""
+        for fact in self.launch:
+            if fact.package == package and path in fact.launch:
+                return fact
+        return None
+
+
+def parse(data: Any, origin: str) -> ValueKnowledge:
+    if not isinstance(data, dict) or data.get("format") != FORMAT:
+        raise KnowledgeError(f"{origin}: not a parameter-value file of format {FORMAT}")
+    values = data.get("values", [])
+    launch = data.get("launch_files", [])
+    if not isinstance(values, list) or not isinstance(launch, list):
+        raise KnowledgeError(f"{origin}: 'values' and 'launch_files' must be lists")
+    parsed = ValueKnowledge(
+        tuple(parse_value(v, f"{origin}: values[{i}]") for i, v in enumerate(values)),
+        tuple(parse_launch(v, f"{origin}: launch_files[{i}]") for i, v in enumerate(launch)))
+    ids = [f.id for f in parsed.values] + [f.id for f in parsed.launch]
+    twice = sorted({i for i in ids if ids.count(i) > 1})
+    if twice:
+        raise KnowledgeError(f"{origin}: fact ids used twice: {', '.join(twice)}")
+    return parsed
+
+
+_BUNDLED: list[ValueKnowledge] = []
+
+
+def bundled_path() -> str | None:
+    """The bundled data file, None where the modules run without their files (the
+    standalone linter, which installs its embedded copy with :func:`use_bundled`)."""
+    here = globals().get("__file__")
+    return None if here is None else os.path.join(os.path.dirname(os.path.abspath(here)),
+                                                  DATA_FILE)
+
+
+def use_bundled(text: str) -> None:
+    """Make ``text`` (the data file's JSON) the bundled facts."""
+    _BUNDLED[:] = [parse(json.loads(text), "bundled")]
+
+
+def bundled() -> ValueKnowledge:
+    """The facts shipped with the linter, read once per process; none where the modules
+    run without their files (the standalone linter)."""
+    if not _BUNDLED:
+        facts = ValueKnowledge((), ())
+        path = bundled_path()
+        if path is not None and os.path.isfile(path):
+            with open(path, "rb") as stream:
+                raw = stream.read(MAX_KNOWLEDGE_BYTES + 1)
+            if len(raw) > MAX_KNOWLEDGE_BYTES:
+                raise KnowledgeError(f"{path}: larger than {MAX_KNOWLEDGE_BYTES} bytes")
+            facts = parse(json.loads(raw.decode("utf-8")), path)
+        _BUNDLED.append(facts)
+    return _BUNDLED[0]
