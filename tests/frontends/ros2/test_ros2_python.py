@@ -356,6 +356,21 @@ def test_loops_over_unknown_values_that_launch_nodes_are_reported(load: Load) ->
                                    ("unresolved", HEADER_LINES + 3)]
 
 
+def test_a_bracket_never_closed_is_reported_where_it_opens(load: Load) -> None:
+    # ROS 2 runs launch files with Python 3.10+, whose parser names the open bracket; the
+    # parser of Python 3.8 and 3.9 named the next statement instead (line 4 here).
+    source = ("def generate_launch_description():\n"
+              "    args = []\n"
+              "    args.append(\n"
+              "    x = [1, 2]\n"
+              "    return args\n")
+    tree = load({"a.launch.py": source}, "a.launch.py")
+    assert tree.status is FileStatus.PARSE_ERROR and rules(tree) == [("parse_error", 3)]
+    # Brackets all closed: the parser's own place stands.
+    tree = load({"b.launch.py": "def f(:\n    pass\nx = (1)\n"}, "b.launch.py")
+    assert rules(tree) == [("parse_error", 1)]
+
+
 def test_syntax_errors_and_missing_entry_point(load: Load) -> None:
     tree = load({"a.launch.py": "def generate_launch_description(:\n"}, "a.launch.py")
     assert tree.status is FileStatus.PARSE_ERROR and rules(tree) == [("parse_error", 1)]

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import ast
 import os
+import sys
 import tokenize
 from collections.abc import Callable, Mapping
-from io import BytesIO
+from io import BytesIO, StringIO
 
 from launch_linter.frontends import python_trees
 from launch_linter.frontends.ros2_actions import Action, FileRead, Problem, Unfollowed, Where
@@ -52,6 +53,34 @@ def _directive_comments(data: bytes) -> tuple[tuple[int, str], ...]:
     return tuple(found)
 
 
+def _unclosed_bracket(source: str) -> tuple[int, int, str] | None:
+    """Where a bracket left open to the end of the file was opened, as the parser of the
+    Python 3.10+ that ROS 2 runs launch files with reports it ("'(' was never closed" at
+    the bracket); the parser of Python 3.8 and 3.9 names a later line instead. None when
+    no bracket stays open (the host parser's own report stands)."""
+    if sys.version_info >= (3, 10):
+        return None  # the host parser reports the bracket itself
+    openers: list[tuple[int, int, str]] = []
+    closing = {")": "(", "]": "[", "}": "{"}
+    try:
+        for token in tokenize.generate_tokens(StringIO(source).readline):
+            if token.type != tokenize.OP:
+                continue
+            if token.string in "([{":
+                openers.append((token.start[0], token.start[1] + 1, token.string))
+            elif token.string in closing:
+                if not openers or openers[-1][2] != closing[token.string]:
+                    return None  # a closer that does not match: another fault
+                openers.pop()
+    except tokenize.TokenError:  # the end of the file inside a bracket
+        if openers:
+            line, column, bracket = openers[-1]
+            return line, column, f"'{bracket}' was never closed"
+    except SyntaxError:
+        pass
+    return None
+
+
 def read_python(path: str, data: bytes, budget: Budget | None = None,
                 environ: Mapping[str, str] | None = None,
                 installed: Callable[[], str | None] | None = None) -> FileRead:
@@ -74,8 +103,9 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         message = f"not UTF-8 text: {exc.reason}"
         return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
     except SyntaxError as exc:
-        problem = Problem("parse_error", exc.lineno or 1, (exc.offset or 0) or 1,
-                          f"not valid Python: {exc.msg}")
+        line, column, why = _unclosed_bracket(source) or (
+            exc.lineno or 1, (exc.offset or 0) or 1, exc.msg)
+        problem = Problem("parse_error", line, column, f"not valid Python: {why}")
         return FileRead(FORMAT, None, _directive_comments(data), (), (problem,))
     except (RecursionError, MemoryError, ValueError) as exc:
         message = f"not readable Python: {type(exc).__name__}"
