@@ -22,7 +22,7 @@ from typing import Any, Mapping, Sequence
 
 from launch_linter.knowledge.fields import KnowledgeError as KnowledgeError
 from launch_linter.knowledge.fields import Source as Source
-from launch_linter.knowledge.fields import _source, _text, _texts
+from launch_linter.knowledge.fields import _sources, _text, _texts
 from launch_linter.knowledge.programs import (
     PROGRAM_KINDS,
     ClockFact,
@@ -400,9 +400,7 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
         prefix = Prefix(_text(prefix_data.get("param"), f"{where}.prefix.param"),
                         None if enabled is None else _text(enabled, f"{where}.prefix.enabled_by"),
                         bool(prefix_data.get("empty_means_namespace", False)), distros)
-    sources = data.get("sources")
-    if not isinstance(sources, list) or not sources:
-        raise KnowledgeError(f"{where}.sources must list where the entry was read")
+    sources = _sources(data.get("sources"), f"{where}.sources")
     elsewhere = data.get("parameters_elsewhere")
     tf2_from = data.get("ros1_tf2_from")
     if tf2_from is not None and tf2_from not in ROS1_DISTROS:
@@ -431,7 +429,7 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
             elsewhere, f"{where}.parameters_elsewhere"),
         unsure_defaults=_texts(data.get("unsure_defaults"), f"{where}.unsure_defaults"),
         prefix=prefix,
-        sources=tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources)),
+        sources=sources,
         origin=origin,
         header_frames=headers,
         ros1_tf2_from=tf2_from,

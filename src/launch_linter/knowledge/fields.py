@@ -67,3 +67,10 @@ def _source(data: Any, where: str) -> Source:
     if not _COMMIT.match(fields["commit"]):
         raise KnowledgeError(f"{where}.commit must be a 40-digit commit hash")
     return Source(**fields)
+
+
+def _sources(value: Any, where: str) -> tuple[Source, ...]:
+    """An entry's ``sources``: a non-empty list of where its facts were read."""
+    if not isinstance(value, list) or not value:
+        raise KnowledgeError(f"{where} must list where the entry was read")
+    return tuple(_source(item, f"{where}[{i}]") for i, item in enumerate(value))

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch_linter.knowledge.fields import KnowledgeError, Source, _source, _text, _texts
+from launch_linter.knowledge.fields import KnowledgeError, Source, _sources, _text, _texts
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
 
 PROGRAM_KINDS = ("installed", "clock")
@@ -72,13 +72,6 @@ class ClockFact:
 
 
 
-def _sources(data: dict[str, Any], where: str) -> tuple[Source, ...]:
-    sources = data.get("sources")
-    if not isinstance(sources, list) or not sources:
-        raise KnowledgeError(f"{where}.sources must list where the entry was read")
-    return tuple(_source(s, f"{where}.sources[{i}]") for i, s in enumerate(sources))
-
-
 def parse_program_entry(data: dict[str, Any], kind: str, ros: tuple[int, ...], where: str,
                         origin: str) -> Installed | ClockFact:
     """An ``installed`` or ``clock`` entry (its id, kind and ``ros`` already checked);
@@ -99,7 +92,7 @@ def parse_program_entry(data: dict[str, Any], kind: str, ros: tuple[int, ...], w
         if not executables:
             raise KnowledgeError(f"{where}.installs must list the executables installed")
         return Installed(entry_id, package, ros, distros, executables,
-                         _sources(data, where), origin)
+                         _sources(data.get("sources"), f"{where}.sources"), origin)
     executables = _texts(match.get("executables"), f"{where}.match.executables")
     launch_files = _texts(match.get("launch_files"), f"{where}.match.launch_files")
     if not executables and not launch_files:
@@ -109,7 +102,7 @@ def parse_program_entry(data: dict[str, Any], kind: str, ros: tuple[int, ...], w
     if clock not in CLOCK_ROLES:
         raise KnowledgeError(f"{where}.clock must be one of {', '.join(CLOCK_ROLES)}")
     return ClockFact(entry_id, package, ros, executables, launch_files, str(clock),
-                     _sources(data, where), origin)
+                     _sources(data.get("sources"), f"{where}.sources"), origin)
 
 
 class Programs:

@@ -24,7 +24,7 @@ import re
 from typing import Any
 
 from launch_linter.knowledge import MAX_KNOWLEDGE_BYTES
-from launch_linter.knowledge.fields import KnowledgeError, Source, _source
+from launch_linter.knowledge.fields import KnowledgeError, Source, _sources, _text
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
 
 DATA_FILE = "param_values.json"
@@ -103,22 +103,10 @@ class LaunchFact:
         self.sources = sources
 
 
-def _text(value: Any, where: str) -> str:
-    if not isinstance(value, str) or not value:
-        raise KnowledgeError(f"{where} must be a non-empty string")
-    return value
-
-
 def _texts(value: Any, where: str, empty: bool = True) -> tuple[str, ...]:
     if not isinstance(value, list) or (not empty and not value):
         raise KnowledgeError(f"{where} must be a list of strings")
     return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
-
-
-def _sources(data: Any, where: str) -> tuple[Source, ...]:
-    if not isinstance(data, list) or not data:
-        raise KnowledgeError(f"{where} must list where the fact was read")
-    return tuple(_source(item, f"{where}[{i}]") for i, item in enumerate(data))
 
 
 def _ros(value: Any, where: str) -> int:
