@@ -92,3 +92,86 @@ def test_foxy_keywords_with_flags_on_foxy_given_are_the_flags_mistake(tmp_path: 
 def test_the_fixed_keyword_is_silent(tmp_path: Path) -> None:
     fixed = FLAGS.replace("node_executable", "executable").replace("node_name", "name")
     assert _found_in(tmp_path, fixed, None) == []
+
+
+SPLIT = """from launch import LaunchDescription
+from launch_ros.actions import ComposableNodeContainer, Node
+from launch_ros.descriptions import ComposableNode
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(
+            package='joy',
+            node_executable='joy_node',
+        ),
+        ComposableNodeContainer(
+            package='rclcpp_components', name='container', namespace='',
+            executable='component_container',
+            composable_node_descriptions=[
+                ComposableNode(
+                    package='ublox_gps',
+                    node_plugin='ublox_node::UbloxNode',
+                    node_name='ublox_gps_node'),
+            ],
+        ),
+    ])
+"""
+
+
+def _lines(tmp_path: Path, text: str, distro: str | None = "galactic"
+           ) -> list[tuple[int, str, str]]:
+    path = tmp_path / "split.launch.py"
+    path.write_text(text, encoding="utf-8")
+    result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro=distro))
+    return [(d.line, d.severity.value, d.message) for d in result.diagnostics if d.rule == RULE]
+
+
+def test_reported_at_the_keyword_that_must_change_and_for_composable_nodes(
+    tmp_path: Path,
+) -> None:
+    # The keyword's line, not the call's: the word a maintainer edits (teleop_twist_joy#26).
+    # ComposableNode(node_plugin=...) is refused from Galactic on too (ublox#126).
+    found = _lines(tmp_path, SPLIT)
+    assert [(line, level) for line, level, _ in found] == [(10, "error"), (18, "error")]
+    assert "Node keyword(s) node_executable= (now executable=)" in found[0][2]
+    assert ("ComposableNode keyword(s) node_plugin= (now plugin=), node_name= (now name=)"
+            in found[1][2])
+
+
+def test_composable_node_keywords_of_today_are_silent(tmp_path: Path) -> None:
+    fixed = SPLIT.replace("node_executable", "executable").replace(
+        "node_plugin", "plugin").replace("node_name", "name")
+    assert _lines(tmp_path, fixed) == []
+
+
+def test_composable_node_foxy_keywords_are_read_on_foxy(tmp_path: Path) -> None:
+    # On Foxy the old keywords still work: no finding, and the component keeps its name.
+    assert _lines(tmp_path, SPLIT, "foxy") == []
+
+
+def test_a_helper_function_reports_at_its_call(tmp_path: Path) -> None:
+    helper = '''from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def make(executable):
+    return Node(package='joy',
+                node_executable=executable)
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        make('joy_node'),
+        make('teleop_node'),
+    ])
+'''
+    assert [line for line, _, _ in _lines(tmp_path, helper)] == [12, 13]
+
+
+def test_a_call_with_20000_keywords_is_read_once(tmp_path: Path) -> None:
+    # Hostile: the keywords of one call are walked once to find the first old one.
+    many = ", ".join(f"k{i}='v'" for i in range(20_000))
+    text = SPLIT.replace("node_executable='joy_node',", f"{many}, node_executable='joy_node',")
+    found = _lines(tmp_path, text)
+    assert [line for line, _, _ in found] == [10, 18]

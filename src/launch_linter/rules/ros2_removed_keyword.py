@@ -1,11 +1,13 @@
 """A ROS 2 `Node` given Foxy-era keywords (`node_executable=`, ...) on a later distribution.
 
 ## What it does
-Reports a Python launch file whose `Node(...)` uses `node_executable=`, `node_name=` or
-`node_namespace=` when the target distribution (`--ros-distro`, the `ros-distro` key,
-or `ROS_DISTRO`) is Galactic or later, and names the keyword that replaced each one
-(`executable=`, `name=`, `namespace=`). With no target given, these keywords are taken as
-evidence that the file targets Foxy and nothing is reported, unless a
+Reports a Python launch file whose `Node(...)` (or `LifecycleNode`,
+`ComposableNodeContainer`) uses `node_executable=`, `node_name=` or `node_namespace=`, or
+whose `ComposableNode(...)` uses `node_plugin=`, `node_name=` or `node_namespace=`, when
+the target distribution (`--ros-distro`, the `ros-distro` key, or `ROS_DISTRO`) is
+Galactic or later, at the first such keyword (the word to change), and names the keyword
+that replaced each one (`executable=`, `plugin=`, `name=`, `namespace=`). With no target
+given, these keywords are taken as evidence that the file targets Foxy and nothing is reported, unless a
 `static_transform_publisher` of the tree is given flags (`--frame-id` ...): the flags
 arrived in Humble, so no distribution runs the file, and the keyword is reported (rather
 than the flags as Foxy's mistake).
@@ -78,12 +80,12 @@ def check(context: RuleContext) -> Iterator[Finding]:
             where = (f"line {flagged.line}" if flagged.path == note.path
                      else f"{flagged.path}:{flagged.line}")
             yield replace(note, message=(
-                f"Node keyword(s) {note.message} were removed after Foxy, but the "
+                f"{note.message} were removed after Foxy, but the "
                 f"static_transform_publisher flags at {where} arrived in Humble: on every "
                 f"distribution that reads those flags, ros2 launch refuses the whole file"
             ))
         else:
             yield replace(note, message=(
-                f"Node keyword(s) {note.message} were removed after Foxy: on "
+                f"{note.message} were removed after Foxy: on "
                 f"{str(distro).capitalize()} ros2 launch refuses the whole file"
             ))

@@ -40,6 +40,7 @@ from launch_linter.frontends.ros2_python.calls import Calls
 from launch_linter.frontends.ros2_python.values import (
     _LEGACY_NODE_KEYWORDS,
     LAUNCH_ROOTS,
+    LEGACY_KEYWORDS,
     ComponentVal,
     CondVal,
     ContextVal,
@@ -109,6 +110,7 @@ class Interpreter(Calls):
         if name == "Parameter" and ".substitutions" in dotted:
             # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
             return _substitution("param", 2)(self, args, kwargs, node)
+        self.legacy_keywords(name, kwargs, node)
         missing = missing_keywords(name, kwargs)
         if missing:  # ros2_missing_keyword decides with the target distribution
             legacy = [k for k in _LEGACY_NODE_KEYWORDS if k in kwargs]
@@ -123,6 +125,23 @@ class Interpreter(Calls):
             return self.launch_object(name, args, kwargs, node)
         result: object = handler(self, args, kwargs, node)
         return result
+
+    def legacy_keywords(self, name: str, kwargs: dict[str, object], node: ast.Call) -> None:
+        """Kept as a note: a Foxy-era keyword is evidence of a Foxy target and an error on
+        later distributions (the rule ros2_removed_keyword decides with the target
+        distribution). Noted where the first one is written: the word that must change."""
+        replaced = LEGACY_KEYWORDS.get(name, {})
+        legacy = [k for k in replaced if k in kwargs]
+        if not legacy:
+            return
+        written = [k for k in node.keywords if k.arg in legacy]
+        at: ast.AST = node
+        if written and not self.call_sites:
+            first = min(written, key=lambda k: (k.value.lineno, k.value.col_offset))
+            # ast.keyword has a position from Python 3.9 on; its value's on 3.8.
+            at = first if hasattr(first, "lineno") else first.value
+        self.problem("ros2_removed_keyword", at, f"{name} keyword(s) " + ", ".join(
+            f"{k}= (now {replaced[k]}=)" for k in legacy))
 
     def launch_object(self, name: str, args: list[object], kwargs: dict[str, object],
                       node: ast.Call) -> LaunchObject:
@@ -169,12 +188,6 @@ class Interpreter(Calls):
                 if isinstance(arguments, str):
                     self.problem("roslaunch_error", node, "arguments is one string, not a "
                                  "list: launch passes each of its characters as an argument")
-        legacy = [k for k in _LEGACY_NODE_KEYWORDS if k in kwargs]
-        if legacy:
-            # Kept as a note: evidence of a Foxy target, an error on later distributions
-            # (the rule ros2_removed_keyword decides with the target distribution).
-            self.problem("ros2_removed_keyword", node, ", ".join(
-                f"{k}= (now {_LEGACY_NODE_KEYWORDS[k]}=)" for k in legacy))
         executable = pick("executable", "node_executable")
         package = kwargs.get("package")
         # The arguments as written are shown only for a static transform publisher.
@@ -493,9 +506,11 @@ class Interpreter(Calls):
             where=self.where(node),
             condition=self.condition(kwargs, node),
             package=self.optional_subs(kwargs.get("package"), node, "package"),
-            plugin=self.optional_subs(kwargs.get("plugin"), node, "plugin"),
-            name=self.optional_subs(kwargs.get("name"), node, "name"),
-            namespace=self.optional_subs(kwargs.get("namespace"), node, "namespace"),
+            plugin=self.optional_subs(kwargs.get("plugin", kwargs.get("node_plugin")), node,
+                                      "plugin"),
+            name=self.optional_subs(kwargs.get("name", kwargs.get("node_name")), node, "name"),
+            namespace=self.optional_subs(kwargs.get("namespace", kwargs.get("node_namespace")),
+                                         node, "namespace"),
             parameters=self.parameters(kwargs.get("parameters"), node),
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),
         ))

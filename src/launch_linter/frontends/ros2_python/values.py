@@ -33,6 +33,23 @@ _LEGACY_NODE_KEYWORDS = {
 }
 """launch_ros ``Node`` keywords of Foxy and before, and what replaced them."""
 
+LEGACY_KEYWORDS: dict[str, dict[str, str]] = {
+    "Node": _LEGACY_NODE_KEYWORDS,
+    "LifecycleNode": _LEGACY_NODE_KEYWORDS,
+    "ComposableNodeContainer": _LEGACY_NODE_KEYWORDS,
+    "ComposableNode": {
+        "node_plugin": "plugin", "node_name": "name", "node_namespace": "namespace",
+    },
+}
+"""Foxy-era keywords per launch_ros action, and what replaced them. Foxy accepts them with a
+deprecation warning (launch_ros foxy 68e2b62: actions/node.py, descriptions/
+composable_node.py ``node_plugin``/``node_name``/``node_namespace``, actions/
+composable_node_container.py); from Galactic on they are gone (galactic 31e27eb):
+``ComposableNode.__init__(self, *, package, plugin, name=None, namespace=None, ...)`` takes
+no other keyword, and ``Node`` (which ``LifecycleNode`` and ``ComposableNodeContainer``
+forward their other keywords to) hands unknown ones to ``ExecuteProcess``, which refuses
+them: TypeError, and ``ros2 launch`` refuses the file."""
+
 REQUIRED_KEYWORDS = {
     "LifecycleNode": ("name", "namespace"),
     "ComposableNodeContainer": ("name", "namespace"),
