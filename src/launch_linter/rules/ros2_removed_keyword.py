@@ -7,7 +7,8 @@ whose `ComposableNode(...)` uses `node_plugin=`, `node_name=` or `node_namespace
 the target distribution (`--ros-distro`, the `ros-distro` key, or `ROS_DISTRO`) is
 Galactic or later, at the first such keyword (the word to change), and names the keyword
 that replaced each one (`executable=`, `plugin=`, `name=`, `namespace=`). With no target
-given, these keywords are taken as evidence that the file targets Foxy and nothing is reported, unless a
+given, these keywords are taken as evidence that the file targets Foxy and nothing is
+reported, unless a
 `static_transform_publisher` of the tree is given flags (`--frame-id` ...): the flags
 arrived in Humble, so no distribution runs the file, and the keyword is reported (rather
 than the flags as Foxy's mistake).
