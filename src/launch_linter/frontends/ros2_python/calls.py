@@ -43,7 +43,6 @@ from launch_linter.frontends.ros2_python.values import (
     _as_subs,
     _Break,
     _Continue,
-    _Return,
 )
 from launch_linter.frontends.ros2_python.xacro_call import DOCUMENT_TEXT, document_text
 from launch_linter.resolve.bounded import PYTHON_MAX_CALL_DEPTH as MAX_CALL_DEPTH
@@ -129,9 +128,7 @@ class Calls(Expressions):
         try:
             if isinstance(function.node, ast.Lambda):
                 return self.eval(function.node.body, local)
-            self.run_block(function.node.body, local)
-        except _Return as result:
-            return result.value
+            return self.run_function_body(function.node.body, local)
         except (_Break, _Continue):
             return self.unknown(node, "break or continue outside a loop")
         finally:

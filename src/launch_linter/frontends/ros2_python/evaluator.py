@@ -25,6 +25,7 @@ from launch_linter.frontends.ros2_python.values import (
     ACTION_NAMES,
     Env,
     FuncVal,
+    LaunchDescriptionVal,
     LazyStr,
     LinedDict,
     ModuleVal,
@@ -172,6 +173,86 @@ class Evaluator:
     def run_block(self, body: Sequence[ast.stmt], env: Env) -> None:
         for statement in body:
             self.run(statement, env)
+
+    def run_function_body(self, body: Sequence[ast.stmt], env: Env) -> object:
+        """What a function's body returns. A guard clause (``if <unknown>: ... return X``
+        with no ``else``, at the body's top level) returns X under its condition only:
+        Python runs the rest of the body when the condition is false, so the rest runs
+        under the condition's negation and both returns are kept, each under its side
+        (else the first return met would be taken as the function's only result)."""
+        sides: list[tuple[ast.If, object]] = []
+        depth = len(self.branches)
+        value: object = None
+        try:
+            for statement in body:
+                if not (isinstance(statement, ast.If) and not statement.orelse
+                        and isinstance(statement.body[-1], ast.Return)):
+                    self.run(statement, env)
+                    continue
+                guarded = self.guard_clause(statement, env)
+                if guarded is _NOT_GUARDED:
+                    continue
+                if len(sides) >= MAX_GUARD_CLAUSES:
+                    # Each side's actions sit under every condition before it.
+                    raise _OutOfSteps
+                sides.append((statement, guarded))
+                self.branches.append(self.side(statement, False))
+        except _Return as result:
+            value = result.value
+        finally:
+            del self.branches[depth:]
+        for statement, returned in reversed(sides):
+            value = self.either(statement, returned, value)
+        return value
+
+    def guard_clause(self, node: ast.If, env: Env) -> object:
+        """Runs ``if <test>: ... return X`` (no ``else``): X when the test is unknown (run
+        under it, the variables it sets left to its side), else ``_NOT_GUARDED`` after
+        running the statement as Python would (a true test returns, by ``_Return``)."""
+        self.step()
+        tested = self.eval(node.test, env)
+        test = self.truth(tested)
+        if test is True:
+            self.run_block(node.body, env)
+        if test is not None:
+            return _NOT_GUARDED
+        before = dict(env.vars)
+        self.branches.append(self.side(node, True))
+        try:
+            self.run_block(node.body, env)
+        except _Return as result:
+            return result.value
+        finally:
+            self.branches.pop()
+            env.vars = before
+        return None
+
+    def side(self, node: ast.If, positive: bool) -> Predicate:
+        reason = f"Python condition at line {node.lineno} depends on an unknown value"
+        return Predicate(positive, (Opaque(f"python: {self.segment(node.test)}", reason),))
+
+    def either(self, node: ast.If, returned: object, rest: object) -> object:
+        """One value for what a guard clause returns under its condition and what the
+        rest of the body returns otherwise: launch actions of both, each under its side's
+        condition, else unknown. Nothing returned is no action (an
+        ``OpaqueFunction`` may return None)."""
+        if returned is rest:
+            return rest
+        both = [returned, rest]
+        text = self.segment(node.test)
+        items: list[object] = []
+        for positive, value in zip((True, False), both):
+            found = (value.items if isinstance(value, LaunchDescriptionVal)
+                     else value if isinstance(value, (list, tuple))
+                     else [] if value is None else None)
+            if found is None or not all(isinstance(item, ACTION_TYPES) for item in found):
+                return Unknown(f"returned under the condition {text!r}",
+                               "the function's result", node.lineno)
+            # A list written as a literal was not placed under its side's condition yet.
+            items.extend(self.under(list(found), positive, text, node))
+        if any(isinstance(value, LaunchDescriptionVal) for value in both):
+            return LaunchDescriptionVal(items)
+        return items
 
     def run(self, node: ast.stmt, env: Env) -> None:
         self.steps += 1
@@ -395,6 +476,13 @@ class Evaluator:
         """Defined by :class:`.expressions.Expressions`."""
         raise NotImplementedError
 
+
+MAX_GUARD_CLAUSES = 64
+"""Guard clauses followed in one function body: an action after the n-th is under n
+conditions, so the work grows with their square."""
+
+_NOT_GUARDED = object()
+"""``Evaluator.guard_clause``'s answer for a statement it ran as Python would."""
 
 _STATEMENTS: dict[type, Callable[[Evaluator, Any, Env], None]] = {
     ast.Expr: Evaluator._expression_statement,
