@@ -175,3 +175,35 @@ def test_a_call_with_20000_keywords_is_read_once(tmp_path: Path) -> None:
     text = SPLIT.replace("node_executable='joy_node',", f"{many}, node_executable='joy_node',")
     found = _lines(tmp_path, text)
     assert [line for line, _, _ in found] == [10, 18]
+
+
+OPAQUE = """from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch_ros.actions import Node
+
+
+def launch_setup(context):
+    return [Node(package='joy',
+                 node_executable='joy_node')]
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=launch_setup)])
+"""
+
+
+def test_in_an_opaque_function_the_keyword_is_an_error_too(tmp_path: Path) -> None:
+    # The function runs when ros2 launch visits it: the Node it builds raises there as
+    # anywhere (was: an info "in OpaqueFunction launch_setup(): ...", the tree opened).
+    path = tmp_path / "opaque.launch.py"
+    path.write_text(OPAQUE, encoding="utf-8")
+    result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro="humble"))
+    found = [(d.rule, d.severity.value, d.line) for d in result.diagnostics]
+    assert found == [(RULE, "error", 8)]
+
+
+def test_in_an_opaque_function_the_new_keyword_is_silent(tmp_path: Path) -> None:
+    path = tmp_path / "opaque.launch.py"
+    path.write_text(OPAQUE.replace("node_executable", "executable"), encoding="utf-8")
+    result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro="humble"))
+    assert [d.rule for d in result.diagnostics] == []

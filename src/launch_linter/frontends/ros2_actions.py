@@ -308,10 +308,13 @@ class Uses:
 
 @dataclass(frozen=True)
 class Unfollowed:
-    """Something that may launch nodes but that the linter cannot follow."""
+    """Something that may launch nodes but that the linter cannot follow; or, with a rule
+    other than ``unresolved``, a problem the reader met while running an
+    ``OpaqueFunction`` (after the file's own problems were handed over)."""
 
     where: Where
     reason: str
+    rule: str = "unresolved"
 
 
 ACTION_TYPES = (

@@ -390,8 +390,9 @@ class Ros2Runner:
 
     def _run_one(self, action: Action, scope: _Scope, frame: _Frame) -> None:
         if isinstance(action, Unfollowed):
-            self._report("unresolved", action.where, action.reason)
-            self.declarations.opened(action.reason)
+            self._report(action.rule, action.where, action.reason)
+            if action.rule == "unresolved":
+                self.declarations.opened(action.reason)
             return
         self.declarations.declares(action)
         self.arguments.declares(action)

@@ -420,19 +420,25 @@ class Interpreter(Calls):
             met = self.problems[recorded:]
             del self.problems[recorded:]
         name = getattr(function.node, "name", "<lambda>")
+        # What the reader could not follow is said as met in the function; what a rule
+        # judges (a keyword launch_ros refuses, ...) is as wrong there as anywhere.
         notes = tuple(
             Unfollowed(Where(self.path, p.line, p.column),
                        f"in OpaqueFunction {name}(): {p.message}")
+            if p.rule == "unresolved" else
+            Unfollowed(Where(self.path, p.line, p.column), p.message, p.rule)
             for p in met
         )
         found = self.actions(result, node) if result is not None else ()
         # A log message or a parameter set (an unmodelled action) starts nothing: a
         # function that returns only those returned none of the actions it builds.
         followed = [action for action in found if not isinstance(action, Uses)]
-        if not followed and not notes and _starts_actions(function.node):
-            notes = (Unfollowed(where, f"line {node.lineno}: OpaqueFunction "
-                                       f"{name}() builds launch actions but "
-                                       f"returns none the linter can follow"),)
+        if not followed and not any(note.rule == "unresolved" for note in notes) and (
+            _starts_actions(function.node)
+        ):
+            notes = (*notes, Unfollowed(where, f"line {node.lineno}: OpaqueFunction "
+                                              f"{name}() builds launch actions but "
+                                              f"returns none the linter can follow"))
         return (*notes, *found)
 
     launch_LaunchConfiguration = _substitution("var", 2)
