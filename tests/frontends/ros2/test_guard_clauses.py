@@ -105,3 +105,16 @@ def test_20000_guard_clauses_are_bounded(load: Load) -> None:
     assert tree.transforms == ()
     assert any("stopped interpreting" in p.message for p in tree.problems)
     assert MAX_GUARD_CLAUSES < 20_000
+
+
+def test_the_same_text_on_both_sides_is_that_text(load: Load) -> None:
+    found = _children(load, """def child():
+    if len(sys.argv) > 3:
+        return 'laser'
+    return 'laser'
+
+
+def generate_launch_description():
+    return LaunchDescription([tf(child())])
+""")
+    assert found == [("laser", ())]

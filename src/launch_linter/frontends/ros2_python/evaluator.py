@@ -236,7 +236,8 @@ class Evaluator:
         rest of the body returns otherwise: launch actions of both, each under its side's
         condition, else unknown. Nothing returned is no action (an
         ``OpaqueFunction`` may return None)."""
-        if returned is rest:
+        if returned is rest or (isinstance(returned, (str, int, float)) and
+                                type(returned) is type(rest) and returned == rest):
             return rest
         both = [returned, rest]
         text = self.segment(node.test)
