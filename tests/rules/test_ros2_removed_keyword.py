@@ -207,3 +207,44 @@ def test_in_an_opaque_function_the_new_keyword_is_silent(tmp_path: Path) -> None
     path.write_text(OPAQUE.replace("node_executable", "executable"), encoding="utf-8")
     result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro="humble"))
     assert [d.rule for d in result.diagnostics] == []
+
+
+BRANCHED = """import os
+
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    if os.getenv('ROS_DISTRO') == 'eloquent':
+        node = Node(package='joy', node_executable='joy_node')
+    else:
+        node = Node(package='joy', executable='joy_node')
+    return LaunchDescription([
+        node,
+        Node(package='tf2_ros', executable='static_transform_publisher',
+             arguments=['0', '0', '0', '0', '0', '0', 'base', 'laser']),
+    ])
+"""
+
+
+def test_keywords_under_an_undecided_branch_are_no_evidence_of_foxy(tmp_path: Path) -> None:
+    # With no distribution given, a branch for Eloquent does not make the file Foxy's:
+    # the positional form stays "set --ros-distro to know" (info), not Foxy's only form.
+    path = tmp_path / "branched.launch.py"
+    path.write_text(BRANCHED, encoding="utf-8")
+    result = lint_paths([str(path)], LintOptions(package_paths=()))
+    assert [(d.rule, d.severity.value) for d in result.diagnostics
+            if d.rule in (RULE, "ros2_positional_args")] == [("ros2_positional_args", "info")]
+
+
+def test_keywords_under_a_branch_the_distribution_decides_are_judged(tmp_path: Path) -> None:
+    path = tmp_path / "branched.launch.py"
+    path.write_text(BRANCHED, encoding="utf-8")
+    for distro, expected in (("humble", []), ("eloquent", [])):
+        result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro=distro))
+        assert [d.rule for d in result.diagnostics if d.rule == RULE] == expected
+    galactic = BRANCHED.replace("'eloquent'", "'galactic'")
+    path.write_text(galactic, encoding="utf-8")
+    result = lint_paths([str(path)], LintOptions(package_paths=(), ros_distro="galactic"))
+    assert [(d.rule, d.line) for d in result.diagnostics if d.rule == RULE] == [(RULE, 9)]

@@ -8,10 +8,12 @@ the target distribution (`--ros-distro`, the `ros-distro` key, or `ROS_DISTRO`) 
 Galactic or later, at the first such keyword (the word to change), and names the keyword
 that replaced each one (`executable=`, `plugin=`, `name=`, `namespace=`). With no target
 given, these keywords are taken as evidence that the file targets Foxy and nothing is
-reported, unless a
-`static_transform_publisher` of the tree is given flags (`--frame-id` ...): the flags
-arrived in Humble, so no distribution runs the file, and the keyword is reported (rather
-than the flags as Foxy's mistake).
+reported, unless a `static_transform_publisher` of the tree is given flags (`--frame-id`
+...): the flags arrived in Humble, so no distribution runs the file, and the keyword is
+reported (rather than the flags as Foxy's mistake). Keywords under a Python `if` the
+linter cannot decide (a branch for Dashing or Eloquent) are not taken as that evidence;
+with a distribution given, such a branch is decided where it reads `ROS_DISTRO` and the
+keywords are judged otherwise.
 
 ## Why is this bad?
 launch_ros renamed the keywords in Foxy and removed the old ones afterwards: on Humble,

@@ -132,7 +132,11 @@ class Interpreter(Calls):
         distribution). Noted where the first one is written: the word that must change."""
         replaced = LEGACY_KEYWORDS.get(name, {})
         legacy = [k for k in replaced if k in kwargs]
-        if not legacy:
+        if not legacy or (self.branches and "ROS_DISTRO" not in self.environ):
+            # Under a Python condition the linter cannot decide (often the distribution
+            # itself: realsense-ros's rs_launch.py has a Dashing/Eloquent branch), the
+            # keywords are no evidence of the file's target; with the distribution given,
+            # the rule judges them.
             return
         written = [k for k in node.keywords if k.arg in legacy]
         at: ast.AST = node
