@@ -19,9 +19,6 @@ from launch_linter.frontends.ros2_actions import (
     Group,
     Include,
     LoadComponents,
-    Params,
-    ParamsFile,
-    ParamsUnknown,
     Predicate,
     PushNamespace,
     RunNode,
@@ -36,11 +33,10 @@ from launch_linter.frontends.ros2_actions import (
     shell_reads_as_words,
 )
 from launch_linter.frontends.ros2_python import moveit, xacro_call
-from launch_linter.frontends.ros2_python.calls import Calls
+from launch_linter.frontends.ros2_python.node_arguments import NodeArguments
 from launch_linter.frontends.ros2_python.values import (
     _LEGACY_NODE_KEYWORDS,
     LAUNCH_ROOTS,
-    LEGACY_KEYWORDS,
     ComponentVal,
     CondVal,
     ContextVal,
@@ -48,8 +44,6 @@ from launch_linter.frontends.ros2_python.values import (
     HandlerVal,
     LaunchDescriptionVal,
     LaunchObject,
-    LazyStr,
-    LinedDict,
     ModuleVal,
     SourceVal,
     SubsVal,
@@ -86,7 +80,7 @@ def _substitution(kind: str, arity: int) -> Callable[..., object]:
     return make
 
 
-class Interpreter(Calls):
+class Interpreter(NodeArguments):
     """The whole interpreter: the evaluator with the launch API."""
 
     # -- the launch library ---------------------------------------------------------------
@@ -125,27 +119,6 @@ class Interpreter(Calls):
             return self.launch_object(name, args, kwargs, node)
         result: object = handler(self, args, kwargs, node)
         return result
-
-    def legacy_keywords(self, name: str, kwargs: dict[str, object], node: ast.Call) -> None:
-        """Kept as a note: a Foxy-era keyword is evidence of a Foxy target and an error on
-        later distributions (the rule ros2_removed_keyword decides with the target
-        distribution). Noted where the first one is written: the word that must change."""
-        replaced = LEGACY_KEYWORDS.get(name, {})
-        legacy = [k for k in replaced if k in kwargs]
-        if not legacy or (self.branches and "ROS_DISTRO" not in self.environ):
-            # Under a Python condition the linter cannot decide (often the distribution
-            # itself: realsense-ros's rs_launch.py has a Dashing/Eloquent branch), the
-            # keywords are no evidence of the file's target; with the distribution given,
-            # the rule judges them.
-            return
-        written = [k for k in node.keywords if k.arg in legacy]
-        at: ast.AST = node
-        if written and not self.call_sites:
-            first = min(written, key=lambda k: (k.value.lineno, k.value.col_offset))
-            # ast.keyword has a position from Python 3.9 on; its value's on 3.8.
-            at = first if hasattr(first, "lineno") else first.value
-        self.problem("ros2_removed_keyword", at, f"{name} keyword(s) " + ", ".join(
-            f"{k}= (now {replaced[k]}=)" for k in legacy))
 
     def launch_object(self, name: str, args: list[object], kwargs: dict[str, object],
                       node: ast.Call) -> LaunchObject:
@@ -212,21 +185,6 @@ class Interpreter(Calls):
             may_rename=may_rename(_words(arguments, kwargs.get("ros_arguments"))),
             remappings=self.remappings(kwargs.get("remappings"), node),
         )
-
-    def remappings(self, value: object, node: ast.Call) -> tuple[tuple[Subs, Subs], ...] | None:
-        """``remappings=[(from, to), ...]`` as written; none given is no remapping; None
-        when it is not a list of pairs."""
-        if value is None:
-            return ()
-        if not isinstance(value, (list, tuple)):
-            return None
-        pairs: list[tuple[Subs, Subs]] = []
-        for item in value:
-            if not isinstance(item, (list, tuple)) or len(item) != 2:
-                return None
-            pairs.append((self.subs(item[0], node, "remapping"),
-                          self.subs(item[1], node, "remapping")))
-        return tuple(pairs)
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
                               node: ast.Call) -> object:
@@ -524,56 +482,6 @@ class Interpreter(Calls):
             parameters=self.parameters(kwargs.get("parameters"), node),
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),
         ))
-
-    def parameters(self, value: object, node: ast.Call
-                   ) -> tuple[Params | ParamsFile | ParamsUnknown, ...]:
-        if value is None:
-            return ()
-        if not isinstance(value, (list, tuple)):
-            return (ParamsUnknown(f"line {node.lineno}: parameters are not a list"),)
-        out: list[Params | ParamsFile | ParamsUnknown] = []
-        for entry in value:
-            if isinstance(entry, dict):
-                items: list[tuple[str, Subs]] = []
-                places: list[Where | None] = []
-                if not self.flatten(entry, "", items, node, places):
-                    out.append(ParamsUnknown(f"line {node.lineno}: a parameter name or value "
-                                             f"is unknown"))
-                out.append(Params(tuple(items), tuple(places)))
-            elif isinstance(entry, (str, SubsVal, LazyStr)):
-                out.append(ParamsFile(self.subs(entry, node, "parameter file")))
-            else:
-                reason = entry.describe() if isinstance(entry, Unknown) else (
-                    f"line {node.lineno}: parameters from a file")
-                out.append(ParamsUnknown(reason))
-        return tuple(out)
-
-    def flatten(self, entry: dict[object, object], prefix: str,
-                items: list[tuple[str, Subs]], node: ast.Call,
-                places: list[Where | None], place: Where | None = None) -> bool:
-        """``entry``'s parameters into ``items`` (nested names joined with ``.``), and
-        where each key is written into ``places`` (a nested key without a line of its own:
-        its parent's)."""
-        complete = True
-        for key, value in entry.items():
-            if not isinstance(key, str):
-                complete = False
-                continue
-            here = (entry.places.get(key, place) if isinstance(entry, LinedDict) else place)
-            if isinstance(value, dict):
-                complete = self.flatten(value, f"{prefix}{key}.", items, node, places,
-                                        here) and complete
-                continue
-            count = len(items)
-            if isinstance(value, bool):
-                items.append((prefix + key, literal(str(value).lower())))
-            elif isinstance(value, (int, float)):
-                items.append((prefix + key, literal(repr(value))))
-            elif isinstance(value, (str, SubsVal, LazyStr, Unknown)):
-                items.append((prefix + key, self.subs(value, node, "parameter")))
-            if len(items) > count:
-                places.append(here)
-        return complete
 
     def _container(self, args: list[object], kwargs: dict[str, object], node: ast.Call
                    ) -> object:
