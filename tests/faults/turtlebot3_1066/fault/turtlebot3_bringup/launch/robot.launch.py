@@ -9,15 +9,12 @@ from launch.actions import DeclareLaunchArgument
 from launch.actions import IncludeLaunchDescription
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration
-from launch.substitutions import PythonExpression
-from launch.substitutions import ThisLaunchFileDir
-from launch_ros.actions import Node
-from launch_ros.actions import PushRosNamespace
+from launch.substitutions import ThisLaunchFileDir, PythonExpression
+from launch_ros.actions import Node, PushRosNamespace
 
 
 def generate_launch_description():
     TURTLEBOT3_MODEL = 'burger'
-    ROS_DISTRO = 'humble'
     LDS_MODEL = 'LDS-02'
     LDS_LAUNCH_FILE = '/hlds_laser.launch.py'
 
@@ -25,21 +22,12 @@ def generate_launch_description():
 
     usb_port = LaunchConfiguration('usb_port', default='/dev/ttyACM0')
 
-    if ROS_DISTRO == 'humble':
-        tb3_param_dir = LaunchConfiguration(
-            'tb3_param_dir',
-            default=os.path.join(
-                get_package_share_directory('turtlebot3_bringup'),
-                'param',
-                ROS_DISTRO,
-                TURTLEBOT3_MODEL + '.yaml'))
-    else:
-        tb3_param_dir = LaunchConfiguration(
-            'tb3_param_dir',
-            default=os.path.join(
-                get_package_share_directory('turtlebot3_bringup'),
-                'param',
-                TURTLEBOT3_MODEL + '.yaml'))
+    tb3_param_dir = LaunchConfiguration(
+        'tb3_param_dir',
+        default=os.path.join(
+            get_package_share_directory('turtlebot3_bringup'),
+            'param',
+            TURTLEBOT3_MODEL + '.yaml'))
 
     if LDS_MODEL == 'LDS-01':
         lidar_pkg_dir = LaunchConfiguration(
@@ -89,9 +77,7 @@ def generate_launch_description():
 
         IncludeLaunchDescription(
             PythonLaunchDescriptionSource([lidar_pkg_dir, LDS_LAUNCH_FILE]),
-            launch_arguments={'port': '/dev/ttyUSB0',
-                              'frame_id': 'base_scan',
-                              'namespace': namespace}.items(),
+            launch_arguments={'port': '/dev/ttyUSB0', 'frame_id': 'base_scan'}.items(),
         ),
 
         Node(
