@@ -31,6 +31,7 @@ def _load() -> None:
         camera_streams_one_frame,
         component_default_frames,
         conflicting_transform,
+        controller_tf_unrouted,
         dup_name,
         dup_sig,
         duplicate_publisher,

@@ -37,6 +37,7 @@ ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
 """The ``filename``s of the simulators' ros2_control plugins."""
 PARAMETERS_ELEMENT = "parameters"
 MANAGER_NAME_ELEMENT = "controller_manager_name"
+REMAPPING_ELEMENT = "remapping"
 
 
 def simulated_controllers(plugin: NodeRecord, display: Callable[[str], str] | None = None
@@ -72,8 +73,23 @@ def simulated_controllers(plugin: NodeRecord, display: Callable[[str], str] | No
     for each in placed:
         params.extend(ros2_file_params(each.document, name, plugin.namespace))
     plugin = replace(plugin, unread=plugin.unread + tuple(unread))
-    manager = replace(plugin, params=tuple(params))
+    manager = replace(plugin, params=tuple(params), remappings=plugin_remappings(plugin))
     return plugin, controllers_of(manager, [each.document for each in placed], placed)
+
+
+def plugin_remappings(plugin: NodeRecord) -> tuple[tuple[str, str], ...]:
+    """The ``<ros><remapping>`` rules a ros2_control plugin hands to rcl with ``-r``
+    before it starts the controller manager (gz_ros2_control rolling e19b0ef
+    ``gz_ros2_control_plugin.cpp`` 336-346; gazebo_ros2_control the same), ``from:=to``
+    each, ``UNKNOWN_VALUE`` for a rule not read."""
+    rules: list[tuple[str, str]] = []
+    for key, value in plugin.params:
+        if key != REMAPPING_ELEMENT:
+            continue
+        source, colon, target = value.partition(":=")
+        rules.append((source.strip(), target.strip()) if colon and value != UNKNOWN_VALUE
+                     else (UNKNOWN_VALUE, UNKNOWN_VALUE))
+    return tuple(rules)
 
 
 __all__ = ["ROS2_CONTROL_PLUGINS", "simulated_controllers"]

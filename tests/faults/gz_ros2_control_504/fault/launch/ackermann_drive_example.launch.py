@@ -1,3 +1,5 @@
+import os
+
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
 from launch.actions import RegisterEventHandler
@@ -19,7 +21,7 @@ def generate_launch_description():
             PathJoinSubstitution([FindExecutable(name='xacro')]),
             ' ',
             PathJoinSubstitution(
-                [FindPackageShare('gz_ros2_control_demos'),
+                [os.path.dirname(__file__), '..',
                  'urdf', 'test_ackermann_drive.xacro.urdf']
             ),
         ]
@@ -27,7 +29,7 @@ def generate_launch_description():
     robot_description = {'robot_description': robot_description_content}
     robot_controllers = PathJoinSubstitution(
         [
-            FindPackageShare('gz_ros2_control_demos'),
+            os.path.dirname(__file__), '..',
             'config',
             'ackermann_drive_controller.yaml',
         ]
