@@ -39,6 +39,7 @@ def _load() -> None:
         frame_param_slash,
         frame_without_publisher,
         int_suffix,
+        joint_states_two_publishers,
         leading_slash,
         multiple_parents,
         name_implication,

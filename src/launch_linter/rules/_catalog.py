@@ -79,6 +79,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("param_value_refused", Category.LAUNCH),
     ("namespace_pushed_twice", Category.TF),
     ("controller_tf_unrouted", Category.TF),
+    ("joint_states_two_publishers", Category.TF),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -34,11 +34,12 @@ them) it gives that controller's node (ros2_control jazzy 9ffbf97
 controller_manager.cpp 1373-1383)."""
 
 
-def _expand(name: str, namespace: str, node_name: str) -> str:
-    """A topic name as rcl expands it for the node ``node_name`` in ``namespace``."""
+def _expand(name: str, namespace: str, node_name: str | None) -> str | None:
+    """A topic name as rcl expands it for the node ``node_name`` in ``namespace`` (None for
+    a private name of a node whose name is not known)."""
     base = namespace.rstrip("/")
     if name.startswith("~"):
-        return f"{base}/{node_name}{name[1:]}"
+        return None if not node_name else f"{base}/{node_name}{name[1:]}"
     if name.startswith("/"):
         return name
     return f"{base}/{name}"
@@ -47,32 +48,48 @@ def _expand(name: str, namespace: str, node_name: str) -> str:
 def own_topic(entry: Entry, node: NodeRecord) -> str | None:
     """The absolute topic a node sends its transforms on, None when its name or namespace
     is not known."""
-    if not entry.tf_topic.startswith("~") or node.namespace is None or not node.name:
+    if not entry.tf_topic.startswith("~"):
         return entry.tf_topic
+    if node.namespace is None or not node.name:
+        return None
     return _expand(entry.tf_topic, node.namespace, node.name)
+
+
+def remapped(topic: str, node: NodeRecord) -> str | None:
+    """The absolute topic that ``topic`` (as the node names it: relative, ``~/`` or
+    absolute) becomes under the remappings ``node`` is given: the first rule whose source
+    names it decides; None when a rule, the node's name or its namespace is not known."""
+    if node.remappings is None or node.namespace is None:
+        return None
+    expanded = _expand(topic, node.namespace, node.name)
+    if expanded is None:
+        return None
+    for source, target in node.remappings[:MAX_RULES]:
+        if source == UNKNOWN_VALUE:
+            return None
+        owner, colon, rest = source.partition(":")
+        if colon and not owner.startswith(("~", "/")):
+            if node.name is None:
+                return None  # a rule for one node: which one this is is not known
+            if owner != node.name:
+                continue
+            source = rest
+        matched = _expand(source, node.namespace, node.name)
+        if matched is None:
+            return None
+        if matched != expanded:
+            continue
+        return None if target == UNKNOWN_VALUE else _expand(target, node.namespace, node.name)
+    return expanded
 
 
 def route(topic: str, node: NodeRecord) -> str:
     """Whether the remappings ``node`` is given bring ``topic`` to a tf topic (``/tf``, or a
-    namespaced ``…/tf`` as multi-robot trees use): the first rule whose source is the topic
-    decides; none leaves it where it is."""
-    if node.remappings is None or node.namespace is None or not node.name:
+    namespaced ``…/tf`` as multi-robot trees use)."""
+    moved = remapped(topic, node)
+    if moved is None:
         return UNKNOWN
-    for source, target in node.remappings[:MAX_RULES]:
-        if source == UNKNOWN_VALUE:
-            return UNKNOWN
-        owner, colon, rest = source.partition(":")
-        if colon and not owner.startswith(("~", "/")):
-            if owner != node.name:
-                continue
-            source = rest
-        if _expand(source, node.namespace, node.name) != topic:
-            continue
-        if target == UNKNOWN_VALUE:
-            return UNKNOWN
-        moved = _expand(target, node.namespace, node.name)
-        return ROUTED if moved == TF_TOPIC or moved.endswith(TF_TOPIC) else LOST
-    return ROUTED if topic == TF_TOPIC else LOST
+    return ROUTED if moved == TF_TOPIC or moved.endswith(TF_TOPIC) else LOST
 
 
 def controller_routes(nodes: Sequence[NodeRecord],

@@ -13,7 +13,8 @@ master, gz_ros2_control humble on). Sources: ros-controls/gazebo_ros2_control
 ``gz_ros2_control/src/gz_ros2_control_plugin.cpp`` (rolling e19b0ef 295-335 and 438-446;
 humble 4cb90a2 ``ign_ros2_control_plugin.cpp`` 296-320). The files are read as a
 launched ``ros2_control_node``'s ``parameters=[...]``: the manager's section gives the
-controllers (``NAME.type``), each controller its own section.
+controllers (``NAME.type``), each controller its own section; the plugin's
+``<ros><remapping>`` rules (the plugin's record's ``remappings``) are the manager's too.
 """
 
 from __future__ import annotations
@@ -37,7 +38,6 @@ ROS2_CONTROL_PLUGINS = ("libgazebo_ros2_control.so", "gz_ros2_control-system",
 """The ``filename``s of the simulators' ros2_control plugins."""
 PARAMETERS_ELEMENT = "parameters"
 MANAGER_NAME_ELEMENT = "controller_manager_name"
-REMAPPING_ELEMENT = "remapping"
 
 
 def simulated_controllers(plugin: NodeRecord, display: Callable[[str], str] | None = None
@@ -73,23 +73,8 @@ def simulated_controllers(plugin: NodeRecord, display: Callable[[str], str] | No
     for each in placed:
         params.extend(ros2_file_params(each.document, name, plugin.namespace))
     plugin = replace(plugin, unread=plugin.unread + tuple(unread))
-    manager = replace(plugin, params=tuple(params), remappings=plugin_remappings(plugin))
+    manager = replace(plugin, params=tuple(params))
     return plugin, controllers_of(manager, [each.document for each in placed], placed)
-
-
-def plugin_remappings(plugin: NodeRecord) -> tuple[tuple[str, str], ...]:
-    """The ``<ros><remapping>`` rules a ros2_control plugin hands to rcl with ``-r``
-    before it starts the controller manager (gz_ros2_control rolling e19b0ef
-    ``gz_ros2_control_plugin.cpp`` 336-346; gazebo_ros2_control the same), ``from:=to``
-    each, ``UNKNOWN_VALUE`` for a rule not read."""
-    rules: list[tuple[str, str]] = []
-    for key, value in plugin.params:
-        if key != REMAPPING_ELEMENT:
-            continue
-        source, colon, target = value.partition(":=")
-        rules.append((source.strip(), target.strip()) if colon and value != UNKNOWN_VALUE
-                     else (UNKNOWN_VALUE, UNKNOWN_VALUE))
-    return tuple(rules)
 
 
 __all__ = ["ROS2_CONTROL_PLUGINS", "simulated_controllers"]
