@@ -100,3 +100,12 @@ def test_twenty_thousand_arguments_take_linear_time() -> None:
 def test_an_eval_spaced_otherwise_is_still_read() -> None:
     assert found('<launch><arg name="x" default="1"/>'
                  '<param name="a" value="$( eval x + 1)"/></launch>') == []
+
+
+def test_an_eval_written_with_a_character_reference_is_still_read() -> None:
+    # The bytes never spell "eval": the walk (made for the unread frame argument) must
+    # still read the values, which it skips only in a file that cannot hold an $(eval).
+    xml = ('<launch><arg name="x" default="1"/><arg name="base_frame" default="base"/>'
+           '<param name="a" value="$(&#101;val x + 1)"/></launch>')
+    assert found(xml) == [(1, "info", ())]
+    assert len(found(xml.replace("&#101;val", "xval"))) == 2
