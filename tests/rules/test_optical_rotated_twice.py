@@ -14,12 +14,21 @@ def joint(name: str, parent: str, child: str, rpy: str = "0 0 0", kind: str = "f
             f'<child link="{child}"/>\n<origin xyz="0 0 0" rpy="{rpy}"/></joint>')
 
 
-def camera(depth_rpy: str, optical_rpy: str, kind: str = "fixed") -> str:
+def kinect(stamped: str) -> str:
+    """A Gazebo depth camera on camera_link whose openni_kinect plugin stamps ``stamped``."""
+    return ('<gazebo reference="camera_link"><sensor type="depth" name="cam">'
+            '<plugin name="kinect" filename="libgazebo_ros_openni_kinect.so">'
+            f'<frameName>{stamped}</frameName></plugin></sensor></gazebo>')
+
+
+def camera(depth_rpy: str, optical_rpy: str, kind: str = "fixed",
+           stamped: str | None = "camera_depth_frame") -> str:
     return robot("\n".join([
         link("camera_link"), link("camera_depth_frame"), link("camera_depth_optical_frame"),
         joint("depth_joint", "camera_link", "camera_depth_frame", depth_rpy, kind),
         joint("optical_joint", "camera_depth_frame", "camera_depth_optical_frame",
               optical_rpy),
+        *([] if stamped is None else [kinect(stamped)]),
     ]))
 
 
@@ -29,8 +38,23 @@ def found(text: str) -> list[tuple[int, str, tuple[int, ...]]]:
 
 
 def test_optical_joint_under_a_frame_already_turned_optical_is_found_at_its_origin() -> None:
-    # Lines: 1 <robot>, 2-4 links, 5-6 depth_joint, 7-8 optical_joint.
+    # Lines: 1 <robot>, 2-4 links, 5-6 depth_joint, 7-8 optical_joint; the camera plugin
+    # stamps the depth frame, which the first rotation turned (create_autonomy#177).
     assert found(camera(OPTICAL_RPY, OPTICAL_RPY)) == [(8, "warning", (7, 5))]
+    assert found(camera(OPTICAL_RPY, OPTICAL_RPY, stamped="camera_depth_optical_frame")) == [
+        (8, "warning", (7, 5))]
+
+
+def test_twice_turned_frames_no_camera_of_the_files_stamps_are_info() -> None:
+    # navigation2's nav2_system_tests/urdf/turtlebot3_waffle.urdf: the description has no
+    # camera (the simulator's SDF model stamps camera_rgb_frame), and nothing else of the
+    # tree uses the twice-turned optical frame.
+    no_camera = lint_urdf(camera(OPTICAL_RPY, OPTICAL_RPY, stamped=None), RULE)
+    assert [(d.line, d.severity.value) for d in no_camera] == [(8, "info")]
+    assert "no camera of the linted files" in no_camera[0].message
+    # A camera stamping its body frame, which no rotation turned.
+    assert [level for _, level, _ in found(
+        camera(OPTICAL_RPY, OPTICAL_RPY, stamped="camera_link"))] == ["info"]
 
 
 def test_one_optical_rotation_is_silent() -> None:

@@ -7,8 +7,13 @@ parent by REP 103's optical rotation (roll -π/2, pitch 0, yaw -π/2; the quater
 turned by exactly the optical rotation from a frame above it, over fixed edges whose
 rotations are all known: the child ends up rotated twice, (0.5, -0.5, 0.5, 0.5) from
 the body frame, which is no optical orientation. The finding is at the second rotation,
-with the first as related place. Only a child whose name says `optical` is reported at
-warning; another child (a frame whose role the name does not tell) at info.
+with the first as related place. It is a warning when the child's name says `optical` and
+a camera of the linted files stamps its data in a frame the rotation turned (the child,
+or a frame between the two rotations): a Gazebo camera plugin of a description the tree
+reads, or a camera driver the knowledge base lists with its frame parameters. Otherwise
+it is info: a child whose name does not tell its role, or frames no camera of the linted
+files is known to use (a description whose camera the simulator's own model or an
+unknown driver stamps, a test asset), where the finding says so.
 
 ## Why is this bad?
 An optical frame (`*_optical_frame`, z forward, x right, y down) is the camera's body
@@ -74,7 +79,13 @@ from launch_linter.rules._tree import (
     same_rotation,
     written_edges,
 )
-from launch_linter.rules.camera_frame_not_optical import IDENTITY, OPTICAL, compose
+from launch_linter.rules.camera_frame_not_optical import (
+    IDENTITY,
+    OPTICAL,
+    camera_frames,
+    compose,
+    plugins_of,
+)
 
 ID = "optical_rotated_twice"
 CATEGORY = Category.TF
@@ -85,7 +96,8 @@ MAX_DEPTH = 64
 """Edges walked up from one edge: a chain longer than any robot's, and a bound on the
 work a hostile tree (a path of 20,000 frames) can ask per edge."""
 UNNAMED_LEVEL = Severity.INFO
-"""A child whose name does not say it is an optical frame."""
+"""A child whose name does not say it is an optical frame, or twice-turned frames no
+camera of the linted files is known to stamp its data in."""
 
 
 def _optical(edge: Edge) -> bool:
@@ -93,18 +105,22 @@ def _optical(edge: Edge) -> bool:
             and same_rotation(edge.rotation, OPTICAL, 1e-3))
 
 
-def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]) -> Edge | None:
+def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]
+                    ) -> tuple[Edge, list[str]] | None:
     """The edge above ``edge`` at whose child the optical rotation, composed down to
-    ``edge``'s parent over fixed edges of known rotation, is complete; None when the
+    ``edge``'s parent over fixed edges of known rotation, is complete, with the frames
+    that rotation turned (``edge``'s child up to the first edge's child); None when the
     frames above do not give exactly the optical rotation."""
     rotation: Quaternion = IDENTITY
     frame = edge.parent
     seen = {edge.child}
+    turned = [edge.child]
     first: Edge | None = None
     for _ in range(MAX_DEPTH):
         if frame in seen:
             return None
         seen.add(frame)
+        turned.append(frame)
         above = next((e for e in parents.get(frame, ()) if coexist(e, edge)), None)
         if above is None or above.dynamic or above.rotation is None:
             return None
@@ -112,9 +128,25 @@ def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]) -> Edge | None:
         if first is None and _optical(above):
             first = above
         if same_rotation(rotation, OPTICAL, 1e-3):
-            return first or above
+            return first or above, turned
         frame = above.parent
     return None
+
+
+def _stamped(context: RuleContext) -> frozenset[str]:
+    """The frames the cameras of the linted files stamp their data with: the Gazebo camera
+    plugins of the descriptions the tree reads and the known camera drivers it starts."""
+    cameras = [plugin for plugin, _ in plugins_of(context)] + list(context.tree.nodes)
+    return frozenset(frame.lstrip("/") for node in cameras
+                     for frame, _ in camera_frames(context, node))
+
+
+def _used(turned: list[str], stamped: frozenset[str]) -> bool:
+    """Whether a camera stamps one of the ``turned`` frames; a ``prefix/`` on either side
+    is not read as another frame (plugins resolve a ``tf_prefix``, descriptions prefix
+    their links with a namespace)."""
+    return any(frame == name or frame.endswith("/" + name) or name.endswith("/" + frame)
+               for frame in stamped for name in (t.lstrip("/") for t in turned))
 
 
 def _at_origin(edge: Edge, finding: Finding) -> Finding:
@@ -134,12 +166,14 @@ def check(context: RuleContext) -> Iterator[Finding]:
     parents: dict[str, list[Edge]] = {}
     for edge in edges:
         parents.setdefault(edge.child, []).append(edge)
+    stamped: frozenset[str] | None = None
     for edge in edges:
         if not _optical(edge):
             continue
-        first = _first_rotation(edge, parents)
-        if first is None:
+        found = _first_rotation(edge, parents)
+        if found is None:
             continue
+        first, turned = found
         finding = _at_origin(edge, finding_on(
             edge,
             f"'{edge.child}' is turned by REP 103's optical rotation (rpy -pi/2 0 -pi/2) "
@@ -150,4 +184,14 @@ def check(context: RuleContext) -> Iterator[Finding]:
             f"its optical frame",
             related=(first,),
         ))
-        yield finding if "optical" in edge.child else replace(finding, severity=UNNAMED_LEVEL)
+        if "optical" not in edge.child:
+            yield replace(finding, severity=UNNAMED_LEVEL)
+            continue
+        stamped = _stamped(context) if stamped is None else stamped
+        if _used(turned, stamped):
+            yield finding
+        else:
+            yield replace(finding, severity=UNNAMED_LEVEL, message=(
+                f"{finding.message} (no camera of the linted files is known to stamp its "
+                f"data in '{edge.child}' or the frames above it that the rotation turned: "
+                f"info)"))
