@@ -212,9 +212,7 @@ def camera_in_link(node: NodeRecord) -> Quaternion | None:
     return rotation
 
 
-def camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, str]]:
-    """The frames ``node`` (a Gazebo plugin or a driver the knowledge base lists with
-    ``camera_frames``) stamps its camera data with, each with the parameter naming it."""
+def _camera_frames(context: RuleContext, node: NodeRecord) -> list[tuple[str, str]]:
     entry = entry_of(context, node)
     if entry is None or not entry.camera_frames:
         return []
@@ -294,7 +292,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             # unknown when nothing ties the link's tf frame to where Gazebo has it.
             body = None
         camera = camera_in_link(node)
-        for frame, param in camera_frames(context, node):
+        for frame, param in _camera_frames(context, node):
             frame = frame.lstrip("/")
             rotation = (None if body is None or camera is None
                         else relative_rotation(body, frame, parents))

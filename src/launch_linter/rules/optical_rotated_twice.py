@@ -8,12 +8,14 @@ turned by exactly the optical rotation from a frame above it, over fixed edges w
 rotations are all known: the child ends up rotated twice, (0.5, -0.5, 0.5, 0.5) from
 the body frame, which is no optical orientation. The finding is at the second rotation,
 with the first as related place. It is a warning when the child's name says `optical` and
-a camera of the linted files stamps its data in a frame the rotation turned (the child,
-or a frame between the two rotations): a Gazebo camera plugin of a description the tree
-reads, or a camera driver the knowledge base lists with its frame parameters. Otherwise
-it is info: a child whose name does not tell its role, or frames no camera of the linted
-files is known to use (a description whose camera the simulator's own model or an
-unknown driver stamps, a test asset), where the finding says so.
+a simulated camera of the description renders from the frame the first rotation turns
+(a Gazebo camera sensor whose `<gazebo reference>` link is that frame, or a frame fixed
+to it without rotation, and whose `<pose>` does not turn it): the camera then looks
+along that frame's x axis, and the optical frame is provably turned twice from it.
+Otherwise it is info, saying so: a child whose name does not tell its role, or no camera
+of the files renders from there. A camera mounted to look along its parent's z axis (a
+wrist or tool camera) is turned from its mount by exactly the optical rotation, so two
+such rotations in a row are not wrong by themselves.
 
 ## Why is this bad?
 An optical frame (`*_optical_frame`, z forward, x right, y down) is the camera's body
@@ -82,7 +84,8 @@ from launch_linter.rules._tree import (
 from launch_linter.rules.camera_frame_not_optical import (
     IDENTITY,
     OPTICAL,
-    camera_frames,
+    SENSOR_LINK,
+    camera_in_link,
     compose,
     plugins_of,
 )
@@ -96,8 +99,8 @@ MAX_DEPTH = 64
 """Edges walked up from one edge: a chain longer than any robot's, and a bound on the
 work a hostile tree (a path of 20,000 frames) can ask per edge."""
 UNNAMED_LEVEL = Severity.INFO
-"""A child whose name does not say it is an optical frame, or twice-turned frames no
-camera of the linted files is known to stamp its data in."""
+"""A child whose name does not say it is an optical frame, or a first rotation no
+simulated camera is known to render along (it may be the camera's mount)."""
 
 
 def _optical(edge: Edge) -> bool:
@@ -105,22 +108,18 @@ def _optical(edge: Edge) -> bool:
             and same_rotation(edge.rotation, OPTICAL, 1e-3))
 
 
-def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]
-                    ) -> tuple[Edge, list[str]] | None:
+def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]) -> Edge | None:
     """The edge above ``edge`` at whose child the optical rotation, composed down to
-    ``edge``'s parent over fixed edges of known rotation, is complete, with the frames
-    that rotation turned (``edge``'s child up to the first edge's child); None when the
+    ``edge``'s parent over fixed edges of known rotation, is complete; None when the
     frames above do not give exactly the optical rotation."""
     rotation: Quaternion = IDENTITY
     frame = edge.parent
     seen = {edge.child}
-    turned = [edge.child]
     first: Edge | None = None
     for _ in range(MAX_DEPTH):
         if frame in seen:
             return None
         seen.add(frame)
-        turned.append(frame)
         above = next((e for e in parents.get(frame, ()) if coexist(e, edge)), None)
         if above is None or above.dynamic or above.rotation is None:
             return None
@@ -128,25 +127,41 @@ def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]
         if first is None and _optical(above):
             first = above
         if same_rotation(rotation, OPTICAL, 1e-3):
-            return first or above, turned
+            return first or above
         frame = above.parent
     return None
 
 
-def _stamped(context: RuleContext) -> frozenset[str]:
-    """The frames the cameras of the linted files stamp their data with: the Gazebo camera
-    plugins of the descriptions the tree reads and the known camera drivers it starts."""
-    cameras = [plugin for plugin, _ in plugins_of(context)] + list(context.tree.nodes)
-    return frozenset(frame.lstrip("/") for node in cameras
-                     for frame, _ in camera_frames(context, node))
+def _rendering_links(context: RuleContext) -> frozenset[str]:
+    """The links simulated cameras render along: each Gazebo camera plugin's sensor link
+    (``<gazebo reference>``) whose sensor and camera ``<pose>`` leave the view along the
+    link's x axis."""
+    links = set()
+    for plugin, _ in plugins_of(context):
+        link = plugin.given(SENSOR_LINK)
+        turn = camera_in_link(plugin)
+        if link is not None and turn is not None and same_rotation(turn, IDENTITY, 1e-3):
+            links.add(link.lstrip("/"))
+    return frozenset(links)
 
 
-def _used(turned: list[str], stamped: frozenset[str]) -> bool:
-    """Whether a camera stamps one of the ``turned`` frames; a ``prefix/`` on either side
-    is not read as another frame (plugins resolve a ``tf_prefix``, descriptions prefix
-    their links with a namespace)."""
-    return any(frame == name or frame.endswith("/" + name) or name.endswith("/" + frame)
-               for frame in stamped for name in (t.lstrip("/") for t in turned))
+def _renders_from(frame: str, rendering: frozenset[str], edge: Edge,
+                  parents: dict[str, list[Edge]]) -> bool:
+    """Whether a camera renders along ``frame``: its sensor link is ``frame`` or a frame
+    above it joined by fixed edges without rotation."""
+    seen: set[str] = set()
+    for _ in range(MAX_DEPTH):
+        if frame in rendering:
+            return True
+        if frame in seen:
+            return False
+        seen.add(frame)
+        above = next((e for e in parents.get(frame, ()) if coexist(e, edge)), None)
+        if (above is None or above.dynamic or above.rotation is None
+                or not same_rotation(above.rotation, IDENTITY, 1e-3)):
+            return False
+        frame = above.parent
+    return False
 
 
 def _at_origin(edge: Edge, finding: Finding) -> Finding:
@@ -166,14 +181,13 @@ def check(context: RuleContext) -> Iterator[Finding]:
     parents: dict[str, list[Edge]] = {}
     for edge in edges:
         parents.setdefault(edge.child, []).append(edge)
-    stamped: frozenset[str] | None = None
+    rendering: frozenset[str] | None = None
     for edge in edges:
         if not _optical(edge):
             continue
-        found = _first_rotation(edge, parents)
-        if found is None:
+        first = _first_rotation(edge, parents)
+        if first is None:
             continue
-        first, turned = found
         finding = _at_origin(edge, finding_on(
             edge,
             f"'{edge.child}' is turned by REP 103's optical rotation (rpy -pi/2 0 -pi/2) "
@@ -187,11 +201,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
         if "optical" not in edge.child:
             yield replace(finding, severity=UNNAMED_LEVEL)
             continue
-        stamped = _stamped(context) if stamped is None else stamped
-        if _used(turned, stamped):
+        rendering = _rendering_links(context) if rendering is None else rendering
+        if _renders_from(first.parent, rendering, edge, parents):
             yield finding
         else:
             yield replace(finding, severity=UNNAMED_LEVEL, message=(
-                f"{finding.message} (no camera of the linted files is known to stamp its "
-                f"data in '{edge.child}' or the frames above it that the rotation turned: "
-                f"info)"))
+                f"{finding.message} (no simulated camera of the files is known to render "
+                f"along '{first.parent}': the first rotation may be the camera's mount, "
+                f"a camera looking along its mount's z axis is turned exactly so: info)"))
