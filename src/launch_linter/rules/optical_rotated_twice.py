@@ -63,7 +63,9 @@ walk up: nothing is said. The first rotation is found only when it is exactly th
 optical rotation over the edges between (a camera mounted tilted and then turned to
 the optical orientation in one joint is not recognised). A camera whose images are
 stamped with a frame the optical rotation turned twice is also `camera_frame_not_optical`'s
-when a simulator plugin stamps it. Judged in docs/evaluation/camera_frames.md.
+when a simulator plugin stamps it. A real camera (a driver, not a simulated sensor) never
+proves the rendering direction, so its description's double turn stays info. Judged in
+docs/evaluation/camera_frames.md and docs/evaluation/samples-round7.md.
 """
 
 from __future__ import annotations
