@@ -334,7 +334,7 @@ class Ros2Loader(Ros2Runner):
                     reads_configuration(value_subs, name), followed))
         if not followed and action.args_known:
             path = text_of(self._resolve(action.path, scope, frame, action.where))
-            for started in started_by(path, 2, given):
+            for started in started_by(path, 2, given, self.knowledge):
                 self._started(started, scope, frame, action.where)
 
     def _started(self, started: Started, scope: _Scope, frame: _Frame, where: Where) -> None:

@@ -9,6 +9,8 @@ from typing import Any
 from launch_linter.model.record import Record, _set
 
 _COMMIT = re.compile(r"^[0-9a-f]{40}$")
+MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
+"""The most a knowledge file may hold, bundled or a user's."""
 
 
 class KnowledgeError(ValueError):
