@@ -21,7 +21,7 @@ from launch_linter.knowledge import (
     load,
     parse,
 )
-from launch_linter.knowledge.programs import CLOCK_ROLES, ClockFact, Installed
+from launch_linter.knowledge.programs import CLOCK_ROLES, ClockFact, Installed, NodeNames
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
 from launch_linter.workspace.config import load_knowledge_file
 
@@ -47,6 +47,19 @@ def user_file(tmp_path: Path, *entries: dict[str, object], file_format: int = 2)
     path.write_text(json.dumps({"format": file_format, "entries": list(entries)},
                                separators=(",", ":")))
     return str(path)
+
+
+def test_every_node_names_entry_names_its_program_and_cites_its_source() -> None:
+    facts = [f for f in load(str(bundled_path(PROGRAMS_FILE))).programs.facts
+             if isinstance(f, NodeNames)]
+    assert {(f.package, e) for f in facts for e in f.executables} >= {
+        ("mavros", "mavros_node"), ("tf2_ros", "static_transform_publisher"),
+        ("lio_sam", "lio_sam_imuPreintegration")}
+    for fact in facts:
+        assert fact.names and fact.executables and fact.ros == (2,), fact.id
+        assert fact.sources, fact.id
+        for source in fact.sources:
+            assert len(source.commit) == 40 and source.file and source.lines, fact.id
 
 
 def test_the_bundled_facts_name_known_distributions_once() -> None:
@@ -191,6 +204,12 @@ def test_a_file_of_format_1_keeps_loading_without_the_new_kinds(tmp_path: Path) 
     (clock_entry("x", "p", "ticks", executables=["a"]), "clock must be one of"),
     (clock_entry("x", "p", "none"), "executables or launch_files"),
     (clock_entry("x", "p", "none", launch_files=[7]), "launch_files"),  # type: ignore[list-item]
+    ({**clock_entry("x", "p", "none"), "kind": "node_names", "names": ["n"]},
+     "match.executables and names"),
+    ({**clock_entry("x", "p", "none", executables=["e"]), "kind": "node_names"},
+     "match.executables and names"),
+    ({**clock_entry("x", "p", "none", executables=["e"]), "kind": "node_names",
+      "names": ["n", ""]}, r"names\[1\] must be a non-empty string"),
     ({**clock_entry("x", "p", "none", executables=["a"]), "ros": [3]}, "ros"),
 ])
 def test_a_malformed_program_entry_is_refused_with_its_fault(entry: dict[str, object],

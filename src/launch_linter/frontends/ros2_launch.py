@@ -23,7 +23,7 @@ from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.known_launch import Started, started_by
-from launch_linter.frontends.node_names import default_node_names, unmatched_default_keys
+from launch_linter.frontends.node_names import unmatched_default_keys
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     EMBEDDED_COSTMAPS,
@@ -247,7 +247,8 @@ class Ros2Loader(Ros2Runner):
         # A controller manager without a name reads its file by its default name.
         section = (CONTROLLER_MANAGER_NAME if name is None and package == "controller_manager"
                    and executable == "ros2_control_node" else name)
-        defaults = default_node_names(package, executable) if name is None else ()
+        defaults = (self.knowledge.node_names(package, executable or "")
+                    if name is None else ())
         given = self._node_params(action.parameters, scope, frame, where, section,
                                   known_namespace, defaults)
         described = False

@@ -30,6 +30,7 @@ from launch_linter.knowledge.programs import (
     PROGRAM_KINDS,
     ClockFact,
     Installed,
+    ProgramFact,
     Programs,
     parse_program_entry,
 )
@@ -52,7 +53,8 @@ BUNDLED_FILES = (DATA_FILE, PROGRAMS_FILE, VALUES_FILE)
 SECTIONS = ("entries", "values", "launch_files")
 """The lists a knowledge file holds (format 1: ``entries`` only)."""
 KINDS = ("node", "gazebo_plugin", "controller")
-"""The kinds of format 1; format 2 adds ``installed`` and ``clock`` (:mod:`.programs`)."""
+"""The kinds of format 1; format 2 adds ``installed``, ``clock`` and ``node_names``
+(:mod:`.programs`)."""
 ROLES = ("localization", "odometry", "sensor", "robot")
 ROS1_DISTROS = ("kinetic", "lunar", "melodic", "noetic")
 """ROS 1 distributions in release order (``ros1_tf2_from`` names one)."""
@@ -250,7 +252,7 @@ class KnowledgeBase:
     parameter values and known launch files (:mod:`.values`)."""
 
     def __init__(self, entries: Sequence[Entry],
-                 facts: Sequence[Installed | ClockFact] = (),
+                 facts: Sequence[ProgramFact] = (),
                  values: ValueKnowledge | None = None) -> None:
         self.entries = tuple(entries)
         self.programs: Programs = Programs(tuple(facts))
@@ -291,6 +293,11 @@ class KnowledgeBase:
     def clock_launch(self, package: str, launch: str, ros: int = 2) -> ClockFact | None:
         """What a package's launch file (its path in the share folder) does with /clock."""
         return self.programs.clock_launch(package, launch, ros)
+
+    def node_names(self, package: str, executable: str, ros: int = 2) -> tuple[str, ...]:
+        """The names of the nodes a program runs when the launch file names none (empty:
+        not known)."""
+        return self.programs.node_names(package, executable, ros)
 
     def ids(self) -> set[str]:
         """The ids of every entry and fact (one name space: an id replaces its own)."""
@@ -356,7 +363,7 @@ def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:
 
 
 def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
-                ) -> Entry | Installed | ClockFact:
+                ) -> Entry | ProgramFact:
     """One entry of a file of ``file_format``, checked against it; :class:`KnowledgeError`
     names the fault."""
     if not isinstance(data, dict):
@@ -366,7 +373,7 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
     kind = _text(data.get("kind"), f"{where}.kind")
     kinds = KINDS + (PROGRAM_KINDS if file_format >= 2 else ())
     if kind not in kinds:
-        later = " (format 2 adds installed, clock)" if kind in PROGRAM_KINDS else ""
+        later = " (format 2 adds installed, clock, node_names)" if kind in PROGRAM_KINDS else ""
         raise KnowledgeError(f"{where}.kind must be one of {', '.join(kinds)}{later}")
     ros = data.get("ros")
     if not isinstance(ros, list) or not ros or any(v not in (1, 2) for v in ros):
@@ -507,7 +514,7 @@ def parse(data: Any, origin: str) -> KnowledgeBase:
                 items.append(readers[name](item, f"{origin}: {name}[{index}]"))
             except KnowledgeError as exc:
                 raise EntryError(str(exc), name, index) from None
-    parsed: list[Entry | Installed | ClockFact] = read["entries"]
+    parsed: list[Entry | ProgramFact] = read["entries"]
     facts = ValueKnowledge(tuple(read["values"]), tuple(read["launch_files"]))
     # Counted once: a file of tens of thousands of entries is checked in linear time.
     ids = Counter([e.id for e in parsed] + [f.id for f in facts.values]
