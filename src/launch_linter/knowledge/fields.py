@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from launch_linter.model import distro
 from launch_linter.model.record import Record, _set
 
 _COMMIT = re.compile(r"^[0-9a-f]{40}$")
@@ -76,3 +77,44 @@ def _sources(value: Any, where: str) -> tuple[Source, ...]:
     if not isinstance(value, list) or not value:
         raise KnowledgeError(f"{where} must list where the entry was read")
     return tuple(_source(item, f"{where}[{i}]") for i, item in enumerate(value))
+
+
+def _distributions(data: dict[str, Any], ros: tuple[int, ...], where: str
+                   ) -> tuple[str, ...]:
+    """The distributions an entry holds for: ``distros`` as listed (a program that went
+    and came back), or the run of the release order (``model.distro``) from ``since`` to
+    ``until``, either one open: a distribution added to the order joins every open run
+    without an edit of the entries. Names outside the entry's ROS versions are faults."""
+    orders = {1: distro.ROS1_DISTROS, 2: distro.ROS2_DISTROS}
+    known = tuple(name for version in ros for name in orders.get(version, ()))
+    since, until = data.get("since"), data.get("until")
+    if "distros" in data:
+        if since is not None or until is not None:
+            raise KnowledgeError(f"{where} gives distros or since/until, not both")
+        listed = _texts(data.get("distros"), f"{where}.distros")
+        versions = "/".join(map(str, ros))
+        if not listed:
+            raise KnowledgeError(f"{where}.distros must list distributions of ROS "
+                                 f"{versions} ({', '.join(known)})")
+        for name in listed:
+            if name not in known:
+                raise KnowledgeError(f"{where}.distros names {name!r}, not a distribution "
+                                     f"of ROS {versions} ({', '.join(known)})")
+        return listed
+    if since is None and until is None:
+        raise KnowledgeError(f"{where} needs distros, or since and/or until")
+    if len(ros) != 1:
+        raise KnowledgeError(f"{where}: since/until need one ROS version in ros")
+    order = orders[ros[0]]
+    bounds = []
+    for key, value, default in (("since", since, 0), ("until", until, len(order) - 1)):
+        if value is None:
+            bounds.append(default)
+        elif value in order:
+            bounds.append(order.index(value))
+        else:
+            raise KnowledgeError(f"{where}.{key} must be a distribution of ROS {ros[0]} "
+                                 f"({', '.join(order)})")
+    if bounds[0] > bounds[1]:
+        raise KnowledgeError(f"{where}.since comes after its until")
+    return order[bounds[0]:bounds[1] + 1]

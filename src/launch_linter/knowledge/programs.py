@@ -28,8 +28,14 @@ from __future__ import annotations
 import typing
 from typing import Any
 
-from launch_linter.knowledge.fields import KnowledgeError, Source, _sources, _text, _texts
-from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+from launch_linter.knowledge.fields import (
+    KnowledgeError,
+    Source,
+    _distributions,
+    _sources,
+    _text,
+    _texts,
+)
 
 PROGRAM_KINDS = ("installed", "clock", "node_names")
 """Entry kinds of format 2 that describe programs (format 1 knows none of them)."""
@@ -110,12 +116,7 @@ def parse_program_entry(data: dict[str, Any], kind: str, ros: tuple[int, ...], w
         raise KnowledgeError(f"{where}.match must be an object")
     package = _text(match.get("package"), f"{where}.match.package")
     if kind == "installed":
-        distros = _texts(data.get("distros"), f"{where}.distros")
-        known = (ROS1_DISTROS if 1 in ros else ()) + (ROS2_DISTROS if 2 in ros else ())
-        unknown = [d for d in distros if d not in known]
-        if not distros or unknown:
-            raise KnowledgeError(f"{where}.distros must list distributions of ROS "
-                                 f"{'/'.join(map(str, ros))} ({', '.join(known)})")
+        distros = _distributions(data, ros, where)
         executables = _texts(data.get("installs"), f"{where}.installs")
         if not executables:
             raise KnowledgeError(f"{where}.installs must list the executables installed")

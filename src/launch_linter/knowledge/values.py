@@ -23,8 +23,13 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from launch_linter.knowledge.fields import KnowledgeError, Source, _sources, _text
-from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+from launch_linter.knowledge.fields import (
+    KnowledgeError,
+    Source,
+    _distributions,
+    _sources,
+    _text,
+)
 
 OUTCOMES = ("fails", "falls_back")
 
@@ -129,12 +134,7 @@ def parse_value(data: Any, where: str) -> ValueFact:
     if not controller and not (packages and executables) and not plugins:
         raise KnowledgeError(f"{where}.match needs package and executables, plugins, or "
                              f"controller: true")
-    known = ROS1_DISTROS if ros == 1 else ROS2_DISTROS
-    distros = _texts(data.get("distros"), f"{where}.distros", empty=False)
-    unknown = [d for d in distros if d not in known]
-    if unknown:
-        raise KnowledgeError(f"{where}.distros names {unknown[0]!r}, not a ROS {ros} "
-                             f"distribution")
+    distros = _distributions(data, (ros,), where)
     outcome = _text(data.get("otherwise"), f"{where}.otherwise")
     if outcome not in OUTCOMES:
         raise KnowledgeError(f"{where}.otherwise must be one of {', '.join(OUTCOMES)}")
