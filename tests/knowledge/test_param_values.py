@@ -77,6 +77,8 @@ def _document(**changes: Any) -> dict[str, Any]:
 @pytest.mark.parametrize("changes", [
     {"distros": ["noetic"]}, {"otherwise": "maybe"}, {"sources": []},
     {"otherwise": "falls_back"}, {"match": {"package": "p"}}, {"accepts": "a"},
+    # Without accepts, a closed fact would refuse every value: it must be written.
+    {"accepts": None},
 ])
 def test_the_format_refuses_a_bad_fact(changes: dict[str, Any]) -> None:
     with pytest.raises(KnowledgeError):
@@ -86,6 +88,20 @@ def test_the_format_refuses_a_bad_fact(changes: dict[str, Any]) -> None:
 def test_a_good_fact_parses() -> None:
     parsed = parse(_document(), "test").values
     assert parsed.values[0].refused("b") and not parsed.values[0].refused("a")
+
+
+def test_optional_lists_read_null_as_absent_and_launch_paths_are_required() -> None:
+    parsed = parse(_document(refuses=None), "test").values
+    assert parsed.values[0].refuses == ()
+    launch = {"id": "l", "ros": 2, "package": "p", "launch": ["a.launch.py"],
+              "parameter_file_argument": "params_file",
+              "nodes": [{"package": "p", "executable": "e", "name": "n"}],
+              "sources": _document()["values"][0]["sources"]}
+    assert parse({"format": 2, "launch_files": [launch]}, "t").values.launch_file(
+        "p", "a.launch.py") is not None
+    for paths in ([], None):
+        with pytest.raises(KnowledgeError, match=r"launch_files\[0\] \(l\)\.launch must be"):
+            parse({"format": 2, "launch_files": [{**launch, "launch": paths}]}, "t")
 
 
 def test_values_need_format_2() -> None:

@@ -54,11 +54,18 @@ def _text(value: Any, where: str) -> str:
     return value
 
 
-def _texts(value: Any, where: str) -> tuple[str, ...]:
-    if value is None:
+def _texts(value: Any, where: str, required: bool = False, non_empty: bool = False
+           ) -> tuple[str, ...]:
+    """A list of non-empty strings. Absent (None) reads as empty unless ``required``: a
+    field whose absence would change what the entry means (a value fact's ``accepts``:
+    without it a closed fact would refuse every value) must be written. ``non_empty``: an
+    empty list is a fault too (a launch fact's ``launch`` paths)."""
+    if value is None and not required:
         return ()
     if not isinstance(value, list):
         raise KnowledgeError(f"{where} must be a list of strings")
+    if non_empty and not value:
+        raise KnowledgeError(f"{where} must be a non-empty list of strings")
     return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
 
 

@@ -29,6 +29,7 @@ from launch_linter.knowledge.fields import (
     _distributions,
     _sources,
     _text,
+    _texts,
 )
 
 OUTCOMES = ("fails", "falls_back")
@@ -105,12 +106,6 @@ class LaunchFact:
         self.sources = sources
 
 
-def _texts(value: Any, where: str, empty: bool = True) -> tuple[str, ...]:
-    if not isinstance(value, list) or (not empty and not value):
-        raise KnowledgeError(f"{where} must be a list of strings")
-    return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
-
-
 def _ros(value: Any, where: str) -> int:
     if value not in (1, 2):
         raise KnowledgeError(f"{where} must be 1 or 2")
@@ -129,8 +124,8 @@ def parse_value(data: Any, where: str) -> ValueFact:
     controller = match.get("controller") is True
     package = match.get("package")
     packages = () if package is None else (_text(package, f"{where}.match.package"),)
-    executables = _texts(match.get("executables", []), f"{where}.match.executables")
-    plugins = _texts(match.get("plugins", []), f"{where}.match.plugins")
+    executables = _texts(match.get("executables"), f"{where}.match.executables")
+    plugins = _texts(match.get("plugins"), f"{where}.match.plugins")
     if not controller and not (packages and executables) and not plugins:
         raise KnowledgeError(f"{where}.match needs package and executables, plugins, or "
                              f"controller: true")
@@ -146,9 +141,10 @@ def parse_value(data: Any, where: str) -> ValueFact:
     return ValueFact(
         fact_id, ros, packages, executables, plugins, controller,
         _text(data.get("parameter"), f"{where}.parameter"), distros,
-        _texts(data.get("accepts"), f"{where}.accepts"), data.get("closed") is True,
+        _texts(data.get("accepts"), f"{where}.accepts", required=True),
+        data.get("closed") is True,
         None if owned is None else _text(owned, f"{where}.owned_prefix"),
-        _texts(data.get("refuses", []), f"{where}.refuses"), outcome,
+        _texts(data.get("refuses"), f"{where}.refuses"), outcome,
         None if fallback is None else _text(fallback, f"{where}.fallback"),
         _text(data.get("effect"), f"{where}.effect"),
         _sources(data.get("sources"), f"{where}.sources"))
@@ -167,7 +163,7 @@ def parse_launch(data: Any, where: str) -> LaunchFact:
     return LaunchFact(
         fact_id, _ros(data.get("ros"), f"{where}.ros"),
         _text(data.get("package"), f"{where}.package"),
-        _texts(data.get("launch"), f"{where}.launch", empty=False),
+        _texts(data.get("launch"), f"{where}.launch", required=True, non_empty=True),
         _text(data.get("parameter_file_argument"), f"{where}.parameter_file_argument"),
         None if namespace is None else _text(namespace, f"{where}.namespace_argument"),
         None if unless is None else _text(unless, f"{where}.unless_argument"),
