@@ -83,6 +83,7 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.knowledge import bundled
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import (
     FileStatus,
@@ -152,6 +153,7 @@ class Ros2Loader(Ros2Runner):
 
     def __init__(self, options: LoadOptions) -> None:
         super().__init__(options)
+        self.knowledge = bundled() if options.knowledge is None else options.knowledge
         self.unmatched_param_files: list[UnmatchedParamFile] = []
         self.reached_param_files: set[str] = set()
         """Parameter files that some node of the tree takes (or may take) a section of."""

@@ -41,7 +41,6 @@ from launch_linter.frontends.ros2_include_args import ArgumentWatch
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
-from launch_linter.knowledge import bundled
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
@@ -189,7 +188,6 @@ class Ros2Runner:
 
     def __init__(self, options: LoadOptions) -> None:
         self.options = options
-        self.knowledge = bundled() if options.knowledge is None else options.knowledge
         self.transforms: list[StaticTransform] = []
         self.problems: list[Problem] = []
         self.files: list[str] = []

@@ -23,9 +23,9 @@ from collections import Counter
 from typing import Any, Callable, Mapping, Sequence
 
 from launch_linter.knowledge.fields import MAX_KNOWLEDGE_BYTES as MAX_KNOWLEDGE_BYTES
+from launch_linter.knowledge.fields import EntryError, _sources, _text, _texts, item_line
 from launch_linter.knowledge.fields import KnowledgeError as KnowledgeError
 from launch_linter.knowledge.fields import Source as Source
-from launch_linter.knowledge.fields import _sources, _text, _texts
 from launch_linter.knowledge.programs import (
     PROGRAM_KINDS,
     ClockFact,
@@ -472,15 +472,6 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
     )
 
 
-class EntryError(KnowledgeError):
-    """A fault of one item of a knowledge file: ``section``'s item ``index``."""
-
-    def __init__(self, message: str, section: str, index: int) -> None:
-        super().__init__(message)
-        self.section = section
-        self.index = index
-
-
 def _section(data: dict[str, Any], name: str, origin: str, file_format: int) -> list[Any]:
     items = data.get(name)
     if items is None and (name != "entries" or file_format >= 2):
@@ -556,43 +547,6 @@ def from_bytes(raw: bytes, origin: str) -> KnowledgeBase:
         if line is not None and message.startswith(f"{origin}: "):
             message = f"{origin}:{line}: {message[len(origin) + 2:]}"
         raise KnowledgeError(message) from None
-
-
-_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{},]')
-_SPACE = re.compile(r"\s*")
-
-
-def item_line(text: str, section: str, index: int) -> int | None:
-    """The line where item ``index`` of the top-level list ``section`` of the JSON
-    document ``text`` begins (None: not found). One pass over the text's tokens."""
-    depth = 0
-    key = ""
-    count = -1  # -1: not inside the section's list
-    for token in _TOKEN.finditer(text):
-        mark = token.group()
-        if mark in "{[":
-            depth += 1
-            if mark == "[" and depth == 2 and key == section:
-                count = 0
-            else:
-                continue
-        elif mark in "}]":
-            depth -= 1
-            if count >= 0 and depth < 2:
-                return None
-            continue
-        elif mark == ",":
-            if count < 0 or depth != 2:
-                continue
-            count += 1
-        else:
-            if depth == 1:
-                key = mark[1:-1]
-            continue
-        if count == index:
-            start = _SPACE.match(text, token.end())
-            return text.count("\n", 0, start.end() if start else token.end()) + 1
-    return None
 
 
 _BUNDLED: list[KnowledgeBase] = []

@@ -18,6 +18,15 @@ class KnowledgeError(ValueError):
     """A knowledge file that does not follow the format; the message names the entry."""
 
 
+class EntryError(KnowledgeError):
+    """A fault of one item of a knowledge file: ``section``'s item ``index``."""
+
+    def __init__(self, message: str, section: str, index: int) -> None:
+        super().__init__(message)
+        self.section = section
+        self.index = index
+
+
 class Source(Record):
     """Where an entry's facts were read: the repository, package, file, branch or tag,
     commit and lines."""
@@ -125,3 +134,40 @@ def _distributions(data: dict[str, Any], ros: tuple[int, ...], where: str
     if bounds[0] > bounds[1]:
         raise KnowledgeError(f"{where}.since comes after its until")
     return order[bounds[0]:bounds[1] + 1]
+
+
+_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{},]')
+_SPACE = re.compile(r"\s*")
+
+
+def item_line(text: str, section: str, index: int) -> int | None:
+    """The line where item ``index`` of the top-level list ``section`` of the JSON
+    document ``text`` begins (None: not found). One pass over the text's tokens."""
+    depth = 0
+    key = ""
+    count = -1  # -1: not inside the section's list
+    for token in _TOKEN.finditer(text):
+        mark = token.group()
+        if mark in "{[":
+            depth += 1
+            if mark == "[" and depth == 2 and key == section:
+                count = 0
+            else:
+                continue
+        elif mark in "}]":
+            depth -= 1
+            if count >= 0 and depth < 2:
+                return None
+            continue
+        elif mark == ",":
+            if count < 0 or depth != 2:
+                continue
+            count += 1
+        else:
+            if depth == 1:
+                key = mark[1:-1]
+            continue
+        if count == index:
+            start = _SPACE.match(text, token.end())
+            return text.count("\n", 0, start.end() if start else token.end()) + 1
+    return None
