@@ -485,12 +485,37 @@ def spawner_words(words: Sequence[str | None]
     return names, files, kind
 
 
+def controller_remappings(words: Sequence[str | None]) -> tuple[tuple[str, str], ...] | None:
+    """The remapping rules a spawner's ``--controller-ros-args`` give the controllers it
+    loads (``-r``/``--remap`` ``from:=to``; spawner.py splits each value on spaces and the
+    manager adds them to the controller node's arguments: ros2_control jazzy 9ffbf97
+    spawner.py 494-505, controller_manager.cpp 5026-5035); None when a value is not
+    resolved."""
+    rules: list[tuple[str, str]] = []
+    for index, word in enumerate(words[:-1]):
+        if word != "--controller-ros-args":
+            continue
+        value = words[index + 1]
+        if value is None:
+            return None
+        parts = value.split()
+        for flag, rule in zip(parts, parts[1:]):
+            if flag in ("-r", "--remap") and ":=" in rule:
+                source, _, target = rule.partition(":=")
+                rules.append((source, target))
+    return tuple(rules)
+
+
 def spawned_controllers(spawner: NodeRecord, names: Sequence[str], kind: str | None,
-                        documents: Sequence[object]) -> list[NodeRecord]:
+                        documents: Sequence[object],
+                        remappings: tuple[tuple[str, str], ...] | None = ()
+                        ) -> list[NodeRecord]:
     """The controllers a spawner loads with ``--param-file``, each with its section of
-    the files (its own key or ``/**``). Its type: ``--controller-type``, else ``type`` in
-    its section (jazzy's spawner sets it), else ``NAME.type`` in the file's controller
-    manager section (what the manager is given when it reads the same file)."""
+    the files (its own key or ``/**``) and the ``remappings`` its ``--controller-ros-args``
+    give (the spawner's own remappings are its process's, not theirs). Its type:
+    ``--controller-type``, else ``type`` in its section (jazzy's spawner sets it), else
+    ``NAME.type`` in the file's controller manager section (what the manager is given
+    when it reads the same file)."""
     out: list[NodeRecord] = []
     for name in names:
         params: list[tuple[str, str]] = []
@@ -503,8 +528,28 @@ def spawned_controllers(spawner: NodeRecord, names: Sequence[str], kind: str | N
         found = kind or dict(params).get("type") or declared or ""
         if _CONTROLLER_TYPE.match(found):
             out.append(replace(spawner, executable="", name=name, kind="controller",
-                               plugin=found, params=tuple(params), param_lines=()))
+                               plugin=found, params=tuple(params), param_lines=(),
+                               remappings=remappings))
     return out
+
+
+def spawner_records(spawner: NodeRecord, words: Sequence[str | None] | None
+                    ) -> tuple[list[NodeRecord], tuple[str, ...] | None]:
+    """What a ``spawner`` with the argument ``words`` loads: the controllers of its
+    ``--param-file``s as records, and the names it loads (None when its words are not all
+    resolved: a name may be missing)."""
+    if words is None:
+        return [], None
+    names, files, kind = spawner_words(words)
+    documents: list[object] = []
+    for path in files:
+        document, why = (None, "unresolved") if path is None else read_yaml_file(path)
+        if why is None:
+            documents.append(document)
+    records = (spawned_controllers(spawner, names, kind, documents,
+                                   controller_remappings(words))
+               if names and documents else [])
+    return records, None if None in words else tuple(names)
 
 
 def ros1_controllers(global_params: Iterable[tuple[str, str]], manager: NodeRecord

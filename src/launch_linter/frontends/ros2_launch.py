@@ -34,11 +34,9 @@ from launch_linter.frontends.params import (
     controllers_of,
     embedded_costmap,
     node_full_name,
-    read_yaml_file,
     read_yaml_file_placed,
     ros2_file_params_and_misses,
-    spawned_controllers,
-    spawner_words,
+    spawner_records,
 )
 from launch_linter.frontends.record import (
     Command,
@@ -66,7 +64,7 @@ from launch_linter.frontends.ros2_actions import (
     RunNode,
     Where,
 )
-from launch_linter.frontends.ros2_namespaces import NamespaceWatch, tf_topic
+from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
 from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
@@ -163,6 +161,7 @@ class Ros2Loader(Ros2Runner):
         self.namespaces = NamespaceWatch()
         self._empty_defaults: dict[str, dict[str, Where]] = {}
         """The launch arguments each file read declares with an empty default."""
+        self.spawned: tuple[str, ...] | None = ()
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
@@ -170,7 +169,7 @@ class Ros2Loader(Ros2Runner):
         unmatched = tuple(u for u in self.unmatched_param_files
                           if u.file not in self.reached_param_files)
         return replace(super()._tree(status, undeclared), unmatched_param_files=unmatched,
-                       doubled_namespaces=self.namespaces.records())
+                       doubled_namespaces=self.namespaces.records(), spawned=self.spawned)
 
     def _push_namespace(self, action: PushNamespace, scope: _Scope, frame: _Frame) -> None:
         before = scope.configs.get(NAMESPACE_KEY)
@@ -269,8 +268,9 @@ class Ros2Loader(Ros2Runner):
             self._display(frame.filename), where.line, where.column, package,
             executable or "", name, given.params, frame.condition,
             unread=given.unread, namespace=known_namespace, ros=2, param_lines=given.lines,
-            included_at=frame.sites,
-        )
+            included_at=frame.sites, remappings=None if action.remappings is None else tuple(
+                (self._word(a, scope, frame, where), self._word(b, scope, frame, where))
+                for a, b in action.remappings[:MAX_REMAPPINGS]))
         self.nodes.append(node)
         if known_namespace is not None:
             self._watch_namespace(node, action, scope, frame)
@@ -285,23 +285,24 @@ class Ros2Loader(Ros2Runner):
             self.nodes.append(costmap)
         if package == "controller_manager" and documents:
             self.nodes.extend(controllers_of(node, documents, given.placed))
-        if package == "controller_manager" and executable in SPAWNERS \
-                and action.arguments is not None:
+        if package == "controller_manager" and executable in SPAWNERS:
             self._spawned(node, action, scope, frame)
 
     def _watch_namespace(self, node: NodeRecord, action: RunNode, scope: _Scope,
                          frame: _Frame) -> None:
         """Tell the namespace watch where the node runs and its tf topic."""
-        def text(subs: Subs) -> str | None:
-            return resolved_text(self._resolve(subs, scope, frame, action.where))
-
         base = scope.configs.get(NAMESPACE_KEY)
-        remaps = (None if action.remappings is None
-                  else [(text(a), text(b)) for a, b in action.remappings])
+        own = None if action.namespace is None else resolved_text(
+            self._resolve(action.namespace, scope, frame, action.where))
         self.namespaces.node(
-            node, "/" if base is None else resolved_text(base),
-            None if action.namespace is None else text(action.namespace),
-            f"{node.package}/{node.executable}", tf_topic(node.namespace or "/", remaps))
+            node, "/" if base is None else resolved_text(base), own,
+            f"{node.package}/{node.executable}",
+            tf_topic(node.namespace or "/", node.remappings))
+
+    def _word(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where) -> str:
+        """A name as the action gives it, ``UNKNOWN_VALUE`` when it is not resolved."""
+        text = resolved_text(self._resolve(subs, scope, frame, where))
+        return UNKNOWN_VALUE if text is None else text
 
     def _unmatched(self, node: NodeRecord, program: str, given: _NodeParams,
                    checked: bool, name_literal: bool, defaults: tuple[str, ...] = ()) -> None:
@@ -372,17 +373,13 @@ class Ros2Loader(Ros2Runner):
 
     def _spawned(self, spawner: NodeRecord, action: RunNode, scope: _Scope,
                  frame: _Frame) -> None:
-        """The controllers a ``spawner`` loads from its ``--param-file``s."""
-        words = [resolved_text(self._resolve(item, scope, frame, action.where))
-                 for item in action.arguments or ()]
-        names, files, kind = spawner_words(words)
-        documents: list[object] = []
-        for path in files:
-            document, why = (None, "unresolved") if path is None else read_yaml_file(path)
-            if why is None:
-                documents.append(document)
-        if names and documents:
-            self.nodes.extend(spawned_controllers(spawner, names, kind, documents))
+        """The controllers a ``spawner`` loads (by name, and from its ``--param-file``s)."""
+        words = None if action.arguments is None else [
+            resolved_text(self._resolve(item, scope, frame, action.where))
+            for item in action.arguments]
+        records, names = spawner_records(spawner, words)
+        self.nodes.extend(records)
+        self.spawned = None if names is None or self.spawned is None else self.spawned + names
 
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,

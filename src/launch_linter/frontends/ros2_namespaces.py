@@ -17,7 +17,7 @@ from collections.abc import Sequence
 
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import DoubledNamespace
-from launch_linter.model.robot import NodeRecord
+from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 
 TF_TOPIC = "/tf"
 MAX_REMAPPINGS = 1_000
@@ -27,17 +27,17 @@ def last_name(namespace: str) -> str:
     return namespace.rstrip("/").rsplit("/", 1)[-1]
 
 
-def tf_topic(namespace: str, remappings: Sequence[tuple[str | None, str | None]] | None
-             ) -> str | None:
+def tf_topic(namespace: str, remappings: Sequence[tuple[str, str]] | None) -> str | None:
     """The topic a node under ``namespace`` (absolute) sends and reads tf on, with its
-    remappings (rcl applies the first rule that matches); None when not known."""
+    remappings (rcl applies the first rule that matches; ``UNKNOWN_VALUE`` a name not
+    resolved); None when not known."""
     if remappings is None:
         return None
     for source, target in remappings[:MAX_REMAPPINGS]:
-        if source is None:
+        if source == UNKNOWN_VALUE:
             return None
         if source == TF_TOPIC or (source == TF_TOPIC[1:] and namespace == "/"):
-            if target is None or target.startswith("~"):
+            if target == UNKNOWN_VALUE or target.startswith("~"):
                 return None
             if target.startswith("/"):
                 return target

@@ -62,6 +62,7 @@ ANY = "*"
 PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 """A ``{param}`` in a frame template (the parameter's value stands there)."""
 
+TF_TOPIC = "/tf"
 SCALARS = (str, bool, int, float)
 PARAMETER_TYPES = ("bool", "integer", "double", "string")
 """The scalar types a ROS 2 node declares a parameter with (rclcpp's ``ParameterType``)."""
@@ -163,6 +164,10 @@ class Entry(Record):
     """ROS 2: parameters the node declares with a typed default (``declare_parameter(name,
     30.0)``), each with its type (:data:`PARAMETER_TYPES`): rclcpp throws when the value
     given has another type, and the node dies."""
+    tf_topic: str
+    """The topic it sends its edges on: ``/tf``, or one of its own (``~/tf_odometry``: under
+    the node's full name) that reaches the tree only when a remapping of its process, or a
+    relay, brings it to ``/tf``."""
 
     __slots__ = (
         "id", "kind", "ros", "packages", "executables", "plugins", "filenames", "types",
@@ -171,7 +176,7 @@ class Entry(Record):
         "unsure_defaults", "prefix", "sources", "origin", "header_frames", "ros1_tf2_from",
         "looks_up_listed",
         "inputs", "tf_listener", "loads_controllers", "stream_frames",
-        "parameter_types",
+        "parameter_types", "tf_topic",
     )
 
     def __init__(
@@ -204,6 +209,7 @@ class Entry(Record):
         loads_controllers: bool = False,
         stream_frames: tuple[str, ...] = (),
         parameter_types: tuple[tuple[str, str], ...] = (),
+        tf_topic: str = TF_TOPIC,
     ) -> None:
         _set(self, "id", id)
         _set(self, "kind", kind)
@@ -233,6 +239,7 @@ class Entry(Record):
         _set(self, "loads_controllers", loads_controllers)
         _set(self, "stream_frames", stream_frames)
         _set(self, "parameter_types", parameter_types)
+        _set(self, "tf_topic", tf_topic)
 
     def default(self, name: str) -> object:
         for key, value in self.parameters:
@@ -447,6 +454,9 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
             isinstance(value, str) and value in PARAMETER_TYPES for value in types_data.values()):
         raise KnowledgeError(f"{where}.parameter_types must map names to one of "
                              f"{', '.join(PARAMETER_TYPES)}")
+    tf_topic = _text(data.get("tf_topic", TF_TOPIC), f"{where}.tf_topic")
+    if not tf_topic.startswith(("/", "~/")):
+        raise KnowledgeError(f"{where}.tf_topic must be absolute (/tf) or the node's own (~/name)")
     return Entry(
         id=entry_id, kind=kind, ros=tuple(ros), packages=packages, executables=executables,
         plugins=plugins, filenames=filenames, types=types,
@@ -469,6 +479,7 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
         loads_controllers=bool(data.get("loads_controllers", False)),
         stream_frames=streams,
         parameter_types=tuple((str(k), v) for k, v in types_data.items()),
+        tf_topic=tf_topic,
     )
 
 

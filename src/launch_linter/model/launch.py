@@ -264,11 +264,14 @@ class LaunchTree(Record):
     """ROS 2 parameter files that give the node they are passed to nothing."""
     doubled_namespaces: tuple[DoubledNamespace, ...]
     """ROS 2 nodes under a namespace pushed twice (``DoubledNamespace``)."""
+    spawned: tuple[str, ...] | None
+    """The ros2_control controllers the tree's spawners load, by name; None when a
+    spawner's words are not all read."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
         "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
-        "forwarded", "unmatched_param_files", "doubled_namespaces",
+        "forwarded", "unmatched_param_files", "doubled_namespaces", "spawned",
     )
 
     def __init__(
@@ -289,6 +292,7 @@ class LaunchTree(Record):
         forwarded: tuple[Forwarded, ...] = (),
         unmatched_param_files: tuple[UnmatchedParamFile, ...] = (),
         doubled_namespaces: tuple[DoubledNamespace, ...] = (),
+        spawned: tuple[str, ...] | None = (),
     ) -> None:
         _open(self)  # made for every root file: see _open
         self.root = root
@@ -307,4 +311,5 @@ class LaunchTree(Record):
         self.forwarded = forwarded
         self.unmatched_param_files = unmatched_param_files
         self.doubled_namespaces = doubled_namespaces
+        self.spawned = spawned
         _seal(self)

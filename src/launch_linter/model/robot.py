@@ -219,6 +219,10 @@ class NodeRecord(Record):
     the order of ``params`` (the node's element where the value's own place is unknown).
     ``included_at`` lists the include actions through which its launch file was run, from
     the root's (ROS 2): one node line run through two different includes is two nodes.
+    ``remappings`` are the topic remapping rules ``(from, to)`` its process is given (ROS 2
+    ``remappings=``, a simulator plugin's ``<ros><remapping>``; a controller also its
+    spawner's ``--controller-ros-args``), in order, ``UNKNOWN_VALUE`` for a name not
+    resolved; None when they are not known.
     """
 
     path: str
@@ -236,11 +240,12 @@ class NodeRecord(Record):
     ros: int | None
     param_lines: tuple[tuple[str, str, int, int], ...]
     included_at: tuple[Location, ...]
+    remappings: tuple[tuple[str, str], ...] | None
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
-        "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "_last_given",
-        "_last_set",
+        "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "remappings",
+        "_last_given", "_last_set",
     )
     _private = ("_last_given", "_last_set")
     _last_given: dict[str, str] | None
@@ -263,6 +268,7 @@ class NodeRecord(Record):
         ros: int | None = None,
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
         included_at: tuple[Location, ...] = (),
+        remappings: tuple[tuple[str, str], ...] | None = (),
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -280,6 +286,7 @@ class NodeRecord(Record):
         self.ros = ros
         self.param_lines = param_lines
         self.included_at = included_at
+        self.remappings = remappings
         self._last_given = None
         self._last_set = None
         _seal(self)

@@ -79,6 +79,8 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_param_file_missing", Category.LAUNCH),
     ("param_value_refused", Category.LAUNCH),
     ("namespace_pushed_twice", Category.TF),
+    ("controller_tf_unrouted", Category.TF),
+    ("joint_states_two_publishers", Category.TF),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

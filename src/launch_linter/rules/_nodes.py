@@ -19,6 +19,7 @@ from launch_linter.model.record import Record, _set
 from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._prefixes import publisher_prefix
+from launch_linter.rules._tf_topics import LOST, controller_routes
 
 STATIC_PUBLISHERS = frozenset({"tf", "tf2_ros"})
 """Packages whose static_transform_publisher the tree already reads as launch edges."""
@@ -155,6 +156,7 @@ def _view(context: RuleContext) -> NodeView:
     unsure: list[NodeRecord] = []
     joint_states = False
     controllers: set[tuple[str | None, str | None]] = set()
+    routes = controller_routes(context.tree.nodes, lambda node: entry_of(context, node))
     for node in context.tree.nodes:
         if node.package in STATIC_PUBLISHERS and node.kind == "node":
             continue
@@ -171,6 +173,8 @@ def _view(context: RuleContext) -> NodeView:
         if entry is None:
             unknown.append(node)
             continue
+        if node.kind == "controller" and routes.get((node.name, node.namespace)) == LOST:
+            continue  # its transforms stay on a topic of its own (controller_tf_unrouted)
         joint_states = joint_states or entry.publishes_joint_states
         sure, maybe = published(entry, node, distro=context.distro)
         if (maybe or any(e.signature is None for e in sure)

@@ -13,7 +13,8 @@ master, gz_ros2_control humble on). Sources: ros-controls/gazebo_ros2_control
 ``gz_ros2_control/src/gz_ros2_control_plugin.cpp`` (rolling e19b0ef 295-335 and 438-446;
 humble 4cb90a2 ``ign_ros2_control_plugin.cpp`` 296-320). The files are read as a
 launched ``ros2_control_node``'s ``parameters=[...]``: the manager's section gives the
-controllers (``NAME.type``), each controller its own section.
+controllers (``NAME.type``), each controller its own section; the plugin's
+``<ros><remapping>`` rules (the plugin's record's ``remappings``) are the manager's too.
 """
 
 from __future__ import annotations

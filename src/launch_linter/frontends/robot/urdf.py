@@ -330,11 +330,27 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                 plugin.attrib.get("name"), tuple(params),
                 outer & _condition(plugin.conditions), kind="gazebo_plugin",
                 plugin=filename, namespace=namespace,
-                ros=ros if ros is not None else _ros_of(plugin), param_lines=tuple(lines)))
+                ros=ros if ros is not None else _ros_of(plugin), param_lines=tuple(lines),
+                remappings=plugin_remappings(params)))
             if len(out) >= MAX_PLUGINS:
                 return out
         out.extend(_gz_cameras(gazebo, display, outer, ros))
     return out[:MAX_PLUGINS]
+
+
+def plugin_remappings(params: typing.Sequence[tuple[str, str]]) -> tuple[tuple[str, str], ...]:
+    """A ROS 2 plugin's ``<ros><remapping>`` rules, ``from:=to`` each (``UNKNOWN_VALUE``
+    for a rule not read): gazebo_ros plugins hand them to their node, and the ros2_control
+    plugins to rcl with ``-r`` before they start the controller manager (gz_ros2_control
+    rolling e19b0ef ``gz_ros2_control_plugin.cpp`` 336-346; gazebo_ros2_control the same)."""
+    rules: list[tuple[str, str]] = []
+    for key, value in params:
+        if key != "remapping":
+            continue
+        source, colon, target = value.partition(":=")
+        rules.append((source.strip(), target.strip()) if colon and value != UNKNOWN_VALUE
+                     else (UNKNOWN_VALUE, UNKNOWN_VALUE))
+    return tuple(rules)
 
 
 def _gz_cameras(gazebo: ExpandedNode, display: Display, outer: Condition,
