@@ -199,13 +199,17 @@ def declared_encoding(data: bytes) -> str:
 
 
 class XmlError(Exception):
-    """The text is not acceptable XML; ``line``/``column`` are 1-based."""
+    """The text is not acceptable XML; ``line``/``column`` are 1-based. ``malformed``: expat
+    itself refuses it (not well-formed), as every XML reader of ROS does; else one of this
+    reader's own bounds or refusals (size, depth, DTD declarations, encodings)."""
 
-    def __init__(self, message: str, line: int = 1, column: int = 1) -> None:
+    def __init__(self, message: str, line: int = 1, column: int = 1,
+                 malformed: bool = False) -> None:
         super().__init__(message)
         self.message = message
         self.line = line
         self.column = column
+        self.malformed = malformed
 
 
 class Element:
@@ -361,7 +365,7 @@ def parse_xml(
         parser.Parse(data, True)
     except expat.ExpatError as exc:
         message = expat.errors.messages.get(exc.code, str(exc))
-        raise XmlError(message, exc.lineno, exc.offset + 1) from None
+        raise XmlError(message, exc.lineno, exc.offset + 1, malformed=True) from None
     except RecursionError:
         raise XmlError("document too deeply nested") from None
     except (LookupError, UnicodeError, ValueError):

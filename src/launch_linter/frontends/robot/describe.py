@@ -467,7 +467,11 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                 + ("; its joints are not read" if problem.fatal else ""),
             ))
     if root is None:
-        return None, problems_found
+        # A file xacro refuses to read at all (not well-formed) stops the command as any
+        # other refusal: kept, without joints, for ``xacro_error``.
+        refused = tuple(f for f in faults if f.kind is FaultKind.REFUSED and f.proven)
+        return (RobotModel(source, (), (), False, refused, False, standalone, ())
+                if refused else None), problems_found
     if root.tag == "sdf":
         # ROS 2's robot_state_publisher reads SDF through the sdformat_urdf parser plugin
         # (gz-sim demos do); the linter reads URDF only, so the joints are unknown, not none.

@@ -9,10 +9,10 @@ Supported: what docs/robot.md lists (properties, args, ``$(find)``/``$(env)``, i
 macros with defaults and blocks, conditionals, ``xacro:call``/``element``/``attribute``).
 
 What cannot be known becomes *unknown* rather than an error: an attribute keeps a reason
-(``ExpandedNode.unknown``); a conditional whose value is unknown keeps its content, marked
-with the condition text (``ExpandedNode.conditions``). Problems are returned as
-:class:`XacroProblem` records; bounds on files, include depth, macro depth, elements made
-and total work end the expansion with a problem, never a hang.
+(``ExpandedNode.unknown``); a conditional whose value is unknown keeps its content, marked with
+the condition text (``ExpandedNode.conditions``). Problems are :class:`XacroProblem` records;
+bounds on files, include depth, macro depth, elements made and total work end the expansion with
+a problem, never a hang.
 """
 
 from __future__ import annotations
@@ -145,7 +145,8 @@ class XacroExpander:
                 self._attributes(element, root, table)
                 self._children(element.children, absolute, table, root, ())
         except _Abort as stop:
-            self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True))
+            self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True,
+                                              stop.kind or UNKNOWN))
             root = None
         except RecursionError:
             self.problems.append(XacroProblem(
@@ -209,13 +210,12 @@ class XacroExpander:
             root = parse_xml(data, PLUGIN_TEXT_TAGS).root
             self._param_args[absolute] = params_read_as_args(data, self._legacy)
             return root
-        except XmlError as exc:
+        except XmlError as exc:  # xacro's minidom stops on a malformed file (ExpatError)
             if at is None:  # placed at the file and line: no need to name them
-                raise _Abort(f"not well-formed XML: {exc.message}", absolute,
-                             exc.line) from None
+                raise _Abort(f"not well-formed XML: {exc.message}", absolute, exc.line,
+                             REFUSED if exc.malformed else None) from None
             message = f"{self.display(absolute)}:{exc.line}: not well-formed XML: {exc.message}"
-            self._problem(where[0], where[1], message)
-            return None
+            raise (_Refused(message) if exc.malformed else _Unknown(message)) from None
 
     # -- text substitution -------------------------------------------------------------
     def evaluate_text(self, text: str, table: _Table) -> str:

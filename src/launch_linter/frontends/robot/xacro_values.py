@@ -89,13 +89,15 @@ def bracket_fault(source: str) -> str | None:
 
 
 class _Abort(Exception):
-    """A bound was reached: the expansion stops."""
+    """A bound was reached, or the real xacro stops too (``kind`` ``REFUSED``): the
+    expansion stops."""
 
-    def __init__(self, message: str, path: str, line: int) -> None:
+    def __init__(self, message: str, path: str, line: int, kind: str | None = None) -> None:
         super().__init__(message)
         self.message = message
         self.path = path
         self.line = line
+        self.kind = kind
 
 
 class _Unknown(Exception):
