@@ -173,3 +173,17 @@ def test_a_file_over_the_readers_own_bound_is_not_refused_by_xacro(tmp_path: Pat
     (unknown,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro", "unresolved")
     assert "entity" in unknown.message
 
+
+def test_a_missing_file_with_an_empty_arg_after_it(tmp_path: Path) -> None:
+    # $(arg extra) gives no word: the file's word is still the one written from $(dirname).
+    (tmp_path / "urdf").mkdir()
+    launch = tmp_path / "launch"
+    launch.mkdir()
+    (launch / "robot.launch").write_text(
+        '<launch>\n<arg name="extra" default=""/>\n<param name="robot_description" '
+        'command="xacro $(dirname)/../urdf/robt.urdf.xacro $(arg extra)"/>\n'
+        f'{RSP}</launch>', encoding="utf-8")
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(launch / "robot.launch")], options).diagnostics
+    assert found.line == 3 and "robt.urdf.xacro" in found.message
+
