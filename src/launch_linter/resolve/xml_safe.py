@@ -198,6 +198,25 @@ def declared_encoding(data: bytes) -> str:
     return found.group(1).decode("latin-1") if found else ""
 
 
+_TAG_OPENED = re.compile(rb"</?[A-Za-z_:][^\s<>/]{0,200}")
+"""A start or end tag's beginning: its '<' and name (bounded)."""
+
+
+def _unclosed_tag(data: bytes, at: int) -> tuple[int, int, str] | None:
+    """Line, column and text of a tag left without its '>' when expat stops at the '<'
+    that follows it (``</group`` and then ``<node`` on a later line): expat names where it
+    could not go on, the fault is the tag before. None when ``at`` is no such '<' (a '>'
+    is allowed in attribute values, so one after the last '<' says nothing: None)."""
+    if data[at:at + 1] != b"<":
+        return None
+    start = data.rfind(b"<", 0, at)
+    opened = _TAG_OPENED.match(data, start) if start >= 0 else None
+    if opened is None or data.find(b">", start, at) >= 0:
+        return None
+    column = start - data.rfind(b"\n", 0, start)
+    return data.count(b"\n", 0, start) + 1, column, opened.group().decode("utf-8", "replace")
+
+
 class XmlError(Exception):
     """The text is not acceptable XML; ``line``/``column`` are 1-based. ``malformed``: expat
     itself refuses it (not well-formed), as every XML reader of ROS does; else one of this
@@ -365,6 +384,12 @@ def parse_xml(
         parser.Parse(data, True)
     except expat.ExpatError as exc:
         message = expat.errors.messages.get(exc.code, str(exc))
+        unclosed = _unclosed_tag(data, parser.ErrorByteIndex)
+        if unclosed is not None:
+            line, column, tag = unclosed
+            raise XmlError(f"the tag '{tag}' is not closed with '>' (expat stops at the "
+                           f"next '<', line {exc.lineno}, column {exc.offset + 1}: {message})",
+                           line, column, malformed=True) from None
         raise XmlError(message, exc.lineno, exc.offset + 1, malformed=True) from None
     except RecursionError:
         raise XmlError("document too deeply nested") from None
