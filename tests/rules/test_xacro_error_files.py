@@ -187,3 +187,25 @@ def test_a_missing_file_with_an_empty_arg_after_it(tmp_path: Path) -> None:
     (found,) = lint_paths([str(launch / "robot.launch")], options).diagnostics
     assert found.line == 3 and "robt.urdf.xacro" in found.message
 
+
+def test_an_undeclared_arg_in_any_elements_text(tmp_path: Path) -> None:
+    # catvehicle: <updateRate>$(arg updateRate)</updateRate> of a plugin the knowledge base
+    # does not read: xacro evaluates every text node all the same (eval_all).
+    plugin = ('<gazebo><plugin name="p" filename="libp.so"><updateRate>$(arg rate)'
+              '</updateRate></plugin></gazebo>')
+    (tmp_path / "robot.urdf.xacro").write_text(robot(link("a") + "\n" + plugin))
+    (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro")
+    assert found.line == 3 and "$(arg rate)" in found.message
+    assert _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro rate:=20") == ()
+    # A CDATA section is left as written: xacro evaluates text nodes only.
+    (tmp_path / "robot.urdf.xacro").write_text(robot(link("a") + "\n" + plugin.replace(
+        "$(arg rate)", "<![CDATA[$(arg rate)]]>")))
+    assert _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro") == ()
+
+
+def test_twenty_thousand_texts_are_read_in_linear_time(tmp_path: Path) -> None:
+    texts = "".join(f"<k{i % 7}>v ${{pi}} {i}</k{i % 7}>" for i in range(20_000))
+    (tmp_path / "robot.urdf.xacro").write_text(robot(link("a") + f"<gazebo>{texts}</gazebo>"))
+    started = time.perf_counter()
+    assert _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro") == ()
+    assert time.perf_counter() - started < 30

@@ -34,7 +34,7 @@ MAX_TEXT = 1024 * 1024
 
 _HANDLERS = ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
              "CommentHandler", "EntityDeclHandler", "ExternalEntityRefHandler",
-             "AttlistDeclHandler")
+             "AttlistDeclHandler", "StartCdataSectionHandler", "EndCdataSectionHandler")
 
 
 _UNSAVED: dict[str, bytes] = {}
@@ -276,10 +276,13 @@ def parse_xml(
     text_tags: Collection[str] = (),
     collect: Collection[str] = (),
     directives: bool = True,
+    all_text: bool = False,
 ) -> XmlDocument:
     """Parse ``data`` into an :class:`XmlDocument`, or raise :class:`XmlError`.
 
     ``text_tags``: elements whose character data is kept in ``Element.text``.
+    ``all_text``: every element's text is kept too, but outside ``text_tags`` without its
+    CDATA sections (xacro evaluates text nodes and leaves CDATA sections as written).
     ``collect``: tags whose elements are also listed in ``XmlDocument.collected``.
     ``directives``: whether comments and element lines are kept (they only serve
     suppression directives; a caller that knows there are none saves their cost).
@@ -309,6 +312,21 @@ def parse_xml(
         if top is wanting[-1] and len(top.text) < MAX_TEXT:
             top.text += text[: MAX_TEXT - len(top.text)]
 
+    in_cdata = False
+
+    def every_chars(text: str) -> None:
+        top = stack[-1]
+        if (not in_cdata or top.tag in text_tags) and len(top.text) < MAX_TEXT:
+            top.text += text[: MAX_TEXT - len(top.text)]
+
+    def cdata_start() -> None:
+        nonlocal in_cdata
+        in_cdata = True
+
+    def cdata_end() -> None:
+        nonlocal in_cdata
+        in_cdata = False
+
     def start(tag: str, attrs: dict[str, str]) -> None:
         nonlocal count
         count += 1
@@ -335,9 +353,9 @@ def parse_xml(
             raise XmlError(f"more than {MAX_ELEMENTS} elements", line, element.column)
         if tag in collect:
             collected.append(element)
-        if tag in text_tags:
+        if all_text or tag in text_tags:
             wanting.append(element)
-            parser.CharacterDataHandler = chars
+            parser.CharacterDataHandler = every_chars if all_text else chars
             parser.EndElementHandler = end_wanted
         push(element)
 
@@ -380,6 +398,9 @@ def parse_xml(
     parser.EntityDeclHandler = entity_decl
     parser.AttlistDeclHandler = attlist_decl
     parser.ExternalEntityRefHandler = external_ref
+    if all_text:
+        parser.StartCdataSectionHandler = cdata_start
+        parser.EndCdataSectionHandler = cdata_end
     try:
         parser.Parse(data, True)
     except expat.ExpatError as exc:

@@ -207,7 +207,7 @@ class XacroExpander:
                           f"{self.display(absolute)}: {exc.strerror or exc}")
             return None
         try:
-            root = parse_xml(data, PLUGIN_TEXT_TAGS).root
+            root = parse_xml(data, PLUGIN_TEXT_TAGS, all_text=True).root  # see _children
             self._param_args[absolute] = params_read_as_args(data, self._legacy)
             return root
         except XmlError as exc:  # xacro's minidom stops on a malformed file (ExpatError)
@@ -383,7 +383,7 @@ class XacroExpander:
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
-                if element.text.strip():
+                if element.text.strip():  # every text node (ros/xacro 7045754, eval_all)
                     try:
                         node.text = self.evaluate_text(element.text.strip(), table)
                     except _Unknown as unknown:  # xacro evaluates text as it does attributes
