@@ -209,3 +209,18 @@ def test_twenty_thousand_texts_are_read_in_linear_time(tmp_path: Path) -> None:
     started = time.perf_counter()
     assert _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro") == ()
     assert time.perf_counter() - started < 30
+
+
+def test_a_description_read_as_text_is_not_xacros_to_refuse(tmp_path: Path) -> None:
+    # textfile= (or cat, or a Python launch file's open().read()): robot_state_publisher's
+    # urdfdom parses it, not xacro's minidom; it takes a space before the declaration.
+    (tmp_path / "robot.urdf").write_text(' <?xml version="1.0"?>\n' + robot(link("a")))
+    (tmp_path / "robot.launch").write_text(
+        '<launch><param name="robot_description" textfile="$(dirname)/robot.urdf"/>'
+        f'{RSP}</launch>', encoding="utf-8")
+    options = LintOptions(package_paths=(), select=frozenset({RULE, "unresolved"}))
+    (unknown,) = lint_paths([str(tmp_path / "robot.launch")], options).diagnostics
+    assert unknown.rule == "unresolved" and "not well-formed" in unknown.message
+    # The same file run through xacro: minidom stops on it.
+    (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf")
+    assert found.severity.value == "error" and "declaration" in found.message

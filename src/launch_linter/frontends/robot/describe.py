@@ -21,6 +21,7 @@ from launch_linter.frontends.robot.xacro_values import (
     KEPT,
     REFUSED,
     TF_PREFIX_PARAM,
+    UNKNOWN,
 )
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Location, Problem
@@ -454,6 +455,11 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                                     packages, env, budget, display)
         root, problems, files = expansion.root, expansion.problems, expansion.files
         defines_macros, env_read = expansion.defines_macros, expansion.env_read
+    if source.kind is not DescriptionKind.XACRO:
+        # Read as text (cat, textfile, open().read()): urdfdom parses it, not xacro's
+        # minidom, and takes some of what expat refuses (space before the declaration).
+        problems = [replace(p, kind=UNKNOWN) if p.fatal and p.kind == REFUSED else p
+                    for p in problems]
     faults = _faults(problems, source, display) + legacy_order_refusal(
         files, env, source.xacro_options, display)
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
