@@ -224,3 +224,13 @@ def test_a_description_read_as_text_is_not_xacros_to_refuse(tmp_path: Path) -> N
     # The same file run through xacro: minidom stops on it.
     (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf")
     assert found.severity.value == "error" and "declaration" in found.message
+
+
+def test_a_malformed_include_after_one_not_followed_is_still_proven(tmp_path: Path) -> None:
+    # What was not followed before may define names, never make this file well-formed.
+    (tmp_path / "part.xacro").write_text(robot("<link name='b'>"))
+    (tmp_path / "robot.urdf.xacro").write_text(robot(
+        '<xacro:include filename="$(find nowhere)/x.xacro"/>' + link("a")
+        + '\n<xacro:include filename="part.xacro"/>'))
+    (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro")
+    assert found.severity.value == "error" and "part.xacro:3: not well-formed" in found.message

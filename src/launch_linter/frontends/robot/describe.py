@@ -19,6 +19,7 @@ from launch_linter.frontends.robot.xacro_order import legacy_order_refusal
 from launch_linter.frontends.robot.xacro_values import (
     FAULT_KINDS,
     KEPT,
+    MALFORMED,
     REFUSED,
     TF_PREFIX_PARAM,
     UNKNOWN,
@@ -545,9 +546,9 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
     followed = True
     for problem in problems:
         if problem.kind in FAULT_KINDS:
-            # A block never inserted and a parameter read as an arg are read from the
-            # macro alone: nothing hides them.
-            proven = problem.kind != REFUSED or (
+            # A block never inserted, a parameter read as an arg and a file not well-formed
+            # are read from the macro or the file alone: nothing hides them.
+            proven = problem.kind != REFUSED or MALFORMED in problem.message or (
                 followed and not (source.open_args and "$(arg " in problem.message))
             out.append(DescriptionFault(display(problem.path), problem.line,
                                         FaultKind(problem.kind), problem.message, proven,
@@ -572,7 +573,8 @@ def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
         # One cause written in several places (the same package not found by two
         # includes) is said at the first.
         said_as = _TAG.sub("", problem.message, count=1)
-        if (followed or problem.kind != REFUSED) and said_as not in said:
+        own = followed or problem.kind != REFUSED or MALFORMED in problem.message
+        if own and said_as not in said:
             out.append(problem)
             said.add(said_as)
         followed = followed and problem.kind in _FOLLOWED

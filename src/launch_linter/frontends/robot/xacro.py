@@ -38,6 +38,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _WHOLE_EXPRESSION,
     DROPPED,
     KEPT,
+    MALFORMED,
     MAX_FILES,
     MAX_INCLUDE_DEPTH,
     MAX_MACRO_DEPTH,
@@ -192,8 +193,7 @@ class XacroExpander:
             self.files.append(absolute)
         if absolute in self._parsed:
             return self._parsed[absolute]
-        root = self._parse(absolute, at, where, data)
-        self._parsed[absolute] = root
+        self._parsed[absolute] = root = self._parse(absolute, at, where, data)
         return root
 
     def _parse(self, absolute: str, at: tuple[str, int] | None,
@@ -212,9 +212,9 @@ class XacroExpander:
             return root
         except XmlError as exc:  # xacro's minidom stops on a malformed file (ExpatError)
             if at is None:  # placed at the file and line: no need to name them
-                raise _Abort(f"not well-formed XML: {exc.message}", absolute, exc.line,
+                raise _Abort(f"{MALFORMED}: {exc.message}", absolute, exc.line,
                              REFUSED if exc.malformed else None) from None
-            message = f"{self.display(absolute)}:{exc.line}: not well-formed XML: {exc.message}"
+            message = f"{self.display(absolute)}:{exc.line}: {MALFORMED}: {exc.message}"
             raise (_Refused(message) if exc.malformed else _Unknown(message)) from None
 
     # -- text substitution -------------------------------------------------------------

@@ -133,6 +133,9 @@ UNEXPANDED = "unexpanded"
 macro call without the prefix, a ``${`` never closed: see ``xacro_unexpanded``)."""
 FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG, UNEXPANDED)
 """The kinds that are faults of the source itself."""
+MALFORMED = "not well-formed XML"
+"""What a refusal of a file that is not well-formed says: a fault of that file alone, which
+nothing not followed before it can make well-formed."""
 
 
 def expression_error(source: str, reason: str) -> _Unknown:
