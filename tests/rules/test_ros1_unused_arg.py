@@ -100,3 +100,50 @@ def test_twenty_thousand_arguments_take_linear_time() -> None:
 def test_an_eval_spaced_otherwise_is_still_read() -> None:
     assert found('<launch><arg name="x" default="1"/>'
                  '<param name="a" value="$( eval x + 1)"/></launch>') == []
+
+
+def test_a_frame_missed_where_the_others_are_handed_on_by_name_is_a_warning() -> None:
+    """zed-ros-wrapper#248 and #392: imu_frame declared beside the camera frames, each of
+    which the node gets as <param name="X" value="$(arg X)"/>; imu_frame never."""
+    xml = ('<launch>\n<arg name="left_camera_frame" default="zed_left"/>\n'
+           '<arg name="imu_frame" default="imu_link"/>\n'
+           '<node pkg="zed_wrapper" type="zed_wrapper_node" name="zed">\n'
+           '<param name="left_camera_frame" value="$(arg left_camera_frame)"/>\n'
+           '</node>\n</launch>')
+    assert found(xml) == [(3, "warning", (5,))]
+    fixed = xml.replace("</node>", '<param name="imu_frame" value="$(arg imu_frame)"/>\n'
+                                   "</node>")
+    assert found(fixed) == []
+    # An include's argument handed on by its name is the same convention.
+    include = xml.replace('<node pkg="zed_wrapper" type="zed_wrapper_node" name="zed">',
+                          '<include file="$(dirname)/driver.launch">').replace(
+        '<param name="left_camera_frame"', '<arg name="left_camera_frame"').replace(
+        "</node>", "</include>")
+    assert found(include) == [(3, "warning", (5,))]
+
+
+def test_no_sibling_handed_on_by_name_or_no_frame_stays_info() -> None:
+    # The other frame is given a value of its own, not the argument of its name.
+    xml = ('<launch>\n<arg name="left_camera_frame" default="zed_left"/>\n'
+           '<arg name="imu_frame" default="imu_link"/>\n<node pkg="p" type="t" name="n">\n'
+           '<param name="left_camera_frame" value="$(arg left_camera_frame)_x"/>\n'
+           '</node>\n</launch>')
+    assert found(xml) == [(3, "info", ())]
+    # Not a frame (a rate, a tolerance): a dead setting, info (a convention finding).
+    given = xml.replace("_x\"", '"')
+    for other in ("imu_rate", "frame_tolerance"):
+        assert found(given.replace("imu_frame", other)) == [(3, "info", ())]
+
+
+def test_twenty_thousand_frame_arguments_beside_forwarded_ones_take_linear_time() -> None:
+    import time
+
+    args = "".join(f'<arg name="f{i}_frame" default="x"/>' for i in range(20_000))
+    given = "".join(f'<param name="f{i}_frame" value="$(arg f{i}_frame)"/>'
+                    for i in range(0, 20_000, 2))
+    root = parse_xml(f"<launch>{args}{given}</launch>".encode(),
+                     collect=("launch",)).collected[0]
+    started = time.process_time()
+    unread = unused_args(root)
+    assert time.process_time() - started < 60
+    assert len(unread) == 10_000 and all(arg.frame_forgotten for arg in unread)

@@ -437,11 +437,20 @@ class Ros1Base:
 
     def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
         for arg in unused_args(launch, data):
-            if arg.passed is None:
+            if arg.frame_forgotten and arg.sibling is not None:
+                other, line, column = arg.sibling
+                message = (f"argument '{arg.name}' is declared, but nothing in this file "
+                           f"reads it: roslaunch accepts {arg.name}:=... and drops it "
+                           f"without a word, while line {line} hands '{other}' on under "
+                           f"its name; give '{arg.name}' on the same way "
+                           f"(value=\"$(arg {arg.name})\") or remove it")
+                # The related place marks the warning (ros1_unused_arg): a frame forgotten.
+                related: tuple[Location, ...] = (Location(display, line, column),)
+            elif arg.passed is None:
                 message = (f"argument '{arg.name}' is declared, but nothing in this file "
                            f"reads it: roslaunch accepts {arg.name}:=... and drops it "
                            f"without a word; read it or remove it")
-                related: tuple[Location, ...] = ()
+                related = ()
             else:
                 message = (f"argument '{arg.name}' is declared, but nothing in this file "
                            f"reads it: line {arg.passed[0]} gives '{arg.name}' another "

@@ -33,6 +33,13 @@ WALK_WORDS = (b"eval", b"pass_all_args", b"subst_value")
 and the tags that hand arguments on unseen (:func:`_hands_on`)."""
 FRAME = "frame"
 """An argument or setting whose name says it names a frame."""
+FRAME_ENDINGS = ("frame", "frame_id", "frameid", "frame_name")
+"""How the name of an argument that holds one frame ends (``imu_frame_id``,
+``sensor_frame``, ``odometry_frame_ID``), unlike ``frame_rate`` or ``frame_tolerance``."""
+
+
+def _names_a_frame(name: str) -> bool:
+    return name.lower().endswith(FRAME_ENDINGS)
 
 
 def _hands_on(element: Element) -> bool:
@@ -49,10 +56,11 @@ def _hands_on(element: Element) -> bool:
 class UnusedArg:
     """A declared argument of one file that nothing in the file reads."""
 
-    __slots__ = ("column", "default", "instead", "line", "name", "passed")
+    __slots__ = ("column", "default", "instead", "line", "name", "passed", "sibling")
 
     def __init__(self, name: str, line: int, column: int, default: str | None = None,
-                 passed: tuple[int, int] | None = None, instead: str | None = None) -> None:
+                 passed: tuple[int, int] | None = None, instead: str | None = None,
+                 sibling: tuple[str, int, int] | None = None) -> None:
         self.name = name
         self.line = line
         self.column = column
@@ -64,6 +72,20 @@ class UnusedArg:
         one was meant to go."""
         self.instead = instead
         """That value as written (None when it is no ``value`` attribute)."""
+        self.sibling = sibling
+        """For a frame argument nothing of its name is set from: another frame argument
+        the file hands on under its own name (``<param name="left_frame" value="$(arg
+        left_frame)"/>``), as (that name, line, column): the file's way of passing its
+        frames on, which this one missed."""
+
+    @property
+    def frame_forgotten(self) -> bool:
+        """Whether it names a frame that nothing of its name is set from, in a file that
+        hands its other frame arguments on under their own names: the author passed each
+        frame on and missed this one (zed-ros-wrapper#248 and #392: ``imu_frame``
+        declared beside ``left_camera_frame`` and the others, never given to the
+        node)."""
+        return self.passed is None and self.sibling is not None and _names_a_frame(self.name)
 
     @property
     def frame_dropped(self) -> bool:
@@ -123,6 +145,7 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
                     for name, element in declared if name in pending]
     eval_only = data is not None
     passed: dict[str, Element] = {}
+    forwarded: dict[str, Element] = {}
     # In document order (the first include argument or parameter of a name is the one
     # named).
     stack: list[tuple[Element, str]] = [(child, INTERFACE) for child in reversed(root.children)]
@@ -136,6 +159,8 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
         if element.text:
             _reads(element.text, pending, eval_only)
         name = element.attrib.get("name", "")
+        if _names_a_frame(name) and _forwards(element, tag, parent, name):
+            forwarded.setdefault(name.rsplit("/", 1)[-1], element)
         if tag == "arg" and parent == "include" and FRAME in name.lower():
             passed.setdefault(name, element)
         elif tag == "param" and FRAME in name.lower() and "$(" not in name:
@@ -152,8 +177,19 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
         if name not in pending:
             continue
         given = passed.get(name)
+        sibling = next(((other, at.line, at.column) for other, at in forwarded.items()
+                        if other != name), None)
         out.append(UnusedArg(
             name, element.line, element.column, element.attrib.get("default"),
             None if given is None else (given.line, given.column),
-            None if given is None else given.attrib.get("value")))
+            None if given is None else given.attrib.get("value"), sibling))
     return out
+
+
+def _forwards(element: Element, tag: str, parent: str, name: str) -> bool:
+    """Whether ``element`` (an include's ``<arg>`` or a ``<param>``) is given the file's
+    argument of its own name: ``value="$(arg NAME)"``, NAME its name's last part."""
+    if not (tag == "param" or (tag == "arg" and parent == "include")):
+        return False
+    match = ARG_READ.fullmatch(element.attrib.get("value", "").strip())
+    return match is not None and match.group(1) == name.rsplit("/", 1)[-1]

@@ -324,7 +324,9 @@ class RobotElement(Record):
     kind: str
     """``link``, ``joint``, ``material``, or ``origin``: an ``<origin>`` urdfdom ignores
     (a second one in a link's ``<visual>``, ``<collision>``, ``<inertial>`` or in a joint),
-    named after its owner (``<visual> of link 'x'``)."""
+    named after its owner (``<visual> of link 'x'``), or ``mimic``: a joint's ``<mimic>``,
+    named after the joint it mimics, just after its joint (and that joint's ignored
+    ``<origin>`` elements) in the description's ``elements``."""
     name: str | None
     path: str
     line: int

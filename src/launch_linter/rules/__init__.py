@@ -85,6 +85,7 @@ def _load() -> None:
         unused_suppression,
         urdf_duplicate_name,
         urdf_empty_robot,
+        urdf_mimic_unknown,
         urdf_missing_link,
         urdf_repeated_origin,
         urdf_root,

@@ -62,6 +62,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("urdf_missing_link", Category.TF),
     ("urdf_empty_robot", Category.TF),
     ("urdf_repeated_origin", Category.TF),
+    ("urdf_mimic_unknown", Category.TF),
     ("xacro_error", Category.TF),
     ("xacro_unused_block", Category.TF),
     ("xacro_param_as_arg", Category.TF),

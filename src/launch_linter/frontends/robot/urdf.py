@@ -157,6 +157,8 @@ def elements_of(root: ExpandedNode, display: Display,
                                 outer & _condition(element.conditions), defined, included))
         if element.tag in ("link", "joint"):
             out.extend(_ignored_origins(element, name, display, outer))
+        if element.tag == "joint":
+            out.extend(_mimic(element, display, outer))
     return out, known
 
 
@@ -182,6 +184,19 @@ def _ignored_origins(element: ExpandedNode, name: str | None, display: Display,
             out.append(RobotElement("origin", owner, display(at[0]), at[1], at[2],
                                     outer & _condition(origin.conditions), defined))
     return out
+
+
+def _mimic(joint: ExpandedNode, display: Display, outer: Condition) -> list[RobotElement]:
+    """The joint's ``<mimic>`` as an element of kind ``mimic`` named after the joint it
+    mimics (urdfdom's joint.cpp reads ``FirstChildElement("mimic")`` and its ``joint``
+    attribute); none when the joint has no ``<mimic>`` or the name is unknown."""
+    mimic = _first(joint, "mimic")
+    if mimic is None or "joint" in mimic.unknown or "joint" not in mimic.attrib:
+        return []
+    at = mimic.call or (mimic.path, mimic.line, mimic.column)
+    defined = None if mimic.call is None else (display(mimic.path), mimic.line, mimic.column)
+    return [RobotElement("mimic", mimic.attrib["joint"], display(at[0]), at[1], at[2],
+                         outer & _condition(mimic.conditions), defined)]
 
 
 SIMULATOR_PACKAGE = "gazebo"
