@@ -158,7 +158,9 @@ CASES = [
          ros1('  <node pkg="hector_mapping" type="hector_mapping" name="hector_mapping">\n'
               '    <param name="odom_frame" value="nav"/>\n  </node>',
               stp("tf", "map_nav_broadcaster", "0 0 0 0 0 0 map nav 100")),
-         "frame_authority", "fails"),
+         # Still reported, at info: frame_authority's verdicts together are below the
+         # warning level's 90% (precision trial 7, docs/severity.md).
+         "frame_authority", "info"),
     Case("dfb1f12ed472", "FALSE", "gnss_and_INS.launch",
          ros1('  <rosparam command="load" file="$(find ndt_localizer)/cfgs/gnss_and_INS.yaml"/>',
               stp("tf2_ros", "odom_to_base_link", "0 0 0 0 0 0 odom base_link"),

@@ -298,3 +298,29 @@ def test_a_root_sensor_link_a_known_plugin_tracks_is_still_proven(tmp_path: Path
     (tmp_path / "robot.urdf").write_text(CAMERA_MODEL)
     (untracked,) = lint_paths([str(launch)], options).diagnostics
     assert untracked.severity.value == "info" and "is not known" in untracked.message
+
+
+def _package(tmp_path: Path, build: str) -> Path:
+    folder = tmp_path / build / "robot_description"
+    folder.mkdir(parents=True)
+    (folder / "package.xml").write_text(
+        f'<package format="3"><name>robot_description</name><version>0.1.0</version>'
+        f"<description>d</description><maintainer email='a@b.c'>a</maintainer>"
+        f"<license>BSD</license><buildtool_depend>{build}</buildtool_depend>"
+        f"<export><build_type>{build}</build_type></export></package>")
+    return folder
+
+
+def test_a_description_alone_runs_the_plugins_of_its_packages_ros(tmp_path: Path) -> None:
+    """hamster_gazebo's ROS 1 (catkin) description names no frame for its
+    libgazebo_ros_camera plugin: ROS 1's camera utilities then stamp /world (their
+    <frameName> default), not the sensor's link as ROS 2's plugin does."""
+    fault = ROBOT.format(rpy=OPTICAL_RPY, filename="libgazebo_ros_camera.so", body="")
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    for build, expected in (("ament_cmake", "'camera_link' (frame_name)"),
+                            ("catkin", "'world' (frameName)")):
+        path = _package(tmp_path, build) / "robot.urdf"
+        path.write_text(fault)
+        (found,) = lint_paths([str(path)], options).diagnostics
+        assert expected in found.message
+        assert (found.severity.value == "warning") == (build == "ament_cmake")

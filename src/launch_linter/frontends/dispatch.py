@@ -12,7 +12,7 @@ from __future__ import annotations
 from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.robot.standalone import load_description
 from launch_linter.frontends.ros1 import LoadOptions, Ros1Loader, load_ros1
-from launch_linter.frontends.xml_dialect import is_ros2_xml
+from launch_linter.frontends.xml_dialect import is_ros2_xml, reads_as_python
 from launch_linter.model.launch import LaunchTree
 from launch_linter.resolve.xml_safe import read_launch_bytes
 from launch_linter.workspace.discovery import is_description_name
@@ -23,7 +23,8 @@ def front_end(path: str, data: bytes | None, ros_version: int | None = None) -> 
 
     ``ros_version`` (from ``--ros`` or the package) decides for XML when given."""
     name = path.lower()
-    if name.endswith((".py", ".yaml", ".yml")):
+    if name.endswith((".py", ".yaml", ".yml")) or (data is not None
+                                                   and reads_as_python(path, data)):
         return "ros2"
     if ros_version is not None:
         return "ros2" if ros_version == 2 else "ros1"

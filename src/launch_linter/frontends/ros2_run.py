@@ -41,6 +41,7 @@ from launch_linter.frontends.ros2_include_args import ArgumentWatch
 from launch_linter.frontends.ros2_python import read_python
 from launch_linter.frontends.ros2_xml import read_xml
 from launch_linter.frontends.ros2_yaml import read_yaml
+from launch_linter.frontends.xml_dialect import reads_as_python
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
@@ -304,7 +305,7 @@ class Ros2Runner:
         display = self._display(absolute)
         if display not in self.files:
             self.files.append(display)
-        if absolute.endswith(".py"):
+        if reads_as_python(absolute, data):
             # __file__ is where the launch file runs from: its installed place.
             read = read_python(absolute, data, self.work, self.options.env,
                                lambda: self.options.packages.installed(absolute))
@@ -615,7 +616,7 @@ class Ros2Runner:
                        (self._display(frame.filename), action.where.line), frame.condition,
                        (*frame.calls, call), (*frame.sites, site))
         self.arguments.start(action, absolute, passed if action.args_known else {})
-        self.arguments.file_read(data, absolute.endswith(".py"))
+        self.arguments.file_read(data, reads_as_python(absolute, data))
         self._run(read.actions, scope, inner)
         self.arguments.finish(self._display)
 

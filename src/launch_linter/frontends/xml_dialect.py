@@ -8,6 +8,7 @@ launch_ros exposes and roslaunch does not (``<executable>``, ``<let>``, ``<set_e
 ``<include>`` of a Python or YAML launch file (not ``<param from=...>``: ROS 1 files
 write it for ``<remap from=...>``). :mod:`launch_linter.frontends.dispatch` picks the
 front-end with it, and the ROS 1 loader does not follow an include of such a file.
+:func:`reads_as_python` tells a Python script named ``*.launch`` from XML.
 """
 
 from __future__ import annotations
@@ -87,3 +88,16 @@ def without_comments(data: bytes) -> bytes:
             break
         position = end + 3
     return b"".join(pieces)
+
+
+def reads_as_python(path: str, data: bytes) -> bool:
+    """Whether ROS 2 reads the launch file ``path`` as Python: a ``*.py`` file, or a file
+    of another name whose first line is a ``#!`` naming python (nav2's
+    ``test_case_py.launch``). ros2 launch reads a file its XML and YAML front-ends refuse
+    as Python (launch's ``get_launch_description_from_any_launch_file`` tries the
+    front-ends, then Python), and no XML starts with ``#!``."""
+    if path.lower().endswith(".py"):
+        return True
+    first = data[:512].lstrip(b"\xef\xbb\xbf").split(b"\n", 1)[0]
+    return first.startswith(b"#!") and b"python" in first
+

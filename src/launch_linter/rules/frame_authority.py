@@ -57,7 +57,7 @@ from launch_linter.rules._tree import edges_of, finding_on
 
 ID = "frame_authority"
 CATEGORY = Category.TF
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 
 
 def check(context: RuleContext) -> Iterator[Finding]:

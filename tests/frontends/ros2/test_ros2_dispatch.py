@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
-from launch_linter import LintOptions, lint_text
+from launch_linter import LintOptions, lint_paths, lint_text
 from launch_linter.frontends.dispatch import front_end
 
 ROS1_NODE = '<node pkg="tf" type="static_transform_publisher" name="t" args="0 0 0 0 0 0 a b 100"/>'
@@ -82,3 +84,30 @@ def test_lint_text_reads_python_and_yaml_by_suffix() -> None:
         result = lint_text(text, path, LintOptions(package_paths=()))
         assert [(t.parent, t.child) for t in result.transforms] == [("a", "b")]
         assert result.files[0].status.value == "ok"
+
+
+def test_a_python_script_named_launch_is_read_as_python(tmp_path: Path) -> None:
+    """nav2's waypoint_follower/test_case_py.launch is a Python script (#! python3):
+    ros2 launch reads what its XML front-end refuses as Python, and no XML starts with
+    #!; it was a false 'not well-formed XML' parse_error."""
+    python = (
+        "#!/usr/bin/env python3\n"
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='tf2_ros', "
+        "executable='static_transform_publisher', arguments=['--frame-id', 'a', "
+        "'--child-frame-id', 'b'])])\n"
+    )
+    script = tmp_path / "test_case_py.launch"
+    script.write_text(python)
+    result = lint_paths([str(script)], LintOptions(package_paths=()))
+    assert [(t.parent, t.child, t.ros_version) for t in result.transforms] == [("a", "b", 2)]
+    assert [d.rule for d in result.diagnostics] == []
+    assert front_end("a.launch", python.encode()) == "ros2"
+    # Anything else that is no XML stays a parse error, as roslaunch and launch say.
+    shell = tmp_path / "run.launch"
+    shell.write_text("#!/bin/sh\nroslaunch x y.launch\n")
+    assert front_end(str(shell), shell.read_bytes()) == "ros1"
+    assert [d.rule for d in lint_paths([str(shell)], LintOptions(package_paths=())
+                                       ).diagnostics] == ["parse_error"]

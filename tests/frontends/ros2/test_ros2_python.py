@@ -127,6 +127,30 @@ def test_a_number_in_the_arguments_is_a_launch_error(load: Load) -> None:
     assert rules(tree) == [("roslaunch_error", HEADER_LINES + 2)]
 
 
+def test_a_number_as_a_launch_configuration_default_is_its_text(load: Load) -> None:
+    # launch's LaunchConfiguration turns each item of ``default`` that is neither text nor a
+    # substitution into text with str() (kiss-icp's odometry.launch.py: default=0.1).
+    tree = load({"a.launch.py": launch_file(
+        "    z = LaunchConfiguration('z', default=0.5)\n"
+        "    on = LaunchConfiguration('on', default=True)\n"
+        "    return LaunchDescription([Node(package='tf2_ros',\n"
+        "        executable='static_transform_publisher', condition=IfCondition(on),\n"
+        "        arguments=['--z', z, '--frame-id', 'a', '--child-frame-id', 'b'])])\n"
+    )}, "a.launch.py")
+    assert tree.transforms[0].translation == (0.0, 0.0, 0.5)
+    assert rules(tree) == []
+
+
+def test_a_number_given_to_another_substitution_is_still_a_launch_error(load: Load) -> None:
+    tree = load({"a.launch.py": launch_file(
+        "    from launch.substitutions import EnvironmentVariable\n"
+        "    z = EnvironmentVariable('Z', default_value=0.5)\n"
+        "    return LaunchDescription([" + tf("['--z', z, '--frame-id', 'a', "
+                                              "'--child-frame-id', 'b']") + "])\n"
+    )}, "a.launch.py")
+    assert rules(tree) == [("roslaunch_error", HEADER_LINES + 3)]
+
+
 def test_unknown_values_are_unresolved_with_their_line(load: Load) -> None:
     tree = load({"a.launch.py": launch_file(
         "    from my_robot.frames import laser_frame\n"

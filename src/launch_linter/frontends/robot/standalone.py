@@ -17,6 +17,7 @@ from collections.abc import Callable, Mapping
 from launch_linter.frontends.robot.describe import RobotCache, read_description
 from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import FileStatus, LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionKind, DescriptionSource
 from launch_linter.resolve import reads
 from launch_linter.resolve.xml_safe import (
@@ -69,6 +70,14 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
                                        dict(env), standalone=True)
     if robot is None:
         return LaunchTree(shown, FileStatus.OK, (), tuple(problems), (shown,))
+    ros = packages.ros_version_of(path)
+    if ros is not None:
+        # No launch file says which ROS runs the description: its package's build type
+        # does (catkin: ROS 1, ament: ROS 2), for each plugin whose parameters' spelling
+        # does not. The versions' plugins differ (ROS 1's camera utilities stamp /world
+        # without a <frameName>, ROS 2's camera the sensor's link).
+        robot = replace(robot, plugins=tuple(
+            p if p.ros is not None else replace(p, ros=ros) for p in robot.plugins))
     return LaunchTree(shown, FileStatus.OK, (), tuple(problems), (shown,),
                       descriptions=(source,), joints=robot.joints, robots=(robot,))
 

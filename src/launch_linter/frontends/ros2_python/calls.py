@@ -369,8 +369,13 @@ class Calls(Expressions):
             return kwargs[name]
         return args[position] if position < len(args) else None
 
-    def subs(self, value: object, node: ast.AST, what: str) -> Subs:
-        """A value as launch's ``SomeSubstitutionsType``."""
+    def subs(self, value: object, node: ast.AST, what: str, texts: bool = False) -> Subs:
+        """A value as launch's ``SomeSubstitutionsType``; ``texts``: as the ``default`` of
+        ``LaunchConfiguration``, whose items that are neither text nor a substitution launch
+        turns into text with ``str()`` (launch/substitutions/launch_configuration.py), so a
+        number or a bool there is its text, not the error it is elsewhere."""
+        if texts and isinstance(value, (int, float)):
+            return literal(str(value))
         if isinstance(value, str):
             return literal(value)
         if isinstance(value, (SubsVal, LazyStr)):
@@ -380,7 +385,7 @@ class Calls(Expressions):
         if isinstance(value, (list, tuple)):
             parts: list[Sub] = []
             for item in value:
-                parts.extend(self.subs(item, node, what))
+                parts.extend(self.subs(item, node, what, texts))
             return tuple(parts)
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             self.problem("roslaunch_error", node, f"{what} {value!r} is a number: launch "

@@ -71,14 +71,15 @@ _OS_CALLS = frozenset({
 """The ``os``/``pathlib`` functions the interpreter models (:meth:`.Calls.os_call`)."""
 
 
-def _substitution(kind: str, arity: int) -> Callable[..., object]:
-    """A launch substitution class, as a method of :class:`Interpreter`."""
+def _substitution(kind: str, arity: int, texts: int = -1) -> Callable[..., object]:
+    """A launch substitution class, as a method of :class:`Interpreter` (``texts``: the
+    position of the argument whose items launch turns into text, see :meth:`Calls.subs`)."""
 
     def make(self: Interpreter, args: list[object], kwargs: dict[str, object],
              node: ast.Call) -> object:
         values = list(args) + list(kwargs.values())
-        subs = tuple(self.subs(v, node, "substitution argument")
-                     for v in values[:arity] if v is not None)
+        subs = tuple(self.subs(v, node, "substitution argument", i == texts)
+                     for i, v in enumerate(values[:arity]) if v is not None)
         site = self.where(node)
         return SubsVal((Call(kind, subs, self.segment(node), (site.line, site.column)),))
 
@@ -422,7 +423,7 @@ class Interpreter(Calls):
                                        f"returns none the linter can follow"),)
         return (*notes, *found)
 
-    launch_LaunchConfiguration = _substitution("var", 2)
+    launch_LaunchConfiguration = _substitution("var", 2, texts=1)
     launch_EnvironmentVariable = _substitution("env", 2)
     launch_FindPackageShare = _substitution("find-pkg-share", 1)
     launch_FindPackagePrefix = _substitution("find-pkg-prefix", 1)
@@ -480,9 +481,8 @@ class Interpreter(Calls):
         return CondVal(Predicate(True, (Call("equals", ((variable,), expected),
                                              self.segment(node)),)))
 
-    def launch_LaunchConfigurationNotEquals(self, args: list[object],
-                                            kwargs: dict[str, object], node: ast.Call
-                                            ) -> object:
+    def launch_LaunchConfigurationNotEquals(self, args: list[object], kwargs: dict[str, object],
+                                            node: ast.Call) -> object:
         condition = self.launch_LaunchConfigurationEquals(args, kwargs, node)
         assert isinstance(condition, CondVal)
         return CondVal(Predicate(False, condition.predicate.expression))
