@@ -359,3 +359,19 @@ def test_a_package_xml_is_parsed_once_for_both_questions(
                 '</launch>\n')
     assert transforms(top) == ["b"]
     assert len(parsed) == 1
+
+
+def test_a_package_found_twice_in_the_roots_proves_nothing_absent(tmp_path: Path) -> None:
+    # Single-package repositories cloned side by side (a driver and its fork): the linted
+    # one's parent folder is the root, colcon refuses two packages of one name, and which
+    # copy's files get installed is unknown. One copy alone still proves absence.
+    install = "install(DIRECTORY params DESTINATION share/${PROJECT_NAME})"
+    fork = ament_package(tmp_path / "Fork", "driver", install)
+    mine = ament_package(tmp_path / "mine", "driver", install)
+    write(mine / "params" / "GS2.yaml", "x")
+    index = PackageIndex([str(tmp_path)])
+    unknown = index.locate(str(fork / "params" / "GS2.yaml"))
+    assert unknown.path is None and not unknown.absent
+    assert "found in 2 places" in unknown.reason
+    alone = PackageIndex([str(tmp_path / "Fork")]).locate(str(fork / "params" / "GS2.yaml"))
+    assert alone.path is None and alone.absent

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 import pytest
@@ -111,6 +112,45 @@ def test_malformed_xml_is_an_error_with_a_position(data: bytes, fragment: str) -
         parse_xml(data)
     assert fragment in caught.value.message
     assert caught.value.line >= 1 and caught.value.column >= 1
+
+
+@pytest.mark.parametrize(
+    ("data", "line", "tag"),
+    [
+        # jackal_control's control.launch: '</group' and no '>' (expat stops at line 3).
+        (b"<launch>\n  <group>\n  </group\n\n  <node/>\n</launch>\n", 3, "</group"),
+        (b'<launch>\n  <node name="a"\n  <param name="x"/>\n</launch>', 2, "<node"),
+    ],
+)
+def test_a_tag_left_without_its_end_is_placed_where_it_starts(data: bytes, line: int,
+                                                               tag: str) -> None:
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert (caught.value.line, caught.value.column) == (line, 3)
+    assert f"'{tag}' is not closed" in caught.value.message
+    assert "invalid token" in caught.value.message and caught.value.malformed
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        b'<launch>\n  <node args="x > y"\n  <param/>\n</launch>',  # a '>' in a value
+        b"<launch>\n  <node></launch>",  # expat's own place is the fault's
+        b"<launch>\n  <node/> & <node/>\n</launch>",  # not at a '<'
+    ],
+)
+def test_other_errors_stay_where_expat_stops(data: bytes) -> None:
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert "is not closed" not in caught.value.message and caught.value.line >= 2
+
+
+def test_a_tag_left_open_after_20000_lines_is_found_at_once() -> None:
+    data = b"<launch>\n" + b'  <arg name="a" default="1"/>\n' * 20_000 + b"  </group\n<x/>"
+    started = time.perf_counter()
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert caught.value.line == 20_002 and time.perf_counter() - started < 5
 
 
 def test_internal_entity_declarations_are_refused() -> None:

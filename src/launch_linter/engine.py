@@ -244,6 +244,7 @@ def load_options_for(
         study_errors=options.profile == "study",
         ros_version=ros_version_for(item.path, options, index),
         robots=robots,
+        knowledge=options.knowledge,
     )
 
 

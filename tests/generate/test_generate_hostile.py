@@ -42,7 +42,7 @@ def test_hostile_names_are_data_that_reads_back_exactly(standalone: Generated) -
     assert assigned == [
         "GENERATED", "LIMITATIONS", "P0", "SIG_IMPLICATION", "NAME_IMPLICATION",
         "SIG_NULL_DISP", "NAME_NULL_DISP", "SIG_NULL_ROT", "NAME_NULL_ROT", "BELIEF_TABLES",
-        "KNOWLEDGE", "VALUE_KNOWLEDGE", "PACKAGES", "MODULES",
+        "KNOWLEDGE", "PACKAGES", "MODULES",
     ]
 
 

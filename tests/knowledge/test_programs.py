@@ -21,7 +21,7 @@ from launch_linter.knowledge import (
     load,
     parse,
 )
-from launch_linter.knowledge.programs import CLOCK_ROLES, ClockFact, Installed
+from launch_linter.knowledge.programs import CLOCK_ROLES, ClockFact, Installed, NodeNames
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
 from launch_linter.workspace.config import load_knowledge_file
 
@@ -47,6 +47,19 @@ def user_file(tmp_path: Path, *entries: dict[str, object], file_format: int = 2)
     path.write_text(json.dumps({"format": file_format, "entries": list(entries)},
                                separators=(",", ":")))
     return str(path)
+
+
+def test_every_node_names_entry_names_its_program_and_cites_its_source() -> None:
+    facts = [f for f in load(str(bundled_path(PROGRAMS_FILE))).programs.facts
+             if isinstance(f, NodeNames)]
+    assert {(f.package, e) for f in facts for e in f.executables} >= {
+        ("mavros", "mavros_node"), ("tf2_ros", "static_transform_publisher"),
+        ("lio_sam", "lio_sam_imuPreintegration")}
+    for fact in facts:
+        assert fact.names and fact.executables and fact.ros == (2,), fact.id
+        assert fact.sources, fact.id
+        for source in fact.sources:
+            assert len(source.commit) == 40 and source.file and source.lines, fact.id
 
 
 def test_the_bundled_facts_name_known_distributions_once() -> None:
@@ -191,6 +204,12 @@ def test_a_file_of_format_1_keeps_loading_without_the_new_kinds(tmp_path: Path) 
     (clock_entry("x", "p", "ticks", executables=["a"]), "clock must be one of"),
     (clock_entry("x", "p", "none"), "executables or launch_files"),
     (clock_entry("x", "p", "none", launch_files=[7]), "launch_files"),  # type: ignore[list-item]
+    ({**clock_entry("x", "p", "none"), "kind": "node_names", "names": ["n"]},
+     "match.executables and names"),
+    ({**clock_entry("x", "p", "none", executables=["e"]), "kind": "node_names"},
+     "match.executables and names"),
+    ({**clock_entry("x", "p", "none", executables=["e"]), "kind": "node_names",
+      "names": ["n", ""]}, r"names\[1\] must be a non-empty string"),
     ({**clock_entry("x", "p", "none", executables=["a"]), "ros": [3]}, "ros"),
 ])
 def test_a_malformed_program_entry_is_refused_with_its_fault(entry: dict[str, object],
@@ -259,3 +278,62 @@ def test_nested_json_is_refused_with_a_message(tmp_path: Path) -> None:
     path.write_text('{"format": 2, "entries": ' + "[" * 100_000 + "]" * 100_000 + "}")
     with pytest.raises(KnowledgeError, match=r"not JSON|entries"):
         load_knowledge_file(str(path))
+
+
+# -- distributions: a run of the release order, or a list ----------------------------------
+
+def _bundled_distributions() -> dict[str, tuple[str, ...]]:
+    from launch_linter.knowledge import VALUES_FILE
+
+    programs = load(str(bundled_path(PROGRAMS_FILE)))
+    values = load(str(bundled_path(VALUES_FILE)))
+    return {**{f.id: f.distros for f in programs.programs.facts if isinstance(f, Installed)},
+            **{f.id: f.distros for f in values.values.values}}
+
+
+def test_a_distribution_added_to_the_order_needs_no_edit_of_open_entries(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from launch_linter.model import distro
+
+    before = _bundled_distributions()
+    assert before["robot_state_publisher_ros2"] == ROS2_DISTROS[ROS2_DISTROS.index("foxy"):]
+    newer = (*ROS2_DISTROS[:-1], "zenith", "rolling")
+    monkeypatch.setattr(distro, "ROS2_DISTROS", newer)
+    after = _bundled_distributions()
+    # Every entry whose run is open at the end (the program is still shipped) covers it,
+    # the others are unchanged.
+    grown = {i for i in before if after[i] != before[i]}
+    assert "robot_state_publisher_ros2" in grown
+    assert "nav2_amcl.robot_model_type.plugins" in grown
+    for entry_id in grown:
+        assert after[entry_id] == (*before[entry_id][:-1], "zenith", "rolling"), entry_id
+    assert after["nav2_amcl.robot_model_type.names"] == ("foxy", "galactic")
+    assert after["robot_state_publisher_noetic"] == ("noetic",)
+
+
+@pytest.mark.parametrize("changes, message", [
+    ({"since": "hydro"}, "since must be a distribution of ROS 1"),
+    ({"until": "humble"}, "until must be a distribution of ROS 1"),
+    ({"since": "noetic", "until": "kinetic"}, "since comes after its until"),
+    ({"since": "noetic", "distros": ["noetic"]}, "not both"),
+    ({"distros": ["noetic", "foxy"]}, "distros names 'foxy', not a distribution of ROS 1"),
+    ({"distros": []}, "distros must list distributions of ROS 1"),
+    ({}, "needs distros, or since and/or until"),
+    ({"since": "noetic", "ros": [1, 2]}, "one ROS version"),
+])
+def test_an_unknown_or_contradictory_distribution_is_a_fault(
+        changes: dict[str, object], message: str) -> None:
+    entry = installed_entry("x", "p", [], ["a"])
+    del entry["distros"]
+    entry.update(changes)
+    with pytest.raises(KnowledgeError, match=message):
+        parse({"format": 2, "entries": [entry]}, "user.json")
+
+
+def test_a_run_of_the_order_from_a_users_file(tmp_path: Path) -> None:
+    entry = installed_entry("mine", "my_base", [], ["driver"], ros=2)
+    del entry["distros"]
+    entry.update(since="humble", until="jazzy")
+    base = load_knowledge_file(user_file(tmp_path, entry))
+    assert [d for d in ROS2_DISTROS if base.installed("my_base", 2, d)] == [
+        "humble", "iron", "jazzy"]

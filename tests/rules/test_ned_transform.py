@@ -26,6 +26,11 @@ def launch(args: str) -> str:
         ("0 0 0 0 0 0 1 base_link base_link_ned", "has no rotation"),
         ("0.1 0 0 1.5708 0 3.1416 base_link base_link_ned", "has a displacement"),
         ("1 0 0 0 0 0 map map_NED", "has a displacement and has no rotation"),
+        # uuv_simulator 8d9ca306: pi in yaw turns x and y, z stays up (fixed: pi in roll).
+        ("0 0 0 3.141592653589793 0 0 rexrov/base_link rexrov/base_link_ned", "z axis"),
+        # yaw and roll swapped (ENU -> NED is yaw pi/2, roll pi): z ends horizontal.
+        ("0 0 0 3.14 0 1.57 odom odom_ned", "keeps the z axis of its ENU parent 'odom' up"),
+        ("0 0 0 0 0 0.7071068 0.7071068 map map_ned", "z axis"),  # a quarter turn in yaw
     ],
 )
 def test_reported(lint_diagnostics: LintDiagnostics, args: str, problem: str) -> None:
@@ -40,6 +45,12 @@ def test_reported(lint_diagnostics: LintDiagnostics, args: str, problem: str) ->
         "0 0 0 0.70710678 0.70710678 0 0 odom odom_ned",
         "0 0 0 0 0 0 base_link ned_frame",
         "1 0 0 0 0 0 base_link_ned base_link",
+        "0 0 0 0 0 3.141592653589793 rexrov/base_link rexrov/base_link_ned",  # roll pi
+        "0 0 0 0 0 3.14 base_link base_link_ned",  # a rounded pi still turns z down
+        "0 0 0 1 0 0 0 map world_ned",  # a half turn about x, as a quaternion
+        "0 0 0 3.14159 0 0 base_link_frd base_link_ned",  # an FRD parent's z is down
+        "0 0 0 1.5708 0 0 odom_ned imu_ned",  # a NED parent: z stays down
+        "0 0 0 1.5708 0 0 camera_optical_frame camera_ned",  # an optical parent
     ],
 )
 def test_passes(lint: Lint, args: str) -> None:

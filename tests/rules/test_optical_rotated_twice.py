@@ -14,12 +14,22 @@ def joint(name: str, parent: str, child: str, rpy: str = "0 0 0", kind: str = "f
             f'<child link="{child}"/>\n<origin xyz="0 0 0" rpy="{rpy}"/></joint>')
 
 
-def camera(depth_rpy: str, optical_rpy: str, kind: str = "fixed") -> str:
+def kinect(link: str = "camera_link", pose: str | None = None) -> str:
+    """A Gazebo depth camera rendering from ``link`` (its sensor turned by ``pose``)."""
+    turned = "" if pose is None else f"<pose>{pose}</pose>"
+    return (f'<gazebo reference="{link}"><sensor type="depth" name="cam">{turned}'
+            '<plugin name="kinect" filename="libgazebo_ros_openni_kinect.so">'
+            '<frameName>camera_depth_frame</frameName></plugin></sensor></gazebo>')
+
+
+def camera(depth_rpy: str, optical_rpy: str, kind: str = "fixed",
+           sensor: str | None = kinect()) -> str:
     return robot("\n".join([
         link("camera_link"), link("camera_depth_frame"), link("camera_depth_optical_frame"),
         joint("depth_joint", "camera_link", "camera_depth_frame", depth_rpy, kind),
         joint("optical_joint", "camera_depth_frame", "camera_depth_optical_frame",
               optical_rpy),
+        *([] if sensor is None else [sensor]),
     ]))
 
 
@@ -29,8 +39,34 @@ def found(text: str) -> list[tuple[int, str, tuple[int, ...]]]:
 
 
 def test_optical_joint_under_a_frame_already_turned_optical_is_found_at_its_origin() -> None:
-    # Lines: 1 <robot>, 2-4 links, 5-6 depth_joint, 7-8 optical_joint.
+    # Lines: 1 <robot>, 2-4 links, 5-6 depth_joint, 7-8 optical_joint. The simulated
+    # camera renders along camera_link, above both rotations (create_autonomy#177).
     assert found(camera(OPTICAL_RPY, OPTICAL_RPY)) == [(8, "warning", (7, 5))]
+
+
+def test_without_a_camera_rendering_above_both_rotations_it_is_info() -> None:
+    # navigation2's nav2_system_tests/urdf/turtlebot3_waffle.urdf: no camera in the
+    # description (the simulator's SDF model has it), nothing proves the view direction.
+    no_camera = lint_urdf(camera(OPTICAL_RPY, OPTICAL_RPY, sensor=None), RULE)
+    assert [(d.line, d.severity.value) for d in no_camera] == [(8, "info")]
+    assert "may be the camera's mount" in no_camera[0].message
+    # A sensor whose <pose> turns the view: the direction it renders along is not the
+    # link's x axis.
+    assert [level for _, level, _ in found(camera(
+        OPTICAL_RPY, OPTICAL_RPY, sensor=kinect(pose="0 0 0 0 0.5 0")))] == ["info"]
+
+
+def test_a_camera_mounted_looking_along_its_mounts_z_axis_is_info() -> None:
+    # A tool camera (chenzixin-zn/my_robot_description's grinder): the camera body is
+    # turned from the tool by the optical rotation (its x along the tool's z), and its
+    # optical frame once more from the body, which the camera renders along: right.
+    text = robot("\n".join([
+        link("tool"), link("cam_link"), link("cam_optical_frame"),
+        joint("mount", "tool", "cam_link", OPTICAL_RPY),
+        joint("optical", "cam_link", "cam_optical_frame", OPTICAL_RPY),
+        kinect("cam_link"),
+    ]))
+    assert [level for _, level, _ in found(text)] == ["info"]
 
 
 def test_one_optical_rotation_is_silent() -> None:

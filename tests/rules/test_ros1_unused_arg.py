@@ -147,3 +147,12 @@ def test_twenty_thousand_frame_arguments_beside_forwarded_ones_take_linear_time(
     unread = unused_args(root)
     assert time.process_time() - started < 60
     assert len(unread) == 10_000 and all(arg.frame_forgotten for arg in unread)
+
+
+def test_an_eval_written_with_a_character_reference_is_still_read() -> None:
+    # The bytes never spell "eval": the walk (made for the unread frame argument) must
+    # still read the values, which it skips only in a file that cannot hold an $(eval).
+    xml = ('<launch><arg name="x" default="1"/><arg name="base_frame" default="base"/>'
+           '<param name="a" value="$(&#101;val x + 1)"/></launch>')
+    assert found(xml) == [(1, "info", ())]
+    assert len(found(xml.replace("&#101;val", "xval"))) == 2

@@ -3,6 +3,7 @@ given to (rclcpp's key matching: a leading `/` added, `/*` one name, `/**` any).
 
 from __future__ import annotations
 
+import json
 import time
 from pathlib import Path
 
@@ -225,3 +226,37 @@ def test_many_keys_against_a_programs_names_stay_bounded(tmp_path: Path) -> None
     start = time.process_time()
     assert [level for _, _, level in run(tmp_path, launch, params)] == ["info"]
     assert time.process_time() - start < 30
+
+
+def test_a_users_node_names_entry_makes_its_program_checked(tmp_path: Path) -> None:
+    from launch_linter.knowledge import bundled
+    from launch_linter.workspace.config import load_knowledge_file
+
+    names = {"id": "node_names_my_driver", "kind": "node_names", "ros": [2],
+             "match": {"package": "p", "executables": ["e"]}, "names": ["my_driver"],
+             "sources": [{"repository": "me/p", "package": "p", "file": "src/e.cpp",
+                          "ref": "main", "commit": "0" * 40, "lines": "12"}]}
+    # The user's entry for tf2_ros's program replaces the bundled one of its id.
+    fixed = {**names, "id": "node_names_tf2_ros_static_transform_publisher",
+             "match": {"package": "tf2_ros", "executables": ["static_transform_publisher"]},
+             "names": ["static_transform_publisher"]}
+    knowledge = tmp_path / "knowledge.json"
+    knowledge.write_text(json.dumps({"format": 2, "entries": [names, fixed]}))
+    base = bundled().extended(load_knowledge_file(str(knowledge)))
+    (tmp_path / "params.yaml").write_text(KEYED.format(key="/other"))
+
+    def findings(package: str, executable: str, with_user: bool) -> list[tuple[int, str]]:
+        path = tmp_path / "a.launch.py"
+        path.write_text(PY.format(nodes=UNNAMED.format(package=package,
+                                                       executable=executable, extra="")))
+        options = LintOptions(package_paths=(), select=frozenset({RULE}),
+                              knowledge=base if with_user else None)
+        return [(d.line, d.severity.value)
+                for d in lint_paths([str(path)], options).diagnostics]
+
+    assert findings("p", "e", False) == []
+    assert findings("p", "e", True) == [(1, "error")]
+    assert findings("tf2_ros", "static_transform_publisher", False) == [(1, "info")]
+    assert findings("tf2_ros", "static_transform_publisher", True) == [(1, "error")]
+    assert base.node_names("lio_sam", "lio_sam_imuPreintegration") == (
+        "lio_sam_imu_preintegration", "lio_sam_transformFusion")

@@ -9,8 +9,9 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 
+from launch_linter.knowledge import KnowledgeBase
 from launch_linter.knowledge.publish import truth
-from launch_linter.knowledge.values import LaunchFact, bundled
+from launch_linter.knowledge.values import LaunchFact
 
 MAX_TARGET_TEXT = 2_000
 _PACKAGE = re.compile(
@@ -48,12 +49,13 @@ class Started:
         self.fact = fact
 
 
-def started_by(text: str, ros: int, arguments: Mapping[str, str | None]) -> list[Started]:
+def started_by(text: str, ros: int, arguments: Mapping[str, str | None],
+               knowledge: KnowledgeBase) -> list[Started]:
     """The known nodes the included file written ``text`` starts, given the include's
     ``arguments`` (None: an unresolved value); none when the file is not known, its
     parameter file is not given or not resolved, or it may start none of them."""
     target = include_target(text)
-    fact = None if target is None else bundled().launch_file(*target)
+    fact = None if target is None else knowledge.values.launch_file(*target)
     if fact is None or fact.ros != ros:
         return []
     parameter_file = arguments.get(fact.parameter_file_argument)

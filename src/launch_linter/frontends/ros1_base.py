@@ -38,6 +38,9 @@ from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_la
 from launch_linter.workspace.launch_checks import only_parse_checked
 from launch_linter.workspace.packages import PackageIndex
 
+if typing.TYPE_CHECKING:
+    from launch_linter.knowledge import KnowledgeBase
+
 STATIC_TF_TYPE = "static_transform_publisher"
 TF_PACKAGES = ("tf", "tf2_ros")
 MAX_INCLUDE_DEPTH = 32
@@ -90,8 +93,12 @@ class LoadOptions(Record):
     """1 or 2 to read an XML root file as that ROS's launch XML; None: by its content."""
     robots: RobotCache | None
     """Robot descriptions expanded in this run (None: a new cache per tree)."""
+    knowledge: KnowledgeBase | None
+    """The run's knowledge base (the configuration's files over the bundled one); None:
+    the bundled one."""
 
-    __slots__ = ("args", "env", "packages", "display_path", "study_errors", "ros_version", "robots")
+    __slots__ = ("args", "env", "packages", "display_path", "study_errors", "ros_version",
+                 "robots", "knowledge")
 
     def __init__(
         self,
@@ -102,6 +109,7 @@ class LoadOptions(Record):
         study_errors: bool = False,
         ros_version: int | None = None,
         robots: RobotCache | None = None,
+        knowledge: KnowledgeBase | None = None,
     ) -> None:
         _set(self, "args", {} if args is None else args)
         _set(self, "env", {} if env is None else env)
@@ -110,6 +118,7 @@ class LoadOptions(Record):
         _set(self, "study_errors", study_errors)
         _set(self, "ros_version", ros_version)
         _set(self, "robots", robots)
+        _set(self, "knowledge", knowledge)
 
 
 class _AnonNames:

@@ -117,9 +117,12 @@ def _declared(root: Element) -> list[tuple[str, Element]]:
     a literal name and no ``value``."""
     out: list[tuple[str, Element]] = []
     for child in root.children:
-        name = child.attrib.get("name", "")
-        if (child.tag.lower() == "arg" and name and "$(" not in name
-                and "value" not in child.attrib):
+        tag = child.tag  # the tag as written first: a ``lower()`` per child costs more
+        if tag != "arg" and tag.lower() != "arg":
+            continue
+        attrib = child.attrib
+        name = attrib.get("name", "")
+        if name and "$(" not in name and "value" not in attrib:
             out.append((name, child))
     return out
 
@@ -135,8 +138,9 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
         # argument read) before any element is walked, and leaves the walk only the
         # ``$(eval)`` names. A read in an XML comment counts here, which can only leave
         # an argument unreported.
-        pending.difference_update(
-            read.decode("utf-8", "replace") for read in ARG_READ_BYTES.findall(data))
+        # Each name read is decoded once, however often the file reads it.
+        pending.difference_update([
+            read.decode("utf-8", "replace") for read in set(ARG_READ_BYTES.findall(data))])
         if not pending or (not any(word in data for word in WALK_WORDS) and not any(
                 FRAME in name.lower() for name in pending)):
             # Nothing the walk could add: no eval, no argument handed on unseen, and no
@@ -144,6 +148,10 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
             return [UnusedArg(name, element.line, element.column, element.attrib.get("default"))
                     for name, element in declared if name in pending]
     eval_only = data is not None
+    # With the ``$(arg)`` reads of the bytes dropped, a value can read an argument only
+    # through ``$(eval)``: in a file whose bytes spell no ``eval`` (nor a character
+    # reference, which could spell one) the walk has nothing to read in the values.
+    read_values = data is None or b"eval" in data or b"&#" in data
     passed: dict[str, Element] = {}
     forwarded: dict[str, Element] = {}
     # In document order (the first include argument or parameter of a name is the one
@@ -154,10 +162,11 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
         tag = element.tag.lower()
         if tag in HANDS_ON and _hands_on(element):
             return []
-        for value in element.attrib.values():
-            _reads(value, pending, eval_only)
-        if element.text:
-            _reads(element.text, pending, eval_only)
+        if read_values:
+            for value in element.attrib.values():
+                _reads(value, pending, eval_only)
+            if element.text:
+                _reads(element.text, pending, eval_only)
         name = element.attrib.get("name", "")
         if _names_a_frame(name) and _forwards(element, tag, parent, name):
             forwarded.setdefault(name.rsplit("/", 1)[-1], element)
@@ -168,7 +177,8 @@ def unused_args(root: Element, data: bytes | None = None) -> list[UnusedArg]:
             # argument was declared to carry (``<param name="odom_frame" value="$(arg
             # base_frame)"/>`` beside an unread ``odom_frame``).
             passed.setdefault(name.rsplit("/", 1)[-1], element)
-        stack.extend((child, tag) for child in reversed(element.children))
+        if element.children:  # most are leaves: no generator made for them
+            stack.extend((child, tag) for child in reversed(element.children))
     if not pending:
         # Every argument read: whatever comes after (even a pass_all_args) changes nothing.
         return []

@@ -184,7 +184,12 @@ RENAMING_WORDS = ("__node", "__name", "__ns")
 
 def may_rename(words: Sequence[str] | None) -> bool:
     """Arguments that may rename a node: not known (None), or naming a remapping of it."""
-    return words is None or any(w in word for word in words for w in RENAMING_WORDS)
+    if words is None:
+        return True
+    # One text searched, not each word three times (every node's arguments): no renaming
+    # word holds a newline, so none is found across two words; all three start "__n".
+    text = "\n".join(words)
+    return "__n" in text and any(w in text for w in RENAMING_WORDS)
 
 
 def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:

@@ -23,7 +23,7 @@ from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.known_launch import Started, started_by
-from launch_linter.frontends.node_names import default_node_names, unmatched_default_keys
+from launch_linter.frontends.node_names import unmatched_default_keys
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
     EMBEDDED_COSTMAPS,
@@ -81,6 +81,7 @@ from launch_linter.frontends.ros2_run import (
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.knowledge import bundled
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import (
     FileStatus,
@@ -150,6 +151,7 @@ class Ros2Loader(Ros2Runner):
 
     def __init__(self, options: LoadOptions) -> None:
         super().__init__(options)
+        self.knowledge = bundled() if options.knowledge is None else options.knowledge
         self.unmatched_param_files: list[UnmatchedParamFile] = []
         self.reached_param_files: set[str] = set()
         """Parameter files that some node of the tree takes (or may take) a section of."""
@@ -246,7 +248,8 @@ class Ros2Loader(Ros2Runner):
         # A controller manager without a name reads its file by its default name.
         section = (CONTROLLER_MANAGER_NAME if name is None and package == "controller_manager"
                    and executable == "ros2_control_node" else name)
-        defaults = default_node_names(package, executable) if name is None else ()
+        defaults = (self.knowledge.node_names(package, executable or "")
+                    if name is None else ())
         given = self._node_params(action.parameters, scope, frame, where, section,
                                   known_namespace, defaults)
         described = False
@@ -335,7 +338,7 @@ class Ros2Loader(Ros2Runner):
                     reads_configuration(value_subs, name), followed))
         if not followed and action.args_known:
             path = text_of(self._resolve(action.path, scope, frame, action.where))
-            for started in started_by(path, 2, given):
+            for started in started_by(path, 2, given, self.knowledge):
                 self._started(started, scope, frame, action.where)
 
     def _started(self, started: Started, scope: _Scope, frame: _Frame, where: Where) -> None:

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import jinja2
 
 from launch_linter.generate.embed import Embedding
-from launch_linter.knowledge import DATA_FILE, PROGRAMS_FILE, bundled_path, values
+from launch_linter.knowledge import BUNDLED_FILES, bundled_path
 from launch_linter.model.beliefs import BELIEF_CLASSES, BELIEF_FORMAT, BeliefSet
 from launch_linter.model.diagnostic import Belief
 
@@ -232,8 +232,7 @@ def render(beliefs: BeliefSet, embedding: Embedding, options: RenderOptions) -> 
         min_python=MIN_PYTHON,
         python=Code(".".join(str(v) for v in MIN_PYTHON)),
         knowledge=Code("(" + "".join(source_literal(_knowledge_text(name)) + ", "
-                                     for name in (DATA_FILE, PROGRAMS_FILE)) + ")"),
-        value_knowledge=source_literal(_read_data(values.bundled_path(), values.DATA_FILE)),
+                                     for name in BUNDLED_FILES) + ")"),
     )
 
 

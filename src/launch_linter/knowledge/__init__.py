@@ -6,8 +6,10 @@ composable node's plugin), a Gazebo plugin (``filename``) or a ros2_control cont
 (``type``), which tf edges it publishes as templates over its parameters (with the node's
 defaults), which parameters switch publishing off (``when``), and which frames it looks up.
 Format 2 adds entries about programs (``programs.json``, :mod:`.programs`): what a
-package's release installs and what a program does with ``/clock``; a file of format 1
-loads as before. Users add entries of the same forms in a JSON file named by the
+package's release installs and what a program does with ``/clock``; and the sections
+``values`` and ``launch_files`` (``param_values.json``, :mod:`.values`): the values nodes
+refuse or replace, and launch files of installed packages that start known nodes. A file
+of format 1 loads as before. Users add entries of the same forms in a JSON file named by the
 configuration's ``knowledge`` key (docs/knowledge.md). Standard library only: the core
 reads it.
 """
@@ -18,17 +20,24 @@ import json
 import os
 import re
 from collections import Counter
-from typing import Any, Mapping, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
+from launch_linter.knowledge.fields import MAX_KNOWLEDGE_BYTES as MAX_KNOWLEDGE_BYTES
+from launch_linter.knowledge.fields import EntryError, _sources, _text, _texts, item_line
 from launch_linter.knowledge.fields import KnowledgeError as KnowledgeError
 from launch_linter.knowledge.fields import Source as Source
-from launch_linter.knowledge.fields import _sources, _text, _texts
 from launch_linter.knowledge.programs import (
     PROGRAM_KINDS,
     ClockFact,
     Installed,
+    ProgramFact,
     Programs,
     parse_program_entry,
+)
+from launch_linter.knowledge.values import (
+    ValueKnowledge,
+    parse_launch,
+    parse_value,
 )
 from launch_linter.model.record import Record, _set
 
@@ -38,12 +47,17 @@ FORMATS = (1, 2)
 DATA_FILE = "tf_publishers.json"
 PROGRAMS_FILE = "programs.json"
 """The bundled entries about programs (format 2), beside the tf entries."""
+VALUES_FILE = "param_values.json"
+"""The bundled parameter values and known launch files (format 2's sections)."""
+BUNDLED_FILES = (DATA_FILE, PROGRAMS_FILE, VALUES_FILE)
+SECTIONS = ("entries", "values", "launch_files")
+"""The lists a knowledge file holds (format 1: ``entries`` only)."""
 KINDS = ("node", "gazebo_plugin", "controller")
-"""The kinds of format 1; format 2 adds ``installed`` and ``clock`` (:mod:`.programs`)."""
+"""The kinds of format 1; format 2 adds ``installed``, ``clock`` and ``node_names``
+(:mod:`.programs`)."""
 ROLES = ("localization", "odometry", "sensor", "robot")
 ROS1_DISTROS = ("kinetic", "lunar", "melodic", "noetic")
 """ROS 1 distributions in release order (``ros1_tf2_from`` names one)."""
-MAX_KNOWLEDGE_BYTES = 4 * 1024 * 1024
 ANY = "*"
 PLACEHOLDER = re.compile(r"\{([^{}]+)\}")
 """A ``{param}`` in a frame template (the parameter's value stands there)."""
@@ -241,12 +255,15 @@ class Entry(Record):
 class KnowledgeBase:
     """Entries by what they match; a user's entry overrides a bundled one of its id.
     ``facts`` are the entries about programs (:mod:`.programs`), looked up through
-    :meth:`installed`, :meth:`clock_program` and :meth:`clock_launch`."""
+    :meth:`installed`, :meth:`clock_program` and :meth:`clock_launch`; ``values`` the
+    parameter values and known launch files (:mod:`.values`)."""
 
     def __init__(self, entries: Sequence[Entry],
-                 facts: Sequence[Installed | ClockFact] = ()) -> None:
+                 facts: Sequence[ProgramFact] = (),
+                 values: ValueKnowledge | None = None) -> None:
         self.entries = tuple(entries)
         self.programs: Programs = Programs(tuple(facts))
+        self.values = ValueKnowledge() if values is None else values
         # Every launched node is looked up (several times per node, by several rules): the
         # node entries by package, in the base's order, so a lookup reads only those.
         self._nodes: dict[str, list[Entry]] = {}
@@ -284,12 +301,25 @@ class KnowledgeBase:
         """What a package's launch file (its path in the share folder) does with /clock."""
         return self.programs.clock_launch(package, launch, ros)
 
+    def node_names(self, package: str, executable: str, ros: int = 2) -> tuple[str, ...]:
+        """The names of the nodes a program runs when the launch file names none (empty:
+        not known)."""
+        return self.programs.node_names(package, executable, ros)
+
+    def ids(self) -> set[str]:
+        """The ids of every entry and fact (one name space: an id replaces its own)."""
+        return ({e.id for e in self.entries} | {f.id for f in self.programs.facts}
+                | {f.id for f in self.values.values} | {f.id for f in self.values.launch})
+
     def extended(self, other: KnowledgeBase) -> KnowledgeBase:
         """This base with ``other``'s entries first, replacing entries of the same id."""
-        ids = {e.id for e in other.entries} | {f.id for f in other.programs.facts}
+        ids = other.ids()
+        mine, theirs = self.values, other.values
         return KnowledgeBase(
             other.entries + tuple(e for e in self.entries if e.id not in ids),
-            other.programs.facts + tuple(f for f in self.programs.facts if f.id not in ids))
+            other.programs.facts + tuple(f for f in self.programs.facts if f.id not in ids),
+            ValueKnowledge(theirs.values + tuple(f for f in mine.values if f.id not in ids),
+                           theirs.launch + tuple(f for f in mine.launch if f.id not in ids)))
 
 
 def _glob(pattern: str, name: str) -> bool:
@@ -340,7 +370,7 @@ def _edge(data: Any, where: str, params: Mapping[str, object]) -> EdgeSpec:
 
 
 def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
-                ) -> Entry | Installed | ClockFact:
+                ) -> Entry | ProgramFact:
     """One entry of a file of ``file_format``, checked against it; :class:`KnowledgeError`
     names the fault."""
     if not isinstance(data, dict):
@@ -350,7 +380,7 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
     kind = _text(data.get("kind"), f"{where}.kind")
     kinds = KINDS + (PROGRAM_KINDS if file_format >= 2 else ())
     if kind not in kinds:
-        later = " (format 2 adds installed, clock)" if kind in PROGRAM_KINDS else ""
+        later = " (format 2 adds installed, clock, node_names)" if kind in PROGRAM_KINDS else ""
         raise KnowledgeError(f"{where}.kind must be one of {', '.join(kinds)}{later}")
     ros = data.get("ros")
     if not isinstance(ros, list) or not ros or any(v not in (1, 2) for v in ros):
@@ -453,25 +483,50 @@ def parse_entry(data: Any, where: str, origin: str, file_format: int = 1
     )
 
 
+def _section(data: dict[str, Any], name: str, origin: str, file_format: int) -> list[Any]:
+    items = data.get(name)
+    if items is None and (name != "entries" or file_format >= 2):
+        return []
+    if not isinstance(items, list):
+        raise KnowledgeError(f"{origin}: {name!r} must be a list")
+    if items and file_format < 2 and name != "entries":
+        raise KnowledgeError(f"{origin}: {name!r} needs format 2")
+    return items
+
+
 def parse(data: Any, origin: str) -> KnowledgeBase:
-    """A knowledge base from a decoded JSON document (``{"format": 2, "entries": [...]}``;
-    format 1 as before, without the entries about programs)."""
+    """A knowledge base from a decoded JSON document (``{"format": 2, "entries": [...],
+    "values": [...], "launch_files": [...]}``, each list optional; format 1 as before:
+    ``entries``, without the entries about programs). A fault of one item is an
+    :class:`EntryError`."""
     file_format = data.get("format") if isinstance(data, dict) else None
-    if file_format not in FORMATS:
+    if not isinstance(data, dict) or file_format not in FORMATS:
         raise KnowledgeError(f"{origin}: not a knowledge file of format "
                              f"{' or '.join(map(str, FORMATS))}")
-    entries = data.get("entries")
-    if not isinstance(entries, list):
-        raise KnowledgeError(f"{origin}: 'entries' must be a list")
-    parsed = [parse_entry(item, f"{origin}: entries[{i}]", origin, file_format)
-              for i, item in enumerate(entries)]
+    readers: dict[str, Callable[[Any, str], Any]] = {
+        "entries": lambda item, where: parse_entry(item, where, origin, file_format),
+        "values": parse_value,
+        "launch_files": parse_launch,
+    }
+    read: dict[str, list[Any]] = {}
+    for name in SECTIONS:
+        items = read[name] = []
+        for index, item in enumerate(_section(data, name, origin, file_format)):
+            try:
+                items.append(readers[name](item, f"{origin}: {name}[{index}]"))
+            except KnowledgeError as exc:
+                raise EntryError(str(exc), name, index) from None
+    parsed: list[Entry | ProgramFact] = read["entries"]
+    facts = ValueKnowledge(tuple(read["values"]), tuple(read["launch_files"]))
     # Counted once: a file of tens of thousands of entries is checked in linear time.
-    duplicates = sorted(i for i, n in Counter(e.id for e in parsed).items() if n > 1)
+    ids = Counter([e.id for e in parsed] + [f.id for f in facts.values]
+                  + [f.id for f in facts.launch])
+    duplicates = sorted(i for i, n in ids.items() if n > 1)
     if duplicates:
         shown = ", ".join(duplicates[:10]) + (" ..." if len(duplicates) > 10 else "")
         raise KnowledgeError(f"{origin}: entry ids used twice: {shown}")
     return KnowledgeBase([e for e in parsed if isinstance(e, Entry)],
-                         [e for e in parsed if not isinstance(e, Entry)])
+                         [e for e in parsed if not isinstance(e, Entry)], facts)
 
 
 def load(path: str) -> KnowledgeBase:
@@ -488,12 +543,21 @@ def load(path: str) -> KnowledgeBase:
 
 
 def from_bytes(raw: bytes, origin: str) -> KnowledgeBase:
-    """A knowledge file's content (JSON); ``origin`` names it in messages."""
+    """A knowledge file's content (JSON); ``origin`` names it in messages, and the line
+    where a faulty item begins (``user.json:12: entries[3] (my_node).match ...``)."""
     try:
-        data = json.loads(raw.decode("utf-8"))
+        text = raw.decode("utf-8")
+        data = json.loads(text)
     except (UnicodeDecodeError, ValueError, RecursionError) as exc:
         raise KnowledgeError(f"{origin}: not JSON: {exc}") from None
-    return parse(data, origin)
+    try:
+        return parse(data, origin)
+    except EntryError as exc:
+        line = item_line(text, exc.section, exc.index)
+        message = str(exc)
+        if line is not None and message.startswith(f"{origin}: "):
+            message = f"{origin}:{line}: {message[len(origin) + 2:]}"
+        raise KnowledgeError(message) from None
 
 
 _BUNDLED: list[KnowledgeBase] = []
@@ -511,18 +575,20 @@ def bundled_path(name: str = DATA_FILE) -> str | None:
 def _joined(bases: Sequence[KnowledgeBase]) -> KnowledgeBase:
     """The bundled files' entries as one base, in the files' order."""
     return KnowledgeBase([e for b in bases for e in b.entries],
-                         [f for b in bases for f in b.programs.facts])
+                         [f for b in bases for f in b.programs.facts],
+                         ValueKnowledge(tuple(f for b in bases for f in b.values.values),
+                                        tuple(f for b in bases for f in b.values.launch)))
 
 
 def use_bundled(*texts: str) -> None:
-    """Make ``texts`` (the data files' JSON, ``DATA_FILE``'s then ``PROGRAMS_FILE``'s)
-    the bundled knowledge base."""
+    """Make ``texts`` (the data files' JSON, those of ``BUNDLED_FILES`` in order) the
+    bundled knowledge base."""
     _BUNDLED[:] = [_joined([parse(json.loads(text), "bundled") for text in texts])]
 
 
 def bundled() -> KnowledgeBase:
     """The knowledge base shipped with the linter (read once per process)."""
     if not _BUNDLED:
-        paths = [bundled_path(name) for name in (DATA_FILE, PROGRAMS_FILE)]
+        paths = [bundled_path(name) for name in BUNDLED_FILES]
         _BUNDLED.append(_joined([load(p) for p in paths if p is not None]))
     return _BUNDLED[0]

@@ -1,7 +1,9 @@
 """What values nodes accept for their enumerated parameters, per distribution, and which
 launch files of installed packages start which known nodes from a parameter file: data
-(``param_values.json``, each fact citing the file, branch, commit and lines it was read
-from; docs/knowledge.md), loaded in the style of the tf publishers' knowledge base.
+(the ``values`` and ``launch_files`` of a knowledge file of format 2: the bundled ones in
+``param_values.json``, each fact citing the file, branch, commit and lines it was read
+from; docs/knowledge.md), read by the loader of :mod:`launch_linter.knowledge` and extended
+by a user's files as the tf entries are.
 
 - :class:`ValueFact`: a node's (or a ros2_control controller's) parameter, the values its
   release for ``distros`` accepts, and what it does with another: ``fails`` (it refuses
@@ -18,17 +20,18 @@ Standard library only: the core reads it.
 
 from __future__ import annotations
 
-import json
-import os
 import re
 from typing import Any
 
-from launch_linter.knowledge import MAX_KNOWLEDGE_BYTES
-from launch_linter.knowledge.fields import KnowledgeError, Source, _sources, _text
-from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+from launch_linter.knowledge.fields import (
+    KnowledgeError,
+    Source,
+    _distributions,
+    _sources,
+    _text,
+    _texts,
+)
 
-DATA_FILE = "param_values.json"
-FORMAT = 1
 OUTCOMES = ("fails", "falls_back")
 
 
@@ -103,12 +106,6 @@ class LaunchFact:
         self.sources = sources
 
 
-def _texts(value: Any, where: str, empty: bool = True) -> tuple[str, ...]:
-    if not isinstance(value, list) or (not empty and not value):
-        raise KnowledgeError(f"{where} must be a list of strings")
-    return tuple(_text(item, f"{where}[{i}]") for i, item in enumerate(value))
-
-
 def _ros(value: Any, where: str) -> int:
     if value not in (1, 2):
         raise KnowledgeError(f"{where} must be 1 or 2")
@@ -127,17 +124,12 @@ def parse_value(data: Any, where: str) -> ValueFact:
     controller = match.get("controller") is True
     package = match.get("package")
     packages = () if package is None else (_text(package, f"{where}.match.package"),)
-    executables = _texts(match.get("executables", []), f"{where}.match.executables")
-    plugins = _texts(match.get("plugins", []), f"{where}.match.plugins")
+    executables = _texts(match.get("executables"), f"{where}.match.executables")
+    plugins = _texts(match.get("plugins"), f"{where}.match.plugins")
     if not controller and not (packages and executables) and not plugins:
         raise KnowledgeError(f"{where}.match needs package and executables, plugins, or "
                              f"controller: true")
-    known = ROS1_DISTROS if ros == 1 else ROS2_DISTROS
-    distros = _texts(data.get("distros"), f"{where}.distros", empty=False)
-    unknown = [d for d in distros if d not in known]
-    if unknown:
-        raise KnowledgeError(f"{where}.distros names {unknown[0]!r}, not a ROS {ros} "
-                             f"distribution")
+    distros = _distributions(data, (ros,), where)
     outcome = _text(data.get("otherwise"), f"{where}.otherwise")
     if outcome not in OUTCOMES:
         raise KnowledgeError(f"{where}.otherwise must be one of {', '.join(OUTCOMES)}")
@@ -149,9 +141,10 @@ def parse_value(data: Any, where: str) -> ValueFact:
     return ValueFact(
         fact_id, ros, packages, executables, plugins, controller,
         _text(data.get("parameter"), f"{where}.parameter"), distros,
-        _texts(data.get("accepts"), f"{where}.accepts"), data.get("closed") is True,
+        _texts(data.get("accepts"), f"{where}.accepts", required=True),
+        data.get("closed") is True,
         None if owned is None else _text(owned, f"{where}.owned_prefix"),
-        _texts(data.get("refuses", []), f"{where}.refuses"), outcome,
+        _texts(data.get("refuses"), f"{where}.refuses"), outcome,
         None if fallback is None else _text(fallback, f"{where}.fallback"),
         _text(data.get("effect"), f"{where}.effect"),
         _sources(data.get("sources"), f"{where}.sources"))
@@ -170,7 +163,7 @@ def parse_launch(data: Any, where: str) -> LaunchFact:
     return LaunchFact(
         fact_id, _ros(data.get("ros"), f"{where}.ros"),
         _text(data.get("package"), f"{where}.package"),
-        _texts(data.get("launch"), f"{where}.launch", empty=False),
+        _texts(data.get("launch"), f"{where}.launch", required=True, non_empty=True),
         _text(data.get("parameter_file_argument"), f"{where}.parameter_file_argument"),
         None if namespace is None else _text(namespace, f"{where}.namespace_argument"),
         None if unless is None else _text(unless, f"{where}.unless_argument"),
@@ -182,72 +175,44 @@ def parse_launch(data: Any, where: str) -> LaunchFact:
 
 
 class ValueKnowledge:
-    """The facts, by what they match."""
+    """The facts, by what they match, in the base's order (a user's first)."""
 
-    def __init__(self, values: tuple[ValueFact, ...], launch: tuple[LaunchFact, ...]) -> None:
+    def __init__(self, values: tuple[ValueFact, ...] = (),
+                 launch: tuple[LaunchFact, ...] = ()) -> None:
         self.values = values
         self.launch = launch
+        # Looked up once per launched node: by package, plugin and controller, so a user
+        # file of thousands of facts costs each node only the facts of its program.
+        self._by_package: dict[str, list[int]] = {}
+        self._by_plugin: dict[str, list[int]] = {}
+        self._controllers: list[int] = []
+        for index, fact in enumerate(values):
+            if fact.controller:
+                self._controllers.append(index)
+            for package in dict.fromkeys(fact.packages):
+                self._by_package.setdefault(package, []).append(index)
+            for plugin in dict.fromkeys(fact.plugins):
+                self._by_plugin.setdefault(plugin, []).append(index)
+        self._launch: dict[str, list[LaunchFact]] = {}
+        for launch_fact in launch:
+            self._launch.setdefault(launch_fact.package, []).append(launch_fact)
 
     def facts_for(self, ros: int | None, package: str, executable: str,
                   plugin: str | None, controller: bool) -> list[ValueFact]:
         """The value facts of a launched node (all distributions)."""
-        return [f for f in self.values if f.ros == ros and (
-            (controller and f.controller)
-            or (not controller and package in f.packages and executable in f.executables)
-            or (not controller and plugin is not None and plugin in f.plugins))]
+        if controller:
+            candidates = self._controllers
+        else:
+            candidates = sorted(set(self._by_package.get(package, ())).union(
+                () if plugin is None else self._by_plugin.get(plugin, ())))
+        return [f for f in (self.values[i] for i in candidates) if f.ros == ros and (
+            controller
+            or (package in f.packages and executable in f.executables)
+            or (plugin is not None and plugin in f.plugins))]
 
     def launch_file(self, package: str, path: str) -> LaunchFact | None:
         """The fact of the launch file ``path`` of ``package``'s share folder."""
-        for fact in self.launch:
-            if fact.package == package and path in fact.launch:
+        for fact in self._launch.get(package, ()):
+            if path in fact.launch:
                 return fact
         return None
-
-
-def parse(data: Any, origin: str) -> ValueKnowledge:
-    if not isinstance(data, dict) or data.get("format") != FORMAT:
-        raise KnowledgeError(f"{origin}: not a parameter-value file of format {FORMAT}")
-    values = data.get("values", [])
-    launch = data.get("launch_files", [])
-    if not isinstance(values, list) or not isinstance(launch, list):
-        raise KnowledgeError(f"{origin}: 'values' and 'launch_files' must be lists")
-    parsed = ValueKnowledge(
-        tuple(parse_value(v, f"{origin}: values[{i}]") for i, v in enumerate(values)),
-        tuple(parse_launch(v, f"{origin}: launch_files[{i}]") for i, v in enumerate(launch)))
-    ids = [f.id for f in parsed.values] + [f.id for f in parsed.launch]
-    twice = sorted({i for i in ids if ids.count(i) > 1})
-    if twice:
-        raise KnowledgeError(f"{origin}: fact ids used twice: {', '.join(twice)}")
-    return parsed
-
-
-_BUNDLED: list[ValueKnowledge] = []
-
-
-def bundled_path() -> str | None:
-    """The bundled data file, None where the modules run without their files (the
-    standalone linter, which installs its embedded copy with :func:`use_bundled`)."""
-    here = globals().get("__file__")
-    return None if here is None else os.path.join(os.path.dirname(os.path.abspath(here)),
-                                                  DATA_FILE)
-
-
-def use_bundled(text: str) -> None:
-    """Make ``text`` (the data file's JSON) the bundled facts."""
-    _BUNDLED[:] = [parse(json.loads(text), "bundled")]
-
-
-def bundled() -> ValueKnowledge:
-    """The facts shipped with the linter, read once per process; none where the modules
-    run without their files (the standalone linter)."""
-    if not _BUNDLED:
-        facts = ValueKnowledge((), ())
-        path = bundled_path()
-        if path is not None and os.path.isfile(path):
-            with open(path, "rb") as stream:
-                raw = stream.read(MAX_KNOWLEDGE_BYTES + 1)
-            if len(raw) > MAX_KNOWLEDGE_BYTES:
-                raise KnowledgeError(f"{path}: larger than {MAX_KNOWLEDGE_BYTES} bytes")
-            facts = parse(json.loads(raw.decode("utf-8")), path)
-        _BUNDLED.append(facts)
-    return _BUNDLED[0]

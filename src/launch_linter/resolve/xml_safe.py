@@ -34,7 +34,7 @@ MAX_TEXT = 1024 * 1024
 
 _HANDLERS = ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
              "CommentHandler", "EntityDeclHandler", "ExternalEntityRefHandler",
-             "AttlistDeclHandler")
+             "AttlistDeclHandler", "StartCdataSectionHandler", "EndCdataSectionHandler")
 
 
 _UNSAVED: dict[str, bytes] = {}
@@ -198,14 +198,37 @@ def declared_encoding(data: bytes) -> str:
     return found.group(1).decode("latin-1") if found else ""
 
 
-class XmlError(Exception):
-    """The text is not acceptable XML; ``line``/``column`` are 1-based."""
+_TAG_OPENED = re.compile(rb"</?[A-Za-z_:][^\s<>/]{0,200}")
+"""A start or end tag's beginning: its '<' and name (bounded)."""
 
-    def __init__(self, message: str, line: int = 1, column: int = 1) -> None:
+
+def _unclosed_tag(data: bytes, at: int) -> tuple[int, int, str] | None:
+    """Line, column and text of a tag left without its '>' when expat stops at the '<'
+    that follows it (``</group`` and then ``<node`` on a later line): expat names where it
+    could not go on, the fault is the tag before. None when ``at`` is no such '<' (a '>'
+    is allowed in attribute values, so one after the last '<' says nothing: None)."""
+    if data[at:at + 1] != b"<":
+        return None
+    start = data.rfind(b"<", 0, at)
+    opened = _TAG_OPENED.match(data, start) if start >= 0 else None
+    if opened is None or data.find(b">", start, at) >= 0:
+        return None
+    column = start - data.rfind(b"\n", 0, start)
+    return data.count(b"\n", 0, start) + 1, column, opened.group().decode("utf-8", "replace")
+
+
+class XmlError(Exception):
+    """The text is not acceptable XML; ``line``/``column`` are 1-based. ``malformed``: expat
+    itself refuses it (not well-formed), as every XML reader of ROS does; else one of this
+    reader's own bounds or refusals (size, depth, DTD declarations, encodings)."""
+
+    def __init__(self, message: str, line: int = 1, column: int = 1,
+                 malformed: bool = False) -> None:
         super().__init__(message)
         self.message = message
         self.line = line
         self.column = column
+        self.malformed = malformed
 
 
 class Element:
@@ -253,10 +276,13 @@ def parse_xml(
     text_tags: Collection[str] = (),
     collect: Collection[str] = (),
     directives: bool = True,
+    all_text: bool = False,
 ) -> XmlDocument:
     """Parse ``data`` into an :class:`XmlDocument`, or raise :class:`XmlError`.
 
     ``text_tags``: elements whose character data is kept in ``Element.text``.
+    ``all_text``: every element's text is kept too, but outside ``text_tags`` without its
+    CDATA sections (xacro evaluates text nodes and leaves CDATA sections as written).
     ``collect``: tags whose elements are also listed in ``XmlDocument.collected``.
     ``directives``: whether comments and element lines are kept (they only serve
     suppression directives; a caller that knows there are none saves their cost).
@@ -286,6 +312,21 @@ def parse_xml(
         if top is wanting[-1] and len(top.text) < MAX_TEXT:
             top.text += text[: MAX_TEXT - len(top.text)]
 
+    in_cdata = False
+
+    def every_chars(text: str) -> None:
+        top = stack[-1]
+        if (not in_cdata or top.tag in text_tags) and len(top.text) < MAX_TEXT:
+            top.text += text[: MAX_TEXT - len(top.text)]
+
+    def cdata_start() -> None:
+        nonlocal in_cdata
+        in_cdata = True
+
+    def cdata_end() -> None:
+        nonlocal in_cdata
+        in_cdata = False
+
     def start(tag: str, attrs: dict[str, str]) -> None:
         nonlocal count
         count += 1
@@ -312,9 +353,9 @@ def parse_xml(
             raise XmlError(f"more than {MAX_ELEMENTS} elements", line, element.column)
         if tag in collect:
             collected.append(element)
-        if tag in text_tags:
+        if all_text or tag in text_tags:
             wanting.append(element)
-            parser.CharacterDataHandler = chars
+            parser.CharacterDataHandler = every_chars if all_text else chars
             parser.EndElementHandler = end_wanted
         push(element)
 
@@ -357,11 +398,20 @@ def parse_xml(
     parser.EntityDeclHandler = entity_decl
     parser.AttlistDeclHandler = attlist_decl
     parser.ExternalEntityRefHandler = external_ref
+    if all_text:
+        parser.StartCdataSectionHandler = cdata_start
+        parser.EndCdataSectionHandler = cdata_end
     try:
         parser.Parse(data, True)
     except expat.ExpatError as exc:
         message = expat.errors.messages.get(exc.code, str(exc))
-        raise XmlError(message, exc.lineno, exc.offset + 1) from None
+        unclosed = _unclosed_tag(data, parser.ErrorByteIndex)
+        if unclosed is not None:
+            line, column, tag = unclosed
+            raise XmlError(f"the tag '{tag}' is not closed with '>' (expat stops at the "
+                           f"next '<', line {exc.lineno}, column {exc.offset + 1}: {message})",
+                           line, column, malformed=True) from None
+        raise XmlError(message, exc.lineno, exc.offset + 1, malformed=True) from None
     except RecursionError:
         raise XmlError("document too deeply nested") from None
     except (LookupError, UnicodeError, ValueError):

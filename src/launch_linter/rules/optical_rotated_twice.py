@@ -7,8 +7,15 @@ parent by REP 103's optical rotation (roll -π/2, pitch 0, yaw -π/2; the quater
 turned by exactly the optical rotation from a frame above it, over fixed edges whose
 rotations are all known: the child ends up rotated twice, (0.5, -0.5, 0.5, 0.5) from
 the body frame, which is no optical orientation. The finding is at the second rotation,
-with the first as related place. Only a child whose name says `optical` is reported at
-warning; another child (a frame whose role the name does not tell) at info.
+with the first as related place. It is a warning when the child's name says `optical` and
+a simulated camera of the description renders from the frame the first rotation turns
+(a Gazebo camera sensor whose `<gazebo reference>` link is that frame, or a frame fixed
+to it without rotation, and whose `<pose>` does not turn it): the camera then looks
+along that frame's x axis, and the optical frame is provably turned twice from it.
+Otherwise it is info, saying so: a child whose name does not tell its role, or no camera
+of the files renders from there. A camera mounted to look along its parent's z axis (a
+wrist or tool camera) is turned from its mount by exactly the optical rotation, so two
+such rotations in a row are not wrong by themselves.
 
 ## Why is this bad?
 An optical frame (`*_optical_frame`, z forward, x right, y down) is the camera's body
@@ -56,7 +63,9 @@ walk up: nothing is said. The first rotation is found only when it is exactly th
 optical rotation over the edges between (a camera mounted tilted and then turned to
 the optical orientation in one joint is not recognised). A camera whose images are
 stamped with a frame the optical rotation turned twice is also `camera_frame_not_optical`'s
-when a simulator plugin stamps it. Judged in docs/evaluation/camera_frames.md.
+when a simulator plugin stamps it. A real camera (a driver, not a simulated sensor) never
+proves the rendering direction, so its description's double turn stays info. Judged in
+docs/evaluation/camera_frames.md and docs/evaluation/samples-round7.md.
 """
 
 from __future__ import annotations
@@ -74,7 +83,14 @@ from launch_linter.rules._tree import (
     same_rotation,
     written_edges,
 )
-from launch_linter.rules.camera_frame_not_optical import IDENTITY, OPTICAL, compose
+from launch_linter.rules.camera_frame_not_optical import (
+    IDENTITY,
+    OPTICAL,
+    SENSOR_LINK,
+    camera_in_link,
+    compose,
+    plugins_of,
+)
 
 ID = "optical_rotated_twice"
 CATEGORY = Category.TF
@@ -85,7 +101,8 @@ MAX_DEPTH = 64
 """Edges walked up from one edge: a chain longer than any robot's, and a bound on the
 work a hostile tree (a path of 20,000 frames) can ask per edge."""
 UNNAMED_LEVEL = Severity.INFO
-"""A child whose name does not say it is an optical frame."""
+"""A child whose name does not say it is an optical frame, or a first rotation no
+simulated camera is known to render along (it may be the camera's mount)."""
 
 
 def _optical(edge: Edge) -> bool:
@@ -117,6 +134,38 @@ def _first_rotation(edge: Edge, parents: dict[str, list[Edge]]) -> Edge | None:
     return None
 
 
+def _rendering_links(context: RuleContext) -> frozenset[str]:
+    """The links simulated cameras render along: each Gazebo camera plugin's sensor link
+    (``<gazebo reference>``) whose sensor and camera ``<pose>`` leave the view along the
+    link's x axis."""
+    links = set()
+    for plugin, _ in plugins_of(context):
+        link = plugin.given(SENSOR_LINK)
+        turn = camera_in_link(plugin)
+        if link is not None and turn is not None and same_rotation(turn, IDENTITY, 1e-3):
+            links.add(link.lstrip("/"))
+    return frozenset(links)
+
+
+def _renders_from(frame: str, rendering: frozenset[str], edge: Edge,
+                  parents: dict[str, list[Edge]]) -> bool:
+    """Whether a camera renders along ``frame``: its sensor link is ``frame`` or a frame
+    above it joined by fixed edges without rotation."""
+    seen: set[str] = set()
+    for _ in range(MAX_DEPTH):
+        if frame in rendering:
+            return True
+        if frame in seen:
+            return False
+        seen.add(frame)
+        above = next((e for e in parents.get(frame, ()) if coexist(e, edge)), None)
+        if (above is None or above.dynamic or above.rotation is None
+                or not same_rotation(above.rotation, IDENTITY, 1e-3)):
+            return False
+        frame = above.parent
+    return False
+
+
 def _at_origin(edge: Edge, finding: Finding) -> Finding:
     """``finding`` at the joint's ``<origin>``, where the rotation is written (its
     ``<joint>`` line stays a related place)."""
@@ -134,6 +183,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
     parents: dict[str, list[Edge]] = {}
     for edge in edges:
         parents.setdefault(edge.child, []).append(edge)
+    rendering: frozenset[str] | None = None
     for edge in edges:
         if not _optical(edge):
             continue
@@ -150,4 +200,14 @@ def check(context: RuleContext) -> Iterator[Finding]:
             f"its optical frame",
             related=(first,),
         ))
-        yield finding if "optical" in edge.child else replace(finding, severity=UNNAMED_LEVEL)
+        if "optical" not in edge.child:
+            yield replace(finding, severity=UNNAMED_LEVEL)
+            continue
+        rendering = _rendering_links(context) if rendering is None else rendering
+        if _renders_from(first.parent, rendering, edge, parents):
+            yield finding
+        else:
+            yield replace(finding, severity=UNNAMED_LEVEL, message=(
+                f"{finding.message} (no simulated camera of the files is known to render "
+                f"along '{first.parent}': the first rotation may be the camera's mount, "
+                f"a camera looking along its mount's z axis is turned exactly so: info)"))

@@ -62,7 +62,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.knowledge.values import ValueFact, bundled
+from launch_linter.knowledge.values import ValueFact
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS, describe
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
@@ -110,7 +110,7 @@ def _finding(node: NodeRecord, name: str, message: str,
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
-    knowledge = bundled()
+    knowledge = context.knowledge.values
     if not knowledge.values:
         return
     for node in context.tree.nodes:

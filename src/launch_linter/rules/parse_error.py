@@ -3,7 +3,9 @@
 ## What it does
 Reports a file that cannot be read as XML (syntax errors, bytes that are not text, a DTD
 entity declaration, nesting deeper than 200 elements, more than 8 MiB), or whose root
-element is not `<launch>`. The linter never expands entities or fetches anything.
+element is not `<launch>`. The linter never expands entities or fetches anything. A tag
+left without its `>` (`</group` and then `<node` on a later line) is reported where the
+tag starts; expat stops at the next `<`, which the message names too.
 
 ## Why is this bad?
 roslaunch refuses the whole file, so none of its transforms are published.

@@ -11,7 +11,8 @@ names, any other `*` a repeat of the character before it (rclcpp builds a `std::
 `/lio_sam*` reaches `/lio_sam`, never `/lio_sam_x`). It reports at the file's first node
 key, the node related. A node whose name the launch file does not write is checked under
 the names its program gives its nodes when the linter knows them from the program's
-source (`frontends/node_names.py`: mavros_node's nodes and its plugins' nodes, LIO-SAM's,
+source (the knowledge base's `node_names` entries, `knowledge/programs.json`, which a
+user's knowledge file extends: mavros_node's nodes and its plugins' nodes, LIO-SAM's,
 static_transform_publisher's), else not; and not a node whose arguments may
 remap its name or namespace (`__node:=`, `__ns:=`, or arguments not known). A file given
 to several nodes is reported only when it reaches none of them (teleop_twist_joy's launch

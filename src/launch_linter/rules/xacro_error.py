@@ -13,11 +13,14 @@ source in `frontends/robot/xacro_globals.py`, for Noetic's and ROS 2's xacro onl
 not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`), and a `${` or
 `$(` never closed (`rpy="0 ${pi/2 0"`), which xacro's lexer cannot read (xacro 1.13.5 and
 newer; the older xacro of Kinetic and Lunar drops the rest: `xacro_unexpanded`). The same
-refusals in an element's text (`<robotNamespace>/$(arg namespace)</robotNamespace>`:
-xacro evaluates text as it does attributes). A xacro file the launch file's command names
-that is provably not there (under the ROS 1 launch file's own folder; written from
-`$(dirname)` with its folder there, as a `<rosparam file>` is judged; or in a ROS 1
-package found; a `*.xacro` name, which no build step makes), reported at the
+refusals in any element's text (`<updateRate>$(arg rate)</updateRate>`: xacro evaluates
+every text node as it does attributes; a CDATA section is left as written). A file xacro
+reads, the top one or an included one, that is not well-formed XML (`--` inside a comment,
+a tag left open): xacro parses each with minidom, which stops on it (a description read as
+text, `textfile=` or `cat`, is urdfdom's to parse: unknown). A xacro file the launch
+file's command names that is provably not there (under the ROS 1 launch file's own
+folder; written from `$(dirname)` with its folder there, as a `<rosparam file>` is
+judged; or in a ROS 1 package found; a `*.xacro` name, which no build step makes), reported at the
 `<param>`. Without `--inorder` on Hydro to Lunar (and with `--legacy` on Melodic), xacro
 runs in the legacy order, which replaces every include first, before any property:
 an include whose file name reads one (`filename="${arm}_macro.xacro"`) stops it with

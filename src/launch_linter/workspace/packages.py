@@ -53,6 +53,10 @@ class PackageIndex:
         self.roots = [os.path.abspath(r) for r in roots]
         self.places = tuple((kind, os.path.abspath(folder)) for kind, folder in places)
         self._packages: dict[str, str] | None = None
+        self._twice: dict[str, list[str]] = {}
+        """Names found in more than one folder of ``roots``: colcon refuses to build such a
+        workspace and rospack takes whichever its path lists first, so which copy is
+        built is unknown (sibling clones of a fork beside the package)."""
         self._installed: set[str] = set()
         self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
         self._manifests: dict[str, tuple[str | None, reads.ReadLog]] = {}
@@ -98,9 +102,12 @@ class PackageIndex:
 
     def _crawl(self) -> dict[str, str]:
         found: dict[str, str] = {}
-        crawl = _Crawl(found)
+        crawl = _Crawl(found, self._twice)
         for root in self.roots:
             crawl.source(root)
+        # Further source places overlay one another in their order (ROS_PACKAGE_PATH):
+        # the same name there is not ambiguous.
+        crawl.twice = None
         for kind, folder in self.places:
             if kind != PREFIX:
                 crawl.source(folder)
@@ -167,6 +174,10 @@ class PackageIndex:
                     ros_version: int | None = None) -> Located:
         if directory in self._installed:
             return Located(None, True, f"not in the installed share folder of '{name}'")
+        copies = self._twice.get(name)
+        if copies is not None:
+            return Located(None, False, f"package '{name}' is found in {len(copies)} places "
+                           f"({', '.join(copies[:3])}): which one is built is unknown")
         layout = self._layout(name, directory)
         if ros_version == 1 and layout is not None:
             return Located(None, False, f"package '{name}' found here builds for ROS 2; "
@@ -208,8 +219,11 @@ class PackageIndex:
 class _Crawl:
     """One bounded crawl of source folders, shared by every folder of an index."""
 
-    def __init__(self, found: dict[str, str]) -> None:
+    def __init__(self, found: dict[str, str],
+                 twice: dict[str, list[str]] | None = None) -> None:
         self.found = found
+        self.twice = twice
+        """Where a name already found turns up again (None: not recorded)."""
         self.budget = MAX_DIRECTORIES
         self.seen: set[tuple[int, int]] = set()
 
@@ -239,7 +253,9 @@ class _Crawl:
             if "package.xml" in files or "manifest.xml" in files:
                 name = _package_name(directory, files)
                 if name is not None:
-                    self.found.setdefault(name, directory)
+                    first = self.found.setdefault(name, directory)
+                    if first != directory and self.twice is not None:
+                        self.twice.setdefault(name, [first]).append(directory)
                 subdirs[:] = []
                 continue
             if "rospack_nosubdirs" in files:

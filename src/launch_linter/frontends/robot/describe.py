@@ -19,8 +19,10 @@ from launch_linter.frontends.robot.xacro_order import legacy_order_refusal
 from launch_linter.frontends.robot.xacro_values import (
     FAULT_KINDS,
     KEPT,
+    MALFORMED,
     REFUSED,
     TF_PREFIX_PARAM,
+    UNKNOWN,
 )
 from launch_linter.model.budget import Budget
 from launch_linter.model.diagnostic import Location, Problem
@@ -454,6 +456,11 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                                     packages, env, budget, display)
         root, problems, files = expansion.root, expansion.problems, expansion.files
         defines_macros, env_read = expansion.defines_macros, expansion.env_read
+    if source.kind is not DescriptionKind.XACRO:
+        # Read as text (cat, textfile, open().read()): urdfdom parses it, not xacro's
+        # minidom, and takes some of what expat refuses (space before the declaration).
+        problems = [replace(p, kind=UNKNOWN) if p.fatal and p.kind == REFUSED else p
+                    for p in problems]
     faults = _faults(problems, source, display) + legacy_order_refusal(
         files, env, source.xacro_options, display)
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
@@ -467,7 +474,11 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
                 + ("; its joints are not read" if problem.fatal else ""),
             ))
     if root is None:
-        return None, problems_found
+        # A file xacro refuses to read at all (not well-formed) stops the command as any
+        # other refusal: kept, without joints, for ``xacro_error``.
+        refused = tuple(f for f in faults if f.kind is FaultKind.REFUSED and f.proven)
+        return (RobotModel(source, (), (), False, refused, False, standalone, ())
+                if refused else None), problems_found
     if root.tag == "sdf":
         # ROS 2's robot_state_publisher reads SDF through the sdformat_urdf parser plugin
         # (gz-sim demos do); the linter reads URDF only, so the joints are unknown, not none.
@@ -535,9 +546,9 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
     followed = True
     for problem in problems:
         if problem.kind in FAULT_KINDS:
-            # A block never inserted and a parameter read as an arg are read from the
-            # macro alone: nothing hides them.
-            proven = problem.kind != REFUSED or (
+            # A block never inserted, a parameter read as an arg and a file not well-formed
+            # are read from the macro or the file alone: nothing hides them.
+            proven = problem.kind != REFUSED or MALFORMED in problem.message or (
                 followed and not (source.open_args and "$(arg " in problem.message))
             out.append(DescriptionFault(display(problem.path), problem.line,
                                         FaultKind(problem.kind), problem.message, proven,
@@ -562,7 +573,8 @@ def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
         # One cause written in several places (the same package not found by two
         # includes) is said at the first.
         said_as = _TAG.sub("", problem.message, count=1)
-        if (followed or problem.kind != REFUSED) and said_as not in said:
+        own = followed or problem.kind != REFUSED or MALFORMED in problem.message
+        if own and said_as not in said:
             out.append(problem)
             said.add(said_as)
         followed = followed and problem.kind in _FOLLOWED

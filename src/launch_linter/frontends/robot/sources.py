@@ -132,19 +132,19 @@ def _judged_in(directory: str, words: list[Word], file: str | None, written: str
     ``$(dirname)`` and its folder is here, a path relative to the launch file that is the
     same on every machine (as a ``<rosparam file>`` is judged:
     ``ros1_checks._checkable_path``)."""
-    if file is None:
+    if file is None or not any(resolved and text == file for text, resolved in words):
         return directory
-    raw = _written_words(written)
-    index = next((i for i, (text, resolved) in enumerate(words)
-                  if resolved and text == file), None)
-    if index is None or len(raw) != len(words):
-        return directory  # a substitution gave several words: which is the file's is unsure
+    # The word as written is $(dirname) and plain text: the same path on every machine
+    # (matched by its value, not its place: a substitution may give no word or several).
+    dirname = "$(dirname)"
+    written_here = any(
+        raw.startswith(dirname) and "$(" not in raw[len(dirname):]
+        and file == directory + raw[len(dirname):]
+        for raw in (word.strip("'\"") for word in _written_words(written)))
     folder = os.path.dirname(_absolute(file, directory) or directory)
     # Its folder here, the file not: the layout around the launch file is this one (a
     # folder not here may be another repository's, cloned beside it elsewhere).
-    if raw[index].strip("'\"").startswith("$(dirname)") and reads.is_dir(folder):
-        return folder
-    return directory
+    return folder if written_here and reads.is_dir(folder) else directory
 
 
 def _written_words(written: str) -> list[str]:

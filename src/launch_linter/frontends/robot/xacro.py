@@ -9,10 +9,10 @@ Supported: what docs/robot.md lists (properties, args, ``$(find)``/``$(env)``, i
 macros with defaults and blocks, conditionals, ``xacro:call``/``element``/``attribute``).
 
 What cannot be known becomes *unknown* rather than an error: an attribute keeps a reason
-(``ExpandedNode.unknown``); a conditional whose value is unknown keeps its content, marked
-with the condition text (``ExpandedNode.conditions``). Problems are returned as
-:class:`XacroProblem` records; bounds on files, include depth, macro depth, elements made
-and total work end the expansion with a problem, never a hang.
+(``ExpandedNode.unknown``); a conditional whose value is unknown keeps its content, marked with
+the condition text (``ExpandedNode.conditions``). Problems are :class:`XacroProblem` records;
+bounds on files, include depth, macro depth, elements made and total work end the expansion with
+a problem, never a hang.
 """
 
 from __future__ import annotations
@@ -38,6 +38,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _WHOLE_EXPRESSION,
     DROPPED,
     KEPT,
+    MALFORMED,
     MAX_FILES,
     MAX_INCLUDE_DEPTH,
     MAX_MACRO_DEPTH,
@@ -145,7 +146,8 @@ class XacroExpander:
                 self._attributes(element, root, table)
                 self._children(element.children, absolute, table, root, ())
         except _Abort as stop:
-            self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True))
+            self.problems.append(XacroProblem(stop.path, stop.line, stop.message, True,
+                                              stop.kind or UNKNOWN))
             root = None
         except RecursionError:
             self.problems.append(XacroProblem(
@@ -191,8 +193,7 @@ class XacroExpander:
             self.files.append(absolute)
         if absolute in self._parsed:
             return self._parsed[absolute]
-        root = self._parse(absolute, at, where, data)
-        self._parsed[absolute] = root
+        self._parsed[absolute] = root = self._parse(absolute, at, where, data)
         return root
 
     def _parse(self, absolute: str, at: tuple[str, int] | None,
@@ -206,16 +207,15 @@ class XacroExpander:
                           f"{self.display(absolute)}: {exc.strerror or exc}")
             return None
         try:
-            root = parse_xml(data, PLUGIN_TEXT_TAGS).root
+            root = parse_xml(data, PLUGIN_TEXT_TAGS, all_text=True).root  # see _children
             self._param_args[absolute] = params_read_as_args(data, self._legacy)
             return root
-        except XmlError as exc:
+        except XmlError as exc:  # xacro's minidom stops on a malformed file (ExpatError)
             if at is None:  # placed at the file and line: no need to name them
-                raise _Abort(f"not well-formed XML: {exc.message}", absolute,
-                             exc.line) from None
-            message = f"{self.display(absolute)}:{exc.line}: not well-formed XML: {exc.message}"
-            self._problem(where[0], where[1], message)
-            return None
+                raise _Abort(f"{MALFORMED}: {exc.message}", absolute, exc.line,
+                             REFUSED if exc.malformed else None) from None
+            message = f"{self.display(absolute)}:{exc.line}: {MALFORMED}: {exc.message}"
+            raise (_Refused(message) if exc.malformed else _Unknown(message)) from None
 
     # -- text substitution -------------------------------------------------------------
     def evaluate_text(self, text: str, table: _Table) -> str:
@@ -383,7 +383,7 @@ class XacroExpander:
             if not tag.startswith(_PREFIX):
                 node = self._node(element, path, conditions)
                 self._attributes(element, node, table)
-                if element.text.strip():
+                if element.text.strip():  # every text node (ros/xacro 7045754, eval_all)
                     try:
                         node.text = self.evaluate_text(element.text.strip(), table)
                     except _Unknown as unknown:  # xacro evaluates text as it does attributes

@@ -89,13 +89,15 @@ def bracket_fault(source: str) -> str | None:
 
 
 class _Abort(Exception):
-    """A bound was reached: the expansion stops."""
+    """A bound was reached, or the real xacro stops too (``kind`` ``REFUSED``): the
+    expansion stops."""
 
-    def __init__(self, message: str, path: str, line: int) -> None:
+    def __init__(self, message: str, path: str, line: int, kind: str | None = None) -> None:
         super().__init__(message)
         self.message = message
         self.path = path
         self.line = line
+        self.kind = kind
 
 
 class _Unknown(Exception):
@@ -131,6 +133,9 @@ UNEXPANDED = "unexpanded"
 macro call without the prefix, a ``${`` never closed: see ``xacro_unexpanded``)."""
 FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG, UNEXPANDED)
 """The kinds that are faults of the source itself."""
+MALFORMED = "not well-formed XML"
+"""What a refusal of a file that is not well-formed says: a fault of that file alone, which
+nothing not followed before it can make well-formed."""
 
 
 def expression_error(source: str, reason: str) -> _Unknown:
