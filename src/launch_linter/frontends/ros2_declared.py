@@ -32,7 +32,10 @@ class Declarations:
         """Launch configurations read without a default where none was set, by place:
         whether under an undecided condition, and what was not followed before."""
 
-    def opened(self, reason: str) -> None:
+    def opened(self, reason: str, rule: str = "unresolved") -> None:
+        """Something not followed leaves the tree open; a rule's problem does not."""
+        if rule != "unresolved":
+            return
         self.openings += 1
         if self.open is None:
             self.open = reason

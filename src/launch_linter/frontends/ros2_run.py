@@ -392,8 +392,7 @@ class Ros2Runner:
     def _run_one(self, action: Action, scope: _Scope, frame: _Frame) -> None:
         if isinstance(action, Unfollowed):
             self._report(action.rule, action.where, action.reason)
-            if action.rule == "unresolved":
-                self.declarations.opened(action.reason)
+            self.declarations.opened(action.reason, action.rule)
             return
         self.declarations.declares(action)
         self.arguments.declares(action)
