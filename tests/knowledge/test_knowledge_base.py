@@ -198,3 +198,16 @@ def test_a_configured_knowledge_file_past_the_limit_is_refused_unread(tmp_path: 
     path.write_bytes(b" " * (MAX_KNOWLEDGE_BYTES + 1))
     with pytest.raises(KnowledgeError, match="larger than"):
         load_knowledge_file(str(path))
+
+
+def test_a_ros1_controller_is_not_given_the_ros2_controller_s_own_tf_topic() -> None:
+    # ros_controllers' AckermannSteeringController (ROS 1) sends odom -> base_link on /tf;
+    # ros2_controllers' steering controllers of the same type name send it on
+    # ~/tf_odometry. Falling back to the ROS 2 entry would drop a ROS 1 odometry edge.
+    base = bundled()
+    ros1 = base.plugin("controller", "ackermann_steering_controller/AckermannSteeringController", 1)
+    ros2 = base.plugin("controller", "ackermann_steering_controller/AckermannSteeringController", 2)
+    assert ros1 is not None and ros2 is not None
+    assert ros1.id == "ackermann_steering_controller_ros1"
+    assert ros1.tf_topic == "/tf"
+    assert ros2.tf_topic == "~/tf_odometry"
