@@ -149,6 +149,16 @@ def entry_of(context: RuleContext, node: NodeRecord) -> Entry | None:
     return known[key]
 
 
+def _routes(context: RuleContext) -> dict[tuple[str | None, str | None], str]:
+    return controller_routes(context.tree.nodes, lambda node: entry_of(context, node))
+
+
+def routes_of(context: RuleContext) -> dict[tuple[str | None, str | None], str]:
+    """Where each controller's own tf topic goes (``_tf_topics.controller_routes``), worked
+    out once per tree for the node view and the rules."""
+    return context.derived(_routes)
+
+
 def _view(context: RuleContext) -> NodeView:
     edges: list[NodeEdge] = []
     lookups: list[Lookup] = []
@@ -156,7 +166,7 @@ def _view(context: RuleContext) -> NodeView:
     unsure: list[NodeRecord] = []
     joint_states = False
     controllers: set[tuple[str | None, str | None]] = set()
-    routes = controller_routes(context.tree.nodes, lambda node: entry_of(context, node))
+    routes = routes_of(context)
     for node in context.tree.nodes:
         if node.package in STATIC_PUBLISHERS and node.kind == "node":
             continue

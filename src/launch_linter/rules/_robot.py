@@ -54,3 +54,18 @@ def finding_at(robot: RobotModel, element: RobotElement, message: str,
     return Finding(element.path, element.line, element.column, message, element.name,
                    tuple(Location(r.path, r.line, r.column) for r in related),
                    severity=level(robot))
+
+
+def close_names(name: str, known: list[str]) -> list[str]:
+    """Up to three names of ``known`` close to ``name`` (a likely misspelling)."""
+    # Imported here: difflib is needed only for a description with a name it lacks.
+    import difflib
+
+    return difflib.get_close_matches(name, known, n=3, cutoff=0.6)
+
+
+def defined_phrase(close: list[str]) -> str:
+    """`` (defined: 'a', 'b')`` for the close names a message offers, empty for none."""
+    if not close:
+        return ""
+    return " (defined: " + ", ".join(f"'{n}'" for n in close) + ")"

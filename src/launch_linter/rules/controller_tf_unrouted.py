@@ -75,8 +75,14 @@ from collections.abc import Iterator
 from launch_linter.knowledge.publish import published
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._nodes import entry_of, finding_at_node, nodes_of, program_of
-from launch_linter.rules._tf_topics import LOST, controller_routes, own_topic
+from launch_linter.rules._nodes import (
+    entry_of,
+    finding_at_node,
+    nodes_of,
+    program_of,
+    routes_of,
+)
+from launch_linter.rules._tf_topics import LOST, own_topic
 
 ID = "controller_tf_unrouted"
 CATEGORY = Category.TF
@@ -90,8 +96,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
     if not context.tree.spawned:
         return  # no controller is started here, or a spawner's words are not all read
     spawned = set(context.tree.spawned)
-    routes = controller_routes(context.tree.nodes, lambda node: entry_of(context, node))
-    lost = {key for key, way in routes.items() if way == LOST and key[0] in spawned}
+    lost = {key for key, way in routes_of(context).items() if way == LOST and key[0] in spawned}
     if not lost:
         return
     view = nodes_of(context)

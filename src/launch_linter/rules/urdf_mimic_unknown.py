@@ -65,7 +65,7 @@ from collections.abc import Iterator
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.robot import RobotModel
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._robot import judged, robots_of
+from launch_linter.rules._robot import close_names, defined_phrase, judged, robots_of
 
 ID = "urdf_mimic_unknown"
 CATEGORY = Category.TF
@@ -109,14 +109,14 @@ def check(context: RuleContext) -> Iterator[Finding]:
             if place in seen:
                 continue
             seen.add(place)
-            close = _close(element.name, joints) if suggested < MAX_SUGGESTED else []
+            close = close_names(element.name, joints) if suggested < MAX_SUGGESTED else []
             suggested += 1
             related = (() if element.defined is None
                        else (Location(element.path, element.line, element.column),))
             yield Finding(
                 place[0], place[1], place[2],
                 f"joint '{owner}' mimics joint '{element.name}', which the description does "
-                f"not define{_closest(close)}: robot_state_publisher cannot compute "
+                f"not define{defined_phrase(close)}: robot_state_publisher cannot compute "
                 f"'{owner}' from it (its child link gets no transform unless '{owner}' "
                 f"itself is in /joint_states), joint_state_publisher stops on it with a "
                 f"KeyError and MoveIt refuses the mimic",
@@ -135,16 +135,3 @@ def _joint_names(robot: RobotModel) -> list[str] | None:
                 return None
             names.append(element.name)
     return names
-
-
-def _close(name: str, known: list[str]) -> list[str]:
-    # Imported here: difflib is needed only for a description with an unknown mimic.
-    import difflib
-
-    return difflib.get_close_matches(name, known, n=3, cutoff=0.6)
-
-
-def _closest(close: list[str]) -> str:
-    if not close:
-        return ""
-    return " (defined: " + ", ".join(f"'{n}'" for n in close) + ")"

@@ -45,7 +45,15 @@ from collections.abc import Iterator
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.robot import FaultKind
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._robot import first_by_name, judged, level, refused, robots_of
+from launch_linter.rules._robot import (
+    close_names,
+    defined_phrase,
+    first_by_name,
+    judged,
+    level,
+    refused,
+    robots_of,
+)
 
 ID = "urdf_missing_link"
 CATEGORY = Category.TF
@@ -76,7 +84,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             for end, name in (("child", joint.child), ("parent", joint.parent)):
                 if name is None or name in links:
                     continue
-                close = _close(name, list(links)) if suggested < MAX_SUGGESTED else []
+                close = close_names(name, list(links)) if suggested < MAX_SUGGESTED else []
                 suggested += 1
                 said = (f"child link [{name}] of joint [{joint.name}] not found"
                         if end == "child" else
@@ -84,23 +92,10 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 yield Finding(
                     joint.path, joint.line, joint.column,
                     f"joint '{joint.name}' names {end} link '{name}', which the description "
-                    f"does not define{_closest(close)}{unexpanded}; " + refused(said),
+                    f"does not define{defined_phrase(close)}{unexpanded}; " + refused(said),
                     joint.name,
                     tuple(Location(links[n].path, links[n].line, links[n].column)
                           for n in close) + tuple(Location(f.path, f.line, 1) for f in calls),
                     severity=level(robot),
                 )
                 break
-
-
-def _close(name: str, known: list[str]) -> list[str]:
-    # Imported here: difflib is needed only for a description with a missing link.
-    import difflib
-
-    return difflib.get_close_matches(name, known, n=3, cutoff=0.6)
-
-
-def _closest(close: list[str]) -> str:
-    if not close:
-        return ""
-    return " (defined: " + ", ".join(f"'{n}'" for n in close) + ")"
