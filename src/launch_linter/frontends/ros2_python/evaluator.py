@@ -227,9 +227,12 @@ class Evaluator:
             env.vars = before
         return None
 
-    def side(self, node: ast.If, positive: bool) -> Predicate:
+    def side(self, node: ast.If, positive: bool, text: str | None = None) -> Predicate:
+        """The condition a side of ``if <unknown>`` runs under (``text``: the test as
+        written, when the caller has it already)."""
         reason = f"Python condition at line {node.lineno} depends on an unknown value"
-        return Predicate(positive, (Opaque(f"python: {self.segment(node.test)}", reason),))
+        written = self.segment(node.test) if text is None else text
+        return Predicate(positive, (Opaque(f"python: {written}", reason),))
 
     def either(self, node: ast.If, returned: object, rest: object) -> object:
         """One value for what a guard clause returns under its condition and what the
@@ -395,8 +398,7 @@ class Evaluator:
         results: list[dict[str, object]] = []
         for positive, body in ((True, node.body), (False, node.orelse)):
             env.vars = dict(before)
-            reason = f"Python condition at line {node.lineno} depends on an unknown value"
-            self.branches.append(Predicate(positive, (Opaque(f"python: {text}", reason),)))
+            self.branches.append(self.side(node, positive, text))
             try:
                 self.run_block(body, env)
             finally:
@@ -431,8 +433,7 @@ class Evaluator:
 
     def under(self, items: list[object], positive: bool, text: str, node: ast.If
               ) -> list[object]:
-        reason = f"Python condition at line {node.lineno} depends on an unknown value"
-        self.branches.append(Predicate(positive, (Opaque(f"python: {text}", reason),)))
+        self.branches.append(self.side(node, positive, text))
         try:
             return [self.guard(item) for item in items]
         finally:
