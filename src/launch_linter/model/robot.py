@@ -421,6 +421,28 @@ class DescriptionFault(Record):
         _set(self, "name", name)
 
 
+class IgnoredArg(Record):
+    """A xacro mapping (``name:=value``) that no file of the description names, where the
+    launch file writes it (``line`` 0 when the launch file's text does not show it once),
+    with the xacro args the description declares that are close to it."""
+
+    name: str
+    path: str
+    line: int
+    column: int
+    close: tuple[str, ...]
+
+    __slots__ = ("name", "path", "line", "column", "close")
+
+    def __init__(self, name: str, path: str, line: int, column: int,
+                 close: tuple[str, ...]) -> None:
+        _set(self, "name", name)
+        _set(self, "path", path)
+        _set(self, "line", line)
+        _set(self, "column", column)
+        _set(self, "close", close)
+
+
 class RobotModel(Record):
     """One expanded description as robot_state_publisher (urdfdom, then KDL) reads it.
 
@@ -441,10 +463,13 @@ class RobotModel(Record):
     plugins: tuple[NodeRecord, ...]
     """Its ``<gazebo><plugin>`` blocks, as records of kind ``gazebo_plugin``: they run
     only when a simulator is given the description (see :func:`spawns_into_simulator`)."""
+    ignored_args: tuple[IgnoredArg, ...]
+    """The ``name:=value`` mappings of the xacro call that no file of the description
+    names (xacro keeps them and nothing reads them): see ``frontends/robot/xacro_ignored``."""
 
     __slots__ = (
         "source", "elements", "joints", "complete", "faults", "defines_macros", "standalone",
-        "plugins",
+        "plugins", "ignored_args",
     )
 
     def __init__(
@@ -457,6 +482,7 @@ class RobotModel(Record):
         defines_macros: bool = False,
         standalone: bool = False,
         plugins: tuple[NodeRecord, ...] = (),
+        ignored_args: tuple[IgnoredArg, ...] = (),
     ) -> None:
         _set(self, "source", source)
         _set(self, "elements", elements)
@@ -466,6 +492,7 @@ class RobotModel(Record):
         _set(self, "defines_macros", defines_macros)
         _set(self, "standalone", standalone)
         _set(self, "plugins", plugins)
+        _set(self, "ignored_args", ignored_args)
 
     @property
     def links(self) -> tuple[RobotElement, ...]:

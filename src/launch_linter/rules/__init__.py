@@ -92,6 +92,7 @@ def _load() -> None:
         urdf_repeated_origin,
         urdf_root,
         use_sim_time_misspelt,
+        xacro_arg_ignored,
         xacro_error,
         xacro_param_as_arg,
         xacro_unexpanded,

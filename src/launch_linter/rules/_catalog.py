@@ -67,6 +67,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("xacro_unused_block", Category.TF),
     ("xacro_param_as_arg", Category.TF),
     ("xacro_unexpanded", Category.TF),
+    ("xacro_arg_ignored", Category.TF),
     ("rounded_pi", Category.TF),
     ("ros2_undeclared_arg", Category.LAUNCH),
     ("py_name_error", Category.LAUNCH),

@@ -15,6 +15,7 @@ from collections.abc import Callable, Hashable, Mapping, Sequence
 
 from launch_linter.frontends.robot.alternatives import alternatives
 from launch_linter.frontends.robot.sim_control import simulated_controllers
+from launch_linter.frontends.robot.xacro_ignored import ignored_args
 from launch_linter.frontends.robot.xacro_order import legacy_order_refusal
 from launch_linter.frontends.robot.xacro_values import (
     FAULT_KINDS,
@@ -509,9 +510,12 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
             f"robot description: the command runs xacro through "
             f"{os.path.basename(source.wrapper or '')}, which may "
             f"set {', '.join(wrapped[:5])}; the links and joints they decide are not known")))
+    # A description linted as text (an editor's buffer) is not on disk as it is read.
+    ignored = (ignored_args(source, files, followed, packages.find) if source.text is None
+               else ())
     robot = RobotModel(source, tuple(elements), tuple(found),
                        names_known and followed and not wrapped,
-                       faults, defines_macros, standalone, tuple(plugins))
+                       faults, defines_macros, standalone, tuple(plugins), ignored)
     return robot, problems_found
 
 
