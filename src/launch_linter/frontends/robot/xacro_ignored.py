@@ -23,6 +23,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from launch_linter.model.robot import DescriptionKind, DescriptionSource, IgnoredArg
+from launch_linter.resolve.xml_safe import read_regular_file
 
 MAX_FILE_BYTES = 4 * 1024 * 1024
 """Most bytes read of one description file or launch file (larger: not judged)."""
@@ -161,10 +162,11 @@ def _without_comments(text: bytes) -> bytes:
 
 
 def _read(path: str) -> bytes | None:
+    """The file's bytes, read as every input is (noted for the results cache); None
+    when it cannot be read or is too large."""
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)
-    except OSError:
+        data = read_regular_file(path, MAX_FILE_BYTES + 1)
+    except (OSError, ValueError):
         return None
     return None if len(data) > MAX_FILE_BYTES else data
 
