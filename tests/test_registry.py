@@ -72,16 +72,26 @@ def _run(rule: Rule, xml: str, heading: str = "", folder: Path | None = None) ->
     A module may name the file its example is (``EXAMPLE_PATH``, e.g. a ``.launch.py``),
     the distribution it targets (``EXAMPLE_DISTRO``) and the file the example includes
     (``EXAMPLE_INCLUDED``: the second block under ``heading``, written into ``folder``
-    beside the example)."""
+    beside the example) or the files of the package it is in (``EXAMPLE_FILES``: the
+    later blocks, one file each, the folder then a package path)."""
     module = MODULES[rule.id]
-    options = LintOptions(package_paths=(), beliefs=load_beliefs("bundled", 1.0),
-                          ros_distro=getattr(module, "EXAMPLE_DISTRO", None))
     path = getattr(module, "EXAMPLE_PATH", "example.launch")
     included = getattr(module, "EXAMPLE_INCLUDED", None)
+    files = getattr(module, "EXAMPLE_FILES", None)
+    package_paths: tuple[str, ...] = ()
     if included is not None and folder is not None:
         blocks = XML_BLOCK.findall(_section(rule.doc, heading))
         (folder / included).write_text(blocks[1], encoding="utf-8")
         path = str(folder / path)
+    elif files is not None and folder is not None:
+        # A package the example's launch file runs a node of: one file per later block.
+        blocks = XML_BLOCK.findall(_section(rule.doc, heading))
+        for name, block in zip(files, blocks[1:]):
+            (folder / name).parent.mkdir(parents=True, exist_ok=True)
+            (folder / name).write_text(block, encoding="utf-8")
+        path, package_paths = str(folder / path), (str(folder),)
+    options = LintOptions(package_paths=package_paths, beliefs=load_beliefs("bundled", 1.0),
+                          ros_distro=getattr(module, "EXAMPLE_DISTRO", None))
     result = lint_text(xml, path, options)
     return [d.line for d in result.diagnostics if d.rule == rule.id]
 

@@ -233,6 +233,25 @@ class DoubledNamespace(Record):
         _set(self, "tree_tf_topic", tree_tf_topic)
 
 
+class NodeDeclarations(Record):
+    """The parameters a ROS 2 executable of the workspace declares (``names``, read from
+    ``source``, a file of package ``package``): complete, or not recorded at all."""
+
+    package: str
+    executable: str
+    names: tuple[str, ...]
+    source: str
+
+    __slots__ = ("package", "executable", "names", "source")
+
+    def __init__(self, package: str, executable: str, names: tuple[str, ...],
+                 source: str) -> None:
+        _set(self, "package", package)
+        _set(self, "executable", executable)
+        _set(self, "names", names)
+        _set(self, "source", source)
+
+
 class LaunchTree(Record):
     """Everything read from one root file, its includes included."""
 
@@ -267,11 +286,15 @@ class LaunchTree(Record):
     spawned: tuple[str, ...] | None
     """The ros2_control controllers the tree's spawners load, by name; None when a
     spawner's words are not all read."""
+    declarations: tuple[NodeDeclarations, ...]
+    """The parameters workspace nodes of the tree declare, where their source shows them
+    completely (``workspace/node_declarations.py``)."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
         "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
         "forwarded", "unmatched_param_files", "doubled_namespaces", "spawned",
+        "declarations",
     )
 
     def __init__(
@@ -293,6 +316,7 @@ class LaunchTree(Record):
         unmatched_param_files: tuple[UnmatchedParamFile, ...] = (),
         doubled_namespaces: tuple[DoubledNamespace, ...] = (),
         spawned: tuple[str, ...] | None = (),
+        declarations: tuple[NodeDeclarations, ...] = (),
     ) -> None:
         _open(self)  # made for every root file: see _open
         self.root = root
@@ -312,4 +336,5 @@ class LaunchTree(Record):
         self.unmatched_param_files = unmatched_param_files
         self.doubled_namespaces = doubled_namespaces
         self.spawned = spawned
+        self.declarations = declarations
         _seal(self)

@@ -48,6 +48,7 @@ def _load() -> None:
         namespace_pushed_twice,
         ned_transform,
         node_executable_missing,
+        node_param_undeclared,
         node_second_parent,
         optical_frame_rotation,
         optical_rotated_twice,

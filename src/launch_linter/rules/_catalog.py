@@ -79,6 +79,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("use_sim_time_misspelt", Category.TF),
     ("ros2_param_file_missing", Category.LAUNCH),
     ("param_value_refused", Category.LAUNCH),
+    ("node_param_undeclared", Category.LAUNCH),
     ("namespace_pushed_twice", Category.TF),
     ("controller_tf_unrouted", Category.TF),
     ("joint_states_two_publishers", Category.TF),

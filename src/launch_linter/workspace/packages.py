@@ -347,6 +347,11 @@ def _manifest_name(path: str) -> str | None:
     return name
 
 
+def manifest_name(path: str) -> str | None:
+    """The package name the ``package.xml`` at ``path`` declares (None for none)."""
+    return _manifest_name(path)
+
+
 def default_package_roots(launch_file: str) -> list[str]:
     """The enclosing workspace of ``launch_file``: from the package that holds it (the
     nearest folder up with a ``package.xml``), walk up to a folder whose ``src/`` holds

@@ -1,3 +1,5 @@
+import os
+
 from launch import LaunchDescription
 from launch.actions import (
     DeclareLaunchArgument,
@@ -32,8 +34,9 @@ def launch_setup(context, *args, **kwargs):
     description_file = LaunchConfiguration("description_file")
     gazebo_gui = LaunchConfiguration("gazebo_gui")
 
+    here = os.path.dirname(__file__)
     initial_joint_controllers = PathJoinSubstitution(
-        [FindPackageShare(runtime_config_package), "config", controllers_file]
+        [here, "..", "config", controllers_file]
     )
 
     robot_description_content = Command(
@@ -205,8 +208,8 @@ def generate_launch_description():
     declared_arguments.append(
         DeclareLaunchArgument(
             "description_file",
-            default_value=PathJoinSubstitution(
-                [FindPackageShare("ur_simulation_gz"), "urdf", "ur_gz.urdf.xacro"]
+            default_value=os.path.join(
+                os.path.dirname(__file__), "..", "urdf", "ur_gz.urdf.xacro"
             ),
             description="URDF/XACRO description file (absolute path) with the robot.",
         )

@@ -35,7 +35,7 @@ def generate_launch_description():
 
     urdf_file_name = 'multi_go2.urdf'
     urdf = os.path.join(
-        get_package_share_directory('go2_robot_sdk'),
+        os.path.join(os.path.dirname(__file__), '..'),
         "urdf",
         urdf_file_name)
     with open(urdf, 'r') as infp:
@@ -49,12 +49,12 @@ def generate_launch_description():
     urdf_launch_nodes = []
 
     joy_params = os.path.join(
-        get_package_share_directory('go2_robot_sdk'),
+        os.path.join(os.path.dirname(__file__), '..'),
         'config', 'joystick.yaml'
     )
 
     default_config_topics = os.path.join(
-        get_package_share_directory('go2_robot_sdk'),
+        os.path.join(os.path.dirname(__file__), '..'),
         'config', 'twist_mux.yaml')
 
     foxglove_launch = os.path.join(
@@ -64,13 +64,13 @@ def generate_launch_description():
     )
 
     slam_toolbox_config = os.path.join(
-        get_package_share_directory('go2_robot_sdk'),
+        os.path.join(os.path.dirname(__file__), '..'),
         'config',
         'mapper_params_online_async.yaml'
     )
 
     nav2_config = os.path.join(
-        get_package_share_directory('go2_robot_sdk'),
+        os.path.join(os.path.dirname(__file__), '..'),
         'config',
         'nav2_params.yaml'
     )
@@ -79,7 +79,7 @@ def generate_launch_description():
 
         urdf_file_name = 'go2.urdf'
         urdf = os.path.join(
-            get_package_share_directory('go2_robot_sdk'),
+            os.path.join(os.path.dirname(__file__), '..'),
             "urdf",
             urdf_file_name)
         with open(urdf, 'r') as infp:
@@ -180,7 +180,7 @@ def generate_launch_description():
             executable='rviz2',
             condition=UnlessCondition(no_rviz2),
             name='rviz2',
-            arguments=['-d' + os.path.join(get_package_share_directory('go2_robot_sdk'), 'config', rviz_config)]
+            arguments=['-d' + os.path.join(os.path.join(os.path.dirname(__file__), '..'), 'config', rviz_config)]
         ),
         Node(
             package='joy',
@@ -209,8 +209,7 @@ def generate_launch_description():
 
         IncludeLaunchDescription(
             PythonLaunchDescriptionSource([
-                os.path.join(get_package_share_directory(
-                    'slam_toolbox'), 'launch', 'online_async_launch.py')
+                os.path.join(os.path.join(os.path.dirname(__file__), '..', '..', 'slam_toolbox'), 'launch', 'online_async_launch.py')
             ]),
             launch_arguments={
                 'slam_params_file': slam_toolbox_config,

@@ -1,0 +1,253 @@
+"""The parameters a workspace node declares, read from its source, never built or run.
+
+A ROS 2 node made with the defaults (``allow_undeclared_parameters`` false) keeps the
+parameter overrides a launch file gives it and applies one only when the node declares
+that name: rclcpp stores them (humble 99f1d8d ``node_parameters.cpp`` lines 98-114) and
+``declare_parameter`` consults them; an override no declaration consults is never applied
+and nothing reports it. rclpy does the same (``Node.declare_parameter`` reads
+``_parameter_overrides``).
+
+For a package of the linted workspace, the executable's sources are found from its
+install rules read as text: ``add_executable``/``ament_auto_add_executable`` (and the
+libraries of the same ``CMakeLists.txt`` it links, ``rclcpp_components_register_node``'s
+``EXECUTABLE``) or ``setup.py``'s ``console_scripts``; its package-local headers and
+modules are read with it. The declared names are the literal first arguments of
+``declare_parameter`` calls. Anything else leaves the set unknown, never guessed: a
+declaration whose name is not a literal, ``declare_parameters``, ``allow_undeclared_
+parameters``, ``automatically_declare_parameters_from_overrides``, a generated parameter
+library (``ParamListener``), a source or module not found, a variable in a target's
+sources, no declaration at all (it may be in a library of another package). Bounded in
+files and bytes.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import re
+
+from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.workspace.cmake_install import commands
+
+MAX_FILE_BYTES = 2 * 1024 * 1024
+"""Most bytes read of one source file or install-rules file."""
+MAX_FILES = 100
+"""Most source files read for one executable."""
+MAX_TARGETS = 50
+"""Most library targets followed from one executable."""
+
+_UNKNOWABLE = re.compile(
+    rb"allow_undeclared_parameters|automatically_declare_parameters_from_overrides"
+    rb"|\bdeclare_parameters\b|\bParamListener\b|\bgenerate_parameter_library\b")
+_DECLARE = re.compile(rb"\bdeclare_parameter\b")
+_LITERAL = re.compile(
+    rb"\s*(?:<[^;(){}]{0,200}>)?\s*\(\s*(?:\"([^\"\\\n]*)\"|'([^'\\\n]*)')\s*[,)]")
+_CPP_INCLUDE = re.compile(rb"^\s*#\s*include\s*\"([^\"\n]+)\"", re.MULTILINE)
+_CPP_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".h", ".hh", ".hxx")
+_TARGET_WORDS = frozenset({
+    "WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "STATIC", "SHARED", "MODULE", "OBJECT",
+})
+_LINK_WORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE"})
+
+
+def declared_parameters(root: str, executable: str) -> tuple[tuple[str, ...], str] | None:
+    """(the names the executable's node declares, the file shown as their source) for the
+    package in folder ``root``; None when they cannot be known completely."""
+    found = _sources(root, executable)
+    if found is None:
+        return None
+    sources, python = found
+    names = _declared(sources, root, python)
+    if not names:
+        return None
+    return tuple(sorted(names)), os.path.relpath(sources[0], root)
+
+
+def _read(path: str) -> bytes | None:
+    try:
+        data = read_regular_file(path, MAX_FILE_BYTES + 1)
+    except (OSError, ValueError):
+        return None
+    return None if len(data) > MAX_FILE_BYTES else data
+
+
+def _sources(root: str, executable: str) -> tuple[list[str], bool] | None:
+    cmake = os.path.join(root, "CMakeLists.txt")
+    if os.path.isfile(cmake):
+        data = _read(cmake)
+        if data is None:
+            return None
+        files = _cmake_sources(data.decode("utf-8", "replace"), root, executable)
+        return None if files is None else (files, False)
+    setup = os.path.join(root, "setup.py")
+    if os.path.isfile(setup):
+        data = _read(setup)
+        if data is None:
+            return None
+        module = _console_script(data, executable)
+        if module is None:
+            return None
+        path = os.path.join(root, *module.split(".")) + ".py"
+        return ([path], True) if os.path.isfile(path) else None
+    return None
+
+
+def _cmake_sources(text: str, root: str, executable: str) -> list[str] | None:
+    """The source files of ``executable`` and of the libraries of this file it links."""
+    project = ""
+    sources: dict[str, list[str] | None] = {}
+    links: dict[str, list[str]] = {}
+    registered: dict[str, str] = {}
+    for name, arguments, _line in commands(text):
+        words = [a.text for a in arguments]
+        if name == "project" and words:
+            project = words[0]
+            continue
+        words = [w.replace("${PROJECT_NAME}", project) for w in words]
+        if name in ("add_executable", "add_library", "ament_auto_add_executable",
+                    "ament_auto_add_library") and words:
+            files = [w for w in words[1:] if w not in _TARGET_WORDS]
+            unknown = not files or any("$" in f or f in ("ALIAS", "IMPORTED") for f in files)
+            sources[words[0]] = None if unknown else files
+        elif name == "target_link_libraries" and words:
+            links.setdefault(words[0], []).extend(w for w in words[1:] if w not in _LINK_WORDS)
+        elif name == "rclcpp_components_register_node" and "EXECUTABLE" in words:
+            at = words.index("EXECUTABLE")
+            if at + 1 < len(words):
+                registered[words[at + 1]] = words[0]
+    start = registered.get(executable, executable)
+    if start not in sources:
+        return None
+    out: list[str] = []
+    todo, seen = [start], {start}
+    while todo:
+        target = todo.pop()
+        listed = sources[target]
+        if listed is None or len(seen) > MAX_TARGETS:
+            return None
+        out.extend(os.path.normpath(os.path.join(root, f)) for f in listed)
+        for library in links.get(target, ()):
+            if library in sources and library not in seen:
+                seen.add(library)
+                todo.append(library)
+    return out
+
+
+def _console_script(data: bytes, executable: str) -> str | None:
+    """The module of ``executable``'s ``console_scripts`` entry in a ``setup.py`` written
+    as literals (parsed, never run); None when not found or not literal."""
+    try:
+        tree = ast.parse(data)
+    except (SyntaxError, ValueError):
+        return None
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Dict):
+            continue
+        for key, value in zip(node.keys, node.values):
+            if not (isinstance(key, ast.Constant) and key.value == "console_scripts"):
+                continue
+            if not isinstance(value, (ast.List, ast.Tuple)):
+                return None
+            for item in value.elts:
+                if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
+                    return None
+                name, _, target = item.value.partition("=")
+                if name.strip() == executable:
+                    module = target.strip().partition(":")[0].strip()
+                    return module or None
+    return None
+
+
+def _declared(sources: list[str], root: str, python: bool) -> set[str] | None:
+    """The literal names declared in ``sources`` and the package-local files they
+    include or import; None when any declaration cannot be read."""
+    names: set[str] = set()
+    todo = list(dict.fromkeys(sources))
+    seen = set(todo)
+    while todo:
+        if len(seen) > MAX_FILES:
+            return None
+        path = todo.pop()
+        data = _read(path)
+        if data is None:
+            return None
+        if _UNKNOWABLE.search(data):
+            return None
+        for call in _DECLARE.finditer(data):
+            literal = _LITERAL.match(data, call.end())
+            if literal is None:
+                return None
+            names.add((literal.group(1) or literal.group(2) or b"").decode("utf-8", "replace"))
+        local = _imports(data, path, root) if python else _includes(data, path, root)
+        if local is None:
+            return None
+        for other in local:
+            if other not in seen:
+                seen.add(other)
+                todo.append(other)
+    return names
+
+
+def _includes(data: bytes, path: str, root: str) -> list[str]:
+    """The package's own headers ``path`` includes with quotes (others are libraries')."""
+    out: list[str] = []
+    for match in _CPP_INCLUDE.finditer(data):
+        name = match.group(1).decode("utf-8", "replace")
+        for folder in (os.path.dirname(path), os.path.join(root, "include"), root):
+            candidate = os.path.normpath(os.path.join(folder, name))
+            if candidate.endswith(_CPP_SUFFIXES) and os.path.isfile(candidate):
+                out.append(candidate)
+                break
+    return out
+
+
+def _imports(data: bytes, path: str, root: str) -> list[str] | None:
+    """The package's own modules ``path`` imports (its top-level package's, or relative);
+    None when one of them is not found as a file."""
+    try:
+        tree = ast.parse(data)
+    except (SyntaxError, ValueError):
+        return None
+    here = os.path.dirname(path)
+    package = os.path.relpath(here, root).split(os.sep)[0]
+    out: list[str] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.split(".")[0] != package:
+                    continue
+                found = _module_file(root, alias.name.split("."))
+                if found is None:
+                    return None
+                out.append(found)
+        elif isinstance(node, ast.ImportFrom):
+            if node.level == 0:
+                if not node.module or node.module.split(".")[0] != package:
+                    continue
+                folder, parts = root, node.module.split(".")
+            else:
+                folder = here
+                for _ in range(node.level - 1):
+                    folder = os.path.dirname(folder)
+                parts = node.module.split(".") if node.module else []
+            found = _module_file(folder, parts)
+            if found is None:
+                return None
+            out.append(found)
+            for alias in node.names:
+                # A submodule imported by name; any other name is the module's own.
+                sub = _module_file(folder, [*parts, alias.name])
+                if sub:
+                    out.append(sub)
+    return [f for f in out if f]
+
+
+def _module_file(folder: str, parts: list[str]) -> str | None:
+    """The file of module ``parts`` under ``folder`` (a package's ``__init__.py``); ""
+    for a package folder without one (nothing to read); None when not found."""
+    candidate = os.path.join(folder, *parts)
+    if parts and os.path.isfile(candidate + ".py"):
+        return candidate + ".py"
+    if os.path.isfile(os.path.join(candidate, "__init__.py")):
+        return os.path.join(candidate, "__init__.py")
+    return "" if os.path.isdir(candidate) else None

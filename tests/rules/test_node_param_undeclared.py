@@ -1,0 +1,151 @@
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from launch_linter import LintOptions, lint_paths
+from launch_linter.model.diagnostic import Diagnostic
+from launch_linter.workspace.node_declarations import declared_parameters
+
+RULE = "node_param_undeclared"
+MANIFEST = ('<package format="3"><name>demo</name><version>0.1.0</version>'
+            '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+            '<license>BSD</license><export><build_type>{build}</build_type></export>'
+            '</package>')
+
+
+def cpp_package(root: Path, source: str, cmake: str = "", header: str = "") -> Path:
+    package = root / "demo"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST.format(build="ament_cmake"),
+                                         encoding="utf-8")
+    (package / "CMakeLists.txt").write_text(
+        cmake or "project(demo)\nadd_executable(reader src/reader.cpp)\n", encoding="utf-8")
+    (package / "src" / "reader.cpp").write_text(source, encoding="utf-8")
+    if header:
+        (package / "include" / "demo").mkdir(parents=True)
+        (package / "include" / "demo" / "reader.hpp").write_text(header, encoding="utf-8")
+    return package
+
+
+def node_source(*declares: str) -> str:
+    body = "".join(f"    {d};\n" for d in declares)
+    return ('#include "rclcpp/rclcpp.hpp"\n'
+            'class Reader : public rclcpp::Node {\n public:\n'
+            f'  Reader() : Node("reader") {{\n{body}  }}\n}};\n')
+
+
+def lint(package: Path, parameters: str) -> tuple[Diagnostic, ...]:
+    launch = package / "launch" / "demo.launch.py"
+    launch.parent.mkdir(exist_ok=True)
+    launch.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='demo', executable='reader',\n"
+        f"        parameters=[{parameters}])])\n", encoding="utf-8")
+    options = LintOptions(package_paths=(str(package.parent),), select=frozenset({RULE}))
+    return lint_paths([str(launch)], options).diagnostics
+
+
+def test_a_parameter_close_to_a_declared_one_is_a_warning_at_its_key(tmp_path: Path) -> None:
+    package = cpp_package(tmp_path, node_source('declare_parameter("number_particles", 200)',
+                                                'declare_parameter("topics", 1)'))
+    (found,) = lint(package, "{'particles': 300, 'topics': 2}")
+    assert found.severity.value == "warning" and found.line == 7
+    assert "'number_particles'" in found.message and "src/reader.cpp" in found.message
+
+
+def test_declared_builtin_or_far_from_every_declaration_is_silent(tmp_path: Path) -> None:
+    package = cpp_package(tmp_path, node_source('declare_parameter<int>("rate", 10)'))
+    assert lint(package, "{'rate': 5, 'use_sim_time': True, 'diagnostic_period': 1.0}") == ()
+
+
+def test_a_slash_for_a_dot_is_reported(tmp_path: Path) -> None:
+    package = cpp_package(tmp_path, node_source('declare_parameter("tree.path", "")'))
+    (found,) = lint(package, "{'tree/path': 'x'}")
+    assert "'tree.path'" in found.message
+
+
+def test_declarations_it_cannot_read_leave_the_node_unjudged(tmp_path: Path) -> None:
+    for extra in ('declare_parameter(name_, 1)', 'declare_parameters("", {{"a", 1}})',
+                  'rclcpp::NodeOptions().allow_undeclared_parameters(true)',
+                  'auto o = rclcpp::NodeOptions()'
+                  '.automatically_declare_parameters_from_overrides(true)'):
+        folder = tmp_path / str(abs(hash(extra)))
+        package = cpp_package(folder, node_source('declare_parameter("number_particles", 2)',
+                                                  extra))
+        assert lint(package, "{'particles': 300}") == (), extra
+    # A target whose sources are in a variable, an executable not found.
+    variable = cpp_package(tmp_path / "v", node_source('declare_parameter("rate", 1)'),
+                           "project(demo)\nadd_executable(reader ${SOURCES})\n")
+    assert lint(variable, "{'rates': 5}") == ()
+    other = cpp_package(tmp_path / "o", node_source('declare_parameter("rate", 1)'),
+                        "project(demo)\nadd_executable(other src/reader.cpp)\n")
+    assert lint(other, "{'rates': 5}") == ()
+
+
+def test_headers_and_linked_libraries_of_the_package_are_read(tmp_path: Path) -> None:
+    header = ('#pragma once\n'
+              'struct P { void d(rclcpp::Node & n) { n.declare_parameter("rate", 1); } };\n')
+    source = '#include "demo/reader.hpp"\n' + node_source()
+    cmake = ("project(demo)\nadd_library(core src/core.cpp)\n"
+             "add_executable(reader src/reader.cpp)\ntarget_link_libraries(reader core)\n")
+    package = cpp_package(tmp_path, source, cmake, header)
+    (package / "src" / "core.cpp").write_text(
+        'void f(rclcpp::Node & n) { n.declare_parameter("frame_id", "base"); }\n',
+        encoding="utf-8")
+    assert declared_parameters(str(package), "reader") == (("frame_id", "rate"),
+                                                           "src/reader.cpp")
+    (found,) = lint(package, "{'frame': 'x', 'rate': 2}")
+    assert "'frame_id'" in found.message
+
+
+def test_a_python_node_and_the_modules_of_its_package(tmp_path: Path) -> None:
+    package = tmp_path / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST.format(build="ament_python"),
+                                         encoding="utf-8")
+    (package / "setup.py").write_text(
+        "from setuptools import setup\nsetup(name='demo', packages=['demo'],\n"
+        "      entry_points={'console_scripts': ['reader = demo.reader:main']})\n",
+        encoding="utf-8")
+    (package / "demo" / "__init__.py").write_text("", encoding="utf-8")
+    (package / "demo" / "reader.py").write_text(
+        "from demo.base import Base\n\n\nclass Reader(Base):\n"
+        "    def __init__(self):\n        super().__init__()\n"
+        "        self.declare_parameter('max_speed', 1.0)\n\n\ndef main():\n    Reader()\n",
+        encoding="utf-8")
+    (package / "demo" / "base.py").write_text(
+        "from rclpy.node import Node\n\n\nclass Base(Node):\n    def __init__(self):\n"
+        "        super().__init__('reader')\n        self.declare_parameter('frame_id', 'a')\n",
+        encoding="utf-8")
+    (found,) = lint(package, "{'max_sped': 2.0, 'frame_id': 'b'}")
+    assert "'max_speed'" in found.message and "demo/reader.py" in found.message
+    # A module of the package that is not there: the declarations are not all known.
+    (package / "demo" / "base.py").unlink()
+    assert lint(package, "{'max_sped': 2.0}") == ()
+
+
+def test_twenty_thousand_parameters_declarations_targets_and_includes(tmp_path: Path) -> None:
+    """One pass per loop over the input: the parameters given (the first 500 compared),
+    the declarations of a source, the targets of a CMakeLists.txt (50 libraries followed
+    at most) and the includes of a source (100 files read at most)."""
+    count = 20_000
+    declares = [f'declare_parameter("p{i}", 1)' for i in range(count)]
+    cmake = "project(demo)\n" + "".join(
+        f"add_library(l{i} src/reader.cpp)\n" for i in range(count)) + (
+        "add_executable(reader src/reader.cpp)\ntarget_link_libraries(reader "
+        + " ".join(f"l{i}" for i in range(count)) + ")\n")
+    package = cpp_package(tmp_path / "a", node_source(*declares))
+    given = "{" + ", ".join(f"'q{i}x': 1" for i in range(count)) + "}"
+    started = time.process_time()
+    assert len(lint(package, given)) <= 500
+    linked = cpp_package(tmp_path / "b", node_source(*declares[:10]), cmake)
+    assert declared_parameters(str(linked), "reader") is None
+    includes = "".join(f'#include "h{i}.hpp"\n' for i in range(count))
+    many = cpp_package(tmp_path / "c", includes + node_source('declare_parameter("a", 1)'))
+    for i in range(200):
+        (many / "src" / f"h{i}.hpp").write_text("", encoding="utf-8")
+    assert declared_parameters(str(many), "reader") is None
+    assert time.process_time() - started < 60
