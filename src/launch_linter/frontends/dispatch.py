@@ -9,7 +9,6 @@ decide for ``*.xml`` files).
 
 from __future__ import annotations
 
-from launch_linter.frontends.declarations import attach_declarations
 from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.robot.standalone import load_description
 from launch_linter.frontends.ros1 import LoadOptions, Ros1Loader, load_ros1
@@ -56,6 +55,10 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
         tree = attach_robot(tree, options.packages, options.robots, options.display_path,
                             dict(options.env), loader.include_sites,
                             loader.tf_prefixes if isinstance(loader, Ros1Loader) else ())
-    if not isinstance(loader, Ros1Loader):
+    if not isinstance(loader, Ros1Loader) and any(n.params for n in tree.nodes):
+        # Imported here: the install rules it reads cost start-up time a run without
+        # such nodes need not pay.
+        from launch_linter.frontends.declarations import attach_declarations
+
         tree = attach_declarations(tree, options.packages)
     return tree

@@ -118,6 +118,12 @@ def main():
     rclpy.init()
     rclpy.spin(Reader())
 ```
+
+## Known problems
+A parameter file shared by several nodes (`/**:` keys) gives each node the others'
+parameters; one of them close to a name the node declares is reported, though the file
+meant it for another node. Declarations made through a generated parameter library
+(`generate_parameter_library`) are left unknown, so such nodes are not judged.
 """
 
 from __future__ import annotations
