@@ -2,7 +2,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from _urdf import joint, link, lint_loaded, lint_urdf, robot
+from _urdf import joint, link, lint_urdf, robot
 
 from launch_linter import LintOptions, lint_paths
 
@@ -96,12 +96,3 @@ def test_a_file_included_twice(tmp_path: Path) -> None:
     top.write_text(robot('<xacro:include filename="part.xacro"/>\n' + link("a")),
                    encoding="utf-8")
     assert lint_paths([str(top)], options).diagnostics == ()
-
-
-def test_an_error_where_loaded_and_info_on_its_own(tmp_path: Path) -> None:
-    """Judged in files linted alone, its warnings were mostly fragments and test files
-    nothing loads (precision trials 8 and earlier, docs/severity.md): info there; a
-    description a launch file loads is still refused by urdfdom, an error."""
-    text = robot(link("a") + link("a"))
-    assert [f.severity.value for f in lint_urdf(text, RULE)] == ["info"]
-    assert [f.severity.value for f in lint_loaded(tmp_path, text, RULE)] == ["error"]

@@ -28,12 +28,10 @@ def judged(robot: RobotModel) -> bool:
     return not any(f.kind is FaultKind.REFUSED for f in robot.faults)
 
 
-def level(robot: RobotModel, alone: Severity = Severity.WARNING) -> Severity | None:
+def level(robot: RobotModel) -> Severity | None:
     """A structure fault is an error in a description a launch file loads; in a file
-    linted on its own with its default args (which its users may override) ``alone``: a
-    warning, or info for a rule whose judged findings in files linted alone fell below the
-    warning level's precision (docs/severity.md)."""
-    return alone if robot.standalone else None
+    linted on its own with its default args (which its users may override) a warning."""
+    return Severity.WARNING if robot.standalone else None
 
 
 def first_by_name(elements: Iterable[RobotElement]) -> dict[str, RobotElement]:

@@ -45,8 +45,6 @@ from launch_linter.rules._robot import judged, level, refused, robots_of, where
 ID = "urdf_duplicate_name"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
-ALONE = Severity.INFO
-"""The level in a description linted on its own (docs/severity.md)."""
 EXAMPLE_PATH = "example.urdf"
 NAMED_KINDS = ("link", "joint", "material")
 """What urdfdom keeps by name (the description's other elements are not compared)."""
@@ -72,7 +70,7 @@ def _again(robot: RobotModel, earlier: RobotElement, element: RobotElement) -> F
             f"again by this include: the file is also included at "
             f"{_place(first[0], first[1], site[0])}; {urdfdom}", element.name,
             (Location(*first), Location(element.path, element.line, element.column)),
-            severity=level(robot, ALONE))
+            severity=level(robot))
     related = [Location(earlier.path, earlier.line, earlier.column)]
     if same_place:
         how = ("made again by the same line: a macro instantiated twice with the same "
@@ -84,7 +82,7 @@ def _again(robot: RobotModel, earlier: RobotElement, element: RobotElement) -> F
                 f"{_place(element.defined[0], element.defined[1], element.path)})")
         related.append(Location(*element.defined))
     return Finding(element.path, element.line, element.column, f"{what} is {how}; {urdfdom}",
-                   element.name, tuple(related), severity=level(robot, ALONE))
+                   element.name, tuple(related), severity=level(robot))
 
 
 def check(context: RuleContext) -> Iterator[Finding]:

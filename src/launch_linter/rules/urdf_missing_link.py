@@ -58,8 +58,6 @@ from launch_linter.rules._robot import (
 ID = "urdf_missing_link"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
-ALONE = Severity.INFO
-"""The level in a description linted on its own (docs/severity.md)."""
 EXAMPLE_PATH = "example.urdf"
 
 
@@ -98,6 +96,6 @@ def check(context: RuleContext) -> Iterator[Finding]:
                     joint.name,
                     tuple(Location(links[n].path, links[n].line, links[n].column)
                           for n in close) + tuple(Location(f.path, f.line, 1) for f in calls),
-                    severity=level(robot, ALONE),
+                    severity=level(robot),
                 )
                 break
