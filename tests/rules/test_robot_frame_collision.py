@@ -210,3 +210,52 @@ def test_the_closest_tf_prefix_is_the_one_searchparam_finds() -> None:
     assert searched_tf_prefix("/tb3_1", set_in) == "world"
     assert searched_tf_prefix("/tb3_10", set_in[1:]) == ""
     assert searched_tf_prefix("/tb3_1", [(None, "x")]) == UNKNOWN_VALUE
+
+
+def _mir_like(tmp_path: Path, namespaces: tuple[str, ...], prefixed: bool) -> int:
+    """One robot launch file giving its description (frames ``<ns>/...`` when
+    ``prefixed``) to robot_state_publisher and to joint_state_publisher, included once per
+    namespace (awdguyi/ros2_ws_test's mir_description.launch.py)."""
+    link = "${ns}/" if prefixed else ""
+    (tmp_path / "r.urdf.xacro").write_text(
+        "<robot name='r' xmlns:xacro='http://www.ros.org/wiki/xacro'>"
+        "<xacro:arg name='ns' default='x'/><xacro:property name='ns' value='$(arg ns)'/>"
+        f"<link name='{link}base_link'/><link name='{link}laser'/><joint name='j' "
+        f"type='fixed'><parent link='{link}base_link'/><child link='{link}laser'/></joint>"
+        "</robot>")
+    (tmp_path / "robot.launch.py").write_text(
+        "from launch import LaunchDescription\nfrom launch.actions import DeclareLaunchArgument"
+        "\nfrom launch.substitutions import Command, LaunchConfiguration\n"
+        "from launch_ros.actions import Node\n\n"
+        "def generate_launch_description():\n"
+        "    ns = LaunchConfiguration('namespace')\n"
+        f"    description = Command(['xacro ', '{tmp_path}/r.urdf.xacro', ' ns:=', ns])\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('namespace', default_value='x'),\n"
+        "        Node(package='robot_state_publisher', executable='robot_state_publisher',\n"
+        "             namespace=ns, parameters=[{'robot_description': description}]),\n"
+        "        Node(package='joint_state_publisher', executable='joint_state_publisher',\n"
+        "             namespace=ns, parameters=[{'robot_description': description}]),\n"
+        "    ])\n")
+    includes = "".join(
+        "        IncludeLaunchDescription(PythonLaunchDescriptionSource("
+        f"'{tmp_path}/robot.launch.py'), launch_arguments={{'namespace': '{ns}'}}.items()),\n"
+        for ns in namespaces)
+    (tmp_path / "fleet.launch.py").write_text(
+        "from launch import LaunchDescription\nfrom launch.actions import "
+        "IncludeLaunchDescription\nfrom launch.launch_description_sources import "
+        "PythonLaunchDescriptionSource\n\n"
+        f"def generate_launch_description():\n    return LaunchDescription([\n{includes}"
+        "    ])\n")
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    return len(lint_paths([str(tmp_path / "fleet.launch.py")], options).diagnostics)
+
+
+def test_a_description_given_to_joint_state_publisher_publishes_no_frames(
+        tmp_path: Path) -> None:
+    """joint_state_publisher reads robot_description to list the joints and publishes
+    /joint_states, never tf: its copy of each robot's description is no second robot."""
+    assert _mir_like(tmp_path, ("mir0", "mir1"), prefixed=True) == 0
+    assert _mir_like(tmp_path, ("mir0",), prefixed=True) == 0
+    # Two robots whose frames are not prefixed still collide, joint_state_publisher or not.
+    assert _mir_like(tmp_path, ("mir0", "mir1"), prefixed=False) == 1

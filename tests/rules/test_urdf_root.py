@@ -30,6 +30,17 @@ def test_no_root_when_the_joints_form_a_loop() -> None:
     assert "No root link found" in found.message
 
 
+def test_a_joint_to_an_undefined_link_is_no_loop() -> None:
+    """A fragment joining its only link to a base it does not define (smrr_description's
+    camera.urdf): urdfdom stops on the missing parent link, not for want of a root, and
+    urdf_missing_link reports that; a real loop beside it is still one."""
+    fragment = robot(link("camera_link") + joint("camera_joint", "base_link", "camera_link"))
+    assert lint_urdf(fragment, RULE) == ()
+    assert [f.rule for f in lint_urdf(fragment, "urdf_missing_link")] == ["urdf_missing_link"]
+    looped = robot(link("a") + link("b") + joint("j1", "a", "b") + joint("j2", "b", "a"))
+    assert len(lint_urdf(looped, RULE)) == 1
+
+
 def test_a_link_under_an_undecided_condition_is_no_certain_root(tmp_path: Path) -> None:
     text = robot('<xacro:arg name="gripper" default="true"/>' + link("base_link")
                  + '<xacro:if value="$(arg gripper)">' + link("gripper") + "</xacro:if>")

@@ -68,7 +68,10 @@ a plugin in the description each robot spawns). It says nothing
 about a tree roslaunch refuses (husky's multi-robot playpen passes an argument its spawn
 file no longer declares) or a root that its package only hands to
 `roslaunch_add_file_check` and never installs (abb's and universal_robot's
-`tests/roslaunch_test*.xml`: one group per launch file, only parsed). A prefix whose value
+`tests/roslaunch_test*.xml`: one group per launch file, only parsed), nor about a
+description a ROS 2 node other than robot_state_publisher is given (joint_state_publisher
+reads it to list the joints and publishes `/joint_states`, never tf: its copy, beside the
+robot_state_publisher of the same robot, is no second robot). A prefix whose value
 the linter cannot resolve counts as a prefix (the rule stays silent). Only the parameter the
 node's ROS version reads counts: ROS 1 robot_state_publisher ignores a `frame_prefix`
 (ros/robot_state_publisher#192) and finds `tf_prefix` from its private namespace up; ROS 2's
@@ -82,6 +85,7 @@ command each (a spawn file run per robot) are separate trees: never compared.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Tuple
 
 from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.launch import LaunchTree
@@ -121,7 +125,10 @@ def _descriptions(tree: LaunchTree, distro: str | None) -> Iterator[Finding]:
         return
     by_source: dict[int, list[RobotJoint]] = {}
     sources: list[DescriptionSource] = []
+    unpublished = _given_to_other_programs(tree)
     for joint in tree.joints:
+        if _site(joint.source) in unpublished:
+            continue
         # Joints come per description entry: the same entry (an include per robot) twice
         # is two entries of equal value, told apart by position.
         if not sources or sources[-1] is not joint.source:
@@ -158,6 +165,27 @@ def _descriptions(tree: LaunchTree, distro: str | None) -> Iterator[Finding]:
             # At the publisher, where the prefix is missing; the description beside it.
             yield finding_at_node(publisher, message,
                                   related=(Location(source.path, source.line, source.column),))
+
+
+Site = Tuple[str, int, int, Tuple[Location, ...]]
+
+
+def _site(source: DescriptionSource) -> Site:
+    return source.path, source.line, source.column, source.included_at
+
+
+def _given_to_other_programs(tree: LaunchTree) -> set[Site]:
+    """Where a ROS 2 node other than robot_state_publisher is given a robot_description
+    (a launch_ros ``Node`` is given its parameters at its own element): the description
+    is that node's copy (joint_state_publisher's, ros2_control_node's), not frames it
+    publishes; the same description given to robot_state_publisher at that element
+    still counts."""
+    def at(node: NodeRecord) -> Site:
+        return node.path, node.line, node.column, node.included_at
+
+    nodes = [n for n in tree.nodes if n.kind == "node"]
+    publishing = {at(n) for n in nodes if n.package == PUBLISHER}
+    return {at(n) for n in nodes if n.package != PUBLISHER} - publishing
 
 
 def _publisher_of(source: DescriptionSource,

@@ -5,7 +5,9 @@ Reads every robot description a `robot_state_publisher` of the tree publishes (a
 `.urdf`/`.xacro` file linted on its own) as urdfdom does, after xacro: a root link is a link
 that is the child of no joint. Reports the second root link when there are two or more,
 naming the others, and a description where every link is the child of a joint (no root:
-the joints form a loop). Only what is certain is reported: a link under an undecided
+the joints form a loop, every joint naming links the description defines: a joint to an
+undefined link is urdf_missing_link's, which urdfdom meets first). Only what is certain
+is reported: a link under an undecided
 `xacro:if` is not counted as a root, a joint under one may give a link its parent, and a
 description whose expansion could not be followed (an include not read, a name not known)
 is not judged. A `<link>` without a `name` attribute counts as urdfdom counts it: a link
@@ -103,7 +105,11 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 [r for r in certain if r is not shown],
             )
         elif not roots and all(e.condition.always for e in robot.elements
-                                   if e.kind in ("link", "joint")):
+                                   if e.kind in ("link", "joint")) and all(
+                end in links for joint in robot.joints for end in (joint.parent, joint.child)):
+            # A joint naming a link the description lacks stops urdfdom's initTree before
+            # it looks for a root ("parent link [x] of joint [y] not found"), and that
+            # link, not a loop, is why no root is left: urdf_missing_link says so.
             link = next(iter(links.values()))
             yield finding_at(
                 robot, link,
