@@ -163,6 +163,24 @@ class PackageIndex:
             return None
         return os.path.normpath(os.path.join(owner[1], targets.pop()))
 
+    def installs(self, path: str) -> bool | None:
+        """Whether the install rules of the ROS 2 package found in source that holds
+        ``path`` install it (anywhere in its share folder): False only when every rule
+        was read and none installs it (``ros2 launch <pkg> <file>`` cannot find it);
+        None when that is unknown (no such package, an installed copy, a ROS 1 package,
+        a name in two folders, rules not all read)."""
+        path = os.path.normpath(os.path.abspath(path))
+        owner = self._owner(path)
+        if owner is None or owner[1] in self._installed or owner[0] in self._twice:
+            return None
+        layout = self._layout(*owner)
+        if layout is None:
+            return None
+        relative = os.path.relpath(path, owner[1]).replace(os.sep, "/")
+        if layout.installed_as(relative):
+            return True
+        return None if layout.reasons else False
+
     def _owner(self, path: str) -> tuple[str, str] | None:
         best: tuple[str, str] | None = None
         for name, directory in self._all().items():
