@@ -31,6 +31,7 @@ from launch_linter.frontends.params import (
     SPAWNERS,
     PlacedDocument,
     ProcessParams,
+    control_started,
     controllers_of,
     embedded_costmap,
     node_full_name,
@@ -57,15 +58,21 @@ from launch_linter.frontends.ros2_actions import (
     Component,
     FileRead,
     Include,
+    LoadComponents,
     Params,
     ParamsFile,
     ParamsUnknown,
     PushNamespace,
     RunNode,
+    Uses,
     Where,
 )
 from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
-from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
+from launch_linter.frontends.ros2_param_paths import (
+    configurations_read,
+    empty_defaults,
+    reads_configuration,
+)
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -95,23 +102,6 @@ from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
 from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
-
-
-def reads_configuration(subs: Subs, name: str) -> bool:
-    """Whether ``subs`` reads the launch configuration ``name`` (``$(var name)``,
-    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by the
-    substitutions' own size."""
-    stack = [subs]
-    while stack:
-        for sub in stack.pop():
-            if not isinstance(sub, Call):
-                continue
-            if (sub.name == "var" and sub.args and len(sub.args[0]) == 1
-                    and isinstance(sub.args[0][0], Text) and sub.args[0][0].text == name):
-                return True
-            stack.extend(sub.args)
-    return False
-
 
 MANY_NODE_PACKAGES = ("controller_manager", "rclcpp_components")
 """Packages whose processes run other nodes that take the same parameter files under their
@@ -381,6 +371,14 @@ class Ros2Loader(Ros2Runner):
         self.nodes.extend(records)
         self.spawned = None if names is None or self.spawned is None else self.spawned + names
 
+    def _uses(self, action: RunNode | LoadComponents | Uses, scope: _Scope, frame: _Frame
+              ) -> None:
+        super()._uses(action, scope, frame)  # and what ros2 control activates, as a spawner
+        if isinstance(action, Uses) and action.controls is not None:
+            names = control_started([resolved_text(self._resolve(w, scope, frame, action.where))
+                                     for w in action.controls])
+            self.spawned = None if names is None or self.spawned is None else self.spawned + names
+
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,
                      namespace: str | None, defaults: tuple[str, ...] = ()) -> _NodeParams:
@@ -625,7 +623,6 @@ class Ros2Loader(Ros2Runner):
         self.transforms.append(transform)
         if transform.unresolved:
             self._report("unresolved", where, unresolved_message(transform), node=name)
-
 
 
 __all__ = [

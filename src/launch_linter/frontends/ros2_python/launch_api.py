@@ -29,6 +29,7 @@ from launch_linter.frontends.ros2_actions import (
     Where,
     may_publish_static_tf,
     may_rename,
+    ros2_control,
     ros2_run,
     shell_reads_as_words,
 )
@@ -122,7 +123,8 @@ class Interpreter(NodeArguments):
         return result
 
     def launch_object(self, name: str, args: list[object], kwargs: dict[str, object],
-                      node: ast.Call) -> LaunchObject:
+                      node: ast.Call, controls: tuple[Subs, ...] | None = None
+                      ) -> LaunchObject:
         """A launch class the linter does not model (``SetParameter``, ``LogInfo``, an
         ``ExecuteProcess``): as an action it performs the substitutions it was given."""
         uses = performed([*args, *(v for k, v in kwargs.items() if k != "condition")])
@@ -133,7 +135,7 @@ class Interpreter(NodeArguments):
                 parameter = (self.subs(key, node, "parameter name"),
                              self.subs(_parameter_text(value), node, "parameter value"))
         return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses,
-                            parameter)
+                            parameter, controls)
 
     def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
                                  node: ast.Call) -> object:
@@ -210,7 +212,7 @@ class Interpreter(NodeArguments):
             items = [literal(word) for word in words]
         run = ros2_run(items)
         if run is None:
-            return self.launch_object("ExecuteProcess", args, kwargs, node)
+            return self.launch_object("ExecuteProcess", args, kwargs, node, ros2_control(items))
         package, executable, arguments = run
         return RunNode(
             where=self.where(node), condition=self.condition(kwargs, node), package=package,
