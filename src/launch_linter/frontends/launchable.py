@@ -1,4 +1,4 @@
-"""Launch files of a ROS 2 package that ``ros2 launch`` never runs.
+"""What ``ros2 launch`` can run of a ROS 2 workspace: launch files, node executables.
 
 ``ros2 launch <package> <file>`` finds a file in the package's installed share folder
 only (ament_index's ``get_package_share_directory``), and a launch file reaches another
@@ -10,9 +10,16 @@ ament package that no launch file names and no rule read installs: navigation2's
 ``nav2_costmap_2d/test/simple_driving_test.xml``, a rostest file kept since the port to
 ROS 2 and copied with the package into other workspaces. What ``ros2 launch`` would
 refuse in such a file is true of its text but stops nothing.
+
+A node of a package built in the workspace starts only if the package installs its
+executable into ``lib/<package>`` (:mod:`launch_linter.workspace.executables`, read
+statically): :func:`missing_executable` says so when the package's build files, read
+completely, install no executable of that name.
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
 
 from launch_linter.frontends.xml_dialect import reads_as_python, ros1_sign
 from launch_linter.workspace.mentions import named_by_another_file
@@ -36,3 +43,20 @@ def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) ->
         return (f"a ROS 1 launch file ({sign}) left in a ROS 2 package: no launch file "
                 "names it and no install rule read installs it")
     return None
+
+
+def missing_executable(packages: PackageIndex, package: str, executable: str | None,
+                       display: Callable[[str], str]) -> str | None:
+    """Why ``Node(package=package, executable=executable)`` cannot start, when
+    ``package`` is a ROS 2 package of the linted workspace whose build files, read
+    completely, install no such executable; None otherwise (unknown included)."""
+    found = None if not executable else packages.executables(package)
+    if found is None or found[1].reasons or executable in found[1].names:
+        return None
+    directory, installed = found
+    names = sorted(installed.names)
+    listed = ", ".join(names[:8]) + (f" and {len(names) - 8} more" if len(names) > 8 else "")
+    return (f"package '{package}' ({display(directory)}) installs no executable "
+            f"'{executable}' into lib/{package}: its {installed.origin} install "
+            f"{listed or 'none'}; ros2 launch stops: \"executable '{executable}' not found "
+            f"on the libexec directory\"")

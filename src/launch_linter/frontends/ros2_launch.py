@@ -23,6 +23,7 @@ from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.known_launch import Started, started_by
+from launch_linter.frontends.launchable import missing_executable
 from launch_linter.frontends.node_names import unmatched_default_keys
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
@@ -209,6 +210,10 @@ class Ros2Loader(Ros2Runner):
         package_text = resolved_text(package)
         if package_text is not None:
             self._frame_node(action, scope, frame, package_text, resolved_text(executable))
+            missing = missing_executable(self.options.packages, package_text,
+                                         resolved_text(executable), self._display)
+            if missing is not None:
+                self._report("node_executable_missing", action.where, missing)
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return

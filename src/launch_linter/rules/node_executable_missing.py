@@ -43,7 +43,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
-from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 from launch_linter.rules._nodes import finding_at_node
 
 ID = "node_executable_missing"
@@ -62,6 +62,7 @@ def _distro_of(context: RuleContext, ros: int | None) -> str | None:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    yield from frontend_findings(context, ID)
     knowledge = context.knowledge
     for node in context.tree.nodes:
         if node.kind != "node" or node.plugin is not None or not node.executable:
