@@ -13,15 +13,17 @@ never run, bounded like :mod:`.cmake_install`:
   with ``ament_auto_package`` (installed to ``lib/${PROJECT_NAME}`` unless
   ``INSTALL_TO_PATH``), and the ``CMakeLists.txt`` of each ``add_subdirectory``;
 - ament_python: ``setup.py``'s ``entry_points['console_scripts']`` and ``scripts``, and
-  ``setup.cfg``'s ``[options.entry_points]``, installed to ``lib/<package>`` by the
-  ``[install] install_scripts=$base/lib/<package>`` that ament_python packages write
-  (without it, setuptools installs them to ``bin``: then not known here).
+  ``setup.cfg``'s ``[options.entry_points]`` and ``[options] scripts``, installed to
+  ``lib/<package>`` by the ``[install] install_scripts=$base/lib/<package>`` that
+  ament_python packages write (without it, setuptools installs them to ``bin``: then not
+  known here).
 
 Whatever cannot be read exactly (an unknown variable or destination, an ``install`` in a
 function, macro or loop body, ``include`` of a file, ``install(SCRIPT|CODE)``, a target
 given another ``OUTPUT_NAME``, ``ament_python_install_package``, a missing subdirectory,
-a value the setup.py evaluator does not know) leaves the list incomplete: it can then say
-that an executable is installed, never that one is not.
+a value the setup.py evaluator does not know, ``**kwargs`` or a ``cmdclass`` in
+``setup()``) leaves the list incomplete: it can then say that an executable is
+installed, never that one is not.
 """
 
 from __future__ import annotations
@@ -234,8 +236,8 @@ def _setup_py(reading: _Reading) -> None:
         reading.unknown(f"setup.py: {found}")
         return
     keywords, evaluate = found
-    if None in keywords:
-        reading.unknown("setup.py: setup(**...) keywords not known")
+    if None in keywords or "cmdclass" in keywords:
+        reading.unknown("setup.py: setup(**...) or a custom cmdclass may install more")
     scripts = keywords.get("scripts")
     if scripts is not None:
         value = setup_value(evaluate, scripts)
@@ -287,6 +289,8 @@ def _setup_cfg(reading: _Reading) -> None:
     for line in console.splitlines():
         if "=" in line:
             reading.add(line.partition("=")[0].strip())
+    for script in parser.get("options", "scripts", fallback="").replace(",", " ").split():
+        reading.add(posixpath.basename(script))
 
 
 __all__ = ["Executables", "read_executables"]
