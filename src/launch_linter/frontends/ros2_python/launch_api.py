@@ -375,6 +375,10 @@ class Interpreter(NodeArguments):
         # The file's problems were handed over when it was read; what the function's body
         # meets now (a loop over an unknown value, ...) is reported through the actions.
         recorded = len(self.problems)
+        # What the function appends to a LaunchDescription it is given runs after it:
+        # launch's visit of a description iterates the very list the function appends to.
+        given = [(d, len(d.items)) for d in (*args, *kwargs.values())
+                 if isinstance(d, LaunchDescriptionVal)]
         try:
             result = self.call_function(function, [ContextVal(resolver), *args],
                                         {str(k): v for k, v in kwargs.items()}, node)
@@ -394,7 +398,9 @@ class Interpreter(NodeArguments):
             Unfollowed(Where(self.path, p.line, p.column), p.message, p.rule)
             for p in met
         )
-        found = self.actions(result, node) if result is not None else ()
+        appended = [item for d, before in given for item in d.items[before:]]
+        found = (*(self.actions(result, node) if result is not None else ()),
+                 *(self.actions(appended, node) if appended else ()))
         # A log message or a parameter set (an unmodelled action) starts nothing: a
         # function that returns only those returned none of the actions it builds.
         followed = [action for action in found if not isinstance(action, Uses)]
