@@ -143,3 +143,27 @@ def test_twenty_thousand_install_rules(tmp_path: Path) -> None:
         " DESTINATION lib/drive)\n"
     assert found(tmp_path, "drive", "missing", wide) == []
     assert time.process_time() - started < 60
+
+
+def test_console_scripts_nested_and_multiline(tmp_path: Path) -> None:
+    """setuptools flattens nested lists and splits texts into lines (yield_lines):
+    rmf_demos_bridges writes its two entries as one tuple inside the list."""
+    source = workspace(tmp_path)
+    (source / "pydrive" / "setup.py").write_text(SETUP_PY.replace(
+        "'walker = pydrive.walker:main',",
+        "('walker=' 'pydrive.walker:main', 'runner=pydrive.runner:main'),\n"
+        "            'jumper = pydrive.jumper:main\\n# comment\\nhopper = pydrive.h:main',"))
+    read = read_executables(str(source / "pydrive"), "pydrive")
+    assert read is not None and read.reasons == ()
+    assert read.names == {"walker", "runner", "jumper", "hopper"}
+
+
+def test_twenty_thousand_console_scripts(tmp_path: Path) -> None:
+    source = workspace(tmp_path)
+    entries = ", ".join(f"'s{i} = pydrive.s:main'" for i in range(19_990))
+    (source / "pydrive" / "setup.py").write_text(SETUP_PY.replace(
+        "'walker = pydrive.walker:main',", entries))
+    started = time.process_time()
+    read = read_executables(str(source / "pydrive"), "pydrive")
+    assert time.process_time() - started < 60
+    assert read is not None and len(read.names) == 19_990

@@ -262,11 +262,22 @@ def _entry_points(reading: _Reading, evaluate: object, node: ast.expr) -> None:
         if key.value != "console_scripts":
             continue
         found = setup_value(evaluate, value)
-        if not isinstance(found, (list, tuple)):
+        if not isinstance(found, (list, tuple, str)):
             reading.unknown(f"setup.py: console_scripts not read ({found})")
             continue
-        for entry in found:
-            reading.add(str(entry).partition("=")[0].strip())
+        # setuptools reads the entries with yield_lines: nested lists flattened, each text
+        # split into lines, blank lines and comments skipped.
+        pending: list[object] = [found]
+        while pending:
+            entry = pending.pop()
+            if isinstance(entry, (list, tuple)):
+                pending.extend(entry)
+            elif not isinstance(entry, str):
+                reading.unknown("setup.py: a console_scripts entry that is not text")
+            else:
+                for line in entry.splitlines():
+                    if line.strip() and not line.strip().startswith("#"):
+                        reading.add(line.partition("=")[0].strip())
 
 
 def _setup_cfg(reading: _Reading) -> None:
