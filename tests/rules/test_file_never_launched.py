@@ -68,6 +68,23 @@ def test_a_rostest_file_another_launch_file_names_keeps_its_errors(tmp_path: Pat
     assert {level for _, _, level in levels(root)} == {"error"}
 
 
+def test_a_file_a_cmake_command_names_keeps_its_errors(tmp_path: Path) -> None:
+    """add_launch_test(test/scratch.launch.xml) runs it as a test: not a leftover; a CMake
+    comment naming it (navigation2's TODO) runs nothing."""
+    root = package(tmp_path) / "test" / "scratch.launch.xml"
+    root.write_text(ROS2_MISSPELT)
+    (tmp_path / "test" / "CMakeLists.txt").write_text(
+        "# TODO: run scratch.launch.xml one day\n")
+    assert levels(root) == [("file_never_launched", 1, "info"), ("ros2_schema", 2, "info")]
+    (tmp_path / "test" / "CMakeLists.txt").write_text(
+        "add_launch_test(scratch.launch.xml TIMEOUT 60)\n")
+    assert levels(root) == [("ros2_schema", 2, "error")]
+    (tmp_path / "test" / "CMakeLists.txt").unlink()
+    (tmp_path / "CMakeLists.txt").write_text(
+        INSTALLS_LAUNCH + "add_launch_test(test/scratch.launch.xml)\n")
+    assert levels(root) == [("ros2_schema", 2, "error")]
+
+
 def test_a_ros2_file_never_installed_is_info(tmp_path: Path) -> None:
     """Install rules read completely, none installs test/: ros2 launch cannot find it."""
     root = package(tmp_path) / "test" / "scratch.launch.xml"
@@ -119,4 +136,14 @@ def test_ros1_signs_read_in_linear_time() -> None:
     started = time.process_time()
     assert ros1_sign(b"<launch>" + b"<node pkg='a' " * 20_000 + b"<!--" * 20_000) is None
     assert ros1_sign(b"<node a='b' " * 20_000 + b"type='x'>") == "<node type=>"
+    assert time.process_time() - started < 60
+
+
+def test_twenty_thousand_cmake_commands_read_once(tmp_path: Path) -> None:
+    root = package(tmp_path) / "test" / "scratch.launch.xml"
+    root.write_text(ROS2_MISSPELT)
+    (tmp_path / "test" / "CMakeLists.txt").write_text(
+        "# scratch.launch.xml\n" + "set(a b c d)\n" * 20_000)
+    started = time.process_time()
+    assert levels(root) == [("file_never_launched", 1, "info"), ("ros2_schema", 2, "info")]
     assert time.process_time() - started < 60

@@ -19,18 +19,21 @@ completely, install no executable of that name.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 
 from launch_linter.frontends.xml_dialect import reads_as_python, ros1_sign
+from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.mentions import named_by_another_file
-from launch_linter.workspace.packages import PackageIndex
+from launch_linter.workspace.packages import MAX_WALK_UP, PackageIndex
 
 
 def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) -> str | None:
     """Why the ROS 2 launch file ``path`` (``data``: its bytes, if read) is run by nothing,
-    or None when it may be run (installed, named by another launch file, or unknown)."""
+    or None when it may be run (installed, named by another launch file or by a CMake
+    command, a test's, or unknown)."""
     installs = packages.installs(path)
-    if installs or named_by_another_file(path) is not None:
+    if installs or named_by_another_file(path) is not None or _named_by_cmake(path, packages):
         return None
     xml = data is not None and not path.lower().endswith((".yaml", ".yml")) and not (
         reads_as_python(path, data))
@@ -43,6 +46,34 @@ def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) ->
         return (f"a ROS 1 launch file ({sign}) left in a ROS 2 package: no launch file "
                 "names it and no install rule read installs it")
     return None
+
+
+def _named_by_cmake(path: str, packages: PackageIndex) -> bool:
+    """Whether a command of a ``CMakeLists.txt`` between the file's folder and its
+    package's names the file (``add_launch_test(test/x.launch.py)``, ``add_ros_test``,
+    ``ament_add_test(... COMMAND x.launch.py)``: a test that runs it); comments aside."""
+    manifest = packages.package_xml_of(path)
+    if manifest is None:
+        return False
+    # Imported here: only a refused file of a ROS 2 package needs its CMake files read.
+    from launch_linter.workspace.cmake_install import MAX_CMAKE_BYTES, commands
+
+    name = os.path.basename(path)
+    top = os.path.dirname(manifest)
+    folder = os.path.dirname(os.path.abspath(path))
+    for _ in range(MAX_WALK_UP):
+        try:
+            data = read_regular_file(os.path.join(folder, "CMakeLists.txt"), MAX_CMAKE_BYTES)
+        except (OSError, NotRegularFile):
+            data = b""
+        text = data.decode("utf-8", "replace")
+        if name in text and any(name in argument.text for _, arguments, _ in commands(text)
+                                for argument in arguments):
+            return True
+        if folder == top or os.path.dirname(folder) == folder:
+            return False
+        folder = os.path.dirname(folder)
+    return False
 
 
 def missing_executable(packages: PackageIndex, package: str, executable: str | None,

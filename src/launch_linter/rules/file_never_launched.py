@@ -4,9 +4,10 @@
 Reports, once, a ROS 2 launch file that `ros2 launch` refuses (`ros2_schema`,
 `roslaunch_error`) but can never run: its package's install rules (CMake `install()`,
 `ament_auto_package`, setup.py/setup.cfg `data_files`, read statically) provably never
-install it and no launch file of the workspace names it, or it is a ROS 1 launch file (a
-rostest `<test>`, `$(find)`, `<rosparam>`, a node's `type`) that no launch file names and
-no install rule read installs. What `ros2 launch` would refuse in that file is then
+install it and neither a launch file of the workspace nor a CMake command of its package
+(`add_launch_test`, ...) names it, or it is a ROS 1 launch file (a rostest `<test>`,
+`$(find)`, `<rosparam>`, a node's `type`) that nothing names and no install rule read
+installs. What `ros2 launch` would refuse in that file is then
 reported at info, not error; this finding says why once.
 
 ## Why is this bad?
