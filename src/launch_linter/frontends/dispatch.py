@@ -13,9 +13,15 @@ from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.robot.standalone import load_description
 from launch_linter.frontends.ros1 import LoadOptions, Ros1Loader, load_ros1
 from launch_linter.frontends.xml_dialect import is_ros2_xml, reads_as_python
+from launch_linter.model.diagnostic import Problem
 from launch_linter.model.launch import LaunchTree
+from launch_linter.model.record import replace
 from launch_linter.resolve.xml_safe import read_launch_bytes
 from launch_linter.workspace.discovery import is_description_name
+
+NEVER_LAUNCHED = "file_never_launched"
+REFUSALS = frozenset({"ros2_schema", "roslaunch_error"})
+"""The rules whose findings say that ``ros2 launch`` refuses the file."""
 
 
 def front_end(path: str, data: bytes | None, ros_version: int | None = None) -> str:
@@ -51,6 +57,9 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
     else:
         loader = Ros1Loader(options)
     tree = loader.load(path, data)
+    if not isinstance(loader, Ros1Loader) and any(
+            p.rule in REFUSALS and p.path == tree.root for p in tree.problems):
+        tree = _if_never_launched(tree, path, data, options)
     if tree.descriptions:
         tree = attach_robot(tree, options.packages, options.robots, options.display_path,
                             dict(options.env), loader.include_sites,
@@ -62,3 +71,19 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
 
         tree = attach_declarations(tree, options.packages)
     return tree
+
+
+def _if_never_launched(tree: LaunchTree, path: str, data: bytes | None,
+                       options: LoadOptions) -> LaunchTree:
+    """``tree`` with a :data:`NEVER_LAUNCHED` problem when nothing runs its root file
+    (:mod:`.launchable`): the rules then report its refusals at info."""
+    # Imported here: only a root that ros2 launch refuses needs the install rules read.
+    from launch_linter.frontends.launchable import why_never_launched
+
+    reason = why_never_launched(path, data, options.packages)
+    if reason is None:
+        return tree
+    problem = Problem(NEVER_LAUNCHED, tree.root, 1, 0,
+                      f"nothing runs this launch file: {reason}; what ros2 launch would "
+                      "refuse in it is reported at info")
+    return replace(tree, problems=(*tree.problems, problem))

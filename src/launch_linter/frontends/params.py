@@ -485,6 +485,66 @@ def spawner_words(words: Sequence[str | None]
     return names, files, kind
 
 
+CONTROL_VALUE_FLAGS = ("-c", "--controller-manager", "--spin-time", "--switch-timeout",
+                       "--activate-timeout", "--set-state")
+"""ros2controlcli's options that take a value (ros2_control humble 0941f73 and master
+53b9999 ``ros2controlcli/api/__init__.py`` add_controller_mgr_parsers, the verbs'
+``add_arguments``; ros2cli's ``--spin-time``)."""
+ACTIVE_STATES = ("active", "start")
+"""``--set-state``/``set_controller_state`` values that leave a controller active:
+``active`` (humble on), ``start`` (foxy and galactic e3ae24b, ``load_controller.py``)."""
+_CONTROL_STARTERS = ("--activate", "--start", "--start-controllers")
+"""``switch_controllers``' lists of controllers to activate (foxy ``--start``, humble
+``--activate``/``--start``)."""
+
+
+def control_started(words: Sequence[str | None]) -> tuple[str, ...] | None:
+    """The controllers a ``ros2 control VERB ...`` command (``words``: from the verb on,
+    None where not resolved) leaves active: ``load_controller NAME --set-state active``
+    (``start`` before humble), ``load_start_controller``/``configure_start_controller
+    NAME`` (foxy), ``set_controller_state NAME active``, ``switch_controllers --activate
+    NAME...``; () for any other verb or state. None when a word that decides is not
+    resolved."""
+    if not words or words[0] is None:
+        return None
+    verb = words[0]
+    positional: list[str | None] = []
+    activated: list[str | None] = []
+    states: list[str | None] = []
+    taking: list[str | None] | None = None
+    skip: str | None = None
+    for word in words[1:]:
+        if skip is not None:
+            if skip == "--set-state":
+                states.append(word)
+            skip = None
+        elif word == "--ros-args":
+            break
+        elif word is not None and word in CONTROL_VALUE_FLAGS:
+            skip, taking = word, None
+        elif word is not None and word.startswith("-"):
+            taking = activated if word in _CONTROL_STARTERS else None
+        else:
+            (positional if taking is None else taking).append(word)
+    if verb == "switch_controllers":
+        names = activated
+    elif verb in ("load_start_controller", "configure_start_controller"):
+        names = positional[:1]
+    elif verb in ("load_controller", "set_controller_state"):
+        # load_controller's state is --set-state's value; set_controller_state's its
+        # second positional word (a parameter file is load_controller's second).
+        if verb == "set_controller_state":
+            states = positional[1:2]
+        if None in states:
+            return None
+        names = positional[:1] if states and states[-1] in ACTIVE_STATES else []
+    else:
+        return ()
+    if None in names:
+        return None
+    return tuple(name for name in names if name is not None)
+
+
 def controller_remappings(words: Sequence[str | None]) -> tuple[tuple[str, str], ...] | None:
     """The remapping rules a spawner's ``--controller-ros-args`` give the controllers it
     loads (``-r``/``--remap`` ``from:=to``; spawner.py splits each value on spaces and the

@@ -192,11 +192,11 @@ def may_rename(words: Sequence[str] | None) -> bool:
     return "__n" in text and any(w in text for w in RENAMING_WORDS)
 
 
-def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:
-    """``ros2 run PKG EXEC ARGS...`` as an executable's argv items: (package, executable,
-    arguments), or None when the command is something else. The program may be written
+def _ros2_verb(items: Sequence[Subs]) -> str | None:
+    """The verb of a ``ros2 VERB ...`` command's argv items (``run``, ``control``), None
+    when the program is not ``ros2`` or the verb not literal. The program may be written
     as a path ending in ``/ros2`` or found with ``$(find-exec ros2)``."""
-    if len(items) < 4:
+    if len(items) < 2:
         return None
     words = []
     for item in items[:2]:
@@ -209,9 +209,23 @@ def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | Non
             return None
         words.append("".join(sub.text for sub in item if isinstance(sub, Text)))
     program, verb = words
-    if not (program == "ros2" or program.endswith("/ros2")) or verb != "run":
+    return verb if program == "ros2" or program.endswith("/ros2") else None
+
+
+def ros2_run(items: Sequence[Subs]) -> tuple[Subs, Subs, tuple[Subs, ...]] | None:
+    """``ros2 run PKG EXEC ARGS...`` as an executable's argv items: (package, executable,
+    arguments), or None when the command is something else."""
+    if len(items) < 4 or _ros2_verb(items) != "run":
         return None
     return items[2], items[3], tuple(items[4:])
+
+
+def ros2_control(items: Sequence[Subs]) -> tuple[Subs, ...] | None:
+    """The words after ``ros2 control`` (ros2controlcli's verb and its arguments), None
+    when the command is something else."""
+    if len(items) < 3 or _ros2_verb(items) != "control":
+        return None
+    return tuple(items[2:])
 
 
 SHELL_SPECIAL = frozenset("$`;|&<>*?()[]{}~!#\n")
@@ -309,6 +323,9 @@ class Uses:
     parameter: tuple[Subs, Subs] | None = None
     """``SetParameter``/``<set_parameter>``: the name and value it gives every node
     launched after it in its scope."""
+    controls: tuple[Subs, ...] | None = None
+    """``ros2 control VERB ...`` run by an executable action: the words after ``control``
+    (what it activates: ``frontends.params.control_started``)."""
 
 
 @dataclass(frozen=True)

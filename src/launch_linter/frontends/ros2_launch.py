@@ -23,6 +23,7 @@ from typing import NamedTuple
 
 from launch_linter.decode_ros2 import ComponentParam, Ros2Decoded, decode_component, decode_ros2
 from launch_linter.frontends.known_launch import Started, started_by
+from launch_linter.frontends.launchable import missing_executable
 from launch_linter.frontends.node_names import unmatched_default_keys
 from launch_linter.frontends.params import (
     CONTROLLER_MANAGER_NAME,
@@ -31,6 +32,7 @@ from launch_linter.frontends.params import (
     SPAWNERS,
     PlacedDocument,
     ProcessParams,
+    control_started,
     controllers_of,
     embedded_costmap,
     node_full_name,
@@ -57,15 +59,21 @@ from launch_linter.frontends.ros2_actions import (
     Component,
     FileRead,
     Include,
+    LoadComponents,
     Params,
     ParamsFile,
     ParamsUnknown,
     PushNamespace,
     RunNode,
+    Uses,
     Where,
 )
 from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
-from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
+from launch_linter.frontends.ros2_param_paths import (
+    configurations_read,
+    empty_defaults,
+    reads_configuration,
+)
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -95,23 +103,6 @@ from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
 from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
-
-
-def reads_configuration(subs: Subs, name: str) -> bool:
-    """Whether ``subs`` reads the launch configuration ``name`` (``$(var name)``,
-    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by the
-    substitutions' own size."""
-    stack = [subs]
-    while stack:
-        for sub in stack.pop():
-            if not isinstance(sub, Call):
-                continue
-            if (sub.name == "var" and sub.args and len(sub.args[0]) == 1
-                    and isinstance(sub.args[0][0], Text) and sub.args[0][0].text == name):
-                return True
-            stack.extend(sub.args)
-    return False
-
 
 MANY_NODE_PACKAGES = ("controller_manager", "rclcpp_components")
 """Packages whose processes run other nodes that take the same parameter files under their
@@ -219,6 +210,10 @@ class Ros2Loader(Ros2Runner):
         package_text = resolved_text(package)
         if package_text is not None:
             self._frame_node(action, scope, frame, package_text, resolved_text(executable))
+            missing = missing_executable(self.options.packages, package_text,
+                                         resolved_text(executable), self._display)
+            if missing is not None:
+                self._report("node_executable_missing", action.where, missing)
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return
@@ -380,6 +375,14 @@ class Ros2Loader(Ros2Runner):
         records, names = spawner_records(spawner, words)
         self.nodes.extend(records)
         self.spawned = None if names is None or self.spawned is None else self.spawned + names
+
+    def _uses(self, action: RunNode | LoadComponents | Uses, scope: _Scope, frame: _Frame
+              ) -> None:
+        super()._uses(action, scope, frame)  # and what ros2 control activates, as a spawner
+        if isinstance(action, Uses) and action.controls is not None:
+            names = control_started([resolved_text(self._resolve(w, scope, frame, action.where))
+                                     for w in action.controls])
+            self.spawned = None if names is None or self.spawned is None else self.spawned + names
 
     def _node_params(self, groups: tuple[Params | ParamsFile | ParamsUnknown, ...],
                      scope: _Scope, frame: _Frame, where: Where, name: str | None,
@@ -625,7 +628,6 @@ class Ros2Loader(Ros2Runner):
         self.transforms.append(transform)
         if transform.unresolved:
             self._report("unresolved", where, unresolved_message(transform), node=name)
-
 
 
 __all__ = [

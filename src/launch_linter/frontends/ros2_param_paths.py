@@ -59,3 +59,19 @@ def empty_defaults(actions: tuple[Action, ...]) -> dict[str, Where]:
                 found.setdefault("".join(sub.text for sub in action.name
                                          if isinstance(sub, Text)), action.where)
     return found
+
+
+def reads_configuration(subs: Subs, name: str) -> bool:
+    """Whether ``subs`` reads the launch configuration ``name`` (``$(var name)``,
+    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by the
+    substitutions' own size."""
+    stack = [subs]
+    while stack:
+        for sub in stack.pop():
+            if not isinstance(sub, Call):
+                continue
+            if (sub.name == "var" and sub.args and len(sub.args[0]) == 1
+                    and isinstance(sub.args[0][0], Text) and sub.args[0][0].text == name):
+                return True
+            stack.extend(sub.args)
+    return False

@@ -645,6 +645,6 @@ _ACTIONS: dict[type, Callable[[Ros2Runner, Any, _Scope, _Frame], None]] = {
     RunNode: _run_node,
     LoadComponents: Ros2Runner._components,
     Deferred: Ros2Runner._deferred,
-    Uses: Ros2Runner._uses,
+    Uses: lambda runner, *given: runner._uses(*given),  # the subclass's (ros2 control)
 }
 """What running each kind of action does (an ``Unfollowed`` is reported before)."""

@@ -33,6 +33,7 @@ from launch_linter.frontends.ros2_actions import (
     Uses,
     Where,
     may_rename,
+    ros2_control,
     ros2_run,
     shell_reads_as_words,
 )
@@ -298,7 +299,7 @@ class _Reader:
             return None
         run = ros2_run(items)
         if run is None:
-            return Uses(where, condition, self.performed(entity))
+            return Uses(where, condition, self.performed(entity), controls=ros2_control(items))
         package, executable, arguments = run
         return RunNode(
             where=where, condition=condition, package=package, executable=executable,

@@ -71,6 +71,33 @@ def is_ros2_xml(data: bytes) -> bool:
     return _has_ros2_sign(without_comments(data))
 
 
+_ROS1_SIGNS = (
+    (b"<test", re.compile(rb"<test[\s/>]"), "a rostest <test>"),
+    (b"$(find", re.compile(rb"\$\(find\s"), "$(find)"),
+    (b"<rosparam", re.compile(rb"<rosparam[\s/>]"), "<rosparam>"),
+    (b"type", re.compile(rb"<node\s[^<>]*\btype\s*="), "<node type=>"),
+)
+"""What only ROS 1 launch XML has (roslaunch's ``<test>`` and ``<rosparam>`` tags, its
+``$(find pkg)``, a node's ``type``), each behind a word any match contains; ``[^<>]*`` as
+in :data:`_ROS2_WORD_SIGNS`, so the scans stay linear."""
+
+
+def ros1_sign(data: bytes) -> str | None:
+    """The first sign that launch XML is ROS 1's (outside comments): None when it has
+    none, or when it has one of ROS 2's too (:func:`is_ros2_xml`)."""
+    if is_ros2_xml(data):
+        return None
+    uncommented: bytes | None = None
+    for word, pattern, sign in _ROS1_SIGNS:
+        if word not in data:
+            continue
+        if uncommented is None:
+            uncommented = without_comments(data)
+        if pattern.search(uncommented) is not None:
+            return sign
+    return None
+
+
 def without_comments(data: bytes) -> bytes:
     """``data`` without its ``<!-- ... -->`` comments (an unclosed one runs to the end), in
     linear time: a lazy regular expression rescans the rest of the file for each unclosed

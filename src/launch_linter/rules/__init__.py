@@ -35,6 +35,7 @@ def _load() -> None:
         dup_name,
         dup_sig,
         duplicate_publisher,
+        file_never_launched,
         frame_authority,
         frame_param_slash,
         frame_without_publisher,

@@ -83,6 +83,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("namespace_pushed_twice", Category.TF),
     ("controller_tf_unrouted", Category.TF),
     ("joint_states_two_publishers", Category.TF),
+    ("file_never_launched", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -8,7 +8,10 @@ executables for the target distribution (`--ros-distro`, the `ros-distro` key or
 robot_state_publisher's `state_publisher`, built until Melodic (1.14) and gone from
 Noetic's release (1.15.0 installs `robot_state_publisher` alone; ROS 2 never had it).
 An error when the distribution is known; without one, an info when a known ROS 1
-release no longer installs it.
+release no longer installs it. For a ROS 2 package of the linted workspace, what its
+`CMakeLists.txt` or `setup.py`/`setup.cfg` install into `lib/<package>`, read statically
+(docs/workspace.md), decides instead: an error when that reading is complete and names
+no such executable.
 
 ## Why is this bad?
 roslaunch cannot start the node ("cannot launch node of type [robot_state_publisher/
@@ -43,7 +46,7 @@ from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
-from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 from launch_linter.rules._nodes import finding_at_node
 
 ID = "node_executable_missing"
@@ -62,6 +65,7 @@ def _distro_of(context: RuleContext, ros: int | None) -> str | None:
 
 
 def check(context: RuleContext) -> Iterator[Finding]:
+    yield from frontend_findings(context, ID)
     knowledge = context.knowledge
     for node in context.tree.nodes:
         if node.kind != "node" or node.plugin is not None or not node.executable:

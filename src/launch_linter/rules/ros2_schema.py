@@ -36,7 +36,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.rules._api import Finding, RuleContext, frontend_findings
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._refusals import refusal_findings
 
 ID = "ros2_schema"
 CATEGORY = Category.LAUNCH
@@ -44,4 +45,4 @@ SEVERITY = Severity.ERROR
 
 
 def check(context: RuleContext) -> Iterable[Finding]:
-    return frontend_findings(context, ID)
+    return refusal_findings(context, ID)

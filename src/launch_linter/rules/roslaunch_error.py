@@ -34,7 +34,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.rules._api import Finding, RuleContext, frontend_findings
+from launch_linter.rules._api import Finding, RuleContext
+from launch_linter.rules._refusals import refusal_findings
 
 ID = "roslaunch_error"
 CATEGORY = Category.LAUNCH
@@ -42,4 +43,4 @@ SEVERITY = Severity.ERROR
 
 
 def check(context: RuleContext) -> Iterable[Finding]:
-    return frontend_findings(context, ID)
+    return refusal_findings(context, ID)

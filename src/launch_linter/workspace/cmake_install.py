@@ -45,7 +45,7 @@ _INSTALL_KEYWORDS = frozenset({
 })
 
 
-class _Argument:
+class Argument:
     __slots__ = ("quoted", "text")
 
     def __init__(self, text: str, quoted: bool) -> None:
@@ -53,10 +53,10 @@ class _Argument:
         self.quoted = quoted
 
 
-def commands(text: str) -> list[tuple[str, list[_Argument], int]]:
+def commands(text: str) -> list[tuple[str, list[Argument], int]]:
     """The commands of a CMake file: (lower-case name, arguments, line), comments left
     out. Regular expressions step from a moving position: linear in the text."""
-    found: list[tuple[str, list[_Argument], int]] = []
+    found: list[tuple[str, list[Argument], int]] = []
     position, length = 0, len(text)
     line, counted = 1, 0
     while position < length and len(found) < MAX_COMMANDS:
@@ -82,10 +82,10 @@ def _skip_comment(text: str, position: int) -> int:
     return len(text) if end < 0 else end + 1
 
 
-def _arguments(text: str, position: int) -> tuple[list[_Argument], int]:
+def _arguments(text: str, position: int) -> tuple[list[Argument], int]:
     """The arguments from after ``(`` to the matching ``)``; nested parentheses are kept
     as words (``if((a) AND b)``), counted, not recursed into."""
-    arguments: list[_Argument] = []
+    arguments: list[Argument] = []
     depth, length = 0, len(text)
     while position < length:
         match = _TOKEN.match(text, position)
@@ -117,12 +117,12 @@ def _arguments(text: str, position: int) -> tuple[list[_Argument], int]:
     return arguments, position
 
 
-def _add(arguments: list[_Argument], text: str, quoted: bool) -> None:
+def _add(arguments: list[Argument], text: str, quoted: bool) -> None:
     if len(arguments) < MAX_ARGUMENTS:
-        arguments.append(_Argument(text, quoted))
+        arguments.append(Argument(text, quoted))
 
 
-class _Variables:
+class Variables:
     def __init__(self, package_name: str) -> None:
         self.values: dict[str, str] = {
             "PROJECT_NAME": package_name,
@@ -155,7 +155,7 @@ class _Variables:
                 return None
         return None if "${" in text else text
 
-    def words(self, arguments: list[_Argument]) -> list[str] | None:
+    def words(self, arguments: list[Argument]) -> list[str] | None:
         """The arguments as CMake passes them: unquoted ones split on ``;``."""
         out: list[str] = []
         for argument in arguments:
@@ -175,7 +175,7 @@ def read_cmake_layout(text: str, package_name: str, origin: str) -> Layout:
     if len(text) > MAX_CMAKE_BYTES:
         layout.unread(f"{origin}: longer than {MAX_CMAKE_BYTES} bytes, read in part")
         text = text[:MAX_CMAKE_BYTES]
-    variables = _Variables(package_name)
+    variables = Variables(package_name)
     closers: list[str] = []
     for name, arguments, line in commands(text):
         if closers:
@@ -193,7 +193,7 @@ def read_cmake_layout(text: str, package_name: str, origin: str) -> Layout:
             if project:
                 variables.values["PROJECT_NAME"] = project
         elif name == "set" and arguments:
-            _set(variables, arguments)
+            set_variable(variables, arguments)
         elif name in ("add_subdirectory", "include") and arguments and not (
                 name == "include" and arguments[0].text in ("GNUInstallDirs",)):
             layout.unread(f"{origin}:{line}: {name}({arguments[0].text}) may install more")
@@ -204,7 +204,7 @@ def read_cmake_layout(text: str, package_name: str, origin: str) -> Layout:
     return layout
 
 
-def _set(variables: _Variables, arguments: list[_Argument]) -> None:
+def set_variable(variables: Variables, arguments: list[Argument]) -> None:
     name = variables.expand(arguments[0].text)
     if not name:
         return
@@ -218,7 +218,7 @@ def _set(variables: _Variables, arguments: list[_Argument]) -> None:
     variables.values[name] = ";".join(words)
 
 
-def _install(layout: Layout, variables: _Variables, arguments: list[_Argument],
+def _install(layout: Layout, variables: Variables, arguments: list[Argument],
              origin: str) -> None:
     if not arguments or arguments[0].text not in ("DIRECTORY", "FILES", "PROGRAMS"):
         return
@@ -262,7 +262,7 @@ def _install(layout: Layout, variables: _Variables, arguments: list[_Argument],
                                    origin))
 
 
-def _auto_package(layout: Layout, variables: _Variables, arguments: list[_Argument],
+def _auto_package(layout: Layout, variables: Variables, arguments: list[Argument],
                   origin: str) -> None:
     words = variables.words(arguments)
     if words is None:

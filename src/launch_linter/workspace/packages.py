@@ -23,6 +23,7 @@ from launch_linter.workspace.environment import PREFIX
 
 if typing.TYPE_CHECKING:
     from launch_linter.workspace.environment import Place
+    from launch_linter.workspace.executables import Executables
     from launch_linter.workspace.install_rules import Layout
 
 MAX_DIRECTORIES = 50_000
@@ -61,6 +62,7 @@ class PackageIndex:
         self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
         self._manifests: dict[str, tuple[str | None, reads.ReadLog]] = {}
         self._builds: dict[str, tuple[BuildDeclarations | None, reads.ReadLog]] = {}
+        self._executables: dict[str, tuple[Executables | None, reads.ReadLog]] = {}
         self._read = reads.ReadLog()
         """What the crawl read: every file that asks for a package depends on it."""
 
@@ -162,6 +164,41 @@ class PackageIndex:
         if len(targets) != 1:
             return None
         return os.path.normpath(os.path.join(owner[1], targets.pop()))
+
+    def executables(self, name: str) -> tuple[str, Executables] | None:
+        """The folder of the ROS 2 package ``name`` found in source and what it installs
+        into ``lib/<name>`` (:mod:`.executables`, read once per run); None when it is not
+        such a package (not found, installed, a ROS 1 package, a name in two folders)."""
+        directory = self.find(name)
+        if directory is None or directory in self._installed or name in self._twice:
+            return None
+        manifest = os.path.join(directory, "package.xml")
+        if not reads.is_file(manifest) or self.build_ros_version(manifest, 2) != 2:
+            return None
+        # Imported here: only a node of a workspace package needs its build files read.
+        from launch_linter.workspace.executables import read_executables
+
+        found = reads.remembered(self._executables, directory,
+                                 lambda: read_executables(directory, name))
+        return None if found is None else (directory, found)
+
+    def installs(self, path: str) -> bool | None:
+        """Whether the install rules of the ROS 2 package found in source that holds
+        ``path`` install it (anywhere in its share folder): False only when every rule
+        was read and none installs it (``ros2 launch <pkg> <file>`` cannot find it);
+        None when that is unknown (no such package, an installed copy, a ROS 1 package,
+        a name in two folders, rules not all read)."""
+        path = os.path.normpath(os.path.abspath(path))
+        owner = self._owner(path)
+        if owner is None or owner[1] in self._installed or owner[0] in self._twice:
+            return None
+        layout = self._layout(*owner)
+        if layout is None:
+            return None
+        relative = os.path.relpath(path, owner[1]).replace(os.sep, "/")
+        if layout.installed_as(relative):
+            return True
+        return None if layout.reasons else False
 
     def _owner(self, path: str) -> tuple[str, str] | None:
         best: tuple[str, str] | None = None

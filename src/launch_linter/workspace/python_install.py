@@ -22,6 +22,7 @@ import contextlib
 import os
 import posixpath
 import re
+from typing import NamedTuple
 
 from launch_linter.resolve import reads
 from launch_linter.workspace.discovery import walk
@@ -222,17 +223,24 @@ def _dotted(node: ast.AST) -> str:
     return "?"
 
 
-def read_setup_py(source: bytes, package_dir: str, package: str, origin: str) -> Layout:
-    """The ``data_files`` of a ``setup.py`` (its bytes) into ``share/<package>``."""
-    layout = Layout()
+class _Setup(NamedTuple):
+    names: dict[str, ast.expr]
+    """Module-level assignments (``+=``, ``append`` and ``extend`` folded in)."""
+    keywords: list[ast.keyword]
+    """The keywords of the top-level ``setup(...)`` calls (``arg`` None: ``**kwargs``)."""
+    blocks: list[ast.stmt]
+    """Top-level blocks (``for``, ``if``, ...): what they change is not followed."""
+    called: bool
+
+
+def _read_setup(source: bytes) -> _Setup | None:
+    """The top level of a ``setup.py`` (its bytes), None when it does not parse."""
     try:
         module = ast.parse(source[:MAX_SETUP_BYTES])
     except (SyntaxError, ValueError, RecursionError, MemoryError):
-        layout.unread(f"{origin}: not parsed")
-        return layout
-    names: dict[str, ast.expr] = {}
-    entries: list[ast.expr] = []
-    called = False
+        return None
+    setup = _Setup({}, [], [], False)
+    names = setup.names
     for statement in module.body:
         if isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(
                 statement.targets[0], ast.Name):
@@ -250,17 +258,67 @@ def read_setup_py(source: bytes, package_dir: str, package: str, origin: str) ->
                                                                          ast.Load())
                 names[owner] = ast.BinOp(names[owner], ast.Add(), added)
             elif method == "setup" or function == "setup":
-                called = True
-                entries.extend(k.value for k in call.keywords if k.arg == "data_files")
-        elif isinstance(statement, (ast.For, ast.While, ast.If, ast.With, ast.Try)) and (
-                "data_files" in ast.dump(statement)):
-            layout.unread(f"{origin}:{statement.lineno}: data_files changed in a block")
-    if not called:
+                setup = setup._replace(called=True)
+                setup.keywords.extend(call.keywords)
+        elif isinstance(statement, (ast.For, ast.While, ast.If, ast.With, ast.Try)):
+            setup.blocks.append(statement)
+    return setup
+
+
+def _changed_in_block(setup: _Setup, name: str) -> int | None:
+    """The line of a top-level block that mentions ``name``, if any."""
+    return next((b.lineno for b in setup.blocks if name in ast.dump(b)), None)
+
+
+def read_setup_py(source: bytes, package_dir: str, package: str, origin: str) -> Layout:
+    """The ``data_files`` of a ``setup.py`` (its bytes) into ``share/<package>``."""
+    layout = Layout()
+    setup = _read_setup(source)
+    if setup is None:
+        layout.unread(f"{origin}: not parsed")
+        return layout
+    line = _changed_in_block(setup, "data_files")
+    if line is not None:
+        layout.unread(f"{origin}:{line}: data_files changed in a block")
+    if not setup.called:
         layout.unread(f"{origin}: no setup() call at the top level")
-    evaluator = _Evaluator(package_dir, names)
-    for entry in entries:
-        _add_entries(layout, evaluator, entry, package, origin)
+    evaluator = _Evaluator(package_dir, setup.names)
+    for keyword in setup.keywords:
+        if keyword.arg == "data_files":
+            _add_entries(layout, evaluator, keyword.value, package, origin)
     return layout
+
+
+def setup_call(source: bytes, package_dir: str
+               ) -> str | tuple[dict[str | None, ast.expr], object]:
+    """The keywords of a ``setup.py``'s ``setup(...)`` call (``None``: a ``**kwargs``),
+    with what evaluates their values (:func:`setup_value`); or why they are not known."""
+    setup = _read_setup(source)
+    if setup is None:
+        return "not parsed"
+    if not setup.called:
+        return "no setup() call at the top level"
+    for name in ("entry_points", "scripts"):
+        line = _changed_in_block(setup, name)
+        if line is not None:
+            return f"line {line}: {name} changed in a block"
+    keywords: dict[str | None, ast.expr] = {}
+    for keyword in setup.keywords:
+        value = keyword.value
+        if isinstance(value, ast.Name) and value.id in setup.names:
+            value = setup.names[value.id]
+        keywords[keyword.arg] = value
+    return keywords, _Evaluator(package_dir, setup.names)
+
+
+def setup_value(evaluator: object, node: ast.expr) -> object:
+    """``node`` evaluated as :func:`read_setup_py` evaluates ``data_files`` (text, lists,
+    ``+``, f-strings, ``os.path`` joins, ``glob``); the reason as text when unknown."""
+    assert isinstance(evaluator, _Evaluator)
+    try:
+        return evaluator.value(node)
+    except (_Unknown, RecursionError) as exc:
+        return str(exc) or "too deep"
 
 
 def _add_entries(layout: Layout, evaluator: _Evaluator, node: ast.expr, package: str,

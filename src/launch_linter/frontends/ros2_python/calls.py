@@ -424,8 +424,10 @@ class Calls(Expressions):
                 found.append(item)
             elif isinstance(item, LaunchObject) and item.where is not None and (
                 item.uses or item.condition is not None or item.parameter is not None
+                or item.controls is not None
             ):
-                found.append(Uses(item.where, item.condition, item.uses, item.parameter))
+                found.append(Uses(item.where, item.condition, item.uses, item.parameter,
+                                  item.controls))
         return tuple(found)
 
     # -- defined by a subclass, further on ---------------------------------------------------

@@ -29,6 +29,7 @@ from launch_linter.frontends.ros2_actions import (
     Where,
     may_publish_static_tf,
     may_rename,
+    ros2_control,
     ros2_run,
     shell_reads_as_words,
 )
@@ -122,7 +123,8 @@ class Interpreter(NodeArguments):
         return result
 
     def launch_object(self, name: str, args: list[object], kwargs: dict[str, object],
-                      node: ast.Call) -> LaunchObject:
+                      node: ast.Call, controls: tuple[Subs, ...] | None = None
+                      ) -> LaunchObject:
         """A launch class the linter does not model (``SetParameter``, ``LogInfo``, an
         ``ExecuteProcess``): as an action it performs the substitutions it was given."""
         uses = performed([*args, *(v for k, v in kwargs.items() if k != "condition")])
@@ -133,7 +135,7 @@ class Interpreter(NodeArguments):
                 parameter = (self.subs(key, node, "parameter name"),
                              self.subs(_parameter_text(value), node, "parameter value"))
         return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses,
-                            parameter)
+                            parameter, controls)
 
     def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
                                  node: ast.Call) -> object:
@@ -210,7 +212,7 @@ class Interpreter(NodeArguments):
             items = [literal(word) for word in words]
         run = ros2_run(items)
         if run is None:
-            return self.launch_object("ExecuteProcess", args, kwargs, node)
+            return self.launch_object("ExecuteProcess", args, kwargs, node, ros2_control(items))
         package, executable, arguments = run
         return RunNode(
             where=self.where(node), condition=self.condition(kwargs, node), package=package,
@@ -373,6 +375,10 @@ class Interpreter(NodeArguments):
         # The file's problems were handed over when it was read; what the function's body
         # meets now (a loop over an unknown value, ...) is reported through the actions.
         recorded = len(self.problems)
+        # What the function appends to a LaunchDescription it is given runs after it:
+        # launch's visit of a description iterates the very list the function appends to.
+        given = [(d, len(d.items)) for d in (*args, *kwargs.values())
+                 if isinstance(d, LaunchDescriptionVal)]
         try:
             result = self.call_function(function, [ContextVal(resolver), *args],
                                         {str(k): v for k, v in kwargs.items()}, node)
@@ -392,7 +398,9 @@ class Interpreter(NodeArguments):
             Unfollowed(Where(self.path, p.line, p.column), p.message, p.rule)
             for p in met
         )
-        found = self.actions(result, node) if result is not None else ()
+        appended = [item for d, before in given for item in d.items[before:]]
+        found = (*(self.actions(result, node) if result is not None else ()),
+                 *(self.actions(appended, node) if appended else ()))
         # A log message or a parameter set (an unmodelled action) starts nothing: a
         # function that returns only those returned none of the actions it builds.
         followed = [action for action in found if not isinstance(action, Uses)]

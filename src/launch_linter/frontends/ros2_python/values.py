@@ -236,6 +236,8 @@ class LaunchObject:
     uses: tuple[Subs, ...] = ()
     parameter: tuple[Subs, Subs] | None = None
     """``SetParameter``'s name and value."""
+    controls: tuple[Subs, ...] | None = None
+    """``ExecuteProcess`` of ``ros2 control``: the words after ``control``."""
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,93 @@
+"""What ``ros2 launch`` can run of a ROS 2 workspace: launch files, node executables.
+
+``ros2 launch <package> <file>`` finds a file in the package's installed share folder
+only (ament_index's ``get_package_share_directory``), and a launch file reaches another
+only by an include that names it. A file that its package's install rules (read
+statically: :meth:`PackageIndex.installs`) provably never install, and that no launch
+file near it names (:func:`named_by_another_file`, a superset of its includers), is run
+by nothing; so is a ROS 1 launch file (rostest's ``<test>``, ``$(find)``, ...) left in an
+ament package that no launch file names and no rule read installs: navigation2's
+``nav2_costmap_2d/test/simple_driving_test.xml``, a rostest file kept since the port to
+ROS 2 and copied with the package into other workspaces. What ``ros2 launch`` would
+refuse in such a file is true of its text but stops nothing.
+
+A node of a package built in the workspace starts only if the package installs its
+executable into ``lib/<package>`` (:mod:`launch_linter.workspace.executables`, read
+statically): :func:`missing_executable` says so when the package's build files, read
+completely, install no executable of that name.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+
+from launch_linter.frontends.xml_dialect import reads_as_python, ros1_sign
+from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
+from launch_linter.workspace.mentions import named_by_another_file
+from launch_linter.workspace.packages import MAX_WALK_UP, PackageIndex
+
+
+def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) -> str | None:
+    """Why the ROS 2 launch file ``path`` (``data``: its bytes, if read) is run by nothing,
+    or None when it may be run (installed, named by another launch file or by a CMake
+    command, a test's, or unknown)."""
+    installs = packages.installs(path)
+    if installs or named_by_another_file(path) is not None or _named_by_cmake(path, packages):
+        return None
+    xml = data is not None and not path.lower().endswith((".yaml", ".yml")) and not (
+        reads_as_python(path, data))
+    sign = ros1_sign(data) if xml and data is not None else None
+    if installs is False:
+        what = f"a ROS 1 launch file ({sign}): " if sign else ""
+        return (f"{what}its package's install rules install it nowhere and no launch file "
+                "names it, so ros2 launch cannot find it")
+    if sign is not None:
+        return (f"a ROS 1 launch file ({sign}) left in a ROS 2 package: no launch file "
+                "names it and no install rule read installs it")
+    return None
+
+
+def _named_by_cmake(path: str, packages: PackageIndex) -> bool:
+    """Whether a command of a ``CMakeLists.txt`` between the file's folder and its
+    package's names the file (``add_launch_test(test/x.launch.py)``, ``add_ros_test``,
+    ``ament_add_test(... COMMAND x.launch.py)``: a test that runs it); comments aside."""
+    manifest = packages.package_xml_of(path)
+    if manifest is None:
+        return False
+    # Imported here: only a refused file of a ROS 2 package needs its CMake files read.
+    from launch_linter.workspace.cmake_install import MAX_CMAKE_BYTES, commands
+
+    name = os.path.basename(path)
+    top = os.path.dirname(manifest)
+    folder = os.path.dirname(os.path.abspath(path))
+    for _ in range(MAX_WALK_UP):
+        try:
+            data = read_regular_file(os.path.join(folder, "CMakeLists.txt"), MAX_CMAKE_BYTES)
+        except (OSError, NotRegularFile):
+            data = b""
+        text = data.decode("utf-8", "replace")
+        if name in text and any(name in argument.text for _, arguments, _ in commands(text)
+                                for argument in arguments):
+            return True
+        if folder == top or os.path.dirname(folder) == folder:
+            return False
+        folder = os.path.dirname(folder)
+    return False
+
+
+def missing_executable(packages: PackageIndex, package: str, executable: str | None,
+                       display: Callable[[str], str]) -> str | None:
+    """Why ``Node(package=package, executable=executable)`` cannot start, when
+    ``package`` is a ROS 2 package of the linted workspace whose build files, read
+    completely, install no such executable; None otherwise (unknown included)."""
+    found = None if not executable else packages.executables(package)
+    if found is None or found[1].reasons or executable in found[1].names:
+        return None
+    directory, installed = found
+    names = sorted(installed.names)
+    listed = ", ".join(names[:8]) + (f" and {len(names) - 8} more" if len(names) > 8 else "")
+    return (f"package '{package}' ({display(directory)}) installs no executable "
+            f"'{executable}' into lib/{package}: its {installed.origin} install "
+            f"{listed or 'none'}; ros2 launch stops: \"executable '{executable}' not found "
+            f"on the libexec directory\"")
