@@ -89,6 +89,7 @@ def _load() -> None:
         urdf_empty_robot,
         urdf_mimic_unknown,
         urdf_missing_link,
+        urdf_plugin_outside_gazebo,
         urdf_repeated_origin,
         urdf_root,
         use_sim_time_misspelt,

@@ -63,6 +63,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("urdf_empty_robot", Category.TF),
     ("urdf_repeated_origin", Category.TF),
     ("urdf_mimic_unknown", Category.TF),
+    ("urdf_plugin_outside_gazebo", Category.TF),
     ("xacro_error", Category.TF),
     ("xacro_unused_block", Category.TF),
     ("xacro_param_as_arg", Category.TF),
