@@ -10,6 +10,11 @@ from collections.abc import Callable, Iterable, Mapping
 
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.robot.sources import with_node_params
+from launch_linter.frontends.ros1_attributes import (
+    MISTAKEN_PREFIX,
+    ignored_attributes,
+    other_tags_reading,
+)
 from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.frontends.ros1_unused_args import unused_args
@@ -442,7 +447,25 @@ class Ros1Base:
             return None
         if first_read:
             self._unused_args(display, launches[0], data)
+            self._ignored_attributes(display, launches[0])
         return launches[0]
+
+    def _ignored_attributes(self, display: str, launch: Element) -> None:
+        for parent, element, name, mistaken in ignored_attributes(launch, self.budget.step):
+            if name is None:
+                effect = (f"roslaunch only warns that it does not recognize <{element.tag}> "
+                          f"there and skips it with all it holds")
+                message = (f"{MISTAKEN_PREFIX}<{element.tag}> elsewhere, not inside "
+                           f"<{parent.tag}>: {effect}" if mistaken else
+                           f"<{element.tag}> is not a tag roslaunch reads here: {effect}")
+            else:
+                effect = (f"roslaunch only warns \"unknown <{element.tag}> attribute "
+                          f"'{name}'\" and goes on: it has no effect")
+                message = (f"{MISTAKEN_PREFIX}'{name}' on {other_tags_reading(name)}, not "
+                           f"on <{element.tag}>: {effect}" if mistaken else
+                           f"<{element.tag}> has no attribute '{name}': {effect}")
+            self.problems.append(Problem("ros1_ignored_attribute", display, element.line,
+                                         element.column, message))
 
     def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
         for arg in unused_args(launch, data):

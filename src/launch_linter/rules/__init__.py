@@ -60,6 +60,7 @@ def _load() -> None:
         rep105_order,
         reversed_name,
         robot_frame_collision,
+        ros1_ignored_attribute,
         ros1_unused_arg,
         ros2_bad_flag,
         ros2_missing_keyword,

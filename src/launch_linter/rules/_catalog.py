@@ -73,6 +73,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("py_name_error", Category.LAUNCH),
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros1_unused_arg", Category.LAUNCH),
+    ("ros1_ignored_attribute", Category.LAUNCH),
     ("ros2_param_file_unmatched", Category.LAUNCH),
     ("ros2_missing_keyword", Category.LAUNCH),
     ("ros2_param_type", Category.LAUNCH),
