@@ -54,6 +54,7 @@ def _load() -> None:
         param_value_refused,
         parse_error,
         plugin_frame_unprefixed,
+        plugin_param_case,
         py_arguments_single_string,
         py_name_error,
         quaternion_order,

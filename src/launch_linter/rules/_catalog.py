@@ -74,6 +74,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros1_unused_arg", Category.LAUNCH),
     ("ros1_ignored_attribute", Category.LAUNCH),
+    ("plugin_param_case", Category.TF),
     ("ros2_param_file_unmatched", Category.LAUNCH),
     ("ros2_missing_keyword", Category.LAUNCH),
     ("ros2_param_type", Category.LAUNCH),

@@ -165,6 +165,9 @@ def elements_of(root: ExpandedNode, display: Display,
     return out, known
 
 
+FOLDED_PLUGIN_TAGS = frozenset(tag.lower() for tag in PLUGIN_TEXT_TAGS)
+"""The known plugin parameters in lower case: a plugin element that matches one only so is
+a misspelt parameter."""
 OUTSIDE_GAZEBO = ("plugin", "sensor")
 """Gazebo's elements that do nothing straight under ``<robot>``: urdfdom skips elements it
 does not know, and Gazebo's URDF reader (sdformat's parser_urdf.cc ``ParseSDFExtension``)
@@ -348,6 +351,13 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                     elif element.tag in PLUGIN_TEXT_TAGS:
                         params.append((element.tag, UNKNOWN_VALUE if element.text is None
                                        else element.text))
+                        lines.append((element.tag, display(element.path), element.line,
+                                      element.column))
+                    elif element.tag.lower() in FOLDED_PLUGIN_TAGS:
+                        # Another spelling of a known parameter, which the plugin does
+                        # not read (SDF's names are case-sensitive): kept by its name,
+                        # with where it is, for plugin_param_case.
+                        params.append((element.tag, UNKNOWN_VALUE))
                         lines.append((element.tag, display(element.path), element.line,
                                       element.column))
             out.append(NodeRecord(
