@@ -1,9 +1,12 @@
 from __future__ import annotations
 
 import time
+from pathlib import Path
 
 from conftest import run_rule
+from launch_linter.frontends.ros1 import LoadOptions, Ros1Loader
 from launch_linter.frontends.ros1_attributes import ignored_attributes
+from launch_linter.model.budget import Budget
 from launch_linter.resolve.xml_safe import parse_xml
 
 RULE = "ros1_ignored_attribute"
@@ -70,3 +73,14 @@ def test_twenty_thousand_tags_are_read_once_each() -> None:
     found_here = list(ignored_attributes(launch, lambda: steps.append(1)))
     assert time.process_time() - start < 30.0
     assert len(found_here) == 40_000 and len(steps) == 40_001
+
+
+def test_a_budget_spent_on_the_root_file_is_said_not_raised(tmp_path: Path) -> None:
+    """The root file is scanned before the walk (whose catch says a spent budget)."""
+    path = tmp_path / "big.launch"
+    path.write_text("<launch>" + '<arg name="a" default="1"/>' * 5_000 + "</launch>",
+                    encoding="utf-8")
+    loader = Ros1Loader(LoadOptions())
+    loader.budget = Budget(max_steps=2_000)
+    tree = loader.load(str(path))
+    assert any(p.rule == "unresolved" and "budget" in p.message for p in tree.problems)

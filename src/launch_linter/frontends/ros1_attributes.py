@@ -92,3 +92,18 @@ def other_tags_reading(name: str) -> str:
     """The tags whose attribute ``name`` is, as a message says them (``<node> and <test>``)."""
     tags = [f"<{tag}>" for tag, read in READ_ATTRIBUTES.items() if name in read]
     return tags[0] if len(tags) == 1 else ", ".join(tags[:-1]) + " and " + tags[-1]
+
+
+def message(parent: Element, element: Element, name: str | None, mistaken: bool) -> str:
+    """What ros1_ignored_attribute says of an ignored attribute (``name``) or tag (None)."""
+    if name is None:
+        effect = (f"roslaunch only warns that it does not recognize <{element.tag}> there "
+                  f"and skips it with all it holds")
+        return (f"{MISTAKEN_PREFIX}<{element.tag}> elsewhere, not inside <{parent.tag}>: "
+                f"{effect}" if mistaken else
+                f"<{element.tag}> is not a tag roslaunch reads here: {effect}")
+    effect = (f"roslaunch only warns \"unknown <{element.tag}> attribute '{name}'\" and "
+              f"goes on: it has no effect")
+    return (f"{MISTAKEN_PREFIX}'{name}' on {other_tags_reading(name)}, not on "
+            f"<{element.tag}>: {effect}" if mistaken else
+            f"<{element.tag}> has no attribute '{name}': {effect}")

@@ -10,11 +10,7 @@ from collections.abc import Callable, Iterable, Mapping
 
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.robot.sources import with_node_params
-from launch_linter.frontends.ros1_attributes import (
-    MISTAKEN_PREFIX,
-    ignored_attributes,
-    other_tags_reading,
-)
+from launch_linter.frontends.ros1_attributes import ignored_attributes, message
 from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.frontends.ros1_unused_args import unused_args
@@ -451,21 +447,15 @@ class Ros1Base:
         return launches[0]
 
     def _ignored_attributes(self, display: str, launch: Element) -> None:
-        for parent, element, name, mistaken in ignored_attributes(launch, self.budget.step):
-            if name is None:
-                effect = (f"roslaunch only warns that it does not recognize <{element.tag}> "
-                          f"there and skips it with all it holds")
-                message = (f"{MISTAKEN_PREFIX}<{element.tag}> elsewhere, not inside "
-                           f"<{parent.tag}>: {effect}" if mistaken else
-                           f"<{element.tag}> is not a tag roslaunch reads here: {effect}")
-            else:
-                effect = (f"roslaunch only warns \"unknown <{element.tag}> attribute "
-                          f"'{name}'\" and goes on: it has no effect")
-                message = (f"{MISTAKEN_PREFIX}'{name}' on {other_tags_reading(name)}, not "
-                           f"on <{element.tag}>: {effect}" if mistaken else
-                           f"<{element.tag}> has no attribute '{name}': {effect}")
+        try:  # read before the walk (and its catch) starts for the root file
+            found = list(ignored_attributes(launch, self.budget.step))
+        except BudgetExceeded as exc:
+            found = []
+            self.problems.append(Problem("unresolved", display, 1, 1, exc.message))
+        for parent, element, name, mistaken in found:
             self.problems.append(Problem("ros1_ignored_attribute", display, element.line,
-                                         element.column, message))
+                                         element.column, message(parent, element, name,
+                                                                 mistaken)))
 
     def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
         for arg in unused_args(launch, data):
