@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import time
 from typing import Callable, List, Tuple
 
 from _urdf import joint, link, lint_urdf, robot
@@ -206,3 +207,60 @@ def test_two_robots_sharing_a_frame_name_are_left_to_robot_frame_collision() -> 
     with_static = xml.replace("</launch>", "\n" + node("t", "base_link", "flange") + "</launch>")
     found = lint_text(with_static, "test.launch", options).diagnostics
     assert [d.rule for d in found].count(RULE) == 1
+
+
+def stp(name: str, args: str) -> str:
+    return f'<node pkg="tf2_ros" type="static_transform_publisher" name="{name}" args="{args}"/>'
+
+
+def test_parents_that_place_the_frame_at_one_pose_are_info(
+        lint_diagnostics: LintDiagnostics) -> None:
+    """precision trial 7 (leo rover): a static base_footprint -> lidar republishing the
+    pose the robot's base_footprint -> base_link -> lidar gives: tf2 keeps one parent per
+    frame, and either answers every lookup the same."""
+    xml = "\n".join([
+        "<launch>",
+        stp("base", "0 0 0.1 1.5707963267948966 0 0 base_footprint base_link"),
+        stp("lidar", "0.2 0 0.3 0 0 0 base_link lidar"),
+        # (0.2, 0, 0.3) turned by the yaw of pi/2 is (0, 0.2, 0.3), then 0.1 up.
+        stp("lidar_again", "0 0.2 0.4 1.5707963267948966 0 0 base_footprint lidar"),
+        "</launch>",
+    ])
+    (found,) = lint_diagnostics(xml, RULE)
+    assert found.severity.value == "info" and found.line == 4
+    assert "same pose relative to 'base_footprint'" in found.message
+    moved = xml.replace("0 0.2 0.4 1.5707963267948966", "0.2 0 0.4 1.5707963267948966")
+    (wrong,) = lint_diagnostics(moved, RULE)
+    assert wrong.severity.value == "error" and "same pose" not in wrong.message
+    turned = xml.replace("0 0.2 0.4 1.5707963267948966 0 0 base_footprint",
+                         "0 0.2 0.4 0 0 0 base_footprint")
+    assert lint_diagnostics(turned, RULE)[0].severity.value == "error"
+
+
+def test_a_way_up_through_a_frame_of_two_parents_is_not_composed(
+        lint_diagnostics: LintDiagnostics) -> None:
+    # base_link has two parents itself: which one tf2 keeps decides the pose: no proof.
+    xml = "\n".join([
+        "<launch>",
+        stp("a", "0 0 0 0 0 0 base_footprint base_link"),
+        stp("b", "0 0 0 0 0 0 odom base_link"),
+        stp("c", "0 0 0.3 0 0 0 base_link lidar"),
+        stp("d", "0 0 0.3 0 0 0 base_footprint lidar"),
+        "</launch>",
+    ])
+    found = lint_diagnostics(xml, RULE)
+    assert [d.severity.value for d in found] == ["error", "error"]
+
+
+def test_a_long_chain_above_each_parent_is_followed_a_bounded_way(
+        lint_diagnostics: LintDiagnostics) -> None:
+    """Hostile: 20,000 frames in a chain above the two parents: each way up stops after
+    MAX_DEPTH frames."""
+    chain = [stp(f"c{i}", f"0 0 0 0 0 0 f{i + 1} f{i}") for i in range(20_000)]
+    xml = "\n".join(["<launch>", *chain, stp("p", "0 0 1 0 0 0 f0 a"),
+                     stp("q", "0 0 0 0 0 0 a b"), stp("x", "0 0 1 0 0 0 a lidar"),
+                     stp("y", "0 0 1 0 0 0 b lidar"), "</launch>"])
+    started = time.process_time()
+    (found,) = lint_diagnostics(xml, RULE)
+    assert time.process_time() - started < 60
+    assert found.severity.value == "info"  # b is a at the same place: same pose

@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 from _urdf import link, lint_loaded, lint_urdf, robot
@@ -183,3 +184,41 @@ def test_an_expression_never_evaluated_is_not_refused(tmp_path: Path) -> None:
     text = robot(link("a") + '<xacro:macro name="m" params=""><link name="${(1}"/>'
                  "</xacro:macro>")
     assert lint_loaded(tmp_path, text, RULE) == ()
+
+
+def test_a_call_not_matching_a_macro_defined_after_an_include_not_read(tmp_path: Path) -> None:
+    """jackal#90: the mount macro's file includes a package not found, then defines the
+    macro; a call without its parameter and block is xacro's stop whatever that include
+    held (nothing there can redefine a macro defined after it)."""
+    unread = '<xacro:include filename="$(find nowhere)/m.xacro"/>\n'
+    (found,) = lint_loaded(tmp_path, robot(unread + WHEEL + '\n<xacro:wheel/>'), RULE)
+    assert found.line == 4 and found.severity.value == "error"
+    assert "not enough blocks" in found.message
+    (extra,) = lint_loaded(tmp_path, robot(
+        unread + WHEEL + '\n<xacro:wheel side="l" size="2"><origin/></xacro:wheel>'), RULE)
+    assert "invalid parameter 'size'" in extra.message
+    assert lint_loaded(tmp_path, robot(
+        unread + WHEEL + '\n<xacro:wheel side="l"><origin/></xacro:wheel>'), RULE) == ()
+
+
+def test_a_macro_defined_before_an_include_not_read_may_be_redefined_there(
+        tmp_path: Path) -> None:
+    # The include may define another 'wheel' macro, with other parameters.
+    text = robot(WHEEL + '\n<xacro:include filename="$(find nowhere)/m.xacro"/>\n'
+                 '<xacro:wheel/>')
+    assert lint_loaded(tmp_path, text, RULE) == ()
+    # An arg the include may declare stays unproven too.
+    assert lint_loaded(tmp_path, robot(
+        '<xacro:include filename="$(find nowhere)/m.xacro"/>\n<link name="$(arg n)"/>'),
+        RULE) == ()
+
+
+def test_twenty_thousand_calls_after_an_include_not_read(tmp_path: Path) -> None:
+    """Hostile: each refusal looks back at the problems since its macro's definition, at
+    most the 1,000 kept: 20,000 refused calls stay linear."""
+    calls = "\n".join(f'<xacro:wheel side="s{i}"/>' for i in range(20_000))
+    text = robot('<xacro:include filename="$(find nowhere)/m.xacro"/>\n' + WHEEL + calls)
+    started = time.process_time()
+    found = lint_loaded(tmp_path, text, RULE)
+    assert time.process_time() - started < 60
+    assert found and all("not enough blocks" in d.message for d in found)

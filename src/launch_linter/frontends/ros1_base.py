@@ -10,6 +10,7 @@ from collections.abc import Callable, Iterable, Mapping
 
 from launch_linter.frontends.robot.describe import RobotCache
 from launch_linter.frontends.robot.sources import with_node_params
+from launch_linter.frontends.ros1_attributes import ignored_attributes, message
 from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.frontends.ros1_unused_args import unused_args
@@ -442,7 +443,19 @@ class Ros1Base:
             return None
         if first_read:
             self._unused_args(display, launches[0], data)
+            self._ignored_attributes(display, launches[0])
         return launches[0]
+
+    def _ignored_attributes(self, display: str, launch: Element) -> None:
+        try:  # read before the walk (and its catch) starts for the root file
+            found = list(ignored_attributes(launch, self.budget.step))
+        except BudgetExceeded as exc:
+            found = []
+            self.problems.append(Problem("unresolved", display, 1, 1, exc.message))
+        for parent, element, name, mistaken in found:
+            self.problems.append(Problem("ros1_ignored_attribute", display, element.line,
+                                         element.column, message(parent, element, name,
+                                                                 mistaken)))
 
     def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
         for arg in unused_args(launch, data):

@@ -333,7 +333,9 @@ class RobotElement(Record):
     (a second one in a link's ``<visual>``, ``<collision>``, ``<inertial>`` or in a joint),
     named after its owner (``<visual> of link 'x'``), or ``mimic``: a joint's ``<mimic>``,
     named after the joint it mimics, just after its joint (and that joint's ignored
-    ``<origin>`` elements) in the description's ``elements``."""
+    ``<origin>`` elements) in the description's ``elements``, or ``outside_gazebo``: a
+    ``<plugin>`` or ``<sensor>`` straight under ``<robot>`` (Gazebo reads them only inside
+    ``<gazebo>``), named ``<plugin> 'libx.so'`` or ``<sensor> 'name'``."""
     name: str | None
     path: str
     line: int

@@ -6,12 +6,18 @@ transform whose child frame already has a different parent from an earlier stati
 transform (frame ids compared without one leading `/`). The diagnostic is on the later
 transform and points at the earlier ones. When either transform is only launched under a
 condition the linter cannot decide, the message says the frame *may* get two parents;
-transforms under mutually exclusive conditions are never compared.
+transforms under mutually exclusive conditions are never compared. When every parent places
+the frame at the same pose relative to a frame above them (composed through fixed edges of
+known values, each frame on the way with one parent; within 1 mm and about 1 mrad), the
+finding is info: a redundant publisher, not a misplaced frame.
 
 ## Why is this bad?
 tf frames form a tree: each frame has exactly one parent (REP 105). With two static
 parents tf2 keeps whichever transform arrived last, so the frame jumps between two places
-depending on start-up order, and lookups through the other parent fail. Typical causes: a
+depending on start-up order, and lookups through the other parent fail (one cache per
+child frame: the last static transform received replaces the other, geometry2 noetic-devel
+6df9e94 tf2/src/static_cache.cpp 48-52). Where both parents give the same pose, every
+lookup gives the same answer whichever is kept. Typical causes: a
 driver's launch file publishes `base_link -> laser` while the robot's own launch file
 publishes `base_footprint -> laser`, or the two frames of one transform were swapped.
 
@@ -47,9 +53,11 @@ from __future__ import annotations
 
 import collections
 import itertools
+import typing
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionSource
 from launch_linter.rules._api import (
     MAX_RELATED,
@@ -59,17 +67,33 @@ from launch_linter.rules._api import (
 )
 from launch_linter.rules._tree import (
     Edge,
+    Quaternion,
     coexist,
     edges_of,
     finding_on,
     joints_only,
     place,
+    same_rotation,
     written_edges,
 )
+from launch_linter.rules.camera_frame_not_optical import compose
 
 ID = "multiple_parents"
 CATEGORY = Category.TF
 SEVERITY = Severity.ERROR
+
+SAME_POSE_LEVEL = Severity.INFO
+"""Every parent places the frame at one pose: tf2 keeps one parent per frame (the last
+static transform received replaces the other: geometry2 noetic-devel 6df9e94
+tf2/src/static_cache.cpp 48-52, one cache per child frame in buffer_core.cpp
+``setTransform``), and either gives every lookup the same answer."""
+SAME_DISTANCE = 1e-3
+"""Metres."""
+SAME_ROTATION = 1e-7
+"""On ``1 - |q1.q2|``: about 1 mrad."""
+MAX_DEPTH = 64
+"""Frames followed up from a parent (a real tree is a few deep)."""
+Pose = typing.Tuple[typing.Tuple[float, float, float], Quaternion]
 
 
 class _Parents:
@@ -153,6 +177,9 @@ def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
            joints: bool) -> Iterator[Finding]:
     # Only a frame that is the child of two edges may have two parents (most are of one).
     counts = collections.Counter(edge.child for edge in edges)
+    above: dict[str, list[Edge]] = {}
+    for edge in edges:
+        above.setdefault(edge.child, []).append(edge)
     by_child: dict[str, _Parents] = {}
     for position, edge in enumerate(edges):
         parent, child = edge.parent, edge.child
@@ -168,14 +195,78 @@ def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
             (f"'{p}' ({_where(t, edge)})" for p, t in rivals), count))
         gets = "may get" if conditional or not edge.condition.always else "gets"
         here = "here" if edge.joint is None else f"here (URDF joint '{edge.joint.name}')"
-        yield finding_on(
+        keeps = (_kdl_keeps(edge, rivals, context)
+                 or "tf2 keeps whichever transform arrives last")
+        common = (_same_pose(edge, [t for _, t in rivals], above)
+                  if count == len(rivals) else None)
+        found = finding_on(
             edge,
             f"frame '{child}' {gets} {count + 1} parents: '{parent}' {here} and "
-            f"{others}; a tf frame has exactly one parent, and "
-            + (_kdl_keeps(edge, rivals, context) or
-               "tf2 keeps whichever transform arrives last"),
+            f"{others}; a tf frame has exactly one parent, and " + keeps
+            + ("" if common is None else
+               f"; here every parent places it at the same pose relative to '{common}', "
+               f"so each lookup gives the same answer whichever is kept: a redundant "
+               f"publisher, not a misplaced frame"),
             tuple(t for _, t in rivals),
         )
+        yield found if common is None else replace(found, severity=SAME_POSE_LEVEL)
+
+
+def _same_pose(edge: Edge, rivals: list[Edge], above: dict[str, list[Edge]]) -> str | None:
+    """The frame relative to which ``edge`` and every rival place their child at one pose
+    (within 1 mm and about 1 mrad), through fixed edges of known values each of whose
+    frames has one parent; None when they differ or cannot be composed."""
+    mine = _up(edge, above)
+    for rival in rivals:
+        theirs = dict(_up(rival, above))
+        common = next((frame for frame, _ in mine if frame in theirs), None)
+        if common is None:
+            return None
+        here = dict(mine)[common]
+        there = theirs[common]
+        if (max(abs(a - b) for a, b in zip(here[0], there[0])) > SAME_DISTANCE
+                or not same_rotation(here[1], there[1], SAME_ROTATION)):
+            return None
+    return common
+
+
+def _up(edge: Edge, above: dict[str, list[Edge]]) -> list[tuple[str, Pose]]:
+    """The pose of ``edge``'s child in its parent and in each frame above, while the way
+    up is one fixed edge of known values per frame (at most ``MAX_DEPTH`` frames)."""
+    pose = _pose_of(edge)
+    if pose is None:
+        return []
+    out = [(edge.parent, pose)]
+    frame, seen = edge.parent, {edge.child, edge.parent}
+    for _ in range(MAX_DEPTH):
+        ways = above.get(frame, [])
+        if len({w.parent for w in ways}) != 1:
+            break
+        step = _pose_of(ways[0])
+        if step is None or ways[0].parent in seen:
+            break
+        frame = ways[0].parent
+        seen.add(frame)
+        pose = (_moved(step, pose[0]), compose(step[1], pose[1]))
+        out.append((frame, pose))
+    return out
+
+
+def _pose_of(edge: Edge) -> Pose | None:
+    if edge.translation is None or edge.rotation is None or edge.dynamic:
+        return None
+    return edge.translation, edge.rotation
+
+
+def _moved(step: Pose, point: tuple[float, float, float]) -> tuple[float, float, float]:
+    """``point`` of the child frame of ``step`` in ``step``'s parent frame."""
+    (tx, ty, tz), (x, y, z, w) = step
+    px, py, pz = point
+    # v + 2w(q x v) + 2 q x (q x v), q = (x, y, z)
+    cx, cy, cz = y * pz - z * py, z * px - x * pz, x * py - y * px
+    dx, dy, dz = y * cz - z * cy, z * cx - x * cz, x * cy - y * cx
+    return (tx + px + 2 * (w * cx + dx), ty + py + 2 * (w * cy + dy),
+            tz + pz + 2 * (w * cz + dz))
 
 
 def _kdl_keeps(edge: Edge, rivals: list[tuple[str, Edge]], context: RuleContext) -> str | None:

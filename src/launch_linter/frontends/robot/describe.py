@@ -552,7 +552,9 @@ def _faults(problems: Sequence[XacroProblem], source: DescriptionSource,
         if problem.kind in FAULT_KINDS:
             # A block never inserted, a parameter read as an arg and a file not well-formed
             # are read from the macro or the file alone: nothing hides them.
-            proven = problem.kind != REFUSED or MALFORMED in problem.message or (
+            # A call not matching a macro defined after everything not followed is
+            # xacro's stop whatever those held (XacroProblem.own).
+            proven = problem.kind != REFUSED or MALFORMED in problem.message or problem.own or (
                 followed and not (source.open_args and "$(arg " in problem.message))
             out.append(DescriptionFault(display(problem.path), problem.line,
                                         FaultKind(problem.kind), problem.message, proven,
@@ -577,7 +579,8 @@ def _causes(problems: Sequence[XacroProblem]) -> list[XacroProblem]:
         # One cause written in several places (the same package not found by two
         # includes) is said at the first.
         said_as = _TAG.sub("", problem.message, count=1)
-        own = followed or problem.kind != REFUSED or MALFORMED in problem.message
+        own = (followed or problem.kind != REFUSED or MALFORMED in problem.message
+               or problem.own)
         if own and said_as not in said:
             out.append(problem)
             said.add(said_as)

@@ -134,6 +134,9 @@ def elements_of(root: ExpandedNode, display: Display,
     if root.tag != "robot":
         return out, False
     for element in root.children:
+        if element.tag in OUTSIDE_GAZEBO:
+            out.append(_outside_gazebo(element, display, outer))
+            continue
         if element.tag not in ("link", "joint", "material"):
             continue
         # urdfdom keeps a top-level material without a name as '' (its parseMaterial
@@ -160,6 +163,31 @@ def elements_of(root: ExpandedNode, display: Display,
         if element.tag == "joint":
             out.extend(_mimic(element, display, outer))
     return out, known
+
+
+FOLDED_PLUGIN_TAGS = frozenset(tag.lower() for tag in PLUGIN_TEXT_TAGS)
+"""The known plugin parameters in lower case: a plugin element that matches one only so is
+a misspelt parameter."""
+OUTSIDE_GAZEBO = ("plugin", "sensor")
+"""Gazebo's elements that do nothing straight under ``<robot>``: urdfdom skips elements it
+does not know, and Gazebo's URDF reader (sdformat's parser_urdf.cc ``ParseSDFExtension``)
+takes plugins and sensors only from ``<gazebo>`` elements."""
+
+
+def _outside_gazebo(element: ExpandedNode, display: Display,
+                    outer: Condition) -> RobotElement:
+    """A ``<plugin>`` or ``<sensor>`` straight under ``<robot>``, as an element of kind
+    ``outside_gazebo`` named ``<tag> 'filename-or-name'`` (``<tag>`` when neither is
+    known)."""
+    label = "filename" if element.tag == "plugin" else "name"
+    value = element.attrib.get(label)
+    name = (f"<{element.tag}>" if value is None or label in element.unknown
+            else f"<{element.tag}> '{value}'")
+    at = element.call or (element.path, element.line, element.column)
+    defined = (None if element.call is None
+               else (display(element.path), element.line, element.column))
+    return RobotElement("outside_gazebo", name, display(at[0]), at[1], at[2],
+                        outer & _condition(element.conditions), defined)
 
 
 ORIGIN_OWNERS = ("visual", "collision", "inertial")
@@ -323,6 +351,13 @@ def plugins_of(root: ExpandedNode, display: Display, outer: Condition,
                     elif element.tag in PLUGIN_TEXT_TAGS:
                         params.append((element.tag, UNKNOWN_VALUE if element.text is None
                                        else element.text))
+                        lines.append((element.tag, display(element.path), element.line,
+                                      element.column))
+                    elif element.tag.lower() in FOLDED_PLUGIN_TAGS:
+                        # Another spelling of a known parameter, which the plugin does
+                        # not read (SDF's names are case-sensitive): kept by its name,
+                        # with where it is, for plugin_param_case.
+                        params.append((element.tag, UNKNOWN_VALUE))
                         lines.append((element.tag, display(element.path), element.line,
                                       element.column))
             out.append(NodeRecord(

@@ -58,11 +58,13 @@ from launch_linter.frontends.robot.xacro_values import (
     _Block,
     _boolean,
     _Macro,
+    _Mismatch,
     _Property,
     _Refused,
     _Table,
     _Unknown,
     expression_error,
+    extension,
     legacy_tag,
     legacy_tags,
     valid_name,
@@ -171,18 +173,23 @@ class XacroExpander:
                 raise _Abort(exc.message, self._path, self._line) from None
 
     def _problem(self, path: str, line: int, message: str, kind: str = UNKNOWN,
-                 conditions: tuple[str, ...] = (), name: str | None = None) -> None:
+                 conditions: tuple[str, ...] = (), name: str | None = None,
+                 own: bool = False) -> None:
         self._open = self._open or kind in (UNKNOWN, KEPT)
         if len(self.problems) < 1000:
             self.problems.append(XacroProblem(path, line, message, False, kind, conditions,
-                                              name))
+                                              name, own))
 
     def _refusal(self, path: str, line: int, message: str, refused: _Refused,
                  conditions: tuple[str, ...]) -> None:
         # An undeclared arg that is a macro's parameter is placed at the use's own line.
         arg = refused.arg
         at = line if arg is None else self._arg_lines.get((path, line, arg), line)
-        self._problem(path, at, message, REFUSED, conditions, arg)
+        # A call not matching its macro is xacro's stop whatever was left unread before
+        # the definition; with the problems capped, nothing after the cap is known.
+        own = isinstance(refused, _Mismatch) and len(self.problems) < 1000 and all(
+            p.kind != UNKNOWN for p in self.problems[refused.seen:])
+        self._problem(path, at, message, REFUSED, conditions, arg, own)
 
     def _read(self, absolute: str, at: tuple[str, int] | None,
               data: bytes | None = None) -> Element | None:
@@ -241,7 +248,9 @@ class XacroExpander:
                 inner = token[2:-1]
                 if "${" in inner:
                     inner = self.evaluate_text(inner, table)
-                parts.append(self._extension(inner.strip(), table))
+                parts.append(extension(inner.strip(), self.args, self.find, self.env,
+                                       self._args_read, self._env_read,
+                                       lambda source: self._expression(source, table)))
             size += len(parts[-2]) + len(parts[-1])
             if size > MAX_TEXT:
                 raise _Abort(f"a value longer than {MAX_TEXT:,} characters", self._path,
@@ -268,37 +277,6 @@ class XacroExpander:
                                  self._open or self._legacy) from None
         except EvalError as exc:
             raise expression_error(source, exc.reason) from None
-
-    def _extension(self, body: str, table: _Table) -> str:
-        words = body.split()
-        if not words:
-            raise _Unknown("empty $()")
-        command, rest = words[0], words[1:]
-        if command == "arg" and len(rest) == 1:
-            name = rest[0]
-            self._args_read.add(name)
-            if name not in self.args:
-                raise _Refused(f"$(arg {name}): the arg is not declared and not given", name)
-            value = self.args[name]
-            if value is None:
-                raise _Unknown(f"$(arg {name}): its value is not known")
-            return value
-        if command == "find" and len(rest) == 1:
-            found = self.find(rest[0])
-            if found is None:
-                raise _Unknown(f"$(find {rest[0]}): package not found under the package path")
-            return found
-        if command in ("env", "optenv") and rest:
-            self._env_read.add(rest[0])
-        if command == "env" and len(rest) == 1:
-            if rest[0] not in self.env:
-                raise _Unknown(f"$(env {rest[0]}): not given with --env")
-            return self.env[rest[0]]
-        if command == "optenv" and rest:
-            return self.env.get(rest[0], " ".join(rest[1:]))
-        if command == "eval":
-            return str(self._expression(body[len("eval"):], table))
-        raise _Unknown(f"$({body}) is not supported")
 
     def property_value(self, name: str, table: _Table, prop: _Property) -> str | None:
         if prop.block is not None:
@@ -496,7 +474,7 @@ class XacroExpander:
         if name.startswith(_PREFIX):
             name = name[len(_PREFIX):]
         params, defaults = macro_params(element.attrib.get("params", ""))
-        table.macros[name] = _Macro(params, defaults, element, path)
+        table.macros[name] = _Macro(params, defaults, element, path, seen=len(self.problems))
         self._defines_macros = True
         for param in never_inserted(element, params, self._legacy, self._charge):
             self._problem(path, element.line, f"block parameter '{param}' of macro "
@@ -547,7 +525,8 @@ class XacroExpander:
         if namespace is not None:
             for name, macro in inner.macros.items():
                 table.macros[f"{namespace}.{name}"] = _Macro(
-                    macro.params, macro.defaults, macro.body, macro.path, macro.scope or inner)
+                    macro.params, macro.defaults, macro.body, macro.path, macro.scope or inner,
+                    macro.seen)
             table.properties[namespace] = _Property(None, None, namespace=inner)
 
     def _insert_block(self, element: Element, path: str, table: _Table, out: ExpandedNode,
@@ -579,18 +558,19 @@ class XacroExpander:
         params = list(macro.params)
         for attribute, text in element.attrib.items():
             if attribute not in params:
-                raise _Refused(f"invalid parameter '{attribute}' of macro '{name}'")
+                raise _Mismatch(f"invalid parameter '{attribute}' of macro '{name}'", macro.seen)
             params.remove(attribute)
             scoped.properties[attribute] = self._evaluated(text, table)
         blocks = list(element.children)
         for param in [p for p in params if p.startswith("*")]:
             if not blocks:
-                raise _Refused(f"not enough blocks for macro '{name}'")
+                raise _Mismatch(f"not enough blocks for macro '{name}'", macro.seen)
             params.remove(param)
             content_only = param.startswith("**")
             scoped.blocks[param.lstrip("*")] = _Block(blocks.pop(0), path, content_only, table)
         if blocks:
-            raise _Refused(f"unused block <{blocks[0].tag}> in call of macro '{name}'")
+            raise _Mismatch(f"unused block <{blocks[0].tag}> in call of macro '{name}'",
+                            macro.seen)
         for param in list(params):
             if param not in macro.defaults:
                 continue
@@ -611,7 +591,8 @@ class XacroExpander:
                     raise _Refused(f"undefined property to forward: {forward}")
             scoped.properties[param] = self._evaluated(default or "", table)
         if params:
-            raise _Refused(f"undefined parameters [{','.join(params)}] of macro '{name}'")
+            raise _Mismatch(f"undefined parameters [{','.join(params)}] of macro '{name}'",
+                            macro.seen)
         self._macro_depth += 1
         outermost = self._call_site is None
         if outermost:

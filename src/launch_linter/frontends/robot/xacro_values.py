@@ -6,7 +6,7 @@ from __future__ import annotations
 import keyword
 import re
 import unicodedata
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 from launch_linter.model.record import MutableRecord, Record, _set
 from launch_linter.resolve.xml_safe import Element
@@ -118,6 +118,57 @@ class _Refused(_Unknown):
         self.arg = arg
 
 
+class _Mismatch(_Refused):
+    """A macro call that does not match the macro's definition (a parameter missing or not
+    declared, blocks that do not pair): xacro stops whatever else is defined, so it is a
+    fault of its own when nothing was left unread (an include not found) between the
+    definition and the call. ``seen`` is the number of problems before the definition."""
+
+    def __init__(self, reason: str, seen: int) -> None:
+        super().__init__(reason)
+        self.seen = seen
+
+
+def extension(body: str, args: Mapping[str, str | None],
+              find: Callable[[str], str | None], env: Mapping[str, str],
+              args_read: set[str], env_read: set[str],
+              evaluate: Callable[[str], object]) -> str:
+    """xacro's ``$(...)`` (``eval_extension``): ``$(arg)`` from ``args`` (None: given, value
+    not known), ``$(find)``, ``$(env)``/``$(optenv)`` from ``env``, ``$(eval)`` through
+    ``evaluate``; the args and variables read are added to ``args_read``/``env_read``.
+    Raises :class:`_Unknown` for what cannot be known, :class:`_Refused` for an arg
+    neither declared nor given."""
+    words = body.split()
+    if not words:
+        raise _Unknown("empty $()")
+    command, rest = words[0], words[1:]
+    if command == "arg" and len(rest) == 1:
+        name = rest[0]
+        args_read.add(name)
+        if name not in args:
+            raise _Refused(f"$(arg {name}): the arg is not declared and not given", name)
+        value = args[name]
+        if value is None:
+            raise _Unknown(f"$(arg {name}): its value is not known")
+        return value
+    if command == "find" and len(rest) == 1:
+        found = find(rest[0])
+        if found is None:
+            raise _Unknown(f"$(find {rest[0]}): package not found under the package path")
+        return found
+    if command in ("env", "optenv") and rest:
+        env_read.add(rest[0])
+    if command == "env" and len(rest) == 1:
+        if rest[0] not in env:
+            raise _Unknown(f"$(env {rest[0]}): not given with --env")
+        return env[rest[0]]
+    if command == "optenv" and rest:
+        return env.get(rest[0], " ".join(rest[1:]))
+    if command == "eval":
+        return str(evaluate(body[len("eval"):]))
+    raise _Unknown(f"$({body}) is not supported")
+
+
 UNKNOWN = "unknown"
 """A problem kind: something not followed; content may be missing from the expansion."""
 KEPT = "kept"
@@ -162,8 +213,11 @@ class XacroProblem(Record):
     name: str | None
     """The arg of a refused ``$(arg)`` or of a ``PARAM_AS_ARG`` use; the macro of an
     ``UNEXPANDED`` call."""
+    own: bool
+    """A refusal that nothing left unread before it can explain: a call of a macro
+    defined after the last thing not followed (:class:`_Mismatch`)."""
 
-    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions", "name")
+    __slots__ = ("path", "line", "message", "fatal", "kind", "conditions", "name", "own")
 
     def __init__(
         self,
@@ -174,6 +228,7 @@ class XacroProblem(Record):
         kind: str = UNKNOWN,
         conditions: tuple[str, ...] = (),
         name: str | None = None,
+        own: bool = False,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -182,6 +237,7 @@ class XacroProblem(Record):
         _set(self, "kind", kind)
         _set(self, "conditions", conditions)
         _set(self, "name", name)
+        _set(self, "own", own)
 
 
 TF_PREFIX_PARAM = "tf_prefix"
@@ -320,8 +376,10 @@ class _Macro(MutableRecord):
     scope: _Table | None
     """For a macro of a namespaced include: the include's table, where its body runs
     (xacro resolves ``ns.name`` to the namespace's own macros and properties)."""
+    seen: int
+    """The expander's problems before the definition (see :class:`_Mismatch`)."""
 
-    __slots__ = ("params", "defaults", "body", "path", "scope")
+    __slots__ = ("params", "defaults", "body", "path", "scope", "seen")
 
     def __init__(
         self,
@@ -330,7 +388,9 @@ class _Macro(MutableRecord):
         body: Element,
         path: str,
         scope: _Table | None = None,
+        seen: int = 0,
     ) -> None:
+        self.seen = seen
         self.params = params
         self.defaults = defaults
         self.body = body
