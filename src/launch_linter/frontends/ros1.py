@@ -92,15 +92,22 @@ class Ros1Loader(Ros1Tags):
             if not (name_value and text_of(name_value)):
                 name_value = test_name
         else:
-            name_value = self._required(element, "name", context)
+            text = attrib.get("name")
+            name_value = (self._required(element, "name", context)
+                          if text is None or "$" in text else (text,) if text else ())
         namespace = self._namespace(element, context)
         # <param>/<rosparam> children resolve in a copy of the node's context taken here.
         param_anon = dict(context.anon) if element.children else None
         if "clear_params" in attrib:
             name = text_of(name_value) if name_value is not None else None
             self._clear_params(element, context, needs_ns=False, node_name=name)
-        package = self._required(element, "pkg", context)
-        node_type = self._required(element, "type", context)
+        # A literal package and type (most nodes) are their own values: no call.
+        text = attrib.get("pkg")
+        package = (self._required(element, "pkg", context)
+                   if text is None or "$" in text else (text,) if text else ())
+        text = attrib.get("type")
+        node_type = (self._required(element, "type", context)
+                     if text is None or "$" in text else (text,) if text else ())
         late = ({} if _NODE_LATE_NAMES.isdisjoint(attrib)
                 else self._present(element, _NODE_LATE_ATTRS, context))
         if element.children:
@@ -121,11 +128,11 @@ class Ros1Loader(Ros1Tags):
             self._error(context, element, "type must be non-empty")
         if "//" in ns:
             ns = _COLLAPSE_SLASHES.sub("/", ns)
+        present = _conjoin(context.condition, condition)
         if not is_test and name_text and not ns_unresolved:
-            self._register_name(element, context, name_text, ns,
-                                _conjoin(context.condition, condition))
+            self._register_name(element, context, name_text, ns, present)
         if package_text is not None and type_text is not None:
-            self._frame_node(element, context, condition, name_text, package_text, type_text,
+            self._frame_node(element, context, present, name_text, package_text, type_text,
                              None if ns_unresolved else ns, late.get("args"))
             if package_text == RSP_PACKAGE and not ns_unresolved:
                 self._description_remap(element, context, ns)
@@ -137,7 +144,7 @@ class Ros1Loader(Ros1Tags):
             return
         if type_text is None and package_text is None:
             return
-        self._transform(element, context, condition, name_value or (), ns, ns_unresolved,
+        self._transform(element, context, present, name_value or (), ns, ns_unresolved,
                         package, node_type, late.get("args", ()))
 
     def _description_remap(self, element: Element, context: _Context, ns: str) -> None:
@@ -346,7 +353,7 @@ class Ros1Loader(Ros1Tags):
                 return os.path.abspath(candidate)
         return None
 
-    def _transform(self, element: Element, context: _Context, condition: Condition,
+    def _transform(self, element: Element, context: _Context, present: Condition,
                    name_value: Value, namespace: str, ns_unresolved: str, package: Value,
                    node_type: Value, args_value: Value) -> None:
         package_text, type_text = resolved_text(package), resolved_text(node_type)
@@ -402,8 +409,7 @@ class Ros1Loader(Ros1Tags):
             number_issues, reasons = decoded.number_issues, ()
         known = form is not ArgForm.UNKNOWN
         site = Site(self._display(context.filename), element.line, element.column,
-                    self.root_display, context.included_from,
-                    _conjoin(context.condition, condition))
+                    self.root_display, context.included_from, present)
         command = Command(name, namespace,
                           text_of(package) if package_text is None else package_text,
                           text_of(node_type) if type_text is None else type_text,
