@@ -91,25 +91,40 @@ class Ros1Loader(Ros1Tags):
                 self._error(context, element, f"Invalid <node> tag: {message}")
             if not (name_value and text_of(name_value)):
                 name_value = test_name
+            name_text = None if name_value is None else resolved_text(name_value)
         else:
-            text = attrib.get("name")
-            name_value = (self._required(element, "name", context)
-                          if text is None or "$" in text else (text,) if text else ())
+            # A literal name, package and type (most nodes) are their own values and
+            # texts: no call.
+            written = attrib.get("name")
+            if written is None or "$" in written:
+                name_value = self._required(element, "name", context)
+                name_text = None if name_value is None else resolved_text(name_value)
+            else:
+                name_value, name_text = ((written,) if written else ()), written
         namespace = self._namespace(element, context)
         # <param>/<rosparam> children resolve in a copy of the node's context taken here.
         param_anon = dict(context.anon) if element.children else None
         if "clear_params" in attrib:
             name = text_of(name_value) if name_value is not None else None
             self._clear_params(element, context, needs_ns=False, node_name=name)
-        # A literal package and type (most nodes) are their own values: no call.
-        text = attrib.get("pkg")
-        package = (self._required(element, "pkg", context)
-                   if text is None or "$" in text else (text,) if text else ())
-        text = attrib.get("type")
-        node_type = (self._required(element, "type", context)
-                     if text is None or "$" in text else (text,) if text else ())
-        late = ({} if _NODE_LATE_NAMES.isdisjoint(attrib)
-                else self._present(element, _NODE_LATE_ATTRS, context))
+        written = attrib.get("pkg")
+        if written is None or "$" in written:
+            package = self._required(element, "pkg", context)
+            package_text = None if package is None else resolved_text(package)
+        else:
+            package, package_text = ((written,) if written else ()), written
+        written = attrib.get("type")
+        if written is None or "$" in written:
+            node_type = self._required(element, "type", context)
+            type_text = None if node_type is None else resolved_text(node_type)
+        else:
+            node_type, type_text = ((written,) if written else ()), written
+        late_names = _NODE_LATE_NAMES.intersection(attrib)
+        if len(late_names) == 1:  # most often ``output`` alone: no order to keep
+            (late_name,) = late_names
+            late = {late_name: self._resolve_text(attrib[late_name], element, late_name, context)}
+        else:
+            late = self._present(element, _NODE_LATE_ATTRS, context) if late_names else {}
         if element.children:
             self._node_children(element, context, param_anon or {}, dict(context.anon))
         if namespace is None:
@@ -117,9 +132,6 @@ class Ros1Loader(Ros1Tags):
         ns, ns_unresolved = namespace
         if len(late) > ("args" in late):
             self._validate_node(element, context, late)
-        name_text = None if name_value is None else resolved_text(name_value)
-        package_text = None if package is None else resolved_text(package)
-        type_text = None if node_type is None else resolved_text(node_type)
         if name_text and "/" in name_text:
             self._error(context, element, f"node name cannot contain a namespace: {name_text}")
         if package_text is not None and not package_text.strip():
@@ -176,8 +188,11 @@ class Ros1Loader(Ros1Tags):
                        late: dict[str, Value]) -> None:
         """What roslaunch's ``Node`` constructor and ``_node_tag`` refuse in the optional
         attributes."""
-        required = self._check_bool(context, element, late.get("required"), "required")
-        respawn = self._check_bool(context, element, late.get("respawn"), "respawn")
+        # Most nodes have neither: no call for an absent one.
+        required = ("required" in late
+                    and self._check_bool(context, element, late["required"], "required"))
+        respawn = ("respawn" in late
+                   and self._check_bool(context, element, late["respawn"], "respawn"))
         if required and respawn:
             self._error(context, element, "respawn and required cannot both be set to true")
         delay = late.get("respawn_delay")
