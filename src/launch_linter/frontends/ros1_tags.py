@@ -201,9 +201,9 @@ class Ros1Tags(Ros1Base):
         # Resolved in roslaunch's order (name, value, default, doc); a text without "$" is
         # its own value, without the calls of ``_required``/``_resolve`` (most args).
         name_text = attrib.get("name")
-        name_value = (self._required(element, "name", context)
-                      if name_text is None or "$" in name_text
-                      else (name_text,) if name_text else ())
+        literal_name = name_text is not None and "$" not in name_text
+        name_value = (((name_text,) if name_text else ()) if literal_name
+                      else self._required(element, "name", context))
         value_text = attrib.get("value")
         value = (None if value_text is None
                  else self._substitute(value_text, element, "value", context, None)
@@ -219,7 +219,7 @@ class Ros1Tags(Ros1Base):
             return
         if value is not None and default is not None:
             self._error(context, element, "<arg> tag must have one and only one of value/default.")
-        name = resolved_text(name_value)
+        name = name_text if literal_name else resolved_text(name_value)
         if name is None:
             self._report("unresolved", context.filename, element,
                          f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
