@@ -156,3 +156,13 @@ def test_an_eval_written_with_a_character_reference_is_still_read() -> None:
            '<param name="a" value="$(&#101;val x + 1)"/></launch>')
     assert found(xml) == [(1, "info", ())]
     assert len(found(xml.replace("&#101;val", "xval"))) == 2
+
+
+def test_an_argument_declared_in_any_case_counts_and_other_tags_do_not() -> None:
+    # The declaration scan lowercases only three-letter tags: <ARG>, <Arg> are arguments;
+    # <args>, <env>, <ar> and a two-letter tag are not.
+    xml = ('<launch><ARG name="upper" default="1"/><Arg name="mixed"/>'
+           '<args name="plural"/><env name="e" value="v"/><ar name="short"/>'
+           '<İg name="dotted"/></launch>').encode()
+    root = parse_xml(xml, collect=("launch",)).collected[0]
+    assert [arg.name for arg in unused_args(root, xml)] == ["upper", "mixed"]

@@ -91,18 +91,40 @@ class Ros1Loader(Ros1Tags):
                 self._error(context, element, f"Invalid <node> tag: {message}")
             if not (name_value and text_of(name_value)):
                 name_value = test_name
+            name_text = None if name_value is None else resolved_text(name_value)
         else:
-            name_value = self._required(element, "name", context)
+            # A literal name, package and type (most nodes) are their own values and
+            # texts: no call.
+            written = attrib.get("name")
+            if written is None or "$" in written:
+                name_value = self._required(element, "name", context)
+                name_text = None if name_value is None else resolved_text(name_value)
+            else:
+                name_value, name_text = ((written,) if written else ()), written
         namespace = self._namespace(element, context)
         # <param>/<rosparam> children resolve in a copy of the node's context taken here.
         param_anon = dict(context.anon) if element.children else None
         if "clear_params" in attrib:
             name = text_of(name_value) if name_value is not None else None
             self._clear_params(element, context, needs_ns=False, node_name=name)
-        package = self._required(element, "pkg", context)
-        node_type = self._required(element, "type", context)
-        late = ({} if _NODE_LATE_NAMES.isdisjoint(attrib)
-                else self._present(element, _NODE_LATE_ATTRS, context))
+        written = attrib.get("pkg")
+        if written is None or "$" in written:
+            package = self._required(element, "pkg", context)
+            package_text = None if package is None else resolved_text(package)
+        else:
+            package, package_text = ((written,) if written else ()), written
+        written = attrib.get("type")
+        if written is None or "$" in written:
+            node_type = self._required(element, "type", context)
+            type_text = None if node_type is None else resolved_text(node_type)
+        else:
+            node_type, type_text = ((written,) if written else ()), written
+        late_names = _NODE_LATE_NAMES.intersection(attrib)
+        if len(late_names) == 1:  # most often ``output`` alone: no order to keep
+            (late_name,) = late_names
+            late = {late_name: self._resolve_text(attrib[late_name], element, late_name, context)}
+        else:
+            late = self._present(element, _NODE_LATE_ATTRS, context) if late_names else {}
         if element.children:
             self._node_children(element, context, param_anon or {}, dict(context.anon))
         if namespace is None:
@@ -110,9 +132,6 @@ class Ros1Loader(Ros1Tags):
         ns, ns_unresolved = namespace
         if len(late) > ("args" in late):
             self._validate_node(element, context, late)
-        name_text = None if name_value is None else resolved_text(name_value)
-        package_text = None if package is None else resolved_text(package)
-        type_text = None if node_type is None else resolved_text(node_type)
         if name_text and "/" in name_text:
             self._error(context, element, f"node name cannot contain a namespace: {name_text}")
         if package_text is not None and not package_text.strip():
@@ -121,11 +140,11 @@ class Ros1Loader(Ros1Tags):
             self._error(context, element, "type must be non-empty")
         if "//" in ns:
             ns = _COLLAPSE_SLASHES.sub("/", ns)
+        present = _conjoin(context.condition, condition)
         if not is_test and name_text and not ns_unresolved:
-            self._register_name(element, context, name_text, ns,
-                                _conjoin(context.condition, condition))
+            self._register_name(element, context, name_text, ns, present)
         if package_text is not None and type_text is not None:
-            self._frame_node(element, context, condition, name_text, package_text, type_text,
+            self._frame_node(element, context, present, name_text, package_text, type_text,
                              None if ns_unresolved else ns, late.get("args"))
             if package_text == RSP_PACKAGE and not ns_unresolved:
                 self._description_remap(element, context, ns)
@@ -137,7 +156,7 @@ class Ros1Loader(Ros1Tags):
             return
         if type_text is None and package_text is None:
             return
-        self._transform(element, context, condition, name_value or (), ns, ns_unresolved,
+        self._transform(element, context, present, name_value or (), ns, ns_unresolved,
                         package, node_type, late.get("args", ()))
 
     def _description_remap(self, element: Element, context: _Context, ns: str) -> None:
@@ -169,8 +188,11 @@ class Ros1Loader(Ros1Tags):
                        late: dict[str, Value]) -> None:
         """What roslaunch's ``Node`` constructor and ``_node_tag`` refuse in the optional
         attributes."""
-        required = self._check_bool(context, element, late.get("required"), "required")
-        respawn = self._check_bool(context, element, late.get("respawn"), "respawn")
+        # Most nodes have neither: no call for an absent one.
+        required = ("required" in late
+                    and self._check_bool(context, element, late["required"], "required"))
+        respawn = ("respawn" in late
+                   and self._check_bool(context, element, late["respawn"], "respawn"))
         if required and respawn:
             self._error(context, element, "respawn and required cannot both be set to true")
         delay = late.get("respawn_delay")
@@ -346,7 +368,7 @@ class Ros1Loader(Ros1Tags):
                 return os.path.abspath(candidate)
         return None
 
-    def _transform(self, element: Element, context: _Context, condition: Condition,
+    def _transform(self, element: Element, context: _Context, present: Condition,
                    name_value: Value, namespace: str, ns_unresolved: str, package: Value,
                    node_type: Value, args_value: Value) -> None:
         package_text, type_text = resolved_text(package), resolved_text(node_type)
@@ -402,8 +424,7 @@ class Ros1Loader(Ros1Tags):
             number_issues, reasons = decoded.number_issues, ()
         known = form is not ArgForm.UNKNOWN
         site = Site(self._display(context.filename), element.line, element.column,
-                    self.root_display, context.included_from,
-                    _conjoin(context.condition, condition))
+                    self.root_display, context.included_from, present)
         command = Command(name, namespace,
                           text_of(package) if package_text is None else package_text,
                           text_of(node_type) if type_text is None else type_text,

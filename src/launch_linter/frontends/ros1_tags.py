@@ -198,9 +198,20 @@ class Ros1Tags(Ros1Base):
         )
         if condition is None:
             return
-        name_value = self._required(element, "name", context)
-        value = self._resolve(element, "value", context)
-        default = self._resolve(element, "default", context)
+        # Resolved in roslaunch's order (name, value, default, doc); a text without "$" is
+        # its own value, without the calls of ``_required``/``_resolve`` (most args).
+        name_text = attrib.get("name")
+        literal_name = name_text is not None and "$" not in name_text
+        name_value = (((name_text,) if name_text else ()) if literal_name
+                      else self._required(element, "name", context))
+        value_text = attrib.get("value")
+        value = (None if value_text is None
+                 else self._substitute(value_text, element, "value", context, None)
+                 if "$" in value_text else (value_text,) if value_text else ())
+        default_text = attrib.get("default")
+        default = (None if default_text is None
+                   else self._substitute(default_text, element, "default", context, None)
+                   if "$" in default_text else (default_text,) if default_text else ())
         doc = attrib.get("doc")
         if doc is not None and "$" in doc:
             self._substitute(doc, element, "doc", context, None)
@@ -208,18 +219,22 @@ class Ros1Tags(Ros1Base):
             return
         if value is not None and default is not None:
             self._error(context, element, "<arg> tag must have one and only one of value/default.")
-        name = resolved_text(name_value)
+        name = name_text if literal_name else resolved_text(name_value)
         if name is None:
             self._report("unresolved", context.filename, element,
                          f"arg name {text_of(name_value)!r} cannot be resolved; the arg is ignored")
             return
-        for key in ("value", "default"):
-            text = attrib.get(key)
+        for text in (value_text, default_text):
             if text is not None and "$(" in text:
                 source = self._env_in_text(text)
                 if source is not None:
                     self._env_args[name] = source
-        self._note_blank(context, element, name, value, default)
+        written = value if value is not None else default
+        if written is not None and not (
+                len(written) == 1 and type(written[0]) is str and written[0]):
+            # A value of one non-empty text is no blank default (``_note_blank`` would
+            # return at once): most args skip the call.
+            self._note_blank(context, element, name, value, default)
         self._declare(context, element, name, value, default, condition)
 
     def _note_blank(self, context: _Context, element: Element, name: str,
@@ -247,8 +262,11 @@ class Ros1Tags(Ros1Base):
             if found is None:
                 return
             condition = found
-        written = self._resolve(element, "value", context, anon)
-        if anon is not None and written is not None and "anon" not in attrib["value"]:
+        value_text = attrib.get("value")
+        written = (None if value_text is None
+                   else self._substitute(value_text, element, "value", context, anon)
+                   if "$" in value_text else (value_text,) if value_text else ())
+        if anon is not None and written is not None and "anon" not in (value_text or ""):
             # Without an anonymous name the value is the same in any anonymous-name table.
             self._child_values[element] = written
         count = int(written is not None)
@@ -323,12 +341,13 @@ class Ros1Tags(Ros1Base):
         if source is not None:
             self.other_descriptions.append((name, source))
 
-    def _frame_node(self, element: Element, context: _Context, condition: Condition,
+    def _frame_node(self, element: Element, context: _Context, present: Condition,
                     name: str | None, package: str, executable: str,
                     namespace: str | None, args: Value | None = None) -> None:
         """Keep a launched node with the parameters it is given inside its element
         (``<param>``, ``<rosparam>`` text and files); the knowledge base tells which of
-        them matter. A ``nodelet`` node is the nodelet its arguments load."""
+        them matter. A ``nodelet`` node is the nodelet its arguments load. ``present``:
+        the node's presence condition (its context's and its own, conjoined)."""
         params: list[tuple[str, str]] = []
         unread: list[str] = []
         lines: list[tuple[str, str, int, int]] = []
@@ -362,7 +381,7 @@ class Ros1Tags(Ros1Base):
                   if (package, executable) == NODELET else None)
         self.nodes.append(NodeRecord(
             path, element.line, element.column, package,
-            executable, name, tuple(params), _conjoin(context.condition, condition),
+            executable, name, tuple(params), present,
             plugin=plugin, unread=tuple(unread), namespace=namespace, ros=1,
             param_lines=tuple(lines),
         ))

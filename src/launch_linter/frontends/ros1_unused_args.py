@@ -118,7 +118,9 @@ def _declared(root: Element) -> list[tuple[str, Element]]:
     out: list[tuple[str, Element]] = []
     for child in root.children:
         tag = child.tag  # the tag as written first: a ``lower()`` per child costs more
-        if tag != "arg" and tag.lower() != "arg":
+        # No character lowercases to fewer characters, so only a three-letter tag can be
+        # some case of "arg": the others skip the ``lower()`` call.
+        if tag != "arg" and (len(tag) != 3 or tag.lower() != "arg"):
             continue
         attrib = child.attrib
         name = attrib.get("name", "")

@@ -291,7 +291,10 @@ def parse_xml(
     """
     if len(data) > MAX_BYTES:
         raise XmlError(f"file is {len(data)} bytes, larger than the {MAX_BYTES}-byte limit")
-    parser = expat.ParserCreate()
+    # ``intern=None``: pyexpat would otherwise look every tag and attribute name up in a
+    # dictionary of its own to share one string per name; a name is compared by value
+    # wherever it is read, so the sharing buys nothing and the look-ups cost.
+    parser = expat.ParserCreate(intern=None)
     parser.SetParamEntityParsing(expat.XML_PARAM_ENTITY_PARSING_NEVER)
     parser.buffer_text = True
     stack: list[Element] = []
