@@ -130,6 +130,44 @@ def _flat_places(text: str) -> KeyPlaces:
     return out
 
 
+def yaml_syntax_error(text: str) -> str | None:
+    """PyYAML's scanner, parser or composer error in ``text`` (roslaunch's ``load_rosparam``
+    gives up on it: "contains invalid YAML"); None when the text composes, when it is too
+    large or too deep to tell, or without PyYAML. Tags are not constructed: rosparam adds
+    its own (``!degrees``), so only the syntax is judged."""
+    try:
+        import yaml  # type: ignore[import-untyped]
+    except ImportError:
+        return None
+    if len(text) > MAX_PARAM_FILE_BYTES:
+        return None
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)(text)
+    try:
+        loader.get_single_node()
+    except (yaml.scanner.ScannerError, yaml.parser.ParserError,
+            yaml.composer.ComposerError) as exc:
+        written = str(exc).replace('in "<unicode string>", ', "").replace('in "<file>", ', "")
+        return " ".join(written.split())[:300]
+    except (yaml.YAMLError, RecursionError, ValueError):
+        return None
+    finally:
+        loader.dispose()
+    return None
+
+
+def yaml_file_syntax_error(path: str) -> str | None:
+    """:func:`yaml_syntax_error` of a parameter file; the file is read again only when
+    :func:`read_yaml_file_placed` could not read its document."""
+    _, why, _ = read_yaml_file_placed(path)
+    if why is None:
+        return None
+    try:
+        data = read_file_within(path, MAX_PARAM_FILE_BYTES)
+    except OSError:
+        return None
+    return yaml_syntax_error(data.decode("utf-8", "replace"))
+
+
 def read_yaml_file(path: str) -> tuple[Any, str | None]:
     """A parameter file's document, parsed once per version of the file (bounded)."""
     document, why, _ = read_yaml_file_placed(path)

@@ -5,7 +5,13 @@ from __future__ import annotations
 
 import os
 
-from launch_linter.frontends.params import parse_yaml, read_yaml_file_placed, ros1_params_keyed
+from launch_linter.frontends.params import (
+    parse_yaml,
+    read_yaml_file_placed,
+    ros1_params_keyed,
+    yaml_file_syntax_error,
+    yaml_syntax_error,
+)
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,
     from_ros1_param,
@@ -451,6 +457,15 @@ class Ros1Tags(Ros1Base):
             self._error(context, element,
                         f"error loading <rosparam> tag: file does not exist "
                         f"[{self._quoted(file_text)}]", attribute="file")
+        elif file_text and (command_text or "load") == "load" and not substitute:
+            # loader.py's load_rosparam: yaml.safe_load of the file, and a MarkedYAMLError
+            # is "file ... contains invalid YAML" (with subst_value the text parsed is
+            # another one, so it is judged only without).
+            invalid = yaml_file_syntax_error(file_text) if reads.is_file(file_text) else None
+            if invalid is not None:
+                self._error(context, element,
+                            f"error loading <rosparam> tag: file {self._quoted(file_text)} "
+                            f"contains invalid YAML: {invalid}")
         body: Value | None = (element.text,) if element.text else ()
         if substitute:
             body = self._resolve_text(element.text, element, "text", context, anon)
@@ -461,7 +476,9 @@ class Ros1Tags(Ros1Base):
                 value is not None and (resolved_text(value) is None or bool(text_of(value)))
                 for value in (_param, _ns)
             )
-            problem = None if text is None else rosparam_body_problem(text, has_param)
+            invalid = None if text is None else yaml_syntax_error(text)
+            problem = (f"Error within YAML block: {invalid}" if invalid is not None
+                       else None if text is None else rosparam_body_problem(text, has_param))
             if problem is not None:
                 self._error(context, element, f"error loading <rosparam> tag: {problem}")
 
