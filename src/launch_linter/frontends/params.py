@@ -136,7 +136,7 @@ def yaml_syntax_error(text: str) -> str | None:
     large or too deep to tell, or without PyYAML. Tags are not constructed: rosparam adds
     its own (``!degrees``), so only the syntax is judged."""
     try:
-        import yaml  # type: ignore[import-untyped]
+        import yaml
     except ImportError:
         return None
     if len(text) > MAX_PARAM_FILE_BYTES:

@@ -41,13 +41,14 @@ from launch_linter.frontends.ros1_names import (
     make_global_ns,
     ns_join,
 )
+from launch_linter.frontends.ros1_root_args import undeclared_root_arg
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
 from launch_linter.resolve import reads
 from launch_linter.resolve.substitution import SubstitutionError, resolve
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
-from launch_linter.resolve.xml_safe import Element
+from launch_linter.resolve.xml_safe import Element, line_starts
 
 MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
@@ -481,6 +482,25 @@ class Ros1Tags(Ros1Base):
                        else None if text is None else rosparam_body_problem(text, has_param))
             if problem is not None:
                 self._error(context, element, f"error loading <rosparam> tag: {problem}")
+
+    def _undeclared_at_root(self, name: str, filename: str, chain: tuple[str, ...]) -> None:
+        """An arg the root declares nowhere, read under no undecided condition in the root
+        or in a file it includes passing all args (see :mod:`.ros1_root_args`)."""
+        element, seen = self._element, self._condition_seen
+        if (element is None or self._root_arg_names is None or name in self._root_arg_names
+                or self.options.study_errors or self._in_undecided_node
+                or (seen is not None and seen[0] is element and not seen[1])
+                or (chain[0], "\x00" + name) in self._missing_reported):
+            return
+        self._missing_reported.add((chain[0], "\x00" + name))
+        if filename == chain[0] and self._root_lines is None:
+            self._root_lines = line_starts(self._root_data)
+        site = self._included_at.get(chain[1]) if len(chain) > 1 else None
+        problem = undeclared_root_arg(name, filename, chain[0], self._display, element,
+                                      self._label, (self._root_data, self._root_lines or []),
+                                      site)
+        if problem is not None:
+            self.problems.append(problem)
 
     def _remap(self, element: Element, context: _Context) -> None:
         if self._condition(element, context) is None:
