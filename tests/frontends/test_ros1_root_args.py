@@ -1,6 +1,7 @@
 """An arg the root file declares nowhere and nothing sets: roslaunch refuses the file
 ("[f] requires the 'x' arg to be set", xmlloader.py), unless ``x:=...`` is given on its
-command line (loader.py ``load_sysargs_into_context``), which ``--arg`` models. The shapes
+command line (loader.py ``load_sysargs_into_context``), which ``--arg`` models; some
+files are run so by design (cartographer_ros' demos), so it is said as unknown. The shapes
 of iai_kinect2 #344 (``output="$(arg screen)"``) and pmb2_robot 96a276d (an include with
 pass_all_args of a file that declares the arg without a default)."""
 
@@ -24,8 +25,9 @@ def write(path: Path, xml: str) -> Path:
 
 def refusals(path: Path, **options: object) -> list[tuple[str, int, str]]:
     tree = load_tree(str(path), LoadOptions(**options))  # type: ignore[arg-type]
+    assert not [d for d in tree.problems if d.rule == "roslaunch_error"]
     return [(Path(d.path).name, d.line, d.message) for d in tree.problems
-            if d.rule == "roslaunch_error"]
+            if d.rule == "unresolved" and "requires the '" in d.message]
 
 
 NODE = """
@@ -44,6 +46,7 @@ def test_an_undeclared_arg_of_the_root_is_refused_at_its_attribute(tmp_path: Pat
     found = refusals(root)
     assert [(name, line) for name, line, _ in found] == [("bridge.launch", 5)]
     assert "requires the 'screen' arg to be set" in found[0][2]
+    assert "--arg screen:=VALUE" in found[0][2]
 
 
 @pytest.mark.parametrize(("extra", "condition", "options"), [
