@@ -49,7 +49,8 @@ import collections
 import itertools
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionSource
 from launch_linter.rules._api import (
     MAX_RELATED,
@@ -168,7 +169,7 @@ def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
             (f"'{p}' ({_where(t, edge)})" for p, t in rivals), count))
         gets = "may get" if conditional or not edge.condition.always else "gets"
         here = "here" if edge.joint is None else f"here (URDF joint '{edge.joint.name}')"
-        yield finding_on(
+        found = finding_on(
             edge,
             f"frame '{child}' {gets} {count + 1} parents: '{parent}' {here} and "
             f"{others}; a tf frame has exactly one parent, and "
@@ -176,6 +177,29 @@ def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
                "tf2 keeps whichever transform arrives last"),
             tuple(t for _, t in rivals),
         )
+        yield _in_macro(found, edge, rivals, count)
+
+
+def _in_macro(found: Finding, edge: Edge, rivals: list[tuple[str, Edge]],
+              count: int) -> Finding:
+    """``found`` moved into the macro when one xacro macro call made every parent's joint:
+    then every call of the macro gives the frame two parents, and the macro is what to
+    fix; the finding is at the ``<child>`` the macro writes for ``edge``, with the call
+    and the other parents' ``<child>`` elements as related places."""
+    joint = edge.joint
+    if joint is None or joint.child_at is None or count != len(rivals):
+        return found
+    call = (joint.path, joint.line, joint.column)
+    others: list[Location] = []
+    for _, rival in rivals:
+        other = rival.joint
+        if (other is None or other.child_at is None or other.source != joint.source
+                or (other.path, other.line, other.column) != call):
+            return found
+        others.append(Location(*other.child_at))
+    path, line, column = joint.child_at
+    return replace(found, path=path, line=line, column=column,
+                   related=(Location(*call), *others))
 
 
 def _kdl_keeps(edge: Edge, rivals: list[tuple[str, Edge]], context: RuleContext) -> str | None:
