@@ -6,7 +6,10 @@ transform whose child frame already has a different parent from an earlier stati
 transform (frame ids compared without one leading `/`). The diagnostic is on the later
 transform and points at the earlier ones. When either transform is only launched under a
 condition the linter cannot decide, the message says the frame *may* get two parents;
-transforms under mutually exclusive conditions are never compared.
+transforms under mutually exclusive conditions are never compared. URDF joints a xacro
+macro made are shown at the macro's call; when one call made every parent's joint, every
+call of the macro has the fault, and the finding is at the `<child>` the macro writes,
+with the call and the other parents' `<child>` elements as related places.
 
 ## Why is this bad?
 tf frames form a tree: each frame has exactly one parent (REP 105). With two static
