@@ -17,6 +17,8 @@ def errors(tmp_path: Path, body: str) -> list[str]:
     (package / "config").mkdir(parents=True, exist_ok=True)
     (package / "package.xml").write_text("<package><name>robot</name></package>\n")
     (package / "config" / "ok.yaml").write_text("a: 1\n")
+    (package / "config" / "bad.yaml").write_text("c:\n  type: x\n  name: h rate: 10\n")
+    (package / "config" / "tags.yaml").write_text("a: !degrees 90\nb: $(arg x)\n")
     path = package / "t.launch"
     path.write_text("<launch>\n" + textwrap.dedent(body).strip() + "\n</launch>\n")
     tree = load_tree(str(path), LoadOptions(packages=PackageIndex([str(tmp_path / "src")])))
@@ -58,9 +60,23 @@ def test_test_limits(tmp_path: Path, attrs: str, expected: list[str]) -> None:
     ("<rosparam>a: !degrees 90\nb: deg(45)</rosparam>", []),
     ("<rosparam>   </rosparam>", []),
     ('<rosparam file="$(find robot)/config/ok.yaml">[1, 2]</rosparam>', []),  # text ignored
+    # loader.py load_rosparam: yaml.safe_load, a MarkedYAMLError refuses the file.
+    ('<rosparam file="$(find robot)/config/bad.yaml" command="load"/>',
+     ["error loading <rosparam> tag: file {root}/src/robot/config/bad.yaml contains invalid "
+      "YAML: mapping values are not allowed here line 3, column 15"]),
+    ('<rosparam file="$(find robot)/config/tags.yaml"/>', []),  # rosparam's tags: syntax only
+    ('<rosparam file="$(find robot)/config/bad.yaml" subst_value="true"/>', []),  # other text
+    ('<rosparam command="delete" param="c"/>', []),
+    ("<rosparam>a: [1, 2</rosparam>",
+     ["error loading <rosparam> tag: Error within YAML block: while parsing a flow sequence "
+      "line 1, column 4: a: [1, 2 ^ expected ',' or ']', but got '<stream end>'"]),
 ])
 def test_rosparam(tmp_path: Path, body: str, expected: list[str]) -> None:
-    assert errors(tmp_path, body) == [e.format(root=tmp_path) for e in expected]
+    # PyYAML's pure-Python parser words the message, as roslaunch's yaml.safe_load does.
+    found = errors(tmp_path, body)
+    wanted = [e.format(root=tmp_path) for e in expected]
+    assert len(found) == len(wanted)
+    assert all(f.startswith(w) for f, w in zip(found, wanted)), found
 
 
 @pytest.mark.parametrize(("body", "kind"), [
@@ -73,3 +89,17 @@ def test_rosparam(tmp_path: Path, body: str, expected: list[str]) -> None:
 def test_yaml_root_kind_without_pyyaml(body: str, kind: str | None) -> None:
     """Standard library only, so that the generated linter agrees on every Python."""
     assert yaml_root_kind(body) == kind
+
+
+def test_rosparam_invalid_yaml_hostile(tmp_path: Path) -> None:
+    """20,000 keys and the syntax error at the end: judged once, bounded by the file's size."""
+    import time
+
+    config = tmp_path / "src" / "robot" / "config"
+    config.mkdir(parents=True)
+    lines = "".join(f"k{i}: {i}\n" for i in range(20_000)) + "x: a b: c\n"
+    (config / "big.yaml").write_text(lines)
+    started = time.perf_counter()
+    found = errors(tmp_path, '<rosparam file="$(find robot)/config/big.yaml"/>\n' * 3)
+    assert time.perf_counter() - started < 20
+    assert len(found) == 3 and all("line 20001" in message for message in found)

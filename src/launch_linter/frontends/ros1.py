@@ -126,7 +126,10 @@ class Ros1Loader(Ros1Tags):
         else:
             late = self._present(element, _NODE_LATE_ATTRS, context) if late_names else {}
         if element.children:
+            outer, self._in_undecided_node = (self._in_undecided_node,
+                                              self._in_undecided_node or not condition.always)
             self._node_children(element, context, param_anon or {}, dict(context.anon))
+            self._in_undecided_node = outer
         if namespace is None:
             return
         ns, ns_unresolved = namespace

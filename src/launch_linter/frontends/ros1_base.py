@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import re
 import typing
+import weakref
 from collections.abc import Callable, Iterable, Mapping
 
 from launch_linter.frontends.robot.describe import RobotCache
@@ -13,6 +14,7 @@ from launch_linter.frontends.robot.sources import with_node_params
 from launch_linter.frontends.ros1_attributes import ignored_attributes, message
 from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
+from launch_linter.frontends.ros1_root_args import declared_arg_names
 from launch_linter.frontends.ros1_unused_args import unused_args
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
@@ -35,7 +37,12 @@ from launch_linter.resolve.substitution import (
     to_bool,
 )
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
-from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
+from launch_linter.resolve.xml_safe import (
+    Element,
+    XmlError,
+    parse_xml,
+    read_launch_bytes,
+)
 from launch_linter.workspace.launch_checks import only_parse_checked
 from launch_linter.workspace.packages import PackageIndex
 
@@ -150,7 +157,7 @@ class _Context:
 
     __slots__ = ("anon", "arg_names", "args", "calls", "chain", "condition", "depth", "filename",
                  "include_args", "included_from", "ns", "ns_unresolved", "open_args",
-                 "pass_all_args", "scope", "side_scope")
+                 "pass_all_args", "scope", "side_scope", "__weakref__")
 
     def __init__(self, ns: str, filename: str, args: dict[str, Value], open_args: bool) -> None:
         self.ns = ns
@@ -238,6 +245,12 @@ class Ros1Base:
         """Resolved node name -> (file, element, presence condition) of its nodes so far."""
         self._displays: dict[str, str] = {}
         self._missing_reported: set[tuple[str, str]] = set()
+        # The root's text and declared args, the last if/unless judged (does it surely
+        # hold?), a node's children under an undecided one, the attribute being resolved.
+        self._root_data, self._root_lines = b"", typing.cast("list[int] | None", None)
+        self._root_arg_names: frozenset[str] | None = None
+        self._condition_seen: tuple[Element, bool] | None = None
+        self._in_undecided_node, self._label = False, ""
         self._element: Element | None = None
         self._env_args: dict[str, str] = {}
         self._blank_args: dict[str, str] = {}
@@ -358,6 +371,8 @@ class Ros1Base:
         root = self._parse(absolute, data)
         if root is None:
             return self._tree(FileStatus.PARSE_ERROR)
+        self._root_data = data
+        self._root_arg_names = declared_arg_names(root)
         context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
         self._path = absolute
         try:
@@ -518,10 +533,14 @@ class Ros1Base:
     def _new_scope(self, context: _Context, anon: dict[str, str]) -> SubstitutionScope:
         # The scope is kept in the context, so what it holds must not lead back to the
         # context: a reference cycle would leave the whole load to the garbage collector.
-        filename, open_args = context.filename, context.open_args
+        filename, open_args, chain = context.filename, context.open_args, context.chain
+        reading = weakref.ref(context)
 
         def missing(name: str) -> str:
             if open_args:
+                read_in = reading()
+                if read_in is not None and read_in.condition.always:
+                    self._undeclared_at_root(name, filename, chain)
                 return f"arg '{name}' is not set (give it with --arg {name}:=VALUE)"
             # Only the args passed to an included file exist there: roslaunch fails.
             message = (f"included file [{self._display(filename)}] requires the "
@@ -550,6 +569,7 @@ class Ros1Base:
     def _substitute(self, text: str, element: Element, label: str, context: _Context,
                     anon: dict[str, str] | None) -> Value:
         self._element = element
+        self._label = label
         scope = context.scope if anon is None else None
         try:
             return resolve(text, scope or self._scope(context, anon))
@@ -614,6 +634,7 @@ class Ros1Base:
         except ValueError as exc:
             self._error(context, element, f"{'if' if positive else 'unless'}: {exc}")
             truth = None
+        self._condition_seen = (element, truth is not None)
         if truth is None:
             return Condition((ConditionLiteral(text_of(value), positive),))
         return ALWAYS if truth == positive else None
@@ -632,5 +653,9 @@ class Ros1Base:
 
     # -- defined by a subclass, further on ---------------------------------------------------
     def _walk(self, elements: list[Element], context: _Context) -> None:
+        """Defined by :class:`.ros1_tags.Ros1Tags`."""
+        raise NotImplementedError
+
+    def _undeclared_at_root(self, name: str, filename: str, chain: tuple[str, ...]) -> None:
         """Defined by :class:`.ros1_tags.Ros1Tags`."""
         raise NotImplementedError

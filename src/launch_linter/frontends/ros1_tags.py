@@ -5,7 +5,13 @@ from __future__ import annotations
 
 import os
 
-from launch_linter.frontends.params import parse_yaml, read_yaml_file_placed, ros1_params_keyed
+from launch_linter.frontends.params import (
+    parse_yaml,
+    read_yaml_file_placed,
+    ros1_params_keyed,
+    yaml_file_syntax_error,
+    yaml_syntax_error,
+)
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,
     from_ros1_param,
@@ -35,13 +41,14 @@ from launch_linter.frontends.ros1_names import (
     make_global_ns,
     ns_join,
 )
+from launch_linter.frontends.ros1_root_args import undeclared_root_arg
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
 from launch_linter.resolve import reads
 from launch_linter.resolve.substitution import SubstitutionError, resolve
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
-from launch_linter.resolve.xml_safe import Element
+from launch_linter.resolve.xml_safe import Element, line_starts
 
 MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
@@ -470,6 +477,15 @@ class Ros1Tags(Ros1Base):
             self._error(context, element,
                         f"error loading <rosparam> tag: file does not exist "
                         f"[{self._quoted(file_text)}]", attribute="file")
+        elif file_text and (command_text or "load") == "load" and not substitute:
+            # loader.py's load_rosparam: yaml.safe_load of the file, and a MarkedYAMLError
+            # is "file ... contains invalid YAML" (with subst_value the text parsed is
+            # another one, so it is judged only without).
+            invalid = yaml_file_syntax_error(file_text) if reads.is_file(file_text) else None
+            if invalid is not None:
+                self._error(context, element,
+                            f"error loading <rosparam> tag: file {self._quoted(file_text)} "
+                            f"contains invalid YAML: {invalid}")
         body: Value | None = (element.text,) if element.text else ()
         if substitute:
             body = self._resolve_text(element.text, element, "text", context, anon)
@@ -480,9 +496,30 @@ class Ros1Tags(Ros1Base):
                 value is not None and (resolved_text(value) is None or bool(text_of(value)))
                 for value in (_param, _ns)
             )
-            problem = None if text is None else rosparam_body_problem(text, has_param)
+            invalid = None if text is None else yaml_syntax_error(text)
+            problem = (f"Error within YAML block: {invalid}" if invalid is not None
+                       else None if text is None else rosparam_body_problem(text, has_param))
             if problem is not None:
                 self._error(context, element, f"error loading <rosparam> tag: {problem}")
+
+    def _undeclared_at_root(self, name: str, filename: str, chain: tuple[str, ...]) -> None:
+        """An arg the root declares nowhere, read under no undecided condition in the root
+        or in a file it includes passing all args (see :mod:`.ros1_root_args`)."""
+        element, seen = self._element, self._condition_seen
+        if (element is None or self._root_arg_names is None or name in self._root_arg_names
+                or self.options.study_errors or self._in_undecided_node
+                or (seen is not None and seen[0] is element and not seen[1])
+                or (chain[0], "\x00" + name) in self._missing_reported):
+            return
+        self._missing_reported.add((chain[0], "\x00" + name))
+        if filename == chain[0] and self._root_lines is None:
+            self._root_lines = line_starts(self._root_data)
+        site = self._included_at.get(chain[1]) if len(chain) > 1 else None
+        problem = undeclared_root_arg(name, filename, chain[0], self._display, element,
+                                      self._label, (self._root_data, self._root_lines or []),
+                                      site)
+        if problem is not None:
+            self.problems.append(problem)
 
     def _remap(self, element: Element, context: _Context) -> None:
         if self._condition(element, context) is None:

@@ -150,10 +150,13 @@ class RobotJoint(Record):
     origin_at: tuple[str, int, int] | None
     """Where its ``<origin>`` is (the call, as for the joint, when a macro made it): a
     finding about the joint's values points there; None without an ``<origin>``."""
+    child_at: tuple[str, int, int] | None
+    """For a joint a xacro macro made: where its ``<child>`` is written in the macro (a
+    fault of the macro itself, every call's, is shown there)."""
 
     __slots__ = (
         "path", "line", "column", "name", "joint_type", "parent", "child", "translation", "rpy",
-        "source", "condition", "unresolved", "reasons", "defined", "origin_at",
+        "source", "condition", "unresolved", "reasons", "defined", "origin_at", "child_at",
     )
 
     def __init__(
@@ -173,6 +176,7 @@ class RobotJoint(Record):
         reasons: tuple[str, ...] = (),
         defined: tuple[str, int, int] | None = None,
         origin_at: tuple[str, int, int] | None = None,
+        child_at: tuple[str, int, int] | None = None,
     ) -> None:
         _set(self, "path", path)
         _set(self, "line", line)
@@ -189,6 +193,7 @@ class RobotJoint(Record):
         _set(self, "reasons", reasons)
         _set(self, "defined", defined)
         _set(self, "origin_at", origin_at)
+        _set(self, "child_at", child_at)
 
     @property
     def dynamic(self) -> bool:

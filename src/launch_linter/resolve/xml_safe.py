@@ -437,3 +437,36 @@ def parse_xml(
     if not roots:
         raise XmlError("no root element")
     return XmlDocument(roots[0], comments, element_lines, collected)
+
+
+MAX_START_TAG_BYTES = 64 * 1024
+"""How far :func:`attribute_line` looks for an attribute (a start tag is far shorter)."""
+_ATTRIBUTE_START = re.compile(rb"""\s([^\s=/>"']+)\s*=\s*("[^"]*"|'[^']*')""")
+
+
+def line_starts(data: bytes) -> list[int]:
+    """The byte offset of each line's start (index 0 is line 1), for :func:`attribute_line`."""
+    starts = [0]
+    position = data.find(b"\n")
+    while position != -1:
+        starts.append(position + 1)
+        position = data.find(b"\n", position + 1)
+    return starts
+
+
+def attribute_line(data: bytes, starts: list[int], element: Element, name: str) -> int:
+    """The line where the start tag of ``element`` writes attribute ``name`` (a tag may
+    span lines; expat gives only where it begins); the tag's own line when not found.
+    Reads the start tag only."""
+    if not 0 < element.line <= len(starts):
+        return element.line
+    offset = starts[element.line - 1] + max(element.column - 1, 0)
+    wanted = name.encode("utf-8", "replace")
+    for match in _ATTRIBUTE_START.finditer(data, offset, offset + MAX_START_TAG_BYTES):
+        between = data[offset:match.start()]
+        if b">" in between:  # past the start tag
+            break
+        if match.group(1) == wanted:
+            return element.line + data.count(b"\n", starts[element.line - 1], match.start(1))
+        offset = match.end()
+    return element.line

@@ -9,7 +9,10 @@ condition the linter cannot decide, the message says the frame *may* get two par
 transforms under mutually exclusive conditions are never compared. When every parent places
 the frame at the same pose relative to a frame above them (composed through fixed edges of
 known values, each frame on the way with one parent; within 1 mm and about 1 mrad), the
-finding is info: a redundant publisher, not a misplaced frame.
+finding is info: a redundant publisher, not a misplaced frame. URDF joints a xacro
+macro made are shown at the macro's call; when one call made every parent's joint, every
+call of the macro has the fault, and the finding is at the `<child>` the macro writes,
+with the call and the other parents' `<child>` elements as related places.
 
 ## Why is this bad?
 tf frames form a tree: each frame has exactly one parent (REP 105). With two static
@@ -56,7 +59,7 @@ import itertools
 import typing
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionSource
 from launch_linter.rules._api import (
@@ -209,7 +212,8 @@ def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
                f"publisher, not a misplaced frame"),
             tuple(t for _, t in rivals),
         )
-        yield found if common is None else replace(found, severity=SAME_POSE_LEVEL)
+        yield _in_macro(found if common is None else replace(found, severity=SAME_POSE_LEVEL),
+                        edge, rivals, count)
 
 
 def _same_pose(edge: Edge, rivals: list[Edge], above: dict[str, list[Edge]]) -> str | None:
@@ -267,6 +271,28 @@ def _moved(step: Pose, point: tuple[float, float, float]) -> tuple[float, float,
     dx, dy, dz = y * cz - z * cy, z * cx - x * cz, x * cy - y * cx
     return (tx + px + 2 * (w * cx + dx), ty + py + 2 * (w * cy + dy),
             tz + pz + 2 * (w * cz + dz))
+
+
+def _in_macro(found: Finding, edge: Edge, rivals: list[tuple[str, Edge]],
+              count: int) -> Finding:
+    """``found`` moved into the macro when one xacro macro call made every parent's joint:
+    then every call of the macro gives the frame two parents, and the macro is what to
+    fix; the finding is at the ``<child>`` the macro writes for ``edge``, with the call
+    and the other parents' ``<child>`` elements as related places."""
+    joint = edge.joint
+    if joint is None or joint.child_at is None or count != len(rivals):
+        return found
+    call = (joint.path, joint.line, joint.column)
+    others: list[Location] = []
+    for _, rival in rivals:
+        other = rival.joint
+        if (other is None or other.child_at is None or other.source != joint.source
+                or (other.path, other.line, other.column) != call):
+            return found
+        others.append(Location(*other.child_at))
+    path, line, column = joint.child_at
+    return replace(found, path=path, line=line, column=column,
+                   related=(Location(*call), *others))
 
 
 def _kdl_keeps(edge: Edge, rivals: list[tuple[str, Edge]], context: RuleContext) -> str | None:

@@ -7,7 +7,9 @@ an arg declared twice or overridden, include args that are unused or have no val
 missing or cyclic include, a node name with a namespace in it, a `<test>` whose
 `time-limit` is not a positive number or whose `retry` is not an integer, a `<rosparam>`
 whose `file` is empty or missing under a package found with `$(find)` (or under
-`$(dirname)`), and a `<rosparam>` body that is not a mapping without `param=`. The
+`$(dirname)`), a `<rosparam>` file or body that is not valid YAML (loader.py's
+`load_rosparam`: "contains invalid YAML"; judged on the syntax only, without
+`subst_value`), and a `<rosparam>` body that is not a mapping without `param=`. The
 linter goes on after each, so one run shows every such problem instead of roslaunch's
 first.
 

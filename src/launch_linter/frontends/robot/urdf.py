@@ -81,8 +81,11 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
         unresolved: list[str] = []
         reasons: list[str] = []
         frames: dict[str, str | None] = {}
+        child_at = None
         for end in ("parent", "child"):
             element = _first(joint, end)
+            if end == "child" and element is not None and joint.call is not None:
+                child_at = (display(element.path), element.line, element.column)
             if element is None or "link" not in element.attrib:
                 frames[end] = None
                 unresolved.append(end)
@@ -120,6 +123,7 @@ def joints_of(root: ExpandedNode, source: DescriptionSource, display: Display,
             source=source, condition=outer & _condition(joint.conditions),
             unresolved=tuple(unresolved), reasons=tuple(reasons),
             origin_at=None if placed is None else (display(placed[0]), placed[1], placed[2]),
+            child_at=child_at,
         ))
     return out
 
