@@ -236,6 +236,8 @@ class LaunchObject:
     uses: tuple[Subs, ...] = ()
     parameter: tuple[Subs, Subs] | None = None
     """``SetParameter``'s name and value."""
+    dotted: str = ""
+    """The class as imported (``launch.actions.Shutdown``): an action or an event."""
 
 
 @dataclass(frozen=True)
