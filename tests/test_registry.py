@@ -72,15 +72,20 @@ def _run(rule: Rule, xml: str, heading: str = "", folder: Path | None = None) ->
     A module may name the file its example is (``EXAMPLE_PATH``, e.g. a ``.launch.py``),
     the distribution it targets (``EXAMPLE_DISTRO``) and the file the example includes
     (``EXAMPLE_INCLUDED``: the second block under ``heading``, written into ``folder``
-    beside the example)."""
+    beside the example; a tuple of names: the blocks after the first, in order)."""
     module = MODULES[rule.id]
-    options = LintOptions(package_paths=(), beliefs=load_beliefs("bundled", 1.0),
-                          ros_distro=getattr(module, "EXAMPLE_DISTRO", None))
     path = getattr(module, "EXAMPLE_PATH", "example.launch")
     included = getattr(module, "EXAMPLE_INCLUDED", None)
+    # Several files written beside the example make its folder a package (a package.xml).
+    package = folder is not None and not isinstance(included, (str, type(None)))
+    options = LintOptions(package_paths=(str(folder),) if package else (),
+                          beliefs=load_beliefs("bundled", 1.0),
+                          ros_distro=getattr(module, "EXAMPLE_DISTRO", None))
     if included is not None and folder is not None:
         blocks = XML_BLOCK.findall(_section(rule.doc, heading))
-        (folder / included).write_text(blocks[1], encoding="utf-8")
+        names = (included,) if isinstance(included, str) else included
+        for name, block in zip(names, blocks[1:]):
+            (folder / name).write_text(block, encoding="utf-8")
         path = str(folder / path)
     result = lint_text(xml, path, options)
     return [d.line for d in result.diagnostics if d.rule == rule.id]

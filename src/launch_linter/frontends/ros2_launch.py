@@ -64,6 +64,7 @@ from launch_linter.frontends.ros2_actions import (
     RunNode,
     Where,
 )
+from launch_linter.frontends.ros2_empty_lists import EmptyListCheck
 from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
 from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
 from launch_linter.frontends.ros2_run import (
@@ -162,6 +163,7 @@ class Ros2Loader(Ros2Runner):
         self._empty_defaults: dict[str, dict[str, Where]] = {}
         """The launch arguments each file read declares with an empty default."""
         self.spawned: tuple[str, ...] | None = ()
+        self._empty_lists = EmptyListCheck(options.packages)
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
@@ -272,6 +274,10 @@ class Ros2Loader(Ros2Runner):
                 (self._word(a, scope, frame, where), self._word(b, scope, frame, where))
                 for a, b in action.remappings[:MAX_REMAPPINGS]))
         self.nodes.append(node)
+        if frame.condition.always and self._judging_files:
+            self.problems.extend(self._empty_lists.problems(
+                package, executable or "", section, known_namespace, given.placed,
+                Location(node.path, node.line, node.column)))
         if known_namespace is not None:
             self._watch_namespace(node, action, scope, frame)
         checked = ((name is not None or bool(defaults)) and not action.may_rename

@@ -63,6 +63,7 @@ def _load() -> None:
         ros1_unused_arg,
         ros2_bad_flag,
         ros2_missing_keyword,
+        ros2_param_empty_list,
         ros2_param_file_missing,
         ros2_param_file_unmatched,
         ros2_param_type,

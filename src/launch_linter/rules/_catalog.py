@@ -81,6 +81,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("namespace_pushed_twice", Category.TF),
     ("controller_tf_unrouted", Category.TF),
     ("joint_states_two_publishers", Category.TF),
+    ("ros2_param_empty_list", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -1,0 +1,95 @@
+"""Empty lists in the parameter files an rclcpp node is given: the node aborts at start.
+
+rcl's YAML parser takes ``key: []`` and leaves the parameter's value with no type set
+(an empty sequence adds no element, so no array type is chosen: rcl_yaml_param_parser
+``parse.c``, ``YAML_SEQUENCE_START_EVENT``/``YAML_SEQUENCE_END_EVENT``, ros2/rcl rolling
+c19dab55 lines 833-852). rclcpp turns every parameter of each section that matches the
+node into a ``ParameterValue`` while the node is built (``resolve_parameter_overrides``
+calls ``parameter_map_from``), and ``parameter_value_from`` throws
+``InvalidParameterValueException("No parameter value set")`` for a value with no type
+(rclcpp/src/rclcpp/parameter_map.cpp: foxy line 127, humble 99f1d8d and jazzy 985e320
+line 147): whatever the node declares, it dies in its constructor. rclpy reads the same
+value as "not set" without raising (rclpy/src/rclpy/node.cpp ``_parameter_from_rcl_variant``),
+so only nodes proven to be rclcpp's (:mod:`launch_linter.workspace.client_library`) are
+judged. ros2/rclcpp#1955 (open) asks for empty lists to be allowed.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+
+from launch_linter.frontends.params import (
+    MAX_PARAMS,
+    PlacedDocument,
+    _ros2_sections_keyed,
+    _section_pattern,
+    node_full_name,
+)
+from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.workspace.client_library import RCLCPP, client_library
+from launch_linter.workspace.packages import PackageIndex
+
+RULE = "ros2_param_empty_list"
+
+
+def empty_lists(document: object, name: str | None, namespace: str | None
+                ) -> list[tuple[str, tuple[str, ...]]]:
+    """The parameters a ROS 2 parameter file sets to ``[]`` for the node ``namespace/name``
+    (dotted names, each with its path of keys in the file). A node of unknown name is
+    reached only by a ``/**`` section."""
+    full = None if name is None or namespace is None else node_full_name(name, namespace)
+    out: list[tuple[str, tuple[str, ...]]] = []
+    visits = 0
+    for key, section, keys in _ros2_sections_keyed(document):
+        if (full is None and key.strip("/") != "**") or (
+            full is not None and not _section_pattern(key).match(full)
+        ):
+            continue
+        stack: list[tuple[str, tuple[str, ...], object]] = [("", keys, section)]
+        while stack and visits < 4 * MAX_PARAMS:
+            prefix, path, value = stack.pop()
+            visits += 1
+            if isinstance(value, dict):
+                for child_key, child in list(value.items())[:MAX_PARAMS]:
+                    stack.append((f"{prefix}.{child_key}" if prefix else str(child_key),
+                                  (*path, str(child_key)), child))
+            elif isinstance(value, list) and not value and prefix:
+                out.append((prefix, path))
+    return out
+
+
+class EmptyListCheck:
+    """Reports ``[]`` in the parameter files of nodes whose package is proven rclcpp's;
+    each package's manifest is read once per tree."""
+
+    def __init__(self, packages: PackageIndex) -> None:
+        self.packages = packages
+        self._library: dict[str, str | None] = {}
+
+    def is_rclcpp(self, package: str) -> bool:
+        if package not in self._library:
+            folder = self.packages.find(package)
+            manifest = None if folder is None else os.path.join(folder, "package.xml")
+            self._library[package] = None if manifest is None else client_library(manifest)
+        return self._library[package] == RCLCPP
+
+    def problems(self, package: str, executable: str, name: str | None,
+                 namespace: str | None, placed: Sequence[PlacedDocument],
+                 node: Location) -> list[Problem]:
+        if not placed or not self.is_rclcpp(package):
+            return []
+        out: list[Problem] = []
+        for document in placed:
+            for parameter, path in empty_lists(document.document, name, namespace):
+                line, column = document.keys.get(path, (node.line, node.column))
+                shown = document.shown if path in document.keys else node.path
+                out.append(Problem(
+                    RULE, shown, line, column,
+                    f"'{parameter}: []' in the parameter file of {package} {executable}, an "
+                    f"rclcpp node: an empty list has no type, so rclcpp throws "
+                    f"InvalidParameterValueException ('No parameter value set') while the "
+                    f"node starts, whatever it declares, and the node dies; leave the "
+                    f"parameter out (its declared default applies) or give it an item",
+                    related=(node,)))
+        return out
