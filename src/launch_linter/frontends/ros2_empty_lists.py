@@ -27,6 +27,7 @@ from launch_linter.frontends.params import (
     node_full_name,
 )
 from launch_linter.model.diagnostic import Location, Problem
+from launch_linter.model.robot import NodeRecord
 from launch_linter.workspace.client_library import RCLCPP, client_library
 from launch_linter.workspace.packages import PackageIndex
 
@@ -74,11 +75,13 @@ class EmptyListCheck:
             self._library[package] = None if manifest is None else client_library(manifest)
         return self._library[package] == RCLCPP
 
-    def problems(self, package: str, executable: str, name: str | None,
-                 namespace: str | None, placed: Sequence[PlacedDocument],
-                 node: Location) -> list[Problem]:
+    def problems(self, record: NodeRecord, name: str | None,
+                 placed: Sequence[PlacedDocument]) -> list[Problem]:
+        """The node ``record`` (named ``name`` in its parameter files) given ``placed``."""
+        package, executable, namespace = record.package, record.executable, record.namespace
         if not placed or not self.is_rclcpp(package):
             return []
+        node = Location(record.path, record.line, record.column)
         out: list[Problem] = []
         for document in placed:
             for parameter, path in empty_lists(document.document, name, namespace):

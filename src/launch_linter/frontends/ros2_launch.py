@@ -275,9 +275,7 @@ class Ros2Loader(Ros2Runner):
                 for a, b in action.remappings[:MAX_REMAPPINGS]))
         self.nodes.append(node)
         if frame.condition.always and self._judging_files:
-            self.problems.extend(self._empty_lists.problems(
-                package, executable or "", section, known_namespace, given.placed,
-                Location(node.path, node.line, node.column)))
+            self.problems.extend(self._empty_lists.problems(node, section, given.placed))
         if known_namespace is not None:
             self._watch_namespace(node, action, scope, frame)
         checked = ((name is not None or bool(defaults)) and not action.may_rename
@@ -419,7 +417,7 @@ class Ros2Loader(Ros2Runner):
                     continue
                 document, why, keys = read_yaml_file_placed(path)
                 if why is not None:
-                    self._absent_param_file(path, frame, where)
+                    self._absent_param_file(path, frame, where, group.path)
                     unread.append(why)
                     continue
                 documents.append(document)
@@ -492,19 +490,22 @@ class Ros2Loader(Ros2Runner):
                 related=(node, *related)))
         return f"parameter file path {written(path)!r} is empty"
 
-    def _absent_param_file(self, path: str, frame: _Frame, where: Where) -> None:
-        """Report a parameter file that is provably absent: under a package found, no
-        install rule provides it, or under the linted tree, it is not there."""
+    def _absent_param_file(self, path: str, frame: _Frame, where: Where, subs: Subs) -> None:
+        """Report a provably absent parameter file (no install rule of its package found
+        provides it; in the linted tree, not there) where a launch argument gives it."""
         if not os.path.isabs(path) or not frame.condition.always or not self._judging_files:
             return
         located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)
         if not located.absent:
             return
+        at = next((call.at for call in configurations_read(subs) if call.at is not None), None)
+        node = Location(self._display(frame.filename), where.line, where.column)
         self.problems.append(Problem(
-            "ros2_param_file_missing", self._display(frame.filename), where.line, where.column,
+            "ros2_param_file_missing", node.path, *(at or (where.line, where.column)),
             f"parameter file {self._quoted(path)!r} does not exist ({located.reason}): "
             f"launch_ros leaves a path that is not a file out of the node's parameters "
-            f"('Parameter file path is not a file'), so the node starts without them"))
+            f"('Parameter file path is not a file'), so the node starts without them",
+            related=(node,) if at else ()))
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
