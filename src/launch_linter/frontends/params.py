@@ -327,6 +327,8 @@ class PlacedDocument(NamedTuple):
     document: object
     shown: str
     keys: KeyPlaces
+    substituted: bool = False
+    """launch performs the file's ``$(...)`` before the node reads it (``allow_substs``)."""
 
 
 MAX_SECTION_MATCHES = 200_000

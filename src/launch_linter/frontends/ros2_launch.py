@@ -64,9 +64,9 @@ from launch_linter.frontends.ros2_actions import (
     RunNode,
     Where,
 )
-from launch_linter.frontends.ros2_empty_lists import EmptyListCheck
 from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
 from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
+from launch_linter.frontends.ros2_param_refusals import ParamFileChecks
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -94,7 +94,7 @@ from launch_linter.model.launch import (
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, parse, written
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
 
 
@@ -163,7 +163,7 @@ class Ros2Loader(Ros2Runner):
         self._empty_defaults: dict[str, dict[str, Where]] = {}
         """The launch arguments each file read declares with an empty default."""
         self.spawned: tuple[str, ...] | None = ()
-        self._empty_lists = EmptyListCheck(options.packages)
+        self._param_files = ParamFileChecks(options.packages)
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
@@ -275,7 +275,8 @@ class Ros2Loader(Ros2Runner):
                 for a, b in action.remappings[:MAX_REMAPPINGS]))
         self.nodes.append(node)
         if frame.condition.always and self._judging_files:
-            self.problems.extend(self._empty_lists.problems(node, section, given.placed))
+            self.problems.extend(self._param_files.problems(node, section, given.placed, (
+                lambda text: resolved_text(self._resolve(parse(text), scope, frame, where)))))
         if known_namespace is not None:
             self._watch_namespace(node, action, scope, frame)
         checked = ((name is not None or bool(defaults)) and not action.may_rename
@@ -423,7 +424,7 @@ class Ros2Loader(Ros2Runner):
                 documents.append(document)
                 process.append(document)
                 shown = self._display(path)
-                placed.append(PlacedDocument(document, shown, keys))
+                placed.append(PlacedDocument(document, shown, keys, group.substitutions))
                 files.append(shown)
                 from_file, missed = ros2_file_params_and_misses(document, name, namespace)
                 others = (None if namespace is None
@@ -491,8 +492,7 @@ class Ros2Loader(Ros2Runner):
         return f"parameter file path {written(path)!r} is empty"
 
     def _absent_param_file(self, path: str, frame: _Frame, where: Where, subs: Subs) -> None:
-        """Report a provably absent parameter file (no install rule of its package found
-        provides it; in the linted tree, not there) where a launch argument gives it."""
+        """Report a provably absent parameter file, where a launch argument gives it."""
         if not os.path.isabs(path) or not frame.condition.always or not self._judging_files:
             return
         located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)

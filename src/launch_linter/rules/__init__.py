@@ -65,6 +65,7 @@ def _load() -> None:
         ros2_missing_keyword,
         ros2_param_empty_list,
         ros2_param_file_missing,
+        ros2_param_file_refused,
         ros2_param_file_unmatched,
         ros2_param_type,
         ros2_positional_args,

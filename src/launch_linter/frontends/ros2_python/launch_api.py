@@ -46,6 +46,7 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchDescriptionVal,
     LaunchObject,
     ModuleVal,
+    ParamFileVal,
     SourceVal,
     SubsVal,
     Unknown,
@@ -120,8 +121,12 @@ class Interpreter(NodeArguments):
                          + (f" ({', '.join(legacy)}= removed after Foxy)" if legacy else ""))
         handler = HANDLERS.get(name)
         if handler is None:
-            if name in ("ParameterValue", "ParameterFile") and args:
-                # A ParameterFile is its path, which a node's parameters list reads.
+            path = self.arg(args, kwargs, 0, "param_file")
+            if name == "ParameterFile" and path is not None:
+                # A node's parameters list reads its path; an unknown allow_substs may
+                # substitute (launch_ros/parameter_descriptions.py ParameterFile).
+                return ParamFileVal(path, kwargs.get("allow_substs", False) is not False)
+            if name == "ParameterValue" and args:
                 return args[0]
             return self.launch_object(name, args, kwargs, node, dotted)
         result: object = handler(self, args, kwargs, node)

@@ -208,6 +208,15 @@ class ComponentVal:
 
 
 @dataclass(frozen=True)
+class ParamFileVal:
+    """``launch_ros.parameter_descriptions.ParameterFile(param_file, *, allow_substs)``:
+    ``substituted`` unless ``allow_substs`` is left out or written False."""
+
+    path: object
+    substituted: bool
+
+
+@dataclass(frozen=True)
 class ModuleVal:
     """A name imported from a module: ``launch_ros.actions.Node``, ``os.path``."""
 
