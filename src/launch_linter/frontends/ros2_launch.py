@@ -65,7 +65,7 @@ from launch_linter.frontends.ros2_actions import (
     Where,
 )
 from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
-from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults
+from launch_linter.frontends.ros2_param_paths import configurations_read, empty_defaults, given_at
 from launch_linter.frontends.ros2_param_refusals import ParamFileChecks
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
@@ -492,16 +492,16 @@ class Ros2Loader(Ros2Runner):
         return f"parameter file path {written(path)!r} is empty"
 
     def _absent_param_file(self, path: str, frame: _Frame, where: Where, subs: Subs) -> None:
-        """Report a provably absent parameter file, where a launch argument gives it."""
+        """Report a provably absent parameter file (where the node's call reads it)."""
         if not os.path.isabs(path) or not frame.condition.always or not self._judging_files:
             return
         located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)
         if not located.absent:
             return
-        at = next((call.at for call in configurations_read(subs) if call.at is not None), None)
         node = Location(self._display(frame.filename), where.line, where.column)
         self.problems.append(Problem(
-            "ros2_param_file_missing", node.path, *(at or (where.line, where.column)),
+            "ros2_param_file_missing", node.path,
+            *((at := given_at(subs, where)) or (where.line, where.column)),
             f"parameter file {self._quoted(path)!r} does not exist ({located.reason}): "
             f"launch_ros leaves a path that is not a file out of the node's parameters "
             f"('Parameter file path is not a file'), so the node starts without them",
