@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from launch_linter.model.diagnostic import NO_ELEMENT_AT_ALL
 from launch_linter.model.launch import may_hold_directive
 from launch_linter.resolve.xml_safe import (
     MAX_BYTES,
@@ -112,6 +113,20 @@ def test_malformed_xml_is_an_error_with_a_position(data: bytes, fragment: str) -
         parse_xml(data)
     assert fragment in caught.value.message
     assert caught.value.line >= 1 and caught.value.column >= 1
+
+
+@pytest.mark.parametrize(
+    ("data", "holds_none"),
+    [(b"", True), (b'<?xml version="1.0"?>\n<!-- later -->\n', True), (b"  \n", True),
+     (b"<launch>\n  <node/>\n", False)],
+)
+def test_a_file_without_any_element_is_told_from_a_root_left_open(
+        data: bytes, holds_none: bool) -> None:
+    """expat says "no element found" for both; only the first is an empty placeholder."""
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert caught.value.message.startswith("no element found")
+    assert caught.value.message.endswith(NO_ELEMENT_AT_ALL) is holds_none
 
 
 @pytest.mark.parametrize(

@@ -166,3 +166,18 @@ def test_a_parameter_file_listed_after_the_argument_overrides_it(tmp_path: Path)
     # The argument after the file: it wins, both nodes on simulated time.
     assert run(tmp_path, "o.launch.py", OVERRIDE.format(params="ekf, {'use_sim_time': sim}")) \
         == []
+
+
+def test_a_node_whose_parameters_switch_every_edge_off_sends_no_stamp(
+        tmp_path: Path) -> None:
+    """imu_filter_madgwick given publish_tf false sends no transform and looks none up: it
+    stamps its IMU messages with the input's stamps (imu_tools humble c8a27cd,
+    imu_filter_ros.cpp 398-415 publish only under publish_tf), so its wall clock reaches
+    no tf (samples8: three such findings judged false). With its default it sends
+    fixed_frame -> the IMU's frame at its own clock's time."""
+    text = ('<launch><node pkg="gazebo_ros" exec="spawn_entity.py" args="-topic x"/>\n'
+            '<node pkg="imu_filter_madgwick" exec="imu_filter_madgwick_node">'
+            '{}</node>\n</launch>\n')
+    assert run(tmp_path, "m.launch.xml", text.format("")) == [(RULE, 2)]
+    off = text.format('<param name="publish_tf" value="false"/>')
+    assert run(tmp_path, "m.launch.xml", off) == []

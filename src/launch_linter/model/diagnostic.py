@@ -6,6 +6,11 @@ from enum import Enum
 
 from launch_linter.model.record import OrderedRecord, Record, _set
 
+NO_ELEMENT_AT_ALL = "the file holds no element"
+"""What an XML reader's message adds when a file holds no element at all (empty, or only a
+prolog or comments), as against a document whose root is left open at its end: expat says
+"no element found" for both."""
+
 
 class Severity(str, Enum):
     ERROR = "error"

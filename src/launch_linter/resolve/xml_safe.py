@@ -19,6 +19,7 @@ from collections.abc import Collection, Iterator, Mapping
 from contextlib import contextmanager
 from xml.parsers import expat
 
+from launch_linter.model.diagnostic import NO_ELEMENT_AT_ALL
 from launch_linter.resolve import reads
 
 TYPE_CHECKING = False  # typing is not imported at run time: start-up (docs/performance.md)
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
     from typing import BinaryIO
 
 MAX_BYTES = 8 * 1024 * 1024
+_NO_ELEMENTS = expat.errors.codes[expat.errors.XML_ERROR_NO_ELEMENTS]
 MAX_DEPTH = 200
 MAX_ELEMENTS = 200_000
 MAX_TEXT = 1024 * 1024
@@ -411,6 +413,8 @@ def parse_xml(
             raise XmlError(f"the tag '{tag}' is not closed with '>' (expat stops at the "
                            f"next '<', line {exc.lineno}, column {exc.offset + 1}: {message})",
                            line, column, malformed=True) from None
+        if count == 0 and exc.code == _NO_ELEMENTS:
+            message = f"{message}: {NO_ELEMENT_AT_ALL}"
         raise XmlError(message, exc.lineno, exc.offset + 1, malformed=True) from None
     except RecursionError:
         raise XmlError("document too deeply nested") from None

@@ -8,8 +8,10 @@ Gazebo `gazebo_ros_joint_state_publisher` plugin of a spawned robot, or a driver
 knowledge base knows to publish joint states. Topics are compared after the namespaces
 and the remappings each one is given; publishers under exclusive conditions are not
 compared. It reports at joint_state_publisher, with the other publisher related. Info:
-no finding has been judged yet (none on 15 whole repositories, docs/evaluation/
-controller_tf_unrouted.md), so its level rests on the two programs' source alone.
+none on 15 whole repositories (docs/evaluation/controller_tf_unrouted.md); round 8, 90
+more: 3 findings, all true, in two repositories (two copies of one husky GPS tutorial
+file and Clearpath's husky_gazebo display launch; docs/evaluation/samples-round8.md): too
+few to raise it to a warning.
 
 ## Why is this bad?
 joint_state_publisher publishes every movable joint of the robot description on

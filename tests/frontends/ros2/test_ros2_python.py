@@ -620,3 +620,33 @@ def test_execute_process_ros2_run_in_a_shell(load: Load, cmd: str,
         + launch_file(f"    return LaunchDescription([ExecuteProcess({cmd})])\n").replace(
             HEADER, "", 1)}, "a.launch.py")
     assert [(t.parent, t.child) for t in tree.transforms] == expected
+
+
+NOT_UTF8 = (b"from launch import LaunchDescription\n"
+            b"from launch_ros.actions import Node\n"
+            b"def generate_launch_description():\n"
+            b"    # \xc6\xf4\xb6\xaf (GBK)\n"
+            b"    return LaunchDescription([Node(package='tf2_ros',\n"
+            b"        executable='static_transform_publisher',\n"
+            b"        arguments=['0', '0', '0', '0', '0', '0', %s, 'laser'])])\n")
+
+
+def test_bytes_python_compiles_are_read_as_python_reads_them(tmp_path: Path) -> None:
+    """launch compiles a Python launch file's bytes (SourceFileLoader): CPython accepts
+    bytes that are not UTF-8 inside a comment, and a declared coding (samples8:
+    guyuehome/originbot's camera_internal.launch.py, a GBK comment, was a parse_error)."""
+    options = LintOptions(package_paths=())
+    comment = tmp_path / "comment.launch.py"
+    comment.write_bytes(NOT_UTF8 % b"'base_link'")
+    declared = tmp_path / "declared.launch.py"
+    declared.write_bytes(b"# -*- coding: latin-1 -*-\n" + NOT_UTF8 % b"'caf\xe9'")
+    for path in (comment, declared):
+        result = lint_paths([str(path)], options)
+        assert [d.rule for d in result.diagnostics if d.rule == "parse_error"] == []
+        assert result.files[0].transforms == 1
+    # In a string without a declaration, Python refuses the bytes too.
+    literal = tmp_path / "literal.launch.py"
+    literal.write_bytes(NOT_UTF8 % b"'caf\xe9'")
+    found = lint_paths([str(literal)], options).diagnostics
+    assert [(d.rule, d.message) for d in found if d.rule == "parse_error"] == [
+        ("parse_error", "not UTF-8 text: invalid continuation byte")]

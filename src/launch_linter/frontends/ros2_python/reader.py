@@ -81,6 +81,24 @@ def _unclosed_bracket(source: str) -> tuple[int, int, str] | None:
     return None
 
 
+def _as_python_reads(data: bytes, path: str) -> tuple[str, ast.Module] | None:
+    """The text and tree of a file that is not UTF-8 throughout but that Python compiles:
+    ros2 launch runs ``SourceFileLoader``, which compiles the file's bytes, and CPython
+    decodes them by their coding declaration (UTF-8 without one) and does not check the
+    bytes of comments (3.8 to 3.12 alike: a GBK comment in guyuehome/originbot's
+    camera_internal.launch.py loads). None when Python refuses the bytes too."""
+    import io
+    import tokenize
+
+    try:
+        tree = ast.parse(data, filename=path)
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+        # Only comments can hold what the encoding does not decode: replaced, unread.
+        return data.decode(encoding, errors="replace"), tree
+    except (SyntaxError, ValueError, LookupError, RecursionError, MemoryError):
+        return None
+
+
 def read_python(path: str, data: bytes, budget: Budget | None = None,
                 environ: Mapping[str, str] | None = None,
                 installed: Callable[[], str | None] | None = None) -> FileRead:
@@ -100,8 +118,11 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         source = data.decode("utf-8-sig")
         tree = ast.parse(source, filename=path)
     except UnicodeDecodeError as exc:
-        message = f"not UTF-8 text: {exc.reason}"
-        return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
+        read = _as_python_reads(data, path)
+        if read is None:
+            message = f"not UTF-8 text: {exc.reason}"
+            return FileRead(FORMAT, None, problems=(Problem("parse_error", 1, 1, message),))
+        source, tree = read
     except SyntaxError as exc:
         line, column, why = _unclosed_bracket(source) or (
             exc.lineno or 1, (exc.offset or 0) or 1, exc.msg)
