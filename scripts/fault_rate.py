@@ -71,7 +71,11 @@ def _shown(path: str, folder: Path) -> str:
 
 
 def _lint(folder: Path, entry: str, case: dict[str, Any]) -> list[tuple[str, int, str, str]]:
-    options = LintOptions(package_paths=(), args=dict(case.get("args", {})),
+    # A case that holds packages (a package.xml) is linted as its workspace, the way a user
+    # lints a repository: its folder is the package path. Loose files (a trim that wrote
+    # package lookups as the file's folder) have no package to find.
+    packages = (str(folder),) if next(folder.rglob("package.xml"), None) else ()
+    options = LintOptions(package_paths=packages, args=dict(case.get("args", {})),
                           ros_distro=case.get("ros_distro"))
     result = lint_paths([str(folder / entry)], options)
     return [(_shown(d.path, folder), d.line, d.rule, d.severity.value)

@@ -72,7 +72,8 @@ def _run(rule: Rule, xml: str, heading: str = "", folder: Path | None = None) ->
     A module may name the file its example is (``EXAMPLE_PATH``, e.g. a ``.launch.py``),
     the distribution it targets (``EXAMPLE_DISTRO``) and the file the example includes
     (``EXAMPLE_INCLUDED``: the second block under ``heading``, written into ``folder``
-    beside the example) or the files of the package it is in (``EXAMPLE_FILES``: the
+    beside the example; a tuple of names: the blocks after the first, in order, and the
+    folder is then a package) or the files of the package it is in (``EXAMPLE_FILES``: the
     later blocks, one file each, the folder then a package path)."""
     module = MODULES[rule.id]
     path = getattr(module, "EXAMPLE_PATH", "example.launch")
@@ -81,8 +82,13 @@ def _run(rule: Rule, xml: str, heading: str = "", folder: Path | None = None) ->
     package_paths: tuple[str, ...] = ()
     if included is not None and folder is not None:
         blocks = XML_BLOCK.findall(_section(rule.doc, heading))
-        (folder / included).write_text(blocks[1], encoding="utf-8")
+        names = (included,) if isinstance(included, str) else included
+        for name, block in zip(names, blocks[1:]):
+            (folder / name).write_text(block, encoding="utf-8")
         path = str(folder / path)
+        if not isinstance(included, str):
+            # Several files written beside the example make its folder a package.
+            package_paths = (str(folder),)
     elif files is not None and folder is not None:
         # A package the example's launch file runs a node of: one file per later block.
         blocks = XML_BLOCK.findall(_section(rule.doc, heading))

@@ -95,3 +95,48 @@ def test_many_empty_defaults_stay_fast(tmp_path: Path) -> None:
     found = run(tmp_path, ROOT.format(given="{}"), inner)
     assert found == [("inner.launch.py", 13, "error")]
     assert time.process_time() - start < 30
+
+
+def test_an_absent_file_given_by_an_argument_default_is_reported_at_the_configuration(
+        tmp_path: Path) -> None:
+    # The wrong text is the argument's default; the node reads it where it names the
+    # LaunchConfiguration (the node related), as for an empty path.
+    inner = ("import os\n"
+             "from launch import LaunchDescription\n"
+             "from launch.actions import DeclareLaunchArgument\n"
+             "from launch.substitutions import LaunchConfiguration\n"
+             "from launch_ros.actions import Node\n"
+             "def generate_launch_description():\n"
+             "    return LaunchDescription([\n"
+             "        DeclareLaunchArgument('links_path', default_value=os.path.join(\n"
+             "            os.path.dirname(__file__), 'gone.yaml')),\n"
+             "        Node(package='p', executable='e',\n"
+             "             parameters=[\n"
+             "                 LaunchConfiguration('links_path')]),\n"
+             "    ])\n")
+    (tmp_path / "inner.launch.py").write_text(inner)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(tmp_path / "inner.launch.py")], options).diagnostics
+    assert (found.line, found.severity.value) == (12, "error")
+    assert [r.line for r in found.related] == [10]
+
+
+def test_a_configuration_shared_by_two_nodes_is_reported_at_each_node(tmp_path: Path
+                                                                      ) -> None:
+    inner = ("import os\n"
+             "from launch import LaunchDescription\n"
+             "from launch.actions import DeclareLaunchArgument\n"
+             "from launch.substitutions import LaunchConfiguration\n"
+             "from launch_ros.actions import Node\n"
+             "def generate_launch_description():\n"
+             "    params = LaunchConfiguration('links_path')\n"
+             "    return LaunchDescription([\n"
+             "        DeclareLaunchArgument('links_path', default_value=os.path.join(\n"
+             "            os.path.dirname(__file__), 'gone.yaml')),\n"
+             "        Node(package='p', executable='a', parameters=[params]),\n"
+             "        Node(package='p', executable='b', parameters=[params]),\n"
+             "    ])\n")
+    (tmp_path / "inner.launch.py").write_text(inner)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(tmp_path / "inner.launch.py")], options).diagnostics
+    assert [d.line for d in found] == [11, 12]

@@ -15,7 +15,7 @@ from launch_linter.frontends.ros1_attributes import ignored_attributes, message
 from launch_linter.frontends.ros1_checks import _bool_attribute
 from launch_linter.frontends.ros1_names import make_global_ns
 from launch_linter.frontends.ros1_root_args import declared_arg_names
-from launch_linter.frontends.ros1_unused_args import unused_args
+from launch_linter.frontends.ros1_unused_args import unused_arg_problems
 from launch_linter.model.budget import Budget, BudgetExceeded
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.included import through_include
@@ -37,12 +37,7 @@ from launch_linter.resolve.substitution import (
     to_bool,
 )
 from launch_linter.resolve.value import Hole, Value, resolved_text, text_of
-from launch_linter.resolve.xml_safe import (
-    Element,
-    XmlError,
-    parse_xml,
-    read_launch_bytes,
-)
+from launch_linter.resolve.xml_safe import Element, XmlError, parse_xml, read_launch_bytes
 from launch_linter.workspace.launch_checks import only_parse_checked
 from launch_linter.workspace.packages import PackageIndex
 
@@ -457,7 +452,7 @@ class Ros1Base:
             self.problems.append(Problem("parse_error", display, where.line, where.column, message))
             return None
         if first_read:
-            self._unused_args(display, launches[0], data)
+            self.problems.extend(unused_arg_problems(display, launches[0], data))
             self._ignored_attributes(display, launches[0])
         return launches[0]
 
@@ -471,34 +466,6 @@ class Ros1Base:
             self.problems.append(Problem("ros1_ignored_attribute", display, element.line,
                                          element.column, message(parent, element, name,
                                                                  mistaken)))
-
-    def _unused_args(self, display: str, launch: Element, data: bytes) -> None:
-        for arg in unused_args(launch, data):
-            if arg.frame_forgotten and arg.sibling is not None:
-                other, line, column = arg.sibling
-                message = (f"argument '{arg.name}' is declared, but nothing in this file "
-                           f"reads it: roslaunch accepts {arg.name}:=... and drops it "
-                           f"without a word, while line {line} hands '{other}' on under "
-                           f"its name; give '{arg.name}' on the same way "
-                           f"(value=\"$(arg {arg.name})\") or remove it")
-                # The related place marks the warning (ros1_unused_arg): a frame forgotten.
-                related: tuple[Location, ...] = (Location(display, line, column),)
-            elif arg.passed is None:
-                message = (f"argument '{arg.name}' is declared, but nothing in this file "
-                           f"reads it: roslaunch accepts {arg.name}:=... and drops it "
-                           f"without a word; read it or remove it")
-                related = ()
-            else:
-                message = (f"argument '{arg.name}' is declared, but nothing in this file "
-                           f"reads it: line {arg.passed[0]} gives '{arg.name}' another "
-                           f"value instead, so {arg.name}:=... given to this file is "
-                           f"dropped without a word; pass value=\"$(arg {arg.name})\" "
-                           f"there")
-                # The related place marks the warning (ros1_unused_arg): a frame dropped.
-                related = ((Location(display, arg.passed[0], arg.passed[1]),)
-                           if arg.frame_dropped else ())
-            self.problems.append(Problem("ros1_unused_arg", display, arg.line, arg.column,
-                                         message, related=related))
 
     def _launch_conditions(self, launch: Element, context: _Context) -> None:
         """roslaunch evaluates ``if``/``unless`` on ``<launch>`` and ignores the outcome;

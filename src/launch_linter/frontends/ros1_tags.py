@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import os
 
+from launch_linter.frontends.param_syntax import yaml_file_syntax_error, yaml_syntax_error
 from launch_linter.frontends.params import (
     parse_yaml,
     read_yaml_file_placed,
     ros1_params_keyed,
-    yaml_file_syntax_error,
-    yaml_syntax_error,
 )
 from launch_linter.frontends.robot.sources import (
     DESCRIPTION_PARAM,

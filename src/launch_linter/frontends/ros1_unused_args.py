@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import re
 
+from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.resolve.xml_safe import Element
 
 ARG_READ = re.compile(r"\$\(\s*arg\s+([^\s()]+)\s*\)")
@@ -205,3 +206,36 @@ def _forwards(element: Element, tag: str, parent: str, name: str) -> bool:
         return False
     match = ARG_READ.fullmatch(element.attrib.get("value", "").strip())
     return match is not None and match.group(1) == name.rsplit("/", 1)[-1]
+
+
+def unused_arg_problems(display: str, launch: Element, data: bytes) -> list[Problem]:
+    """The ``ros1_unused_arg`` problems of a root file's ``<launch>`` element (its bytes
+    ``data``), shown at ``display``."""
+    problems: list[Problem] = []
+    for arg in unused_args(launch, data):
+        if arg.frame_forgotten and arg.sibling is not None:
+            other, line, column = arg.sibling
+            message = (f"argument '{arg.name}' is declared, but nothing in this file "
+                       f"reads it: roslaunch accepts {arg.name}:=... and drops it "
+                       f"without a word, while line {line} hands '{other}' on under "
+                       f"its name; give '{arg.name}' on the same way "
+                       f"(value=\"$(arg {arg.name})\") or remove it")
+            # The related place marks the warning (ros1_unused_arg): a frame forgotten.
+            related: tuple[Location, ...] = (Location(display, line, column),)
+        elif arg.passed is None:
+            message = (f"argument '{arg.name}' is declared, but nothing in this file "
+                       f"reads it: roslaunch accepts {arg.name}:=... and drops it "
+                       f"without a word; read it or remove it")
+            related = ()
+        else:
+            message = (f"argument '{arg.name}' is declared, but nothing in this file "
+                       f"reads it: line {arg.passed[0]} gives '{arg.name}' another "
+                       f"value instead, so {arg.name}:=... given to this file is "
+                       f"dropped without a word; pass value=\"$(arg {arg.name})\" "
+                       f"there")
+            # The related place marks the warning (ros1_unused_arg): a frame dropped.
+            related = ((Location(display, arg.passed[0], arg.passed[1]),)
+                       if arg.frame_dropped else ())
+        problems.append(Problem("ros1_unused_arg", display, arg.line, arg.column, message,
+                                related=related))
+    return problems

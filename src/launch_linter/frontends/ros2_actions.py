@@ -31,6 +31,11 @@ def may_publish_static_tf(package: object, executable: object) -> bool:
     return not (isinstance(package, str) and package != STATIC_TF_PACKAGE)
 
 
+def is_literal(subs: Subs | None) -> bool:
+    """Written as text: no launch configuration or other substitution in it."""
+    return subs is not None and all(isinstance(sub, Text) for sub in subs)
+
+
 @dataclass(frozen=True)
 class Where:
     """Where an action is written: absolute path, 1-based line and column."""

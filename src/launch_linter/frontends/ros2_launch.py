@@ -67,13 +67,16 @@ from launch_linter.frontends.ros2_actions import (
     RunNode,
     Uses,
     Where,
+    is_literal,
 )
 from launch_linter.frontends.ros2_namespaces import MAX_REMAPPINGS, NamespaceWatch, tf_topic
 from launch_linter.frontends.ros2_param_paths import (
     configurations_read,
     empty_defaults,
+    given_at,
     reads_configuration,
 )
+from launch_linter.frontends.ros2_param_refusals import ParamFileChecks
 from launch_linter.frontends.ros2_run import (
     MAX_ACTIONS_PER_TREE,
     MAX_FILES_PER_TREE,
@@ -101,18 +104,13 @@ from launch_linter.model.launch import (
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import DECODED_FIELDS, ArgForm, Field
-from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, parse, written
 from launch_linter.resolve.value import Hole, Value, holes, is_resolved, resolved_text, text_of
 
 MANY_NODE_PACKAGES = ("controller_manager", "rclcpp_components")
 """Packages whose processes run other nodes that take the same parameter files under their
 own names (a controller manager's controllers, a container's components): a file none of
 whose keys names the process's own node still reaches them."""
-
-
-def _literal(subs: Subs | None) -> bool:
-    """Written as text: no launch configuration or other substitution in it."""
-    return subs is not None and all(isinstance(sub, Text) for sub in subs)
 
 
 class _NodeParams(NamedTuple):
@@ -153,6 +151,7 @@ class Ros2Loader(Ros2Runner):
         self._empty_defaults: dict[str, dict[str, Where]] = {}
         """The launch arguments each file read declares with an empty default."""
         self.spawned: tuple[str, ...] | None = ()
+        self._param_files = ParamFileChecks(options.packages)
 
     def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
               ) -> LaunchTree:
@@ -267,13 +266,16 @@ class Ros2Loader(Ros2Runner):
                 (self._word(a, scope, frame, where), self._word(b, scope, frame, where))
                 for a, b in action.remappings[:MAX_REMAPPINGS]))
         self.nodes.append(node)
+        if frame.condition.always and self._judging_files:
+            self.problems.extend(self._param_files.problems(node, section, given.placed, (
+                lambda text: resolved_text(self._resolve(parse(text), scope, frame, where)))))
         if known_namespace is not None:
             self._watch_namespace(node, action, scope, frame)
         checked = ((name is not None or bool(defaults)) and not action.may_rename
                    and package not in MANY_NODE_PACKAGES
                    and (package, executable) not in EMBEDDED_COSTMAPS)
         self._unmatched(node, executable or "", given, checked,
-                        _literal(action.name) or bool(defaults), defaults)
+                        is_literal(action.name) or bool(defaults), defaults)
         documents = given.documents
         costmap = embedded_costmap(node, given.process, scope.parameters)
         if costmap is not None:
@@ -416,13 +418,13 @@ class Ros2Loader(Ros2Runner):
                     continue
                 document, why, keys = read_yaml_file_placed(path)
                 if why is not None:
-                    self._absent_param_file(path, frame, where)
+                    self._absent_param_file(path, frame, where, group.path)
                     unread.append(why)
                     continue
                 documents.append(document)
                 process.append(document)
                 shown = self._display(path)
-                placed.append(PlacedDocument(document, shown, keys))
+                placed.append(PlacedDocument(document, shown, keys, group.substitutions))
                 files.append(shown)
                 from_file, missed = ros2_file_params_and_misses(document, name, namespace)
                 others = (None if namespace is None
@@ -489,19 +491,21 @@ class Ros2Loader(Ros2Runner):
                 related=(node, *related)))
         return f"parameter file path {written(path)!r} is empty"
 
-    def _absent_param_file(self, path: str, frame: _Frame, where: Where) -> None:
-        """Report a parameter file that is provably absent: under a package found, no
-        install rule provides it, or under the linted tree, it is not there."""
+    def _absent_param_file(self, path: str, frame: _Frame, where: Where, subs: Subs) -> None:
+        """Report a provably absent parameter file (where the node's call reads it)."""
         if not os.path.isabs(path) or not frame.condition.always or not self._judging_files:
             return
         located = self.options.packages.locate(path, os.path.dirname(frame.filename), 2)
         if not located.absent:
             return
+        node = Location(self._display(frame.filename), where.line, where.column)
         self.problems.append(Problem(
-            "ros2_param_file_missing", self._display(frame.filename), where.line, where.column,
+            "ros2_param_file_missing", node.path,
+            *((at := given_at(subs, where)) or (where.line, where.column)),
             f"parameter file {self._quoted(path)!r} does not exist ({located.reason}): "
             f"launch_ros leaves a path that is not a file out of the node's parameters "
-            f"('Parameter file path is not a file'), so the node starts without them"))
+            f"('Parameter file path is not a file'), so the node starts without them",
+            related=(node,) if at else ()))
 
     def _ros2_description(self, subs: Subs, scope: _Scope, frame: _Frame, where: Where,
                           node: str | None) -> None:
@@ -554,7 +558,7 @@ class Ros2Loader(Ros2Runner):
                 namespace=None if pending else namespace, ros=2, param_lines=given.lines,
                 included_at=here.sites))
             self._unmatched(self.nodes[-1], plugin_text, given, name is not None,
-                            _literal(component.name))
+                            is_literal(component.name))
         if not _is_static_tf(resolved_text(package), resolved_text(plugin), STATIC_TF_PLUGIN):
             return
         params: dict[str, ComponentParam] = {}

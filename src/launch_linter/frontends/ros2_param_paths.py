@@ -24,6 +24,14 @@ MAX_WALKED = 20_000
 """Actions and substitutions looked at per walk (the input decides how many there are)."""
 
 
+def given_at(subs: Subs, where: Where) -> tuple[int, int] | None:
+    """Where a node's own call (written at ``where``) reads the path ``subs`` from a launch
+    argument: a ``LaunchConfiguration`` written at or after the call's start; None when
+    none is (a shared variable's place would stand for every node that reads it)."""
+    start = (where.line, where.column)
+    return next((c.at for c in configurations_read(subs) if c.at and c.at >= start), None)
+
+
 def configurations_read(subs: Subs) -> list[Call]:
     """The ``LaunchConfiguration('name')`` / ``$(var name)`` calls in ``subs`` whose name
     is text, nested ones included, in order; bounded."""

@@ -87,6 +87,8 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("controller_tf_unrouted", Category.TF),
     ("joint_states_two_publishers", Category.TF),
     ("file_never_launched", Category.LAUNCH),
+    ("ros2_param_empty_list", Category.LAUNCH),
+    ("ros2_param_file_refused", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

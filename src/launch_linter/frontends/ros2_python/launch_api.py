@@ -35,6 +35,7 @@ from launch_linter.frontends.ros2_actions import (
 )
 from launch_linter.frontends.ros2_python import moveit, xacro_call
 from launch_linter.frontends.ros2_python.node_arguments import NodeArguments
+from launch_linter.frontends.ros2_python.signatures import is_action_class, positional_refusal
 from launch_linter.frontends.ros2_python.values import (
     _LEGACY_NODE_KEYWORDS,
     LAUNCH_ROOTS,
@@ -46,6 +47,7 @@ from launch_linter.frontends.ros2_python.values import (
     LaunchDescriptionVal,
     LaunchObject,
     ModuleVal,
+    ParamFileVal,
     SourceVal,
     SubsVal,
     Unknown,
@@ -57,6 +59,10 @@ from launch_linter.frontends.ros2_python.values import (
 )
 from launch_linter.resolve.ros2_substitution import Call, Opaque, Subs, Text, literal, written
 from launch_linter.resolve.value import Value
+
+_BUILT_ACTIONS = (DeclareArg, SetVar, SetEnv, PushNamespace, Group, Include, RunNode,
+                  LoadComponents, Deferred)
+"""What the modelled launch action classes build (never an event)."""
 
 # -- the interpreter -----------------------------------------------------------------------
 
@@ -106,6 +112,7 @@ class Interpreter(NodeArguments):
         if name == "Parameter" and ".substitutions" in dotted:
             # launch_ros.substitutions.Parameter is $(param); descriptions.Parameter is not.
             return _substitution("param", 2)(self, args, kwargs, node)
+        self.refused_call(dotted, args, kwargs, node)
         self.legacy_keywords(name, kwargs, node)
         missing = missing_keywords(name, kwargs)
         if missing:  # ros2_missing_keyword decides with the target distribution
@@ -115,16 +122,39 @@ class Interpreter(NodeArguments):
                          + (f" ({', '.join(legacy)}= removed after Foxy)" if legacy else ""))
         handler = HANDLERS.get(name)
         if handler is None:
-            if name in ("ParameterValue", "ParameterFile") and args:
-                # A ParameterFile is its path, which a node's parameters list reads.
+            path = self.arg(args, kwargs, 0, "param_file")
+            if name == "ParameterFile" and path is not None:
+                # A node's parameters list reads its path; an unknown allow_substs may
+                # substitute (launch_ros/parameter_descriptions.py ParameterFile).
+                return ParamFileVal(path, kwargs.get("allow_substs", False) is not False)
+            if name == "ParameterValue" and args:
                 return args[0]
-            return self.launch_object(name, args, kwargs, node)
+            return self.launch_object(name, args, kwargs, node, dotted)
         result: object = handler(self, args, kwargs, node)
         return result
 
+    def refused_call(self, dotted: str, args: list[object], kwargs: dict[str, object],
+                     node: ast.Call) -> None:
+        """A call of a launch class that raises while launch loads the file (see
+        :mod:`.signatures`): too many positional arguments, an action given as an event."""
+        refusal = positional_refusal(dotted, len(args))
+        if refusal is not None:
+            self.problem("roslaunch_error", node, refusal)
+        event = kwargs.get("event")
+        if dotted.rsplit(".", 1)[-1] == "EmitEvent" and is_action_class(dotted) and (
+            (isinstance(event, LaunchObject) and is_action_class(event.dotted))
+            or isinstance(event, _BUILT_ACTIONS)
+        ):
+            what = event.dotted if isinstance(event, LaunchObject) else "a launch action"
+            self.problem("roslaunch_error", node, (
+                f"EmitEvent(event=...) is given {what}, an action, not an event: launch "
+                f"raises RuntimeError 'EmitEvent() expected an event instance' while it loads "
+                f"the file (launch.actions.EmitEvent.__init__, Foxy to Rolling; the event "
+                f"classes are in launch.events and launch_ros.events)"))
+
     def launch_object(self, name: str, args: list[object], kwargs: dict[str, object],
-                      node: ast.Call, controls: tuple[Subs, ...] | None = None
-                      ) -> LaunchObject:
+                      node: ast.Call, dotted: str = "",
+                      controls: tuple[Subs, ...] | None = None) -> LaunchObject:
         """A launch class the linter does not model (``SetParameter``, ``LogInfo``, an
         ``ExecuteProcess``): as an action it performs the substitutions it was given."""
         uses = performed([*args, *(v for k, v in kwargs.items() if k != "condition")])
@@ -135,7 +165,7 @@ class Interpreter(NodeArguments):
                 parameter = (self.subs(key, node, "parameter name"),
                              self.subs(_parameter_text(value), node, "parameter value"))
         return LaunchObject(name, self.where(node), self.condition(kwargs, node), uses,
-                            parameter, controls)
+                            parameter, controls=controls, dotted=dotted)
 
     def launch_LaunchDescription(self, args: list[object], kwargs: dict[str, object],
                                  node: ast.Call) -> object:
@@ -212,7 +242,8 @@ class Interpreter(NodeArguments):
             items = [literal(word) for word in words]
         run = ros2_run(items)
         if run is None:
-            return self.launch_object("ExecuteProcess", args, kwargs, node, ros2_control(items))
+            return self.launch_object("ExecuteProcess", args, kwargs, node,
+                                      controls=ros2_control(items))
         package, executable, arguments = run
         return RunNode(
             where=self.where(node), condition=self.condition(kwargs, node), package=package,

@@ -12,6 +12,7 @@ from launch_linter.frontends.ros2_python.values import (
     LEGACY_KEYWORDS,
     LazyStr,
     LinedDict,
+    ParamFileVal,
     SubsVal,
     Unknown,
 )
@@ -74,6 +75,9 @@ class NodeArguments(Calls):
                 out.append(Params(tuple(items), tuple(places)))
             elif isinstance(entry, (str, SubsVal, LazyStr)):
                 out.append(ParamsFile(self.subs(entry, node, "parameter file")))
+            elif isinstance(entry, ParamFileVal):
+                out.append(ParamsFile(self.subs(entry.path, node, "parameter file"),
+                                      entry.substituted))
             else:
                 reason = entry.describe() if isinstance(entry, Unknown) else (
                     f"line {node.lineno}: parameters from a file")

@@ -208,6 +208,15 @@ class ComponentVal:
 
 
 @dataclass(frozen=True)
+class ParamFileVal:
+    """``launch_ros.parameter_descriptions.ParameterFile(param_file, *, allow_substs)``:
+    ``substituted`` unless ``allow_substs`` is left out or written False."""
+
+    path: object
+    substituted: bool
+
+
+@dataclass(frozen=True)
 class ModuleVal:
     """A name imported from a module: ``launch_ros.actions.Node``, ``os.path``."""
 
@@ -238,6 +247,8 @@ class LaunchObject:
     """``SetParameter``'s name and value."""
     controls: tuple[Subs, ...] | None = None
     """``ExecuteProcess`` of ``ros2 control``: the words after ``control``."""
+    dotted: str = ""
+    """The class as imported (``launch.actions.Shutdown``): an action or an event."""
 
 
 @dataclass(frozen=True)
