@@ -1,13 +1,14 @@
 from __future__ import annotations
 
 import time
+from pathlib import Path
 from typing import Callable, List, Tuple
 
 from _urdf import joint, link, lint_urdf, robot
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from launch_linter import LintOptions, lint_text
+from launch_linter import LintOptions, lint_paths, lint_text
 from launch_linter.model import Diagnostic, Location
 
 Lint = Callable[..., List[Tuple[str, int]]]
@@ -264,3 +265,30 @@ def test_a_long_chain_above_each_parent_is_followed_a_bounded_way(
     (found,) = lint_diagnostics(xml, RULE)
     assert time.process_time() - started < 60
     assert found.severity.value == "info"  # b is a at the same place: same pose
+
+
+def test_joints_of_one_description_placing_a_link_at_one_pose_are_a_warning(
+        tmp_path: Path) -> None:
+    """staubli_experimental#37: tool0 under link_6 and under flange (itself at identity
+    under link_6): tf agrees, but a URDF link has one parent joint; a static transform
+    repeating a pose stays info (the test above)."""
+    urdf = tmp_path / "robot.urdf"
+    urdf.write_text("""<robot name="r">
+  <link name="link_6"/><link name="flange"/><link name="tool0"/>
+  <joint name="link_6-flange" type="fixed"><parent link="link_6"/><child link="flange"/>
+    <origin xyz="0 0 0" rpy="0 0 0"/></joint>
+  <joint name="joint_6-tool0" type="fixed"><parent link="link_6"/><child link="tool0"/>
+    <origin xyz="0 0 0" rpy="0 0 0"/></joint>
+  <joint name="flange-tool0" type="fixed"><parent link="flange"/><child link="tool0"/>
+    <origin xyz="0 0 0" rpy="0 0 0"/></joint>
+</robot>
+""", encoding="utf-8")
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    (found,) = lint_paths([str(urdf)], options).diagnostics
+    assert found.severity.value == "warning" and "same pose" in found.message
+    moved = urdf.read_text(encoding="utf-8").replace(
+        '<child link="tool0"/>\n    <origin xyz="0 0 0" rpy="0 0 0"/></joint>\n</robot>',
+        '<child link="tool0"/>\n    <origin xyz="0 0 0.1" rpy="0 0 0"/></joint>\n</robot>')
+    urdf.write_text(moved, encoding="utf-8")
+    (wrong,) = lint_paths([str(urdf)], options).diagnostics
+    assert wrong.severity.value == "error"

@@ -9,10 +9,11 @@ condition the linter cannot decide, the message says the frame *may* get two par
 transforms under mutually exclusive conditions are never compared. When every parent places
 the frame at the same pose relative to a frame above them (composed through fixed edges of
 known values, each frame on the way with one parent; within 1 mm and about 1 mrad), the
-finding is info: a redundant publisher, not a misplaced frame. URDF joints a xacro
-macro made are shown at the macro's call; when one call made every parent's joint, every
-call of the macro has the fault, and the finding is at the `<child>` the macro writes,
-with the call and the other parents' `<child>` elements as related places.
+finding is info: a redundant publisher, not a misplaced frame (a warning when every parent
+is a joint of one description: the frame is right, the description is not a tree). URDF
+joints a xacro macro made are shown at the macro's call; when one call made every parent's
+joint, every call of the macro has the fault, and the finding is at the `<child>` the
+macro writes, with the call and the other parents' `<child>` elements as related places.
 
 ## Why is this bad?
 tf frames form a tree: each frame has exactly one parent (REP 105). With two static
@@ -90,6 +91,12 @@ SAME_POSE_LEVEL = Severity.INFO
 static transform received replaces the other: geometry2 noetic-devel 6df9e94
 tf2/src/static_cache.cpp 48-52, one cache per child frame in buffer_core.cpp
 ``setTransform``), and either gives every lookup the same answer."""
+
+SAME_POSE_JOINTS_LEVEL = Severity.WARNING
+"""Every parent is a joint of one description and places the link at one pose: tf is
+right, but the description is not the tree URDF requires (a link has one parent joint:
+urdfdom's ``initTree`` sets the link's parent once per joint, the last one wins, and
+KDL and MoveIt walk one of them), a defect its maintainers fix."""
 SAME_DISTANCE = 1e-3
 """Metres."""
 SAME_ROTATION = 1e-7
@@ -212,7 +219,8 @@ def _found(edges: tuple[Edge, ...], context: RuleContext, robots_apart: bool,
                f"publisher, not a misplaced frame"),
             tuple(t for _, t in rivals),
         )
-        yield _in_macro(found if common is None else replace(found, severity=SAME_POSE_LEVEL),
+        level = SAME_POSE_JOINTS_LEVEL if joints else SAME_POSE_LEVEL
+        yield _in_macro(found if common is None else replace(found, severity=level),
                         edge, rivals, count)
 
 
