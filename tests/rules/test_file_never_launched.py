@@ -147,3 +147,18 @@ def test_twenty_thousand_cmake_commands_read_once(tmp_path: Path) -> None:
     started = time.process_time()
     assert levels(root) == [("file_never_launched", 1, "info"), ("ros2_schema", 2, "info")]
     assert time.process_time() - started < 60
+
+
+def test_a_package_without_its_build_file_proves_nothing_uninstalled(tmp_path: Path) -> None:
+    """A partial copy (package.xml and the launch folder, no CMakeLists.txt or setup.py):
+    its install rules were never read, so its refusals stay errors (autoware_universe
+    #10072's trimmed package)."""
+    (tmp_path / "package.xml").write_text(MANIFEST)
+    (tmp_path / "launch").mkdir()
+    root = tmp_path / "launch" / "drive.launch.xml"
+    root.write_text(ROS2_MISSPELT)
+    found = levels(root)
+    assert "file_never_launched" not in {rule for rule, _, _ in found}
+    assert "error" in {level for _, _, level in found}
+    (tmp_path / "CMakeLists.txt").write_text("project(drive)\n")
+    assert ("file_never_launched", 1, "info") in levels(root)

@@ -28,6 +28,8 @@ if typing.TYPE_CHECKING:
 
 MAX_DIRECTORIES = 50_000
 MAX_WALK_UP = 32
+BUILD_FILES = ("CMakeLists.txt", "setup.py", "setup.cfg")
+"""The files that hold a ROS 2 package's install rules (ament_cmake, ament_python)."""
 MAX_MANIFEST_BYTES = 1024 * 1024
 MAX_PREFIX_ENTRIES = 20_000
 
@@ -198,7 +200,12 @@ class PackageIndex:
         relative = os.path.relpath(path, owner[1]).replace(os.sep, "/")
         if layout.installed_as(relative):
             return True
-        return None if layout.reasons else False
+        # No build file beside the manifest: its rules were never read (a partial copy),
+        # which proves nothing about what the package installs.
+        if layout.reasons or not any(os.path.lexists(os.path.join(owner[1], name))
+                                     for name in BUILD_FILES):
+            return None
+        return False
 
     def _owner(self, path: str) -> tuple[str, str] | None:
         best: tuple[str, str] | None = None
