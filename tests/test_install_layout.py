@@ -375,3 +375,25 @@ def test_a_package_found_twice_in_the_roots_proves_nothing_absent(tmp_path: Path
     assert "found in 2 places" in unknown.reason
     alone = PackageIndex([str(tmp_path / "Fork")]).locate(str(fork / "params" / "GS2.yaml"))
     assert alone.path is None and alone.absent
+
+
+def test_an_escaped_quote_in_an_unquoted_argument_opens_no_quoted_one() -> None:
+    """CMake's unquoted argument takes ``\\"`` as an escape (point_lio's
+    ``add_definitions(-DROOT_DIR=\\"${CMAKE_CURRENT_SOURCE_DIR}/\\")``): read as the start of
+    a quoted argument, it swallowed every later command, and the package seemed to install
+    nothing."""
+    text = ('add_definitions(-DROOT_DIR=\\"${CMAKE_CURRENT_SOURCE_DIR}/\\")\n'
+            "install(TARGETS mapping DESTINATION lib/${PROJECT_NAME})\n")
+    found = commands(text)
+    assert [name for name, _, _ in found] == ["add_definitions", "install"]
+    assert [a.text for a in found[1][1]] == ["TARGETS", "mapping", "DESTINATION",
+                                              "lib/${PROJECT_NAME}"]
+    # A backslash at the very end of the text is a token too (nothing left unmatched).
+    assert [name for name, _, _ in commands("set(a b\\")] == ["set"]
+
+
+def test_twenty_thousand_escapes_in_one_argument_are_read_in_linear_time() -> None:
+    started = time.process_time()
+    found = commands("add_definitions(" + '-DA=\\"x\\"' * 20_000 + ")\ninstall(FILES a)\n")
+    assert [name for name, _, _ in found] == ["add_definitions", "install"]
+    assert time.process_time() - started < 60

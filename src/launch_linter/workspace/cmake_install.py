@@ -32,7 +32,10 @@ MAX_EXPANSION_DEPTH = 8
 MAX_VALUE = 64 * 1024
 
 _NEXT = re.compile(r"#|([A-Za-z_][A-Za-z0-9_]*)[ \t]*\(")
-_TOKEN = re.compile(r'[ \t\r\n]+|#|\(|\)|"(?:[^"\\]|\\.)*"?|\[=*\[|\[|[^ \t\r\n()#"\[]+')
+# An unquoted argument may hold escapes (``-DROOT=\"${DIR}\"``): a backslash takes the
+# next character, so an escaped quote never opens a quoted argument.
+_TOKEN = re.compile(r'[ \t\r\n]+|#|\(|\)|"(?:[^"\\]|\\.)*"?|\[=*\[|\[|'
+                    r'(?:[^ \t\r\n()#"\\\[]|\\[\s\S]?)+')
 _VARIABLE = re.compile(r"\$\{([A-Za-z0-9_./+-]*)\}")
 _BRACKET_OPEN = re.compile(r"\[(=*)\[")
 _BODY_OPENERS = {"function": "endfunction", "macro": "endmacro", "foreach": "endforeach",
