@@ -56,6 +56,20 @@ def finding_at(robot: RobotModel, element: RobotElement, message: str,
                    severity=level(robot))
 
 
+def written_place(element: RobotElement, seen: set[tuple[str, int, int]]
+                  ) -> tuple[tuple[str, int, int], tuple[Location, ...]] | None:
+    """Where to show ``element``: where a xacro macro wrote it, the call as related, or
+    where it stands; None when that place was shown already (each call of a macro writes
+    the same element again)."""
+    place = element.defined or (element.path, element.line, element.column)
+    if place in seen:
+        return None
+    seen.add(place)
+    related = (() if element.defined is None
+               else (Location(element.path, element.line, element.column),))
+    return place, related
+
+
 def close_names(name: str, known: list[str]) -> list[str]:
     """Up to three names of ``known`` close to ``name`` (a likely misspelling)."""
     # Imported here: difflib is needed only for a description with a name it lacks.

@@ -62,10 +62,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.model.robot import RobotModel
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._robot import close_names, defined_phrase, judged, robots_of
+from launch_linter.rules._robot import close_names, defined_phrase, judged, robots_of, written_place
 
 ID = "urdf_mimic_unknown"
 CATEGORY = Category.TF
@@ -104,15 +104,12 @@ def check(context: RuleContext) -> Iterator[Finding]:
             if (element.kind != "mimic" or element.name is None or element.name in defined
                     or not element.condition.always):
                 continue
-            # A macro's <mimic> is shown where it is written, the call as related.
-            place = element.defined or (element.path, element.line, element.column)
-            if place in seen:
+            shown = written_place(element, seen)
+            if shown is None:
                 continue
-            seen.add(place)
+            place, related = shown
             close = close_names(element.name, joints) if suggested < MAX_SUGGESTED else []
             suggested += 1
-            related = (() if element.defined is None
-                       else (Location(element.path, element.line, element.column),))
             yield Finding(
                 place[0], place[1], place[2],
                 f"joint '{owner}' mimics joint '{element.name}', which the description does "

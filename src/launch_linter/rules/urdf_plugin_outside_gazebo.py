@@ -43,9 +43,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._robot import judged, robots_of
+from launch_linter.rules._robot import judged, robots_of, written_place
 
 ID = "urdf_plugin_outside_gazebo"
 CATEGORY = Category.TF
@@ -61,13 +61,10 @@ def check(context: RuleContext) -> Iterator[Finding]:
         for element in robot.elements:
             if element.kind != "outside_gazebo" or not element.condition.always:
                 continue
-            # A macro's element is shown where it is written, the call as related.
-            place = element.defined or (element.path, element.line, element.column)
-            if place in seen:
+            shown = written_place(element, seen)
+            if shown is None:
                 continue
-            seen.add(place)
-            related = (() if element.defined is None
-                       else (Location(element.path, element.line, element.column),))
+            place, related = shown
             yield Finding(
                 place[0], place[1], place[2],
                 f"{element.name} is written straight under <robot>, outside any <gazebo> "

@@ -47,9 +47,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Location, Severity
+from launch_linter.model.diagnostic import Category, Severity
 from launch_linter.rules._api import Finding, RuleContext
-from launch_linter.rules._robot import robots_of
+from launch_linter.rules._robot import robots_of, written_place
 
 ID = "urdf_repeated_origin"
 CATEGORY = Category.TF
@@ -63,13 +63,10 @@ def check(context: RuleContext) -> Iterator[Finding]:
         for element in robot.elements:
             if element.kind != "origin":
                 continue
-            # A macro's <origin> is shown where it is written, the call as related.
-            place = element.defined or (element.path, element.line, element.column)
-            if place in seen:
+            shown = written_place(element, seen)
+            if shown is None:
                 continue
-            seen.add(place)
-            related = (() if element.defined is None
-                       else (Location(element.path, element.line, element.column),))
+            place, related = shown
             yield Finding(
                 place[0], place[1], place[2],
                 f"a second <origin> in the {element.name}: urdfdom reads the first "
