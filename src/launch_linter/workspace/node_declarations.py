@@ -28,7 +28,6 @@ import re
 
 from launch_linter.resolve.xml_safe import read_file_within
 from launch_linter.workspace.cmake_install import commands
-from launch_linter.workspace.executables import console_script
 
 MAX_FILE_BYTES = 2 * 1024 * 1024
 """Most bytes read of one source file or install-rules file."""
@@ -137,6 +136,10 @@ def _cmake_sources(text: str, root: str, executable: str) -> list[str] | None:
 def _console_script(data: bytes, executable: str) -> str | None:
     """The module of ``executable``'s ``console_scripts`` entry in a ``setup.py`` written
     as literals (parsed, never run); None when not found or not literal."""
+    # Imported here: executables.py (with the setup.py evaluator) costs start-up time
+    # that only an ament_python node needs.
+    from launch_linter.workspace.executables import console_script
+
     try:
         tree = ast.parse(data)
     except (SyntaxError, ValueError):
