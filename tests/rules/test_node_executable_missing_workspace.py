@@ -7,8 +7,11 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from hypothesis import given
+from hypothesis import strategies as st
+
 from launch_linter.engine import LintOptions, lint_paths
-from launch_linter.workspace.executables import read_executables
+from launch_linter.workspace.executables import console_script, read_executables
 
 RULE = "node_executable_missing"
 MANIFEST = """<package format="3"><name>{name}</name>
@@ -167,3 +170,17 @@ def test_twenty_thousand_console_scripts(tmp_path: Path) -> None:
     read = read_executables(str(source / "pydrive"), "pydrive")
     assert time.process_time() - started < 60
     assert read is not None and len(read.names) == 19_990
+
+
+_WORD = st.text(st.characters(blacklist_characters="=#\n\r"), min_size=1).filter(
+    lambda text: text.strip() != "")
+
+
+@given(_WORD, _WORD, st.sampled_from(["=", " = ", "= "]))
+def test_a_console_script_entry_is_read_as_its_name_and_target(
+        name: str, target: str, equals: str) -> None:
+    """One reading of `name = module:function`, shared by executables.py (the name
+    installed) and node_declarations.py (the module holding the node)."""
+    assert console_script(name + equals + target) == (name.strip(), target.strip())
+    assert console_script(" # " + name + equals + target) is None
+    assert console_script("  ") is None

@@ -276,8 +276,20 @@ def _entry_points(reading: _Reading, evaluate: object, node: ast.expr) -> None:
                 reading.unknown("setup.py: a console_scripts entry that is not text")
             else:
                 for line in entry.splitlines():
-                    if line.strip() and not line.strip().startswith("#"):
-                        reading.add(line.partition("=")[0].strip())
+                    entry = console_script(line)
+                    if entry is not None:
+                        reading.add(entry[0])
+
+
+def console_script(line: str) -> tuple[str, str] | None:
+    """The (name, ``module:function`` target) of one ``console_scripts`` entry
+    ``name = module:function``, stripped; None for a blank line or a comment, which
+    setuptools skips. The one reading of an entry, shared with
+    :mod:`.node_declarations` (which follows the target to the node's source)."""
+    if not line.strip() or line.strip().startswith("#"):
+        return None
+    name, _, target = line.partition("=")
+    return name.strip(), target.strip()
 
 
 def _setup_cfg(reading: _Reading) -> None:
@@ -298,10 +310,11 @@ def _setup_cfg(reading: _Reading) -> None:
         reading.unknown("setup.cfg does not install scripts to lib/" + reading.package)
     console = parser.get("options.entry_points", "console_scripts", fallback="")
     for line in console.splitlines():
-        if "=" in line:
-            reading.add(line.partition("=")[0].strip())
+        entry = console_script(line)
+        if entry is not None and "=" in line:  # setup.cfg: only `name = target` lines
+            reading.add(entry[0])
     for script in parser.get("options", "scripts", fallback="").replace(",", " ").split():
         reading.add(posixpath.basename(script))
 
 
-__all__ = ["Executables", "read_executables"]
+__all__ = ["Executables", "console_script", "read_executables"]

@@ -26,7 +26,7 @@ import ast
 import os
 import re
 
-from launch_linter.resolve.xml_safe import read_regular_file
+from launch_linter.resolve.xml_safe import read_file_within
 from launch_linter.workspace.cmake_install import commands
 
 MAX_FILE_BYTES = 2 * 1024 * 1024
@@ -64,11 +64,11 @@ def declared_parameters(root: str, executable: str) -> tuple[tuple[str, ...], st
 
 
 def _read(path: str) -> bytes | None:
+    """The whole file, or None: a declaration in a part left unread would be missed."""
     try:
-        data = read_regular_file(path, MAX_FILE_BYTES + 1)
-    except (OSError, ValueError):
+        return read_file_within(path, MAX_FILE_BYTES)
+    except (OSError, ValueError):  # FileTooLarge and NotRegularFile included
         return None
-    return None if len(data) > MAX_FILE_BYTES else data
 
 
 def _sources(root: str, executable: str) -> tuple[list[str], bool] | None:
@@ -136,6 +136,10 @@ def _cmake_sources(text: str, root: str, executable: str) -> list[str] | None:
 def _console_script(data: bytes, executable: str) -> str | None:
     """The module of ``executable``'s ``console_scripts`` entry in a ``setup.py`` written
     as literals (parsed, never run); None when not found or not literal."""
+    # Imported here: executables.py (with the setup.py evaluator) costs start-up time
+    # that only an ament_python node needs.
+    from launch_linter.workspace.executables import console_script
+
     try:
         tree = ast.parse(data)
     except (SyntaxError, ValueError):
@@ -151,9 +155,9 @@ def _console_script(data: bytes, executable: str) -> str | None:
             for item in value.elts:
                 if not (isinstance(item, ast.Constant) and isinstance(item.value, str)):
                     return None
-                name, _, target = item.value.partition("=")
-                if name.strip() == executable:
-                    module = target.strip().partition(":")[0].strip()
+                script = console_script(item.value)
+                if script is not None and script[0] == executable:
+                    module = script[1].partition(":")[0].strip()
                     return module or None
     return None
 
