@@ -366,14 +366,14 @@ def _package_name(directory: str, files: list[str]) -> str | None:
             # the results cache that it stays unchanged, its content can.)
             if len(_MANIFEST_NAMES) >= MAX_REMEMBERED_MANIFESTS:
                 _MANIFEST_NAMES.clear()
-            _MANIFEST_NAMES[key] = _manifest_name(path)
+            _MANIFEST_NAMES[key] = manifest_name(path)
         else:
             reads.note_status(path, info)  # the name read before, from this very file
         return _MANIFEST_NAMES[key]
     return os.path.basename(directory)
 
 
-def _manifest_name(path: str) -> str | None:
+def manifest_name(path: str) -> str | None:
     """The package name a ``package.xml`` declares (None for a metapackage or none)."""
     try:
         data = read_regular_file(path, MAX_MANIFEST_BYTES)
@@ -389,11 +389,6 @@ def _manifest_name(path: str) -> str | None:
         ):
             return None
     return name
-
-
-def manifest_name(path: str) -> str | None:
-    """The package name the ``package.xml`` at ``path`` declares (None for none)."""
-    return _manifest_name(path)
 
 
 def default_package_roots(launch_file: str) -> list[str]:
