@@ -9,8 +9,8 @@ both, a manifest that cannot be read) is unknown: None.
 from __future__ import annotations
 
 from launch_linter.resolve.xml_safe import XmlError, parse_xml, read_regular_file
+from launch_linter.workspace.packages import MAX_MANIFEST_BYTES
 
-MAX_MANIFEST_BYTES = 1024 * 1024
 RCLCPP = "rclcpp"
 _DEPENDENCIES = ("depend", "build_depend", "exec_depend", "build_export_depend",
                  "run_depend", "test_depend")
