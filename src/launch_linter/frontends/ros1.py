@@ -93,32 +93,15 @@ class Ros1Loader(Ros1Tags):
                 name_value = test_name
             name_text = None if name_value is None else resolved_text(name_value)
         else:
-            # A literal name, package and type (most nodes) are their own values and
-            # texts: no call.
-            written = attrib.get("name")
-            if written is None or "$" in written:
-                name_value = self._required(element, "name", context)
-                name_text = None if name_value is None else resolved_text(name_value)
-            else:
-                name_value, name_text = ((written,) if written else ()), written
+            name_value, name_text = self._required_text(element, "name", context)
         namespace = self._namespace(element, context)
         # <param>/<rosparam> children resolve in a copy of the node's context taken here.
         param_anon = dict(context.anon) if element.children else None
         if "clear_params" in attrib:
             name = text_of(name_value) if name_value is not None else None
             self._clear_params(element, context, needs_ns=False, node_name=name)
-        written = attrib.get("pkg")
-        if written is None or "$" in written:
-            package = self._required(element, "pkg", context)
-            package_text = None if package is None else resolved_text(package)
-        else:
-            package, package_text = ((written,) if written else ()), written
-        written = attrib.get("type")
-        if written is None or "$" in written:
-            node_type = self._required(element, "type", context)
-            type_text = None if node_type is None else resolved_text(node_type)
-        else:
-            node_type, type_text = ((written,) if written else ()), written
+        package, package_text = self._required_text(element, "pkg", context)
+        node_type, type_text = self._required_text(element, "type", context)
         late_names = _NODE_LATE_NAMES.intersection(attrib)
         if len(late_names) == 1:  # most often ``output`` alone: no order to keep
             (late_name,) = late_names
@@ -161,6 +144,16 @@ class Ros1Loader(Ros1Tags):
             return
         self._transform(element, context, present, name_value or (), ns, ns_unresolved,
                         package, node_type, late.get("args", ()))
+
+    def _required_text(self, element: Element, attribute: str,
+                       context: _Context) -> tuple[Value | None, str | None]:
+        """:meth:`_required`'s value and its text; a literal (most names, packages and
+        types) is its own text, without a call."""
+        written = element.attrib.get(attribute)
+        if written is not None and "$" not in written:
+            return ((written,) if written else ()), written
+        value = self._required(element, attribute, context)
+        return value, None if value is None else resolved_text(value)
 
     def _description_remap(self, element: Element, context: _Context, ns: str) -> None:
         """``<remap from="robot_description" to="X"/>`` in a robot_state_publisher: it reads
