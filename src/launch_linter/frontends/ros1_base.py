@@ -243,6 +243,9 @@ class Ros1Base:
         # The root's text and declared args, the last if/unless judged (does it surely
         # hold?), a node's children under an undecided one, the attribute being resolved.
         self._root_data, self._root_lines = b"", typing.cast("list[int] | None", None)
+        # The root's <launch> until its declared args are read (only for an arg it may
+        # not declare, rare), then those names (None: one not literal, any name).
+        self._root_launch: Element | None = None
         self._root_arg_names: frozenset[str] | None = None
         self._condition_seen: tuple[Element, bool] | None = None
         self._in_undecided_node, self._label = False, ""
@@ -367,7 +370,7 @@ class Ros1Base:
         if root is None:
             return self._tree(FileStatus.PARSE_ERROR)
         self._root_data = data
-        self._root_arg_names = declared_arg_names(root)
+        self._root_launch, self._root_arg_names = root, None
         context = _Context(self._root_namespace(), absolute, self._command_line_args(), True)
         self._path = absolute
         try:
@@ -455,6 +458,14 @@ class Ros1Base:
             self.problems.extend(unused_arg_problems(display, launches[0], data))
             self._ignored_attributes(display, launches[0])
         return launches[0]
+
+    def _root_may_declare(self, name: str) -> bool:
+        """Whether the root file declares arg ``name`` or one whose name is not literal;
+        its args are read at the first question, not for every root file."""
+        if self._root_launch is not None:
+            self._root_arg_names = declared_arg_names(self._root_launch)
+            self._root_launch = None
+        return self._root_arg_names is None or name in self._root_arg_names
 
     def _ignored_attributes(self, display: str, launch: Element) -> None:
         try:  # read before the walk (and its catch) starts for the root file

@@ -505,10 +505,10 @@ class Ros1Tags(Ros1Base):
         """An arg the root declares nowhere, read under no undecided condition in the root
         or in a file it includes passing all args (see :mod:`.ros1_root_args`)."""
         element, seen = self._element, self._condition_seen
-        if (element is None or self._root_arg_names is None or name in self._root_arg_names
-                or self.options.study_errors or self._in_undecided_node
+        if (element is None or self.options.study_errors or self._in_undecided_node
                 or (seen is not None and seen[0] is element and not seen[1])
-                or (chain[0], "\x00" + name) in self._missing_reported):
+                or (chain[0], "\x00" + name) in self._missing_reported
+                or self._root_may_declare(name)):
             return
         self._missing_reported.add((chain[0], "\x00" + name))
         if filename == chain[0] and self._root_lines is None:
