@@ -18,7 +18,7 @@ ROS 1 loader makes of ``<arg default="">``), so such a path is only ``unresolved
 from __future__ import annotations
 
 from launch_linter.frontends.ros2_actions import Action, DeclareArg, Group, Where
-from launch_linter.resolve.ros2_substitution import Call, Subs, Text
+from launch_linter.resolve.ros2_substitution import Call, Subs, Text, written
 
 MAX_WALKED = 20_000
 """Actions and substitutions looked at per walk (the input decides how many there are)."""
@@ -71,15 +71,6 @@ def empty_defaults(actions: tuple[Action, ...]) -> dict[str, Where]:
 
 def reads_configuration(subs: Subs, name: str) -> bool:
     """Whether ``subs`` reads the launch configuration ``name`` (``$(var name)``,
-    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by the
-    substitutions' own size."""
-    stack = [subs]
-    while stack:
-        for sub in stack.pop():
-            if not isinstance(sub, Call):
-                continue
-            if (sub.name == "var" and sub.args and len(sub.args[0]) == 1
-                    and isinstance(sub.args[0][0], Text) and sub.args[0][0].text == name):
-                return True
-            stack.extend(sub.args)
-    return False
+    ``LaunchConfiguration('name')``), also inside other substitutions; bounded by
+    :func:`configurations_read`'s walk."""
+    return any(written(call.args[0]) == name for call in configurations_read(subs))

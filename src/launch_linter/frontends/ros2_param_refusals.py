@@ -109,6 +109,9 @@ class ParamFileChecks:
     def __init__(self, packages: PackageIndex) -> None:
         self.packages = packages
         self._library: dict[str, str | None] = {}
+        self._above: dict[int, tuple[object, tuple[tuple[str, ...], object] | None]] = {}
+        """:func:`value_above_parameters` per document (kept: its id stays its own), read
+        once per tree though a shared file is given to many nodes."""
 
     def is_rclcpp(self, package: str) -> bool:
         if package not in self._library:
@@ -142,10 +145,13 @@ class ParamFileChecks:
                     related=(node,)))
         return out
 
-    @staticmethod
-    def _refused(document: PlacedDocument, node: Location,
+    def _refused(self, document: PlacedDocument, node: Location,
                  resolve: Callable[[str], str | None]) -> list[Problem]:
-        found = value_above_parameters(document.document)
+        kept = self._above.get(id(document.document))
+        if kept is None:
+            kept = (document.document, value_above_parameters(document.document))
+            self._above[id(document.document)] = kept
+        found = kept[1]
         if found is None:
             return []
         path, value = found
