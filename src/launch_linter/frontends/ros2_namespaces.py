@@ -15,11 +15,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from launch_linter.knowledge import TF_TOPIC
 from launch_linter.model.diagnostic import Location
 from launch_linter.model.launch import DoubledNamespace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 
-TF_TOPIC = "/tf"
 MAX_REMAPPINGS = 1_000
 
 
