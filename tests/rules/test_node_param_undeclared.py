@@ -149,3 +149,66 @@ def test_twenty_thousand_parameters_declarations_targets_and_includes(tmp_path: 
         (many / "src" / f"h{i}.hpp").write_text("", encoding="utf-8")
     assert declared_parameters(str(many), "reader") is None
     assert time.process_time() - started < 60
+
+
+def shared_file_package(root: Path, fusion_cmake_extra: str = "") -> Path:
+    """Two nodes of one package given one ``/**`` parameter file (trial 9's antenna
+    tracker bringup): ``fusion`` declares ``mag_declination_deg``, ``controller``
+    declares ``elevation_min_deg``; the file also sets ``gps_timeout_sec``, which no
+    node declares, close to ``fusion``'s ``imu_timeout_sec``."""
+    package = root / "demo"
+    (package / "src").mkdir(parents=True)
+    (package / "launch").mkdir()
+    (package / "package.xml").write_text(MANIFEST.format(build="ament_cmake"),
+                                         encoding="utf-8")
+    (package / "CMakeLists.txt").write_text(
+        "project(demo)\nadd_executable(fusion src/fusion.cpp)\n"
+        f"add_executable(controller src/controller.cpp)\n{fusion_cmake_extra}"
+        "install(TARGETS fusion controller DESTINATION lib/${PROJECT_NAME})\n"
+        "install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})\n",
+        encoding="utf-8")
+    (package / "src" / "fusion.cpp").write_text(node_source(
+        'declare_parameter("mag_declination_deg", -8.0)',
+        'declare_parameter("imu_timeout_sec", 1.0)'), encoding="utf-8")
+    (package / "src" / "controller.cpp").write_text(node_source(
+        'declare_parameter("elevation_min_deg", 0.0)'), encoding="utf-8")
+    (package / "launch" / "params.yaml").write_text(
+        "/**:\n  ros__parameters:\n    elevation_min_deg: 0.0\n    gps_timeout_sec: 10.0\n",
+        encoding="utf-8")
+    (package / "launch" / "demo.launch.py").write_text(
+        "import os\n"
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    params = os.path.join(os.path.dirname(__file__), 'params.yaml')\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo', executable='fusion', name='fusion',\n"
+        "             parameters=[params]),\n"
+        "        Node(package='demo', executable='controller', name='controller',\n"
+        "             parameters=[params]),\n"
+        "    ])\n", encoding="utf-8")
+    return package
+
+
+def lint_launch(package: Path) -> tuple[Diagnostic, ...]:
+    options = LintOptions(package_paths=(str(package.parent),), select=frozenset({RULE}))
+    return lint_paths([str(package / "launch" / "demo.launch.py")], options).diagnostics
+
+
+def test_a_shared_file_entry_another_receiver_declares_is_not_reported(
+        tmp_path: Path) -> None:
+    # rclcpp applies a /** entry to every node that declares the name: elevation_min_deg
+    # is the controller's; gps_timeout_sec, declared by no receiver, is still reported.
+    found = lint_launch(shared_file_package(tmp_path))
+    assert [d.line for d in found] == [4]
+    assert "'gps_timeout_sec'" in found[0].message and "'imu_timeout_sec'" in found[0].message
+
+
+def test_a_receiver_known_in_part_still_claims_what_it_declares(tmp_path: Path) -> None:
+    # The controller links a library whose sources are generated (not all its
+    # declarations known): what its own source declares is still its.
+    package = shared_file_package(
+        tmp_path, "add_library(mpc src/mpc.cpp ${GENERATED})\n"
+                  "target_link_libraries(controller mpc)\n")
+    found = lint_launch(package)
+    assert [d.line for d in found] == [4]

@@ -15,12 +15,12 @@ import weakref
 from launch_linter.model.launch import LaunchTree, NodeDeclarations
 from launch_linter.model.record import replace
 from launch_linter.resolve import reads
-from launch_linter.workspace.node_declarations import declared_parameters
+from launch_linter.workspace.node_declarations import declared_in_part, declared_parameters
 from launch_linter.workspace.packages import PackageIndex, manifest_name
 
 _STORES: weakref.WeakKeyDictionary[
     PackageIndex,
-    dict[tuple[str, str], tuple[tuple[tuple[str, ...], str] | None, reads.ReadLog]],
+    dict[tuple[str, str], tuple[tuple[tuple[str, ...], str, bool] | None, reads.ReadLog]],
 ] = weakref.WeakKeyDictionary()
 
 
@@ -39,11 +39,20 @@ def attach_declarations(tree: LaunchTree, packages: PackageIndex) -> LaunchTree:
         if root is None:
             continue
         declared = reads.remembered(store, (root, node.executable),
-                                    functools.partial(declared_parameters, root,
-                                                      node.executable))
+                                    functools.partial(_declarations, root, node.executable))
         if declared is not None:
             found[key] = NodeDeclarations(node.package, node.executable, *declared)
     return replace(tree, declarations=tuple(found.values())) if found else tree
+
+
+def _declarations(root: str, executable: str) -> tuple[tuple[str, ...], str, bool] | None:
+    """(names, source, complete): every name the node declares, else those it surely
+    declares (``declared_in_part``), else None."""
+    complete = declared_parameters(root, executable)
+    if complete is not None:
+        return (*complete, True)
+    part = declared_in_part(root, executable)
+    return None if part is None else (*part, False)
 
 
 def _own_package(packages: PackageIndex, path: str, package: str) -> str | None:

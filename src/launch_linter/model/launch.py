@@ -235,21 +235,25 @@ class DoubledNamespace(Record):
 
 class NodeDeclarations(Record):
     """The parameters a ROS 2 executable of the workspace declares (``names``, read from
-    ``source``, a file of package ``package``): complete, or not recorded at all."""
+    ``source``, a file of package ``package``): all of them when ``complete``, else only
+    those its readable sources declare with a literal name (a part of the node is not
+    known: a generated source, a name that is not a literal)."""
 
     package: str
     executable: str
     names: tuple[str, ...]
     source: str
+    complete: bool
 
-    __slots__ = ("package", "executable", "names", "source")
+    __slots__ = ("package", "executable", "names", "source", "complete")
 
     def __init__(self, package: str, executable: str, names: tuple[str, ...],
-                 source: str) -> None:
+                 source: str, complete: bool = True) -> None:
         _set(self, "package", package)
         _set(self, "executable", executable)
         _set(self, "names", names)
         _set(self, "source", source)
+        _set(self, "complete", complete)
 
 
 class LaunchTree(Record):

@@ -119,18 +119,26 @@ def main():
     rclpy.spin(Reader())
 ```
 
-## Known problems
 A parameter file shared by several nodes (`/**:` keys) gives each node the others'
-parameters; one of them close to a name the node declares is reported, though the file
-meant it for another node. Declarations made through a generated parameter library
+parameters: an entry that also reaches another node of the tree whose source declares
+the name (even where not all of its declarations can be read) is that node's, and is not
+reported (antenna
+tracker bringups of trial 9: `elevation_min_deg` in a `/**` file given to five nodes,
+declared by the controller node, close to the fusion node's `mag_declination_deg`).
+
+## Known problems
+Declarations made through a generated parameter library
 (`generate_parameter_library`) are left unknown, so such nodes are not judged.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Tuple
 
 from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.launch import NodeDeclarations
+from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._nodes import finding_at_param
 
@@ -151,9 +159,11 @@ MAX_DECLARED = 500
 
 def check(context: RuleContext) -> Iterator[Finding]:
     known = {(d.package, d.executable): d for d in context.tree.declarations}
+    receivers = _receivers(context.tree.nodes)
     for node in context.tree.nodes:
         declarations = known.get((node.package, node.executable))
-        if declarations is None or node.kind != "node" or node.plugin is not None:
+        if (declarations is None or not declarations.complete or node.kind != "node"
+                or node.plugin is not None):
             continue
         declared = declarations.names
         names = set(declared)
@@ -164,7 +174,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 continue
             seen.add(name)
             close = _close(name, declared)
-            if not close:
+            if not close or _meant_for_another(node, name, receivers, known):
                 continue
             shown = ", ".join(f"'{n}'" for n in close)
             yield finding_at_param(node, name, (
@@ -172,6 +182,41 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 f"({declarations.source}) declares no such parameter but declares {shown}: "
                 f"rclcpp and rclpy apply an override only to a parameter the node declares, "
                 f"so this one is ignored without a word and the node runs on its default"))
+
+
+Place = Tuple[str, str, int]
+"""A parameter's name and where it is written (file, line)."""
+
+
+def _receivers(nodes: tuple[NodeRecord, ...]) -> dict[Place, list[NodeRecord]]:
+    """The nodes each written parameter is given to: a parameter file's entry under a
+    key that matches several nodes (``/**``, a wildcard) reaches each of them."""
+    found: dict[Place, list[NodeRecord]] = {}
+    for node in nodes:
+        if node.kind != "node":
+            continue
+        for key, path, line, _column in node.param_lines[:MAX_PARAMS]:
+            given = found.setdefault((key, path, line), [])
+            if not given or given[-1] is not node:
+                given.append(node)
+    return found
+
+
+def _meant_for_another(node: NodeRecord, name: str, receivers: dict[Place, list[NodeRecord]],
+                       known: dict[tuple[str, str], NodeDeclarations]) -> bool:
+    """Whether an entry that gives ``node`` the parameter ``name`` is also given to another
+    node whose source declares it (all its declarations known or not): rclcpp applies
+    the entry to every node it reaches that declares the name (humble 99f1d8d
+    ``node_parameters.cpp`` 98-114), so a file shared by several nodes (``/**:``) holds
+    the others' parameters, and this one is read there, not lost."""
+    for key, path, line, _column in node.param_lines[:MAX_PARAMS]:
+        if key != name:
+            continue
+        for other in receivers.get((key, path, line), ()):
+            declarations = known.get((other.package, other.executable))
+            if other is not node and declarations is not None and name in declarations.names:
+                return True
+    return False
 
 
 def _close(name: str, declared: tuple[str, ...]) -> list[str]:

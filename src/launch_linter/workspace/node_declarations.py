@@ -63,6 +63,24 @@ def declared_parameters(root: str, executable: str) -> tuple[tuple[str, ...], st
     return tuple(sorted(names)), os.path.relpath(sources[0], root)
 
 
+def declared_in_part(root: str, executable: str) -> tuple[tuple[str, ...], str] | None:
+    """(the names that the readable sources of a C++ executable's own target declare with
+    a literal name, the first source) when :func:`declared_parameters` cannot know them
+    all (a linked library with generated sources, a name that is not a literal): names
+    it surely declares, never a complete list; None when none is found."""
+    cmake = os.path.join(root, "CMakeLists.txt")
+    data = _read(cmake) if os.path.isfile(cmake) else None
+    if data is None:
+        return None
+    sources = _cmake_sources(data.decode("utf-8", "replace"), root, executable, partial=True)
+    if not sources:
+        return None
+    names = _declared(sources, root, False, partial=True)
+    if not names:
+        return None
+    return tuple(sorted(names)), os.path.relpath(sources[0], root)
+
+
 def _read(path: str) -> bytes | None:
     """The whole file, or None: a declaration in a part left unread would be missed."""
     try:
@@ -92,8 +110,10 @@ def _sources(root: str, executable: str) -> tuple[list[str], bool] | None:
     return None
 
 
-def _cmake_sources(text: str, root: str, executable: str) -> list[str] | None:
-    """The source files of ``executable`` and of the libraries of this file it links."""
+def _cmake_sources(text: str, root: str, executable: str,
+                   partial: bool = False) -> list[str] | None:
+    """The source files of ``executable`` and of the libraries of this file it links
+    (``partial``: of those whose sources are all listed, the others left out)."""
     project = ""
     sources: dict[str, list[str] | None] = {}
     links: dict[str, list[str]] = {}
@@ -123,7 +143,11 @@ def _cmake_sources(text: str, root: str, executable: str) -> list[str] | None:
     while todo:
         target = todo.pop()
         listed = sources[target]
-        if listed is None or len(seen) > MAX_TARGETS:
+        if len(seen) > MAX_TARGETS:
+            return None
+        if listed is None:
+            if partial:
+                continue
             return None
         out.extend(os.path.normpath(os.path.join(root, f)) for f in listed)
         for library in links.get(target, ()):
@@ -162,9 +186,11 @@ def _console_script(data: bytes, executable: str) -> str | None:
     return None
 
 
-def _declared(sources: list[str], root: str, python: bool) -> set[str] | None:
+def _declared(sources: list[str], root: str, python: bool,
+              partial: bool = False) -> set[str] | None:
     """The literal names declared in ``sources`` and the package-local files they
-    include or import; None when any declaration cannot be read."""
+    include or import; None when any declaration cannot be read (``partial``: the
+    literal names of the files that can be read, the rest left out)."""
     names: set[str] = set()
     todo = list(dict.fromkeys(sources))
     seen = set(todo)
@@ -173,17 +199,21 @@ def _declared(sources: list[str], root: str, python: bool) -> set[str] | None:
             return None
         path = todo.pop()
         data = _read(path)
-        if data is None:
-            return None
-        if _UNKNOWABLE.search(data):
+        if data is None or (_UNKNOWABLE.search(data) and not partial):
+            if partial:
+                continue
             return None
         for call in _DECLARE.finditer(data):
             literal = _LITERAL.match(data, call.end())
             if literal is None:
+                if partial:
+                    continue
                 return None
             names.add((literal.group(1) or literal.group(2) or b"").decode("utf-8", "replace"))
         local = _imports(data, path, root) if python else _includes(data, path, root)
         if local is None:
+            if partial:
+                continue
             return None
         for other in local:
             if other not in seen:
