@@ -129,6 +129,14 @@ declared by the controller node, close to the fusion node's `mag_declination_deg
 ## Known problems
 Declarations made through a generated parameter library
 (`generate_parameter_library`) are left unknown, so such nodes are not judged.
+
+Info. Its judged findings at warning, every verdict file together (trial 9 included):
+4 true (book_ros2#5, amr_slam_nav_core's heartbeat file, the antenna trackers'
+`gps_timeout_sec` twice), 9 harmless (ur3e_vegetable_sorting: one parameter file shared
+by two executables, read whole by the one never built, its values equal to what the
+other hard-codes), 4 false (the shared `/**` file, fixed): 4 of 13 on the current code,
+3 of 4 counted per cause, below the 90% a warning needs (docs/severity.md;
+docs/evaluation/precision-trial9.md).
 """
 
 from __future__ import annotations
@@ -144,7 +152,7 @@ from launch_linter.rules._nodes import finding_at_param
 
 ID = "node_param_undeclared"
 CATEGORY = Category.LAUNCH
-SEVERITY = Severity.WARNING
+SEVERITY = Severity.INFO
 EXAMPLE_PATH = "launch/example.launch.py"
 EXAMPLE_FILES = ("package.xml", "setup.py", "demo/reader.py")
 """The files of the example's package, one per block after the launch file's."""
