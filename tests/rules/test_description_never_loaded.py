@@ -70,6 +70,24 @@ def test_a_test_xacro_nothing_installs_or_names_is_info(tmp_path: Path) -> None:
     assert {level for _, level in found} == {"info"}
 
 
+def test_what_xacro_makes_of_its_text_keeps_its_level(tmp_path: Path) -> None:
+    # realsense2_description's tests/*.xacro call macros without the xacro: prefix:
+    # whoever runs xacro on them (the package's test does) gets no camera.
+    text = ROBOT.replace("</robot>", '<xacro:macro name="cam"><link name="c"/></xacro:macro>'
+                         "<cam/></robot>").replace("<robot ", '<robot xmlns:xacro="x" ')
+    root = package(tmp_path, files={"tests/one_of_each.xacro": text})
+    found = levels(root / "tests/one_of_each.xacro", root)
+    assert ("xacro_unexpanded", "warning") in found
+    assert ("rounded_pi", "info") in found
+
+
+def test_every_xacro_rule_is_counted_as_one_about_the_text() -> None:
+    from launch_linter.rules import RULES
+    from launch_linter.rules.description_never_loaded import XACRO_TEXT_RULES
+
+    assert {r.id for r in RULES if r.id.startswith("xacro_")} <= XACRO_TEXT_RULES
+
+
 def test_the_same_file_in_an_ament_package(tmp_path: Path) -> None:
     root = package(tmp_path, AMENT, INSTALLS_URDF_AMENT, {"tests/one_of_each.xacro": ROBOT})
     assert ("rounded_pi", "info") in levels(root / "tests/one_of_each.xacro", root)

@@ -7,8 +7,10 @@ package's install rules (CMake `install()` for ament and catkin packages, setup.
 can load it, and no file of its own workspace outside `test`/`tests` folders writes its
 name (a launch file, a xacro include, a Gazebo `model.config`, a node's source) or a tail
 a built name could end with (`$(arg model).urdf.xacro`). What the other rules find in the
-robot it makes is then reported at info; this finding says why, once per file, and only
-when it lowered something.
+robot it makes (urdfdom's refusals, the tf tree, frames) is then reported at info; this
+finding says why, once per file, and only when it lowered something. What xacro makes of
+the file's text (`xacro_*` rules, `parse_error`) keeps its level: the package's tests,
+or a user, still run xacro on it.
 
 ## Why is this bad?
 It is not: it says why the file's findings are not warnings. A description is only a
@@ -73,6 +75,10 @@ CATEGORY = Category.TF
 SEVERITY = Severity.INFO
 EXAMPLE_PATH = "two_cameras.urdf"
 EXAMPLE_INCLUDED = ("package.xml", "CMakeLists.txt")
+XACRO_TEXT_RULES = frozenset(("parse_error", "xacro_arg_ignored", "xacro_error",
+                              "xacro_param_as_arg", "xacro_unexpanded", "xacro_unused_block"))
+"""Rules about what xacro makes of the file's text: true whoever runs xacro on it (the
+package's tests do), so they keep their level."""
 
 
 def check(context: RuleContext) -> Iterable[Finding]:
@@ -86,6 +92,7 @@ def at_info_if_never_loaded(tree: LaunchTree, found: list[tuple[Rule, Finding]],
     says why once, and only when it lowered something (such files are common)."""
     if not any(p.rule == ID and p.path == tree.root for p in tree.problems):
         return found
-    lowered = any((f.severity or rule.severity) is not Severity.INFO for rule, f in found)
-    return [(rule, replace(f, severity=Severity.INFO)) for rule, f in found
-            if lowered or rule.id != ID]
+    robot = [(rule, f) for rule, f in found if rule.id not in XACRO_TEXT_RULES]
+    lowered = any((f.severity or rule.severity) is not Severity.INFO for rule, f in robot)
+    return [(rule, replace(f, severity=Severity.INFO) if rule.id not in XACRO_TEXT_RULES
+             else f) for rule, f in found if lowered or rule.id != ID]
