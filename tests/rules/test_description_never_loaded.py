@@ -13,7 +13,7 @@ import pytest
 
 from launch_linter.engine import LintOptions, lint_paths
 from launch_linter.workspace import loaders, mentions
-from launch_linter.workspace.loaders import _Written, description_loader
+from launch_linter.workspace.loaders import _Written, loader_of
 
 CATKIN = """<package format="2"><name>cams</name>
 <buildtool_depend>catkin</buildtool_depend></package>
@@ -153,7 +153,7 @@ def test_a_scan_cut_by_its_bound_is_unknown(tmp_path: Path, monkeypatch: pytest.
                                             ) -> None:
     root = package(tmp_path, files={"tests/one_of_each.xacro": ROBOT})
     monkeypatch.setattr(loaders, "MAX_FILES", 1)
-    assert description_loader(str(root / "tests/one_of_each.xacro")) == str(tmp_path)
+    assert loader_of(str(root / "tests/one_of_each.xacro")) == str(tmp_path)
 
 
 def test_hostile_names_are_read_in_linear_time() -> None:

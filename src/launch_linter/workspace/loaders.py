@@ -1,4 +1,5 @@
-"""Which file of the workspace may load a robot description: one that writes its name.
+"""Which file of the workspace may load a robot description or a ROS 1 launch file: one
+that writes its name.
 
 Nothing finds a URDF or xacro file by itself: a launch file (``<param command="xacro
 $(find p)/urdf/r.urdf.xacro">``, ``Command(['xacro ', path])``, ``open(path).read()``), a
@@ -45,9 +46,11 @@ SKIPPED_SUFFIXES = (
     ".onnx", ".pth", ".h5", ".csv", ".vtk", ".xcf", ".qch", ".wav", ".mp3", ".ttf",
 )
 """Files that name no description (meshes, images, archives, data): never read."""
-_SUFFIX = re.compile(rb"\.(?:urdf|xacro)(?:\.xacro)?(?![A-Za-z0-9_])")
+DESCRIPTIONS = re.compile(rb"\.(?:urdf|xacro)(?:\.xacro)?(?![A-Za-z0-9_])")
 """Where a description's name written in a path or string ends; the name is then read
 backwards from there (bounded), never with a pattern that starts at every letter."""
+ROS1_LAUNCH_FILES = re.compile(rb"\.(?:launch|test|xml)(?:\.xml)?(?![A-Za-z0-9_])")
+"""Where a ROS 1 launch file's name (``x.launch``, ``x.test``, ``x.launch.xml``) ends."""
 _NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 _BUILT_BEFORE = frozenset(b")}*%")
 """A byte before a written name that makes it the tail of a built one: ``$(arg x)``,
@@ -69,10 +72,10 @@ class _Written:
         self.tails: dict[bytes, dict[bytes, tuple[str, ...]]] = {}
         self.complete = True
 
-    def add(self, data: bytes, path: str) -> None:
+    def add(self, data: bytes, path: str, suffix: re.Pattern[bytes] = DESCRIPTIONS) -> None:
         # Each backward read stops at the previous name's end: linear in the file.
         previous_end = 0
-        for match in _SUFFIX.finditer(data):
+        for match in suffix.finditer(data):
             start = _run_start(data, match.start(), previous_end)
             previous_end = match.end()
             written = data[start:match.end()]
@@ -134,30 +137,32 @@ def _folder_before(data: bytes, marker: int, lowest: int) -> bytes:
     return data[_run_start(data, stem - 1, lowest):stem - 1]
 
 
-_written_by_folder: dict[str, tuple[float, _Written, reads.ReadLog]] = {}
+_written_by_folder: dict[tuple[str, bytes], tuple[float, _Written, reads.ReadLog]] = {}
 
 
-def description_loader(path: str) -> str | None:
+def loader_of(path: str, suffix: re.Pattern[bytes] = DESCRIPTIONS) -> str | None:
     """A file of the workspace around ``path`` (outside test folders, other than
     ``path``) that writes its name or a tail it ends with: it may load it; the workspace
-    folder when a bound cut the scan (unknown); None when nothing names it."""
+    folder when a bound cut the scan (unknown); None when nothing names it. ``suffix``:
+    where names of that kind of file end (:data:`DESCRIPTIONS`,
+    :data:`ROS1_LAUNCH_FILES`)."""
     absolute = os.path.abspath(path)
     folder = scope(absolute)
     now = time.monotonic()
-    read = _written_by_folder.get(folder)
+    read = _written_by_folder.get((folder, suffix.pattern))
     if read is None or now - read[0] > FRESH_SECONDS:
         if len(_written_by_folder) >= MAX_CACHED_FOLDERS:
             _written_by_folder.clear()
         with reads.recording() as log:
-            written = _written_in(folder)
-        read = _written_by_folder[folder] = (now, written, log)
+            written = _written_in(folder, suffix)
+        read = _written_by_folder[folder, suffix.pattern] = (now, written, log)
     reads.depend_on(read[2])
     if not read[1].complete:
         return folder
     return read[1].writer_of(absolute)
 
 
-def _written_in(folder: str) -> _Written:
+def _written_in(folder: str, suffix: re.Pattern[bytes]) -> _Written:
     written = _Written()
     files = folders = total = 0
     for directory, subdirs, entries in walk(folder):
@@ -188,5 +193,5 @@ def _written_in(folder: str) -> _Written:
             if total > MAX_TOTAL_BYTES:
                 written.complete = False
                 return written
-            written.add(data, path)
+            written.add(data, path, suffix)
     return written

@@ -96,13 +96,13 @@ def why_never_loaded(path: str, packages: PackageIndex) -> str | None:
     completely: ``PackageIndex.installs``; ROS 2 and catkin), so another workspace cannot
     load a file they leave out; in its own workspace (a catkin devel space runs from
     source), only a file that writes its name can load it
-    (:func:`launch_linter.workspace.loaders.description_loader`)."""
+    (:func:`launch_linter.workspace.loaders.loader_of`)."""
     if packages.installs(path, catkin=True) is not False:
         return None
     # Imported here: only a description no install rule ships needs the workspace read.
-    from launch_linter.workspace.loaders import description_loader
+    from launch_linter.workspace.loaders import loader_of
 
-    if description_loader(path) is not None:
+    if loader_of(path) is not None:
         return None
     return ("its package's install rules, read completely, install it nowhere, and no "
             "file of the workspace outside test folders names it (no launch file, xacro "
