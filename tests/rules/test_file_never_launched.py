@@ -214,3 +214,31 @@ def test_a_rostest_file_keeps_its_error(tmp_path: Path) -> None:
 def test_a_ros1_file_the_package_installs_keeps_its_error(tmp_path: Path) -> None:
     cmake = CATKIN_INSTALLS + "install(DIRECTORY test DESTINATION share/${PROJECT_NAME})\n"
     assert ("roslaunch_error", 2, "error") in levels(catkin_package(tmp_path, cmake))
+
+
+def test_an_installed_ros1_file_named_as_a_kept_copy_is_info(tmp_path: Path) -> None:
+    # gazebo_worlds' old_small_warehouse.launch.xml beside small_warehouse.launch.py.
+    root = package(tmp_path) / "launch" / "old_drive.launch.xml"
+    root.write_text(ROSTEST)
+    (tmp_path / "launch" / "drive.launch.py").write_text("def generate_launch_description(): ...\n")
+    found = levels(root)
+    assert ("file_never_launched", 1, "info") in found
+    assert {level for _, _, level in found} == {"info"}
+
+
+def test_an_installed_half_ported_ros1_file_keeps_its_errors(tmp_path: Path) -> None:
+    # Orbbec's multi_astra.launch.xml: installed, half-ported, not marked as a copy.
+    root = package(tmp_path) / "launch" / "multi_drive.launch.xml"
+    root.write_text(ROSTEST)
+    assert {level for _, _, level in levels(root)} == {"error"}
+
+
+@pytest.mark.parametrize(("name", "marked"), [
+    ("old_small_warehouse.launch.xml", True), ("control.launch_ORIG.py", True),
+    ("robot-backup.launch.xml", True), ("Copy of robot.launch", True),
+    ("bold.launch", False), ("older.launch", False), ("holder.launch.xml", False),
+])
+def test_names_that_mark_a_kept_copy(name: str, marked: bool) -> None:
+    from launch_linter.frontends.launchable import marked_as_copy
+
+    assert marked_as_copy(name) is marked
