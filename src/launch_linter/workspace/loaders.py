@@ -46,6 +46,8 @@ SKIPPED_SUFFIXES = (
     ".onnx", ".pth", ".h5", ".csv", ".vtk", ".xcf", ".qch", ".wav", ".mp3", ".ttf",
 )
 """Files that name no description (meshes, images, archives, data): never read."""
+MANIFESTS = frozenset(("package.xml", "manifest.xml"))
+"""A package's manifest loads nothing: not read (an edit to one relints no description)."""
 DESCRIPTIONS = re.compile(rb"\.(?:urdf|xacro)(?:\.xacro)?(?![A-Za-z0-9_])")
 """Where a description's name written in a path or string ends; the name is then read
 backwards from there (bounded), never with a pattern that starts at every letter."""
@@ -178,7 +180,7 @@ def _written_in(folder: str, suffix: re.Pattern[bytes]) -> _Written:
             and d != "__pycache__" and d.lower() not in TEST_FOLDERS
         )
         for entry in sorted(entries):
-            if entry.lower().endswith(SKIPPED_SUFFIXES):
+            if entry.lower().endswith(SKIPPED_SUFFIXES) or entry in MANIFESTS:
                 continue
             files += 1
             if files > MAX_FILES:
