@@ -166,56 +166,6 @@ def test_a_package_without_its_build_file_proves_nothing_uninstalled(tmp_path: P
     assert ("file_never_launched", 1, "info") in levels(root)
 
 
-CATKIN = """<package format="2"><name>roslaunch_like</name>
-<buildtool_depend>catkin</buildtool_depend></package>
-"""
-CATKIN_INSTALLS = ("project(roslaunch_like)\nfind_package(catkin REQUIRED)\ncatkin_package()\n"
-                   "install(DIRECTORY resources DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})\n")
-# ros_comm's roslaunch/test/xml/test-arg-invalid-*.xml shape: invalid on purpose.
-INVALID = '<launch>\n  <arg name="a" default="1" value="2"/>\n</launch>\n'
-PY_TEST = ("import roslaunch.xmlloader\n"
-           "loader.load(os.path.join(xml_dir, 'test-arg-invalid.xml'))\n")
-
-
-def catkin_package(root: Path, cmake: str = CATKIN_INSTALLS,
-                   files: dict[str, str] | None = None) -> Path:
-    for name, text in {"package.xml": CATKIN, "CMakeLists.txt": cmake,
-                       "test/xml/test-arg-invalid.xml": INVALID,
-                       "test/unit/test_xmlloader.py": PY_TEST, **(files or {})}.items():
-        (root / name).parent.mkdir(parents=True, exist_ok=True)
-        (root / name).write_text(text, encoding="utf-8")
-    return root / "test/xml/test-arg-invalid.xml"
-
-
-def test_a_ros1_test_input_nothing_installs_or_names_is_info(tmp_path: Path) -> None:
-    found = levels(catkin_package(tmp_path))
-    assert ("file_never_launched", 1, "info") in found
-    assert ("roslaunch_error", 2, "info") in found
-
-
-@pytest.mark.parametrize("files", [
-    {"launch/all.launch": '<launch><include file="$(find roslaunch_like)/test/xml/'
-                          'test-arg-invalid.xml"/></launch>\n'},
-    {"launch/all.launch": '<launch><arg name="n" default="arg-invalid"/><include '
-                          'file="$(find roslaunch_like)/test/xml/test-$(arg n).xml"/></launch>\n'},
-])
-def test_a_ros1_file_a_launch_file_may_include_keeps_its_error(
-        tmp_path: Path, files: dict[str, str]) -> None:
-    found = levels(catkin_package(tmp_path, files=files))
-    assert ("roslaunch_error", 2, "error") in found
-    assert "file_never_launched" not in {rule for rule, _, _ in found}
-
-
-def test_a_rostest_file_keeps_its_error(tmp_path: Path) -> None:
-    cmake = CATKIN_INSTALLS + "add_rostest(test/xml/test-arg-invalid.xml)\n"
-    assert ("roslaunch_error", 2, "error") in levels(catkin_package(tmp_path, cmake))
-
-
-def test_a_ros1_file_the_package_installs_keeps_its_error(tmp_path: Path) -> None:
-    cmake = CATKIN_INSTALLS + "install(DIRECTORY test DESTINATION share/${PROJECT_NAME})\n"
-    assert ("roslaunch_error", 2, "error") in levels(catkin_package(tmp_path, cmake))
-
-
 def test_an_installed_ros1_file_named_as_a_kept_copy_is_info(tmp_path: Path) -> None:
     # gazebo_worlds' old_small_warehouse.launch.xml beside small_warehouse.launch.py.
     root = package(tmp_path) / "launch" / "old_drive.launch.xml"

@@ -57,8 +57,9 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
     else:
         loader = Ros1Loader(options)
     tree = loader.load(path, data)
-    if any(p.rule in REFUSALS and p.path == tree.root for p in tree.problems):
-        tree = _if_never_launched(tree, path, data, options, isinstance(loader, Ros1Loader))
+    if not isinstance(loader, Ros1Loader) and any(
+            p.rule in REFUSALS and p.path == tree.root for p in tree.problems):
+        tree = _if_never_launched(tree, path, data, options)
     if tree.descriptions:
         tree = attach_robot(tree, options.packages, options.robots, options.display_path,
                             dict(options.env), loader.include_sites,
@@ -73,20 +74,16 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
 
 
 def _if_never_launched(tree: LaunchTree, path: str, data: bytes | None,
-                       options: LoadOptions, ros1: bool) -> LaunchTree:
+                       options: LoadOptions) -> LaunchTree:
     """``tree`` with a :data:`NEVER_LAUNCHED` problem when nothing runs its root file
     (:mod:`.launchable`): the rules then report its refusals at info."""
     # Imported here: only a root that ros2 launch refuses needs the install rules read.
-    from launch_linter.frontends.launchable import why_never_launched, why_ros1_never_launched
+    from launch_linter.frontends.launchable import why_never_launched
 
-    if ros1:
-        reason = why_ros1_never_launched(path, options.packages)
-    else:
-        reason = why_never_launched(path, data, options.packages)
+    reason = why_never_launched(path, data, options.packages)
     if reason is None:
         return tree
     problem = Problem(NEVER_LAUNCHED, tree.root, 1, 0,
-                      f"nothing runs this launch file: {reason}; what "
-                      f"{'roslaunch' if ros1 else 'ros2 launch'} would refuse in it is "
-                      "reported at info")
+                      f"nothing runs this launch file: {reason}; what ros2 launch would "
+                      "refuse in it is reported at info")
     return replace(tree, problems=(*tree.problems, problem))

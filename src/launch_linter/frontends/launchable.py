@@ -69,26 +69,6 @@ def marked_as_copy(path: str) -> bool:
         part.split("_")[-1] in _COPY_MARKS for part in suffixes))
 
 
-def why_ros1_never_launched(path: str, packages: PackageIndex) -> str | None:
-    """Why the ROS 1 launch file ``path`` of a catkin package is run by nothing, or None
-    when it may be run (installed, named by a file of the workspace outside test
-    folders or by a CMake command such as ``add_rostest``, or unknown).
-
-    ``roslaunch <pkg> <file>`` and ``$(find pkg)`` find a file of a binary install only
-    if an install rule ships it; in the workspace's devel space, only a path that writes
-    its name reaches it: ros_comm's ``roslaunch/test/xml/*.xml`` (invalid on purpose,
-    read by the package's own Python tests) are run by nothing."""
-    if packages.installs(path, catkin=True) is not False or _named_by_cmake(path, packages):
-        return None
-    # Imported here: only a refused file no install rule ships needs the workspace read.
-    from launch_linter.workspace.loaders import ROS1_LAUNCH_FILES, loader_of
-
-    if loader_of(path, ROS1_LAUNCH_FILES) is not None:
-        return None
-    return ("its package's install rules, read completely, install it nowhere, and no "
-            "file of the workspace outside test folders (nor a CMake command) names it")
-
-
 def _named_by_cmake(path: str, packages: PackageIndex) -> bool:
     """Whether a command of a ``CMakeLists.txt`` between the file's folder and its
     package's names the file (``add_launch_test(test/x.launch.py)``, ``add_ros_test``,

@@ -8,11 +8,8 @@ install it and neither a launch file of the workspace nor a CMake command of its
 (`add_launch_test`, ...) names it, or it is a ROS 1 launch file (a rostest `<test>`,
 `$(find)`, `<rosparam>`, a node's `type`) that nothing names and no install rule read
 installs, or one installed whose name marks it as a kept copy (`old_x.launch.xml`,
-`x_orig`, `x-backup`, `copy of x`). A ROS 1 launch file of a catkin package is run by
-nothing when no install rule ships it and no file of the workspace outside test folders
-(nor a CMake command such as `add_rostest`) names it (ros_comm's invalid-on-purpose
-`roslaunch/test/xml` inputs). What `ros2 launch` (or roslaunch) would refuse in that file
-is then reported at info, not error; this finding says why once.
+`x_orig`, `x-backup`, `copy of x`). What `ros2 launch` would refuse in that file is then
+reported at info, not error; this finding says why once.
 
 ## Why is this bad?
 It is not: it says why the file's refusals are not errors. `ros2 launch <pkg> <file>`

@@ -1,5 +1,4 @@
-"""Which file of the workspace may load a robot description or a ROS 1 launch file: one
-that writes its name.
+"""Which file of the workspace may load a robot description: one that writes its name.
 
 Nothing finds a URDF or xacro file by itself: a launch file (``<param command="xacro
 $(find p)/urdf/r.urdf.xacro">``, ``Command(['xacro ', path])``, ``open(path).read()``), a
@@ -51,8 +50,6 @@ MANIFESTS = frozenset(("package.xml", "manifest.xml"))
 DESCRIPTIONS = re.compile(rb"\.(?:urdf|xacro)(?:\.xacro)?(?![A-Za-z0-9_])")
 """Where a description's name written in a path or string ends; the name is then read
 backwards from there (bounded), never with a pattern that starts at every letter."""
-ROS1_LAUNCH_FILES = re.compile(rb"\.(?:launch|test|xml)(?:\.xml)?(?![A-Za-z0-9_])")
-"""Where a ROS 1 launch file's name (``x.launch``, ``x.test``, ``x.launch.xml``) ends."""
 _NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 _BUILT_BEFORE = frozenset(b")}*%")
 """A byte before a written name that makes it the tail of a built one: ``$(arg x)``,
@@ -146,8 +143,7 @@ def loader_of(path: str, suffix: re.Pattern[bytes] = DESCRIPTIONS) -> str | None
     """A file of the workspace around ``path`` (outside test folders, other than
     ``path``) that writes its name or a tail it ends with: it may load it; the workspace
     folder when a bound cut the scan (unknown); None when nothing names it. ``suffix``:
-    where names of that kind of file end (:data:`DESCRIPTIONS`,
-    :data:`ROS1_LAUNCH_FILES`)."""
+    where names of that kind of file end (:data:`DESCRIPTIONS`)."""
     absolute = os.path.abspath(path)
     folder = scope(absolute)
     now = time.monotonic()
