@@ -183,14 +183,15 @@ def test_a_parameter_file_that_appears_or_goes(workspace: Path) -> None:
 def test_a_package_manifest_relints_the_roots_that_find_packages(workspace: Path) -> None:
     relinted(workspace)
     edit(workspace / "src/other/package.xml", "<name>other</name>", "<name>pkg</name>")
-    assert relinted(workspace) == ["a.launch", "c.launch"]
+    # A description linted alone asks which package ships it (description_never_loaded).
+    assert relinted(workspace) == ["a.launch", "c.launch", "robot.urdf.xacro"]
 
 
 def test_a_new_package_folder_relints_the_roots_that_find_packages(workspace: Path) -> None:
     relinted(workspace)
     (workspace / "src/third").mkdir()
     (workspace / "src/third/package.xml").write_text(MANIFEST.format(name="third"))
-    assert relinted(workspace) == ["a.launch", "c.launch"]
+    assert relinted(workspace) == ["a.launch", "c.launch", "robot.urdf.xacro"]
 
 
 def test_an_unrelated_file_relints_nothing(workspace: Path) -> None:

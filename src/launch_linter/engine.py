@@ -264,11 +264,13 @@ def check_tree(tree: LaunchTree, rules: Iterable[Rule], options: LintOptions) ->
     from launch_linter.knowledge import bundled
     from launch_linter.rules import RuleContext
     from launch_linter.rules._tree import with_macro_definitions
+    from launch_linter.rules.description_never_loaded import at_info_if_never_loaded
 
     context = RuleContext(tree, options.beliefs, options.profile, target_distro(tree, options),
                           options.knowledge if options.knowledge is not None else bundled())
-    return with_macro_definitions(
-        tree, [_stamp(rule, f, options) for rule in rules for f in rule.check(context)])
+    found = at_info_if_never_loaded(tree, [(rule, f) for rule in rules
+                                           for f in rule.check(context)])
+    return with_macro_definitions(tree, [_stamp(rule, f, options) for rule, f in found])
 
 
 def target_distro(tree: LaunchTree, options: LintOptions) -> str | None:

@@ -8,6 +8,8 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import pytest
+
 from launch_linter.engine import LintOptions, lint_paths
 from launch_linter.frontends.xml_dialect import ros1_sign
 
@@ -162,3 +164,31 @@ def test_a_package_without_its_build_file_proves_nothing_uninstalled(tmp_path: P
     assert "error" in {level for _, _, level in found}
     (tmp_path / "CMakeLists.txt").write_text("project(drive)\n")
     assert ("file_never_launched", 1, "info") in levels(root)
+
+
+def test_an_installed_ros1_file_named_as_a_kept_copy_is_info(tmp_path: Path) -> None:
+    # gazebo_worlds' old_small_warehouse.launch.xml beside small_warehouse.launch.py.
+    root = package(tmp_path) / "launch" / "old_drive.launch.xml"
+    root.write_text(ROSTEST)
+    (tmp_path / "launch" / "drive.launch.py").write_text("def generate_launch_description(): ...\n")
+    found = levels(root)
+    assert ("file_never_launched", 1, "info") in found
+    assert {level for _, _, level in found} == {"info"}
+
+
+def test_an_installed_half_ported_ros1_file_keeps_its_errors(tmp_path: Path) -> None:
+    # Orbbec's multi_astra.launch.xml: installed, half-ported, not marked as a copy.
+    root = package(tmp_path) / "launch" / "multi_drive.launch.xml"
+    root.write_text(ROSTEST)
+    assert {level for _, _, level in levels(root)} == {"error"}
+
+
+@pytest.mark.parametrize(("name", "marked"), [
+    ("old_small_warehouse.launch.xml", True), ("control.launch_ORIG.py", True),
+    ("robot-backup.launch.xml", True), ("Copy of robot.launch", True),
+    ("bold.launch", False), ("older.launch", False), ("holder.launch.xml", False),
+])
+def test_names_that_mark_a_kept_copy(name: str, marked: bool) -> None:
+    from launch_linter.frontends.launchable import marked_as_copy
+
+    assert marked_as_copy(name) is marked

@@ -33,11 +33,16 @@ def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) ->
     or None when it may be run (installed, named by another launch file or by a CMake
     command, a test's, or unknown)."""
     installs = packages.installs(path)
-    if installs or named_by_another_file(path) is not None or _named_by_cmake(path, packages):
+    if named_by_another_file(path) is not None or _named_by_cmake(path, packages):
         return None
     xml = data is not None and not path.lower().endswith((".yaml", ".yml")) and not (
         reads_as_python(path, data))
     sign = ros1_sign(data) if xml and data is not None else None
+    if installs:
+        if sign is None or not marked_as_copy(path):
+            return None
+        return (f"a ROS 1 launch file ({sign}) in a ROS 2 package, whose name marks it as "
+                "a kept copy, that no launch file names")
     if installs is False:
         what = f"a ROS 1 launch file ({sign}): " if sign else ""
         return (f"{what}its package's install rules install it nowhere and no launch file "
@@ -46,6 +51,22 @@ def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) ->
         return (f"a ROS 1 launch file ({sign}) left in a ROS 2 package: no launch file "
                 "names it and no install rule read installs it")
     return None
+
+
+_COPY_MARKS = ("old", "orig", "bak", "backup", "copy")
+"""Words that mark a file as a kept copy of another (``old_small_warehouse.launch.xml``
+beside ``small_warehouse.launch.py``; ``control.launch_ORIG.py``)."""
+
+
+def marked_as_copy(path: str) -> bool:
+    """Whether the file's name, without its suffixes, starts or ends with a word of
+    :data:`_COPY_MARKS` (``old_x``, ``x_old``, ``x-backup``, ``x copy``; not ``bold``)."""
+    name = os.path.basename(path).lower()
+    stem = name.split(".", 1)[0]
+    words = [w for w in stem.replace("-", "_").replace(" ", "_").split("_") if w]
+    suffixes = name.split(".")[1:]
+    return bool(words) and (words[0] in _COPY_MARKS or words[-1] in _COPY_MARKS or any(
+        part.split("_")[-1] in _COPY_MARKS for part in suffixes))
 
 
 def _named_by_cmake(path: str, packages: PackageIndex) -> bool:

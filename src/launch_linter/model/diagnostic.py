@@ -43,6 +43,11 @@ class Location(OrderedRecord):
         _set(self, "column", column)
 
 
+DESCRIPTION_NEVER_LOADED = "description_never_loaded"
+"""The problem on a robot description's root that nothing loads (the front-end finds it,
+the engine reports the findings of that tree at info, the rule of that id says why)."""
+
+
 class Problem(Record):
     """What a front-end (or the suppression pass) noticed, before the engine stamps it.
 

@@ -32,6 +32,7 @@ def _load() -> None:
         component_default_frames,
         conflicting_transform,
         controller_tf_unrouted,
+        description_never_loaded,
         dup_name,
         dup_sig,
         duplicate_publisher,

@@ -89,6 +89,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("file_never_launched", Category.LAUNCH),
     ("ros2_param_empty_list", Category.LAUNCH),
     ("ros2_param_file_refused", Category.LAUNCH),
+    ("description_never_loaded", Category.TF),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

@@ -7,7 +7,8 @@ Reports, once, a ROS 2 launch file that `ros2 launch` refuses (`ros2_schema`,
 install it and neither a launch file of the workspace nor a CMake command of its package
 (`add_launch_test`, ...) names it, or it is a ROS 1 launch file (a rostest `<test>`,
 `$(find)`, `<rosparam>`, a node's `type`) that nothing names and no install rule read
-installs. What `ros2 launch` would refuse in that file is then
+installs, or one installed whose name marks it as a kept copy (`old_x.launch.xml`,
+`x_orig`, `x-backup`, `copy of x`). What `ros2 launch` would refuse in that file is then
 reported at info, not error; this finding says why once.
 
 ## Why is this bad?

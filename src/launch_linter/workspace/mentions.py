@@ -108,7 +108,7 @@ def _file_names(data: bytes) -> set[str]:
     return found
 
 
-def _scope(absolute: str) -> str:
+def scope(absolute: str) -> str:
     """The folder whose launch files may include ``absolute`` (see the module's doc)."""
     manifest = nearest_package_xml(absolute)
     if manifest is None:
@@ -131,7 +131,7 @@ def named_by_another_file(path: str) -> str | None:
     """A launch file near ``path`` (see the module's doc), other than ``path``, that writes
     its file name."""
     absolute = os.path.abspath(path)
-    folder = _scope(absolute)
+    folder = scope(absolute)
     now = time.monotonic()
     read = _names_by_folder.get(folder)
     if read is None or now - read[0] > FRESH_SECONDS:

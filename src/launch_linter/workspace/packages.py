@@ -62,6 +62,7 @@ class PackageIndex:
         built is unknown (sibling clones of a fork beside the package)."""
         self._installed: set[str] = set()
         self._layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
+        self._catkin_layouts: dict[str, tuple[Layout | None, reads.ReadLog]] = {}
         self._manifests: dict[str, tuple[str | None, reads.ReadLog]] = {}
         self._builds: dict[str, tuple[BuildDeclarations | None, reads.ReadLog]] = {}
         self._executables: dict[str, tuple[Executables | None, reads.ReadLog]] = {}
@@ -184,17 +185,19 @@ class PackageIndex:
                                  lambda: read_executables(directory, name))
         return None if found is None else (directory, found)
 
-    def installs(self, path: str) -> bool | None:
+    def installs(self, path: str, catkin: bool = False) -> bool | None:
         """Whether the install rules of the ROS 2 package found in source that holds
         ``path`` install it (anywhere in its share folder): False only when every rule
         was read and none installs it (``ros2 launch <pkg> <file>`` cannot find it);
-        None when that is unknown (no such package, an installed copy, a ROS 1 package,
-        a name in two folders, rules not all read)."""
+        None when that is unknown (no such package, an installed copy, a ROS 1 package
+        unless ``catkin``, a name in two folders, rules not all read). With ``catkin``,
+        a catkin package's rules (``${CATKIN_PACKAGE_SHARE_DESTINATION}``) are read too:
+        what a binary install of it ships (its devel space runs from source)."""
         path = os.path.normpath(os.path.abspath(path))
         owner = self._owner(path)
         if owner is None or owner[1] in self._installed or owner[0] in self._twice:
             return None
-        layout = self._layout(*owner)
+        layout = self._layout(*owner) or (self._catkin_layout(*owner) if catkin else None)
         if layout is None:
             return None
         relative = os.path.relpath(path, owner[1]).replace(os.sep, "/")
@@ -257,6 +260,18 @@ class PackageIndex:
 
         # Every file that asks depends on the install rules read.
         return reads.remembered(self._layouts, directory, read)
+
+    def _catkin_layout(self, name: str, directory: str) -> Layout | None:
+        """The install layout of a catkin (ROS 1) package found in source; None for
+        any other package."""
+        def read() -> Layout | None:
+            manifest = os.path.join(directory, "package.xml")
+            ros1 = reads.is_file(manifest) and self.build_ros_version(manifest, 1) == 1
+            from launch_linter.workspace.install_layout import read_layout
+
+            return read_layout(directory, name) if ros1 else None
+
+        return reads.remembered(self._catkin_layouts, directory, read)
 
 
 

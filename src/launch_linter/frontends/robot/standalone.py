@@ -15,7 +15,7 @@ import re
 from collections.abc import Callable, Mapping
 
 from launch_linter.frontends.robot.describe import RobotCache, read_description
-from launch_linter.model.diagnostic import Problem
+from launch_linter.model.diagnostic import DESCRIPTION_NEVER_LOADED, Problem
 from launch_linter.model.launch import FileStatus, LaunchTree
 from launch_linter.model.record import replace
 from launch_linter.model.robot import DescriptionKind, DescriptionSource
@@ -78,8 +78,35 @@ def load_description(path: str, args: Mapping[str, str], packages: PackageIndex,
         # without a <frameName>, ROS 2's camera the sensor's link).
         robot = replace(robot, plugins=tuple(
             p if p.ros is not None else replace(p, ros=ros) for p in robot.plugins))
+    reason = why_never_loaded(path, packages)
+    if reason is not None:
+        problems = [*problems, Problem(
+            DESCRIPTION_NEVER_LOADED, shown, 1, 0,
+            f"nothing loads this robot description: {reason}; what is wrong in the "
+            "robot it makes is reported at info")]
     return LaunchTree(shown, FileStatus.OK, (), tuple(problems), (shown,),
                       descriptions=(source,), joints=robot.joints, robots=(robot,))
+
+
+def why_never_loaded(path: str, packages: PackageIndex) -> str | None:
+    """Why nothing runs the description ``path`` as a robot, or None when something
+    may (installed, named by a file of the workspace, or unknown).
+
+    A binary install of its package ships only what its install rules install (read
+    completely: ``PackageIndex.installs``; ROS 2 and catkin), so another workspace cannot
+    load a file they leave out; in its own workspace (a catkin devel space runs from
+    source), only a file that writes its name can load it
+    (:func:`launch_linter.workspace.loaders.loader_of`)."""
+    if packages.installs(path, catkin=True) is not False:
+        return None
+    # Imported here: only a description no install rule ships needs the workspace read.
+    from launch_linter.workspace.loaders import loader_of
+
+    if loader_of(path) is not None:
+        return None
+    return ("its package's install rules, read completely, install it nowhere, and no "
+            "file of the workspace outside test folders names it (no launch file, xacro "
+            "include, model.config or program)")
 
 
 
