@@ -181,3 +181,33 @@ def test_a_node_whose_parameters_switch_every_edge_off_sends_no_stamp(
     assert run(tmp_path, "m.launch.xml", text.format("")) == [(RULE, 2)]
     off = text.format('<param name="publish_tf" value="false"/>')
     assert run(tmp_path, "m.launch.xml", off) == []
+
+
+NAV2 = ("import os\nfrom launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "from launch_ros.actions import Node\n"
+        "from ament_index_python.packages import get_package_share_directory\n"
+        "def generate_launch_description():\n"
+        "    d = os.path.join(get_package_share_directory('nav2_bringup'), 'launch')\n"
+        "    f = os.path.join(os.path.dirname(__file__), 'nav.yaml')\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+        "             arguments=['-topic', 'robot_description', '-entity', 'r']),\n"
+        "        IncludeLaunchDescription(\n"
+        "            PythonLaunchDescriptionSource([d, '/bringup_launch.py']),\n"
+        "            launch_arguments={{'params_file': f{more}}}.items())])\n")
+
+
+def test_nav2_bringup_may_rewrite_the_files_use_sim_time_to_its_argument(
+        tmp_path: Path) -> None:
+    # Up to Humble RewrittenYaml sets the file's use_sim_time to the argument; from Iron
+    # the file's value overrides SetParameter: the distribution decides, not judged.
+    (tmp_path / "nav.yaml").write_text("amcl:\n  ros__parameters:\n    use_sim_time: False\n")
+    given = NAV2.format(more=", 'use_sim_time': 'true'")
+    assert run(tmp_path, "a.launch.py", given) == []
+    # Not given: the argument's default 'false' agrees with the file in every distribution.
+    assert run(tmp_path, "a.launch.py", NAV2.format(more="")) == [(RULE, 3)]
+    # A file without the key: nothing is rewritten (Foxy and Humble leave it unset).
+    (tmp_path / "nav.yaml").write_text("amcl:\n  ros__parameters:\n    alpha1: 0.2\n")
+    assert run(tmp_path, "a.launch.py", given) == [(RULE, 13)]

@@ -350,9 +350,16 @@ class Ros2Loader(Ros2Runner):
                                       scope, frame, where, started.name, "/")
         finally:
             self._judging_files = True
+        # RewrittenYaml sets each key the file has to the launch argument's value up to
+        # Humble; from Iron the file's value overrides a SetParameter: where they differ
+        # the value is the distribution's, unknown here.
+        params = []
+        for name, in_file in given.params:
+            value = started.value(name, in_file)
+            params.append((name, UNKNOWN_VALUE if value is None else value))
         self.nodes.append(NodeRecord(
             self._display(frame.filename), where.line, where.column, started.package,
-            started.executable, started.name, given.params, frame.condition,
+            started.executable, started.name, tuple(params), frame.condition,
             unread=given.unread, namespace=started.namespace, ros=2,
             param_lines=given.lines, included_at=frame.sites))
 
