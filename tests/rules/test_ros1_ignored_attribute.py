@@ -44,6 +44,19 @@ def test_labels_and_words_no_tag_reads_are_info() -> None:
     assert sorted(found(xml)) == [(2, "info"), (3, "info"), (5, "info"), (6, "info")]
 
 
+def test_an_unknown_tag_around_nodes_starts_none_of_them() -> None:
+    """samples9, cnuav_ros multi.launch: a <foreach> (not roslaunch's) around each drone's
+    nodes; roslaunch skips it whole, so no drone's controller starts."""
+    xml = ('<launch>\n<arg name="names" default="a, b"/>\n'
+           '<foreach ns="$(arg names)" arg="name">\n<group ns="$(arg name)">\n'
+           '<node pkg="p" type="t" name="n"/>\n</group>\n</foreach>\n'
+           '<sphinxdoc><group><param name="p" value="1"/></group></sphinxdoc>\n</launch>')
+    (warning, info) = run_rule(xml, RULE)
+    assert (warning.line, warning.severity.value) == (3, "warning")
+    assert "none of them starts" in warning.message
+    assert (info.line, info.severity.value) == (8, "info")
+
+
 def test_what_roslaunch_reads_is_silent() -> None:
     xml = ('<launch>\n<master auto="start"/>\n<arg name="a" default="1" doc="d"/>\n'
            '<group ns="r" clear_params="true" if="$(arg a)">\n'

@@ -79,7 +79,8 @@ def ignored_attributes(launch: Element, step: Callable[[], None]
             tag = element.tag.lower() if parent.tag in LOWERED else element.tag
             if tag not in inner:
                 if tag not in UNCHECKED_TAGS:
-                    yield parent, element, None, tag in READ_ATTRIBUTES
+                    yield parent, element, None, (tag in READ_ATTRIBUTES
+                                                  or _starts_something(element, step))
                 continue
             read = READ_ATTRIBUTES[tag]
             for name in element.attrib:
@@ -87,6 +88,25 @@ def ignored_attributes(launch: Element, step: Callable[[], None]
                     yield parent, element, name, tag in _DOERS and name in _READ_ELSEWHERE
             if tag in CHILD_TAGS:
                 pending.append(element)
+
+STARTERS = frozenset({"node", "test", "include"})
+"""The tags that start processes (or files that do): a skipped tag holding one was meant
+to run something, which never starts."""
+
+
+def _starts_something(element: Element, step: Callable[[], None]) -> bool:
+    """Whether a tag roslaunch reads nowhere holds a ``<node>``, ``<test>`` or
+    ``<include>`` (a ``<foreach>`` of another tool around nodes): skipped whole, none of
+    them starts. ``step`` is charged per element looked at."""
+    pending = list(element.children)
+    while pending:
+        inner = pending.pop()
+        step()
+        if inner.tag.lower() in STARTERS:
+            return True
+        pending.extend(inner.children)
+    return False
+
 
 def other_tags_reading(name: str) -> str:
     """The tags whose attribute ``name`` is, as a message says them (``<node> and <test>``)."""
@@ -99,6 +119,9 @@ def message(parent: Element, element: Element, name: str | None, mistaken: bool)
     if name is None:
         effect = (f"roslaunch only warns that it does not recognize <{element.tag}> there "
                   f"and skips it with all it holds")
+        if mistaken and element.tag not in READ_ATTRIBUTES:
+            return (f"{MISTAKEN_PREFIX}no <{element.tag}>, and this one holds tags that "
+                    f"start nodes: {effect}, so none of them starts")
         return (f"{MISTAKEN_PREFIX}<{element.tag}> elsewhere, not inside <{parent.tag}>: "
                 f"{effect}" if mistaken else
                 f"<{element.tag}> is not a tag roslaunch reads here: {effect}")

@@ -9,8 +9,9 @@ or passes something (`args` on an `<include>`, `from`/`to` on a `<param>`, `name
 `<rosparam>`): the author expected an effect there. Info otherwise: a label on a `<group>`
 (`name="odometry"`), a word no tag reads (`description` on an `<arg>`). The same for a
 child tag roslaunch skips where it is written: a warning for one it reads elsewhere (a
-`<param>` or `<remap>` inside an `<include>`, an `<arg>` inside a `<node>`), info for
-others (`<sphinxdoc>`).
+`<param>` or `<remap>` inside an `<include>`, an `<arg>` inside a `<node>`) or for one
+no tag reads that holds a `<node>`, `<test>` or `<include>` (another tool's `<foreach>`
+around nodes: none of them starts), info for others (`<sphinxdoc>`).
 
 ## Why is this bad?
 roslaunch's `XmlLoader._check_attrs` compares each tag's attributes with its list and, for
