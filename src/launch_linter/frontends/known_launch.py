@@ -12,6 +12,7 @@ from collections.abc import Mapping
 from launch_linter.knowledge import KnowledgeBase
 from launch_linter.knowledge.publish import truth
 from launch_linter.knowledge.values import LaunchFact
+from launch_linter.model.robot import UNKNOWN_VALUE
 
 MAX_TARGET_TEXT = 2_000
 _PACKAGE = re.compile(
@@ -52,7 +53,7 @@ class Started:
         self.fact = fact
         self.rewritten = dict(rewritten or {})
 
-    def value(self, parameter: str, written: str) -> str | None:
+    def value(self, parameter: str, written: str) -> str:
         """The value the node gets for ``parameter``, which its file writes ``written``:
         that, unless the launch file may rewrite it to another value (then the target
         distribution decides, which the front end does not know: None)."""
@@ -60,10 +61,9 @@ class Started:
         if leaf not in self.rewritten:
             return written
         other = self.rewritten[leaf]
-        if other is None:
-            return None
-        same = other == written or (truth(other) is not None and truth(other) == truth(written))
-        return written if same else None
+        same = other is not None and (
+            other == written or (truth(other) is not None and truth(other) == truth(written)))
+        return written if same else UNKNOWN_VALUE
 
 
 def started_by(text: str, ros: int, arguments: Mapping[str, str | None],
