@@ -78,9 +78,11 @@ def ignored_attributes(launch: Element, step: Callable[[], None]
             # roslaunch lowers the names of a node's and an include's children only.
             tag = element.tag.lower() if parent.tag in LOWERED else element.tag
             if tag not in inner:
-                if tag not in UNCHECKED_TAGS:
-                    yield parent, element, None, (tag in READ_ATTRIBUTES
-                                                  or _starts_something(element, step))
+                if tag in READ_ATTRIBUTES:
+                    yield parent, element, None, (parent.tag != "include"
+                                                  or _passes_an_argument(element, step))
+                elif tag not in UNCHECKED_TAGS:
+                    yield parent, element, None, _starts_something(element, step)
                 continue
             read = READ_ATTRIBUTES[tag]
             for name in element.attrib:
@@ -103,6 +105,23 @@ def _starts_something(element: Element, step: Callable[[], None]) -> bool:
         inner = pending.pop()
         step()
         if inner.tag.lower() in STARTERS:
+            return True
+        pending.extend(inner.children)
+    return False
+
+
+def _passes_an_argument(element: Element, step: Callable[[], None]) -> bool:
+    """Whether a skipped tag roslaunch reads elsewhere (a ``<param>`` inside an
+    ``<include>``) passes on one of the file's arguments (``value="$(arg port)"``): the
+    setting the file offers is then dropped whatever a user gives; a literal may only
+    restate what the included file sets itself."""
+    if any("$(arg " in value for value in element.attrib.values()):
+        return True
+    pending = list(element.children)
+    while pending:
+        inner = pending.pop()
+        step()
+        if any("$(arg " in value for value in inner.attrib.values()):
             return True
         pending.extend(inner.children)
     return False
