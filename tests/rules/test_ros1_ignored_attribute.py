@@ -34,7 +34,12 @@ def test_a_tag_roslaunch_skips_where_it_is_written() -> None:
            '<node pkg="p" type="t" name="n">\n<arg name="x" value="1"/>\n'
            '<Param name="rate" value="5"/>\n</node>\n</launch>')
     # The node's <Param> is read (roslaunch lowers a node's children's names).
-    assert found(xml) == [(3, "warning"), (6, "warning")]
+    assert found(xml) == [(3, "info"), (6, "warning")]
+    # samples9: a skipped <param> that passes on the file's argument drops what a user
+    # gives; a literal may restate the included file's own value (info).
+    passed = xml.replace('value="base_footprint"', 'value="$(arg base)"').replace(
+        '<launch>\n', '<launch>\n<arg name="base" default="base_footprint"/>')
+    assert found(passed) == [(3, "warning"), (6, "warning")]
 
 
 def test_labels_and_words_no_tag_reads_are_info() -> None:
@@ -42,6 +47,19 @@ def test_labels_and_words_no_tag_reads_are_info() -> None:
            'display="screen"/>\n</group>\n<arg name="a" default="1" description="d"/>\n'
            '<sphinxdoc><![CDATA[text]]></sphinxdoc>\n</launch>')
     assert sorted(found(xml)) == [(2, "info"), (3, "info"), (5, "info"), (6, "info")]
+
+
+def test_an_unknown_tag_around_nodes_starts_none_of_them() -> None:
+    """samples9, cnuav_ros multi.launch: a <foreach> (not roslaunch's) around each drone's
+    nodes; roslaunch skips it whole, so no drone's controller starts."""
+    xml = ('<launch>\n<arg name="names" default="a, b"/>\n'
+           '<foreach ns="$(arg names)" arg="name">\n<group ns="$(arg name)">\n'
+           '<node pkg="p" type="t" name="n"/>\n</group>\n</foreach>\n'
+           '<sphinxdoc><group><param name="p" value="1"/></group></sphinxdoc>\n</launch>')
+    (warning, info) = run_rule(xml, RULE)
+    assert (warning.line, warning.severity.value) == (3, "warning")
+    assert "none of them starts" in warning.message
+    assert (info.line, info.severity.value) == (8, "info")
 
 
 def test_what_roslaunch_reads_is_silent() -> None:

@@ -181,3 +181,71 @@ def test_a_node_whose_parameters_switch_every_edge_off_sends_no_stamp(
     assert run(tmp_path, "m.launch.xml", text.format("")) == [(RULE, 2)]
     off = text.format('<param name="publish_tf" value="false"/>')
     assert run(tmp_path, "m.launch.xml", off) == []
+
+
+NAV2 = ("import os\nfrom launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "from launch_ros.actions import Node\n"
+        "from ament_index_python.packages import get_package_share_directory\n"
+        "def generate_launch_description():\n"
+        "    d = os.path.join(get_package_share_directory('nav2_bringup'), 'launch')\n"
+        "    f = os.path.join(os.path.dirname(__file__), 'nav.yaml')\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+        "             arguments=['-topic', 'robot_description', '-entity', 'r']),\n"
+        "        IncludeLaunchDescription(\n"
+        "            PythonLaunchDescriptionSource([d, '/bringup_launch.py']),\n"
+        "            launch_arguments={{'params_file': f{more}}}.items())])\n")
+
+
+def test_nav2_bringup_may_rewrite_the_files_use_sim_time_to_its_argument(
+        tmp_path: Path) -> None:
+    # Up to Humble RewrittenYaml sets the file's use_sim_time to the argument; from Iron
+    # the file's value overrides SetParameter: the distribution decides, not judged.
+    (tmp_path / "nav.yaml").write_text("amcl:\n  ros__parameters:\n    use_sim_time: False\n")
+    given = NAV2.format(more=", 'use_sim_time': 'true'")
+    assert run(tmp_path, "a.launch.py", given) == []
+    # Not given: the argument's default 'false' agrees with the file in every distribution.
+    assert run(tmp_path, "a.launch.py", NAV2.format(more="")) == [(RULE, 3)]
+    # A file without the key: nothing is rewritten (Foxy and Humble leave it unset).
+    (tmp_path / "nav.yaml").write_text("amcl:\n  ros__parameters:\n    alpha1: 0.2\n")
+    assert run(tmp_path, "a.launch.py", given) == [(RULE, 13)]
+
+
+INCLUDED = ("from launch import LaunchDescription\n"
+            "from launch.actions import DeclareLaunchArgument\n"
+            "from launch.conditions import IfCondition, UnlessCondition\n"
+            "from launch.substitutions import LaunchConfiguration\n"
+            "from launch_ros.actions import Node\n"
+            "def generate_launch_description():\n"
+            "    ns = LaunchConfiguration('use_namespace')\n"
+            "    return LaunchDescription([\n"
+            "        DeclareLaunchArgument('use_namespace', default_value='false'),\n"
+            "        Node(condition=UnlessCondition(ns), package='rviz2', executable='rviz2'),\n"
+            "        Node(condition=IfCondition(ns), package='rviz2', executable='rviz2',\n"
+            "             namespace='tb1')])\n")
+HANDLER = ("import os\nfrom launch import LaunchDescription\n"
+           "from launch.actions import IncludeLaunchDescription, RegisterEventHandler\n"
+           "from launch.event_handlers import OnProcessExit\n"
+           "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+           "from launch_ros.actions import Node\n"
+           "def generate_launch_description():\n"
+           "    spawn = Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+           "                 arguments=['-topic', 'robot_description', '-entity', 'r'])\n"
+           "    rviz = IncludeLaunchDescription(PythonLaunchDescriptionSource(\n"
+           "        os.path.join(os.path.dirname(__file__), 'rviz.launch.py')),\n"
+           "        launch_arguments={'use_namespace': 'True'}.items())\n"
+           "    return LaunchDescription([spawn, RegisterEventHandler(\n"
+           "        OnProcessExit(target_action=spawn, on_exit=[rviz]))])\n")
+
+
+def test_an_include_in_an_event_handler_keeps_its_arguments_inside(tmp_path: Path) -> None:
+    """samples9, turtlebot3_multi_robot's template: nav2's rviz_launch.py included from an
+    OnProcessExit handler with use_namespace 'True': only the namespaced rviz2 runs."""
+    (tmp_path / "rviz.launch.py").write_text(INCLUDED)
+    path = tmp_path / "sim.launch.py"
+    path.write_text(HANDLER)
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = lint_paths([str(path)], options).diagnostics
+    assert [(Path(d.path).name, d.line) for d in found] == [("rviz.launch.py", 11)]

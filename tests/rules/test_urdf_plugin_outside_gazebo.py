@@ -27,6 +27,20 @@ def test_a_sensor_straight_under_robot_too() -> None:
     assert lint_urdf(inside, RULE) == ()
 
 
+def test_urdfs_own_sensor_element_is_not_a_gazebo_sensor() -> None:
+    """samples9, Fengming-Zhang/catkin_ws kejia.urdf: the wiki's urdf/XML/sensor form,
+    fixed to its <parent link>, describes the laser; it was never meant for Gazebo."""
+    urdf_sensor = ('\n<sensor name="big_laser" update_rate="40"><parent link="base_link"/>'
+                   '<origin xyz="0 0.35 0.38" rpy="0 0 0"/><ray><horizontal samples="100" '
+                   'resolution="1" min_angle="-1.57" max_angle="1.57"/></ray></sensor>')
+    assert lint_urdf(robot(BODY + urdf_sensor), RULE) == ()
+    gazebo_sensor = ('\n<sensor name="big_laser" type="ray"><update_rate>40</update_rate>'
+                     '<ray><scan><horizontal><samples>100</samples></horizontal></scan>'
+                     '</ray></sensor>')
+    (found,) = lint_urdf(robot(BODY + gazebo_sensor), RULE)
+    assert "<sensor> 'big_laser'" in found.message
+
+
 def test_a_macro_plugin_is_reported_once_where_it_is_written() -> None:
     macro = f'<xacro:macro name="drive" params="n">{PLUGIN}</xacro:macro>\n'
     (found,) = lint_urdf(robot(BODY + macro + '<xacro:drive n="1"/>\n<xacro:drive n="2"/>'),

@@ -12,6 +12,7 @@ from collections.abc import Mapping
 from launch_linter.knowledge import KnowledgeBase
 from launch_linter.knowledge.publish import truth
 from launch_linter.knowledge.values import LaunchFact
+from launch_linter.model.robot import UNKNOWN_VALUE
 
 MAX_TARGET_TEXT = 2_000
 _PACKAGE = re.compile(
@@ -35,18 +36,34 @@ def include_target(text: str) -> tuple[str, str] | None:
 
 class Started:
     """A known node a launch file starts: its program, name and namespace (None when the
-    namespace argument is not known), and the parameter file it is given."""
+    namespace argument is not known), the parameter file it is given, and the value each
+    parameter the launch file may rewrite would be rewritten to (None: not resolved)."""
 
-    __slots__ = ("package", "executable", "name", "namespace", "parameter_file", "fact")
+    __slots__ = ("package", "executable", "name", "namespace", "parameter_file", "fact",
+                 "rewritten")
 
     def __init__(self, package: str, executable: str, name: str, namespace: str | None,
-                 parameter_file: str, fact: LaunchFact) -> None:
+                 parameter_file: str, fact: LaunchFact,
+                 rewritten: Mapping[str, str | None] | None = None) -> None:
         self.package = package
         self.executable = executable
         self.name = name
         self.namespace = namespace
         self.parameter_file = parameter_file
         self.fact = fact
+        self.rewritten = dict(rewritten or {})
+
+    def value(self, parameter: str, written: str) -> str:
+        """The value the node gets for ``parameter``, which its file writes ``written``:
+        that, unless the launch file may rewrite it to another value (then the target
+        distribution decides, which the front end does not know: None)."""
+        leaf = parameter.rsplit(".", 1)[-1]
+        if leaf not in self.rewritten:
+            return written
+        other = self.rewritten[leaf]
+        same = other is not None and (
+            other == written or (truth(other) is not None and truth(other) == truth(written)))
+        return written if same else UNKNOWN_VALUE
 
 
 def started_by(text: str, ros: int, arguments: Mapping[str, str | None],
@@ -69,5 +86,7 @@ def started_by(text: str, ros: int, arguments: Mapping[str, str | None],
     if fact.namespace_argument is not None and fact.namespace_argument in arguments:
         given = arguments[fact.namespace_argument]
         namespace = None if given is None else "/" + given.strip("/")
-    return [Started(package, executable, name, namespace, parameter_file, fact)
+    rewritten = {parameter: arguments.get(argument, default)
+                 for parameter, argument, default in fact.rewrites}
+    return [Started(package, executable, name, namespace, parameter_file, fact, rewritten)
             for package, executable, name in fact.nodes]

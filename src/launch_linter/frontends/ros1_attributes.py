@@ -82,8 +82,11 @@ def ignored_attributes(launch: Element, step: Callable[[int], None]
         for element in children:
             tag = element.tag.lower() if lowered else element.tag
             if tag not in inner:
-                if tag not in UNCHECKED_TAGS:
-                    yield parent, element, None, tag in READ_ATTRIBUTES
+                if tag in READ_ATTRIBUTES:
+                    yield parent, element, None, (parent.tag != "include"
+                                                  or _passes_an_argument(element, step))
+                elif tag not in UNCHECKED_TAGS:
+                    yield parent, element, None, _starts_something(element, step)
                 continue
             if not _ACCEPTED[tag].issuperset(element.attrib):  # most elements: one C call
                 read = READ_ATTRIBUTES[tag]
@@ -92,6 +95,48 @@ def ignored_attributes(launch: Element, step: Callable[[int], None]
                         yield parent, element, name, tag in _DOERS and name in _READ_ELSEWHERE
             if element.children and tag in CHILD_TAGS:
                 pending.append(element)
+
+
+STARTERS = frozenset({"node", "test", "include"})
+"""The tags that start processes (or files that do): a skipped tag holding one was meant
+to run something, which never starts."""
+
+
+def _starts_something(element: Element, step: Callable[[int], None]) -> bool:
+    """Whether a tag roslaunch reads nowhere holds a ``<node>``, ``<test>`` or
+    ``<include>`` (a ``<foreach>`` of another tool around nodes): skipped whole, none of
+    them starts. ``step`` is charged per element looked at."""
+    pending = list(element.children)
+    if pending:
+        step(len(pending))
+    while pending:
+        inner = pending.pop()
+        if inner.tag.lower() in STARTERS:
+            return True
+        if inner.children:
+            pending.extend(inner.children)
+            step(len(inner.children))
+    return False
+
+
+def _passes_an_argument(element: Element, step: Callable[[int], None]) -> bool:
+    """Whether a skipped tag roslaunch reads elsewhere (a ``<param>`` inside an
+    ``<include>``) passes on one of the file's arguments (``value="$(arg port)"``): the
+    setting the file offers is then dropped whatever a user gives; a literal may only
+    restate what the included file sets itself."""
+    if any("$(arg " in value for value in element.attrib.values()):
+        return True
+    pending = list(element.children)
+    if pending:
+        step(len(pending))
+    while pending:
+        inner = pending.pop()
+        if any("$(arg " in value for value in inner.attrib.values()):
+            return True
+        if inner.children:
+            pending.extend(inner.children)
+            step(len(inner.children))
+    return False
 
 
 def other_tags_reading(name: str) -> str:
@@ -105,6 +150,9 @@ def message(parent: Element, element: Element, name: str | None, mistaken: bool)
     if name is None:
         effect = (f"roslaunch only warns that it does not recognize <{element.tag}> there "
                   f"and skips it with all it holds")
+        if mistaken and element.tag not in READ_ATTRIBUTES:
+            return (f"{MISTAKEN_PREFIX}no <{element.tag}>, and this one holds tags that "
+                    f"start nodes: {effect}, so none of them starts")
         return (f"{MISTAKEN_PREFIX}<{element.tag}> elsewhere, not inside <{parent.tag}>: "
                 f"{effect}" if mistaken else
                 f"<{element.tag}> is not a tag roslaunch reads here: {effect}")

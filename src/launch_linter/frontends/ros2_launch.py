@@ -88,10 +88,10 @@ from launch_linter.frontends.ros2_run import (
     _is_static_tf,
     _join_argv,
     _Scope,
-    _yaml_is_string,
     make_absolute,
     prefix_namespace,
 )
+from launch_linter.frontends.ros2_yaml import _yaml_is_string
 from launch_linter.knowledge import bundled
 from launch_linter.model.diagnostic import Location, Problem
 from launch_linter.model.launch import (
@@ -350,9 +350,11 @@ class Ros2Loader(Ros2Runner):
                                       scope, frame, where, started.name, "/")
         finally:
             self._judging_files = True
+        # nav2's RewrittenYaml may set a value to the launch argument's (Started.value).
+        params = tuple((name, started.value(name, text)) for name, text in given.params)
         self.nodes.append(NodeRecord(
             self._display(frame.filename), where.line, where.column, started.package,
-            started.executable, started.name, given.params, frame.condition,
+            started.executable, started.name, params, frame.condition,
             unread=given.unread, namespace=started.namespace, ros=2,
             param_lines=given.lines, included_at=frame.sites))
 

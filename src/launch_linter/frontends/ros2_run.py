@@ -172,18 +172,6 @@ def _is_static_tf(package: str | None, executable: str | None, wanted: str) -> b
     return executable is not None or package is not None
 
 
-def _yaml_is_string(text: str) -> bool:
-    """Whether launch's YAML typing keeps a parameter text as a string."""
-    word = text.strip().lower()
-    if word in ("true", "false", "yes", "no", "on", "off", ".inf", "-.inf", "+.inf", ".nan"):
-        return False
-    try:
-        float(word.replace("_", ""))
-    except ValueError:
-        return True
-    return False
-
-
 class Ros2Runner:
     """Runs the actions of one root file (and its includes) in order."""
 
@@ -617,7 +605,14 @@ class Ros2Runner:
                        (*frame.calls, call), (*frame.sites, site))
         self.arguments.start(action, absolute, passed if action.args_known else {})
         self.arguments.file_read(data, reads_as_python(absolute, data))
+        # Inside the file its arguments hold as given, even under an undecided condition (an
+        # event handler): all it starts carries it. After it they hold only under it.
+        uncertain = [] if self._certain(scope, frame.condition) else given_values
+        scope.configs.update(uncertain)
         self._run(read.actions, scope, inner)
+        for name, value in uncertain:
+            if scope.configs.get(name) is value:
+                self._set(scope, name, value, frame.condition, f"$(var {name})")
         self.arguments.finish(self._display)
 
     # -- defined by a subclass, further on ---------------------------------------------------

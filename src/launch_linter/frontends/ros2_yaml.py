@@ -169,3 +169,15 @@ def read_yaml(path: str, data: bytes) -> FileRead:
 def _error(line: int, column: int, message: str,
            comments: tuple[tuple[int, str], ...] = ()) -> FileRead:
     return FileRead(FORMAT, None, comments, (), (Problem("parse_error", line, column, message),))
+
+
+def _yaml_is_string(text: str) -> bool:
+    """Whether launch's YAML typing keeps a parameter text as a string."""
+    word = text.strip().lower()
+    if word in ("true", "false", "yes", "no", "on", "off", ".inf", "-.inf", "+.inf", ".nan"):
+        return False
+    try:
+        float(word.replace("_", ""))
+    except ValueError:
+        return True
+    return False

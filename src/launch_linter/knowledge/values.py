@@ -13,7 +13,8 @@ by a user's files as the tf entries are.
   the package's own ``owned_prefix`` or listed in ``refuses`` is known to be refused.
 - :class:`LaunchFact`: a launch file of an installed package that starts known nodes
   with the parameter file one of its arguments names (nav2_bringup's ``params_file``):
-  an include of it the linter cannot follow still tells those nodes' parameters.
+  an include of it the linter cannot follow still tells those nodes' parameters, and
+  which of them the launch file rewrites from its own arguments (``rewrites``).
 
 Standard library only: the core reads it.
 """
@@ -86,15 +87,20 @@ class LaunchFact:
     """A launch file (``package`` and its paths in the share folder) that starts
     ``nodes`` (package, executable, name) with the parameter file its argument
     ``parameter_file_argument`` names, under the namespace ``namespace_argument`` names,
-    and starts none of them when ``unless_argument`` is true."""
+    and starts none of them when ``unless_argument`` is true. ``rewrites``: (parameter,
+    argument, the argument's default) for each parameter the launch file sets, where the
+    parameter file has it, to its argument's value in some distributions and not in
+    others (nav2_bringup's RewrittenYaml up to Humble; from Iron a ``SetParameter`` the
+    file's own value overrides): where the two differ the value is the distribution's."""
 
     __slots__ = ("id", "ros", "package", "launch", "parameter_file_argument",
-                 "namespace_argument", "unless_argument", "nodes", "sources")
+                 "namespace_argument", "unless_argument", "nodes", "sources", "rewrites")
 
     def __init__(self, id: str, ros: int, package: str, launch: tuple[str, ...],
                  parameter_file_argument: str, namespace_argument: str | None,
                  unless_argument: str | None, nodes: tuple[tuple[str, str, str], ...],
-                 sources: tuple[Source, ...]) -> None:
+                 sources: tuple[Source, ...],
+                 rewrites: tuple[tuple[str, str, str], ...] = ()) -> None:
         self.id = id
         self.ros = ros
         self.package = package
@@ -104,6 +110,7 @@ class LaunchFact:
         self.unless_argument = unless_argument
         self.nodes = nodes
         self.sources = sources
+        self.rewrites = rewrites
 
 
 def _ros(value: Any, where: str) -> int:
@@ -160,6 +167,9 @@ def parse_launch(data: Any, where: str) -> LaunchFact:
         raise KnowledgeError(f"{where}.nodes must be a list of objects")
     namespace = data.get("namespace_argument")
     unless = data.get("unless_argument")
+    rewrites = data.get("rewrites", [])
+    if not isinstance(rewrites, list) or not all(isinstance(r, dict) for r in rewrites):
+        raise KnowledgeError(f"{where}.rewrites must be a list of objects")
     return LaunchFact(
         fact_id, _ros(data.get("ros"), f"{where}.ros"),
         _text(data.get("package"), f"{where}.package"),
@@ -171,7 +181,11 @@ def parse_launch(data: Any, where: str) -> LaunchFact:
                _text(n.get("executable"), f"{where}.nodes[{i}].executable"),
                _text(n.get("name"), f"{where}.nodes[{i}].name"))
               for i, n in enumerate(nodes)),
-        _sources(data.get("sources"), f"{where}.sources"))
+        _sources(data.get("sources"), f"{where}.sources"),
+        tuple((_text(r.get("parameter"), f"{where}.rewrites[{i}].parameter"),
+               _text(r.get("argument"), f"{where}.rewrites[{i}].argument"),
+               _text(r.get("default"), f"{where}.rewrites[{i}].default"))
+              for i, r in enumerate(rewrites)))
 
 
 class ValueKnowledge:

@@ -8,9 +8,12 @@ warning when the attribute is one roslaunch reads on another tag and the tag sta
 or passes something (`args` on an `<include>`, `from`/`to` on a `<param>`, `name` on a
 `<rosparam>`): the author expected an effect there. Info otherwise: a label on a `<group>`
 (`name="odometry"`), a word no tag reads (`description` on an `<arg>`). The same for a
-child tag roslaunch skips where it is written: a warning for one it reads elsewhere (a
-`<param>` or `<remap>` inside an `<include>`, an `<arg>` inside a `<node>`), info for
-others (`<sphinxdoc>`).
+child tag roslaunch skips where it is written: a warning for one it reads elsewhere (an
+`<arg>` inside a `<node>`; a `<param>` or `<remap>` inside an `<include>` when it passes
+on one of the file's arguments, `value="$(arg port)"`, which then does nothing whatever a
+user gives: written literally it may restate the included file's own value, info) or for one
+no tag reads that holds a `<node>`, `<test>` or `<include>` (another tool's `<foreach>`
+around nodes: none of them starts), info for others (`<sphinxdoc>`).
 
 ## Why is this bad?
 roslaunch's `XmlLoader._check_attrs` compares each tag's attributes with its list and, for

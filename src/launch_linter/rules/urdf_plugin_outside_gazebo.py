@@ -3,7 +3,9 @@
 ## What it does
 Reports a `<plugin>` or `<sensor>` element that is a direct child of the expanded robot
 description's `<robot>` element instead of the child of a `<gazebo>` element. One under an
-undecided `xacro:if` is not judged, nor a description xacro refuses.
+undecided `xacro:if` is not judged, nor a description xacro refuses, nor URDF's own
+`<sensor>` element (the wiki's urdf/XML/sensor form, fixed to a `<parent link>`), which
+describes a sensor and is not meant for Gazebo.
 
 ## Why is this bad?
 Nothing reads it. urdfdom skips the elements of `<robot>` it does not know

@@ -17,7 +17,8 @@ refusals in any element's text (`<updateRate>$(arg rate)</updateRate>`: xacro ev
 every text node as it does attributes; a CDATA section is left as written). A file xacro
 reads, the top one or an included one, that is not well-formed XML (`--` inside a comment,
 a tag left open): xacro parses each with minidom, which stops on it (a description read as
-text, `textfile=` or `cat`, is urdfdom's to parse: unknown). A xacro file the launch
+text, `textfile=` or `cat`, is urdfdom's to parse: unknown; no xacro runs on it, so its
+`<xacro:...>` elements are ones urdfdom skips, never reported). A xacro file the launch
 file's command names that is provably not there (under the ROS 1 launch file's own
 folder; written from `$(dirname)` with its folder there, as a `<rosparam file>` is
 judged; or in a ROS 1 package found; a `*.xacro` name, which no build step makes), reported at the

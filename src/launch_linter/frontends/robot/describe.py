@@ -462,8 +462,11 @@ def read_description(source: DescriptionSource, packages: PackageIndex, cache: R
         # minidom, and takes some of what expat refuses (space before the declaration).
         problems = [replace(p, kind=UNKNOWN) if p.fatal and p.kind == REFUSED else p
                     for p in problems]
-    faults = _faults(problems, source, display) + legacy_order_refusal(
+    # A description read as text (textfile=, cat, open().read()) is never run through
+    # xacro: its <xacro:...> elements are ones urdfdom skips, not calls xacro refuses.
+    faults = (_faults(problems, source, display) + legacy_order_refusal(
         files, env, source.xacro_options, display)
+        if source.kind is DescriptionKind.XACRO else ())
     proven = {(f.path, f.line, f.message) for f in faults if f.proven}
     followed_up = [p for p in _causes(problems)
                    if (display(p.path), p.line, p.message) not in proven]

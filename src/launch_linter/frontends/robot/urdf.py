@@ -139,7 +139,8 @@ def elements_of(root: ExpandedNode, display: Display,
         return out, False
     for element in root.children:
         if element.tag in OUTSIDE_GAZEBO:
-            out.append(_outside_gazebo(element, display, outer))
+            if not _urdf_sensor(element):
+                out.append(_outside_gazebo(element, display, outer))
             continue
         if element.tag not in ("link", "joint", "material"):
             continue
@@ -176,6 +177,15 @@ OUTSIDE_GAZEBO = ("plugin", "sensor")
 """Gazebo's elements that do nothing straight under ``<robot>``: urdfdom skips elements it
 does not know, and Gazebo's URDF reader (sdformat's parser_urdf.cc ``ParseSDFExtension``)
 takes plugins and sensors only from ``<gazebo>`` elements."""
+
+
+def _urdf_sensor(element: ExpandedNode) -> bool:
+    """Whether a ``<sensor>`` is URDF's own sensor element (wiki.ros.org/urdf/XML/sensor:
+    the ``<parent link>`` it is fixed to, an ``<origin>``, a ``<camera>`` or ``<ray>``
+    with attributes), which describes the sensor and was never meant for Gazebo, not a
+    Gazebo sensor written in the wrong place: SDFormat's ``<sensor>`` has no ``<parent>``
+    (its link is the ``<gazebo reference>``)."""
+    return element.tag == "sensor" and any(child.tag == "parent" for child in element.children)
 
 
 def _outside_gazebo(element: ExpandedNode, display: Display,
