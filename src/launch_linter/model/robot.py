@@ -340,7 +340,10 @@ class RobotElement(Record):
     named after the joint it mimics, just after its joint (and that joint's ignored
     ``<origin>`` elements) in the description's ``elements``, or ``outside_gazebo``: a
     ``<plugin>`` or ``<sensor>`` straight under ``<robot>`` (Gazebo reads them only inside
-    ``<gazebo>``), named ``<plugin> 'libx.so'`` or ``<sensor> 'name'``."""
+    ``<gazebo>``), named ``<plugin> 'libx.so'`` or ``<sensor> 'name'``, or
+    ``gazebo_reference``: a ``<gazebo reference=...>`` straight under ``<robot>``, named by
+    the link or joint it names (Gazebo's URDF reader puts its content into that link or
+    joint only)."""
     name: str | None
     path: str
     line: int

@@ -39,6 +39,7 @@ def _load() -> None:
         frame_authority,
         frame_param_slash,
         frame_without_publisher,
+        gazebo_reference_unknown,
         int_suffix,
         joint_states_two_publishers,
         leading_slash,

@@ -64,6 +64,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("urdf_repeated_origin", Category.TF),
     ("urdf_mimic_unknown", Category.TF),
     ("urdf_plugin_outside_gazebo", Category.TF),
+    ("gazebo_reference_unknown", Category.TF),
     ("xacro_error", Category.TF),
     ("xacro_unused_block", Category.TF),
     ("xacro_param_as_arg", Category.TF),

@@ -141,6 +141,9 @@ def elements_of(root: ExpandedNode, display: Display,
         if element.tag in OUTSIDE_GAZEBO:
             out.append(_outside_gazebo(element, display, outer))
             continue
+        if element.tag == "gazebo" and "reference" in element.attrib:
+            out.append(_gazebo_reference(element, display, outer))
+            continue
         if element.tag not in ("link", "joint", "material"):
             continue
         # urdfdom keeps a top-level material without a name as '' (its parseMaterial
@@ -191,6 +194,18 @@ def _outside_gazebo(element: ExpandedNode, display: Display,
     defined = (None if element.call is None
                else (display(element.path), element.line, element.column))
     return RobotElement("outside_gazebo", name, display(at[0]), at[1], at[2],
+                        outer & _condition(element.conditions), defined)
+
+
+def _gazebo_reference(element: ExpandedNode, display: Display,
+                      outer: Condition) -> RobotElement:
+    """A ``<gazebo reference="...">`` straight under ``<robot>``, as an element of kind
+    ``gazebo_reference`` named by its reference (None when the name is not known)."""
+    name = None if "reference" in element.unknown else element.attrib["reference"]
+    at = element.call or (element.path, element.line, element.column)
+    defined = (None if element.call is None
+               else (display(element.path), element.line, element.column))
+    return RobotElement("gazebo_reference", name, display(at[0]), at[1], at[2],
                         outer & _condition(element.conditions), defined)
 
 
