@@ -65,6 +65,7 @@ def _load() -> None:
         reversed_name,
         robot_frame_collision,
         ros1_ignored_attribute,
+        ros1_spawner_namespace,
         ros1_unused_arg,
         ros2_bad_flag,
         ros2_missing_keyword,
