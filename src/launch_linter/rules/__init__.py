@@ -88,6 +88,7 @@ def _load() -> None:
         sig_null_disp,
         sig_null_rot,
         sim_clock_not_bridged,
+        sim_plugin_missing,
         sim_time_mismatch,
         sim_time_not_forwarded,
         tf_cycle,

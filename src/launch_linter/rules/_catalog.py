@@ -66,6 +66,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("urdf_plugin_outside_gazebo", Category.TF),
     ("gazebo_reference_unknown", Category.TF),
     ("ros1_spawner_namespace", Category.LAUNCH),
+    ("sim_plugin_missing", Category.TF),
     ("xacro_error", Category.TF),
     ("xacro_unused_block", Category.TF),
     ("xacro_param_as_arg", Category.TF),
