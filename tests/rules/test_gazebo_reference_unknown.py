@@ -79,3 +79,11 @@ def test_many_references_are_read_in_linear_time() -> None:
     found = lint_urdf(text, RULE)
     assert time.process_time() - start < 30.0
     assert len(found) == 20_000
+
+
+def test_a_dropped_property_block_is_info() -> None:
+    """A material or friction setting on no link does nothing, but loses no data or frame
+    (kobuki_207's casters, rg2_simulation_2's fingers)."""
+    (found,) = lint_urdf(robot(BODY + '\n<gazebo reference="caster"><mu1>0</mu1></gazebo>'),
+                         RULE)
+    assert found.severity.value == "info" and "do nothing" in found.message

@@ -347,9 +347,10 @@ class RobotElement(Record):
     ``<origin>`` elements) in the description's ``elements``, or ``outside_gazebo``: a
     ``<plugin>`` or ``<sensor>`` straight under ``<robot>`` (Gazebo reads them only inside
     ``<gazebo>``), named ``<plugin> 'libx.so'`` or ``<sensor> 'name'``, or
-    ``gazebo_reference``: a ``<gazebo reference=...>`` straight under ``<robot>``, named by
-    the link or joint it names (Gazebo's URDF reader puts its content into that link or
-    joint only)."""
+    ``gazebo_reference``: a ``<gazebo reference=...>`` straight under ``<robot>`` that holds
+    a ``<sensor>`` or ``<plugin>``, named by the link or joint it names (Gazebo's URDF
+    reader puts its content into that link or joint only), or ``gazebo_properties``: one
+    that holds only simulation properties (material, friction, damping)."""
     name: str | None
     path: str
     line: int

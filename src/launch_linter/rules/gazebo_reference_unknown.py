@@ -6,7 +6,9 @@ description) whose `X` is the name of no `<link>` and no `<joint>` of that descr
 It judges only a description whose every link name and joint end is known, whose joints
 name links it defines (one that does not is a fragment or refused: `urdf_missing_link`
 says so), and only a reference written outside an undecided `xacro:if`; a link or joint
-of that name under any condition keeps it silent.
+of that name under any condition keeps it silent. A block that holds a `<sensor>` or a
+`<plugin>` is a warning; one that holds only simulation properties (a material, friction,
+damping) is info: nothing of the tf tree or of the robot's data is lost.
 
 ## Why is this bad?
 Gazebo converts the URDF to SDFormat when the robot is spawned, and the converter puts a
@@ -72,6 +74,9 @@ ID = "gazebo_reference_unknown"
 CATEGORY = Category.TF
 SEVERITY = Severity.WARNING
 EXAMPLE_PATH = "example.urdf"
+KINDS = ("gazebo_reference", "gazebo_properties")
+"""A block holding a sensor or plugin (warning: data and frames are lost), and one holding
+only simulation properties (info: a material or a friction setting does nothing)."""
 MAX_SUGGESTED = 20
 """Close names are offered for this many findings of one description (each costs a scan
 of its names)."""
@@ -86,9 +91,10 @@ def check(context: RuleContext) -> Iterator[Finding]:
         known = sorted(names)
         suggested = 0
         for element in robot.elements:
-            if (element.kind != "gazebo_reference" or element.name is None
+            if (element.kind not in KINDS or element.name is None
                     or element.name in names or not element.condition.always):
                 continue
+            holds_sensor = element.kind == "gazebo_reference"
             shown = written_place(element, seen)
             if shown is None:
                 continue
@@ -100,9 +106,13 @@ def check(context: RuleContext) -> Iterator[Finding]:
                 f"<gazebo reference=\"{element.name}\"> names no link or joint of the "
                 f"description{defined_phrase(close)}: Gazebo's URDF reader (sdformat) puts a "
                 f"<gazebo> element's content only into the link or joint its reference "
-                f"names, so this one is dropped without a message: a sensor in it is never "
-                f"created and a plugin in it never loads (no data, no frames)",
+                f"names, so this one is dropped without a message: "
+                + ("the sensor or plugin in it is never created (no data, no frames)"
+                   if holds_sensor else
+                   "the simulation properties in it (material, friction, damping) do "
+                   "nothing"),
                 element.name, related,
+                severity=None if holds_sensor else Severity.INFO,
             )
 
 
