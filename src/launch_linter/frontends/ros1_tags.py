@@ -41,6 +41,7 @@ from launch_linter.frontends.ros1_names import (
     ns_join,
 )
 from launch_linter.frontends.ros1_root_args import undeclared_root_arg
+from launch_linter.frontends.tokens import split_args
 from launch_linter.model.record import replace
 from launch_linter.model.robot import UNKNOWN_VALUE, NodeRecord
 from launch_linter.model.transform import ALWAYS, Condition
@@ -58,6 +59,17 @@ _PARAM_SOURCES = ("textfile", "binfile", "command")
 _PARAM_SOURCE_NAMES = frozenset(_PARAM_SOURCES)
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
 NODELET = ("nodelet", "nodelet")
+CONTROLLER_MANAGER = "controller_manager"
+"""The package whose nodes (``spawner``, ``controller_manager``) keep their ``args``: a
+spawner's ``--namespace`` names where it calls the controller manager."""
+
+
+def _manager_args(args: Value | None) -> tuple[str, ...] | None:
+    """A controller_manager node's argument words, None when one is not resolved."""
+    if args is None:
+        return ()
+    words = split_args(args)
+    return None if words.unresolved or words.quoting_error else words.words
 NODELET_ARGS_UNKNOWN = "nodelet (arguments not resolved)"
 """The program of a ``nodelet`` node whose arguments the linter cannot read: unknown."""
 
@@ -399,6 +411,7 @@ class Ros1Tags(Ros1Base):
             executable, name, tuple(params), present,
             plugin=plugin, unread=tuple(unread), namespace=namespace, ros=1,
             param_lines=tuple(lines),
+            args=_manager_args(args) if package == CONTROLLER_MANAGER else (),
         ))
 
     def _rosparam_values(self, element: Element, context: _Context

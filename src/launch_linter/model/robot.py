@@ -227,7 +227,10 @@ class NodeRecord(Record):
     ``remappings`` are the topic remapping rules ``(from, to)`` its process is given (ROS 2
     ``remappings=``, a simulator plugin's ``<ros><remapping>``; a controller also its
     spawner's ``--controller-ros-args``), in order, ``UNKNOWN_VALUE`` for a name not
-    resolved; None when they are not known.
+    resolved; None when they are not known. ``args`` are a ROS 1 ``controller_manager``
+    node's ``args`` words as roslaunch splits them (None when one is not resolved; empty
+    for other nodes): a spawner's ``--namespace`` names where it calls the controller
+    manager.
     """
 
     path: str
@@ -246,11 +249,12 @@ class NodeRecord(Record):
     param_lines: tuple[tuple[str, str, int, int], ...]
     included_at: tuple[Location, ...]
     remappings: tuple[tuple[str, str], ...] | None
+    args: tuple[str, ...] | None
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
         "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "remappings",
-        "_last_given", "_last_set",
+        "args", "_last_given", "_last_set",
     )
     _private = ("_last_given", "_last_set")
     _last_given: dict[str, str] | None
@@ -274,6 +278,7 @@ class NodeRecord(Record):
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
         included_at: tuple[Location, ...] = (),
         remappings: tuple[tuple[str, str], ...] | None = (),
+        args: tuple[str, ...] | None = (),
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -292,6 +297,7 @@ class NodeRecord(Record):
         self.param_lines = param_lines
         self.included_at = included_at
         self.remappings = remappings
+        self.args = args
         self._last_given = None
         self._last_set = None
         _seal(self)
@@ -340,7 +346,11 @@ class RobotElement(Record):
     named after the joint it mimics, just after its joint (and that joint's ignored
     ``<origin>`` elements) in the description's ``elements``, or ``outside_gazebo``: a
     ``<plugin>`` or ``<sensor>`` straight under ``<robot>`` (Gazebo reads them only inside
-    ``<gazebo>``), named ``<plugin> 'libx.so'`` or ``<sensor> 'name'``."""
+    ``<gazebo>``), named ``<plugin> 'libx.so'`` or ``<sensor> 'name'``, or
+    ``gazebo_reference``: a ``<gazebo reference=...>`` straight under ``<robot>`` that holds
+    a ``<sensor>`` or ``<plugin>``, named by the link or joint it names (Gazebo's URDF
+    reader puts its content into that link or joint only), or ``gazebo_properties``: one
+    that holds only simulation properties (material, friction, damping)."""
     name: str | None
     path: str
     line: int

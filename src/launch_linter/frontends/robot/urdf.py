@@ -142,6 +142,9 @@ def elements_of(root: ExpandedNode, display: Display,
             if not _urdf_sensor(element):
                 out.append(_outside_gazebo(element, display, outer))
             continue
+        if element.tag == "gazebo" and "reference" in element.attrib:
+            out.append(_gazebo_reference(element, display, outer))
+            continue
         if element.tag not in ("link", "joint", "material"):
             continue
         # urdfdom keeps a top-level material without a name as '' (its parseMaterial
@@ -201,6 +204,22 @@ def _outside_gazebo(element: ExpandedNode, display: Display,
     defined = (None if element.call is None
                else (display(element.path), element.line, element.column))
     return RobotElement("outside_gazebo", name, display(at[0]), at[1], at[2],
+                        outer & _condition(element.conditions), defined)
+
+
+def _gazebo_reference(element: ExpandedNode, display: Display,
+                      outer: Condition) -> RobotElement:
+    """A ``<gazebo reference="...">`` straight under ``<robot>``, as an element named by
+    its reference (None when the name is not known), of kind ``gazebo_reference`` when it
+    holds a ``<sensor>`` or a ``<plugin>``, ``gazebo_properties`` when it holds only the
+    link's or joint's simulation properties (material, friction, damping)."""
+    name = None if "reference" in element.unknown else element.attrib["reference"]
+    at = element.call or (element.path, element.line, element.column)
+    defined = (None if element.call is None
+               else (display(element.path), element.line, element.column))
+    kind = ("gazebo_reference" if any(c.tag in OUTSIDE_GAZEBO for c in element.children)
+            else "gazebo_properties")
+    return RobotElement(kind, name, display(at[0]), at[1], at[2],
                         outer & _condition(element.conditions), defined)
 
 
