@@ -89,6 +89,7 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("file_never_launched", Category.LAUNCH),
     ("ros2_param_empty_list", Category.LAUNCH),
     ("ros2_param_file_refused", Category.LAUNCH),
+    ("py_string_as_bool", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 
