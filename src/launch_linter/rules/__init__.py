@@ -67,6 +67,7 @@ def _load() -> None:
         ros1_ignored_attribute,
         ros1_unused_arg,
         ros2_bad_flag,
+        ros2_include_arg_misspelt,
         ros2_missing_keyword,
         ros2_param_empty_list,
         ros2_param_file_missing,
