@@ -17,14 +17,13 @@ import re
 from collections.abc import Iterator
 
 from launch_linter.frontends.ros2_actions import Problem
+from launch_linter.resolve.safe_eval import subscript_index
 
 RULE = "py_string_as_bool"
 BOOLEAN_WORDS = frozenset({"true", "false"})
 """What launch's own conditions read as booleans (``IfCondition`` takes ``true``/``false``,
 and ``1``/``0``, in any case); only ``true``/``false`` mark an argument as a switch."""
 _SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
-_INDEX: tuple[type, ...] = tuple(filter(None, [getattr(ast, "Index", None)]))
-"""Python 3.8 wraps a subscript's key in ``ast.Index``; later versions give the key."""
 
 
 def _callee(call: ast.Call) -> str | None:
@@ -37,8 +36,6 @@ def _callee(call: ast.Call) -> str | None:
 
 
 def _text(node: ast.AST | None) -> str | None:
-    if _INDEX and isinstance(node, _INDEX):
-        node = getattr(node, "value", None)
     if isinstance(node, ast.Constant) and isinstance(node.value, str):
         return node.value
     return None
@@ -91,7 +88,7 @@ def _read_argument(node: ast.AST) -> tuple[str, str] | None:
     if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Attribute) and (
         node.value.attr == "launch_configurations"
     ):
-        name = _text(node.slice)
+        name = _text(subscript_index(node))
         return (name, "context.launch_configurations[...]") if name else None
     return None
 
