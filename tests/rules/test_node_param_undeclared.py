@@ -212,3 +212,57 @@ def test_a_receiver_known_in_part_still_claims_what_it_declares(tmp_path: Path) 
                   "target_link_libraries(controller mpc)\n")
     found = lint_launch(package)
     assert [d.line for d in found] == [4]
+
+
+GENERATED_CMAKE = ("project(demo)\n"
+                   "generate_parameter_library(reader_parameters src/reader_parameters.yaml)\n"
+                   "add_executable(reader src/reader.cpp)\n"
+                   "target_link_libraries(reader reader_parameters)\n")
+GENERATED_YAML = ("reader:\n"
+                  "  default_tree:\n"
+                  "    load_default_tree: {type: bool, default_value: false}\n"
+                  "    tree_path: {type: string, default_value: ''}\n"
+                  "  rate: {type: double, default_value: 10.0}\n")
+LISTENER_SOURCE = ('#include "rclcpp/rclcpp.hpp"\n#include "reader_parameters.hpp"\n'
+                   'class Reader : public rclcpp::Node {\n public:\n'
+                   '  Reader() : Node("reader"),\n'
+                   '    listener_(std::make_shared<reader::ParamListener>(this)) {}\n'
+                   '  std::shared_ptr<reader::ParamListener> listener_;\n};\n')
+
+
+def test_a_generated_parameter_library_is_read_as_the_declarations(tmp_path: Path) -> None:
+    """ros2_ros_bt_py#178: `default_tree/load_default_tree` given where the node's
+    generate_parameter_library YAML declares `default_tree.load_default_tree`."""
+    package = cpp_package(tmp_path, LISTENER_SOURCE, GENERATED_CMAKE)
+    (package / "src" / "reader_parameters.yaml").write_text(GENERATED_YAML, encoding="utf-8")
+    assert declared_parameters(str(package), "reader") == (
+        ("default_tree.load_default_tree", "default_tree.tree_path", "rate"),
+        "src/reader_parameters.yaml")
+    (found,) = lint(package, "{'default_tree/load_default_tree': True, 'rate': 5.0}")
+    assert "'default_tree.load_default_tree'" in found.message
+    assert lint(package, "{'default_tree.load_default_tree': True}") == ()
+
+
+def test_a_mapped_or_unread_generated_library_leaves_the_declarations_unknown(
+        tmp_path: Path) -> None:
+    package = cpp_package(tmp_path, LISTENER_SOURCE, GENERATED_CMAKE)
+    assert declared_parameters(str(package), "reader") is None  # the YAML is missing
+    prefixed = LISTENER_SOURCE.replace("ParamListener>(this)", "ParamListener>(this, \"arm\")")
+    (package / "src" / "reader.cpp").write_text(prefixed, encoding="utf-8")
+    (package / "src" / "reader_parameters.yaml").write_text(GENERATED_YAML, encoding="utf-8")
+    assert declared_parameters(str(package), "reader") is None  # names under a prefix
+    (package / "src" / "reader.cpp").write_text(LISTENER_SOURCE, encoding="utf-8")
+    (package / "src" / "reader_parameters.yaml").write_text(
+        "reader:\n  joints: {type: string_array}\n  __map_joints:\n"
+        "    gain: {type: double}\n", encoding="utf-8")
+    assert declared_parameters(str(package), "reader") is None
+
+
+def test_twenty_thousand_generated_parameters_are_bounded(tmp_path: Path) -> None:
+    package = cpp_package(tmp_path, LISTENER_SOURCE, GENERATED_CMAKE)
+    entries = "".join(f"  p{i}: {{type: int}}\n" for i in range(20_000))
+    (package / "src" / "reader_parameters.yaml").write_text(f"reader:\n{entries}",
+                                                            encoding="utf-8")
+    started = time.process_time()
+    assert declared_parameters(str(package), "reader") is None  # more than 5,000: unknown
+    assert time.process_time() - started < 60

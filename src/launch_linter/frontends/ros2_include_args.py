@@ -40,6 +40,7 @@ from launch_linter.resolve.ros2_substitution import Call, Text
 from launch_linter.resolve.xml_safe import read_regular_file
 
 RULE = "ros2_unused_include_arg"
+MISSPELT = "ros2_include_arg_misspelt"
 MAX_SUGGESTION_CANDIDATES = 500
 MAX_PARAMETER_FILE_BYTES = 512 * 1024
 """What is read of a parameter file for its ``$(var)`` (its parser reads as much)."""
@@ -203,56 +204,105 @@ class ArgumentWatch:
         where = watch.include.where
         for name, (line, column) in watch.passed.items():
             key = (where.path, where.line, where.column, name)
-            unused = not watch.unknown and name not in watch.used and name not in watch.declared
+            unused = name not in watch.used and name not in watch.declared
             earlier = self._unused.get(key)
             if earlier is not None:
                 # One include run again (a file included twice): unused only if every run
-                # left it unused.
+                # left it unused, and seen whole only if every run was.
+                earlier[0].unknown = earlier[0].unknown or watch.unknown
                 self._unused[key] = (earlier[0], earlier[1] and unused)
                 continue
             place = Location(shown(where.path), line or where.line, column or where.column)
             self._unused[key] = (_Unused(name, place, Location(place.path, where.line,
                                                                where.column),
-                                         shown(watch.target), watch.declared), unused)
+                                         shown(watch.target), watch.declared,
+                                         watch.unknown), unused)
 
     def abandon(self) -> None:
         """The run stopped midway (the work budget ran out): nothing open is judged."""
         self._open.clear()
 
     def problems(self) -> list[Problem]:
-        found = [fact for fact, unused in self._unused.values() if unused]
-        return [fact.problem(index < MAX_SUGGESTED_NAMES) for index, fact in enumerate(found)]
+        """The arguments no run used: misspelt when a declared name is spelt alike (even
+        where some of the include is unseen: its files declare the other spelling), else
+        unused where every run was seen whole. Close names are looked for in the first
+        ``MAX_SUGGESTED_NAMES`` arguments only (each comparison costs)."""
+        found: list[Problem] = []
+        compared = 0
+        for fact, unused in self._unused.values():
+            if not unused:
+                continue
+            close = None
+            if compared < MAX_SUGGESTED_NAMES and fact.declared:
+                compared += 1
+                close = fact.close_name()
+            if close is not None:
+                found.append(fact.misspelt(close))
+            elif not fact.unknown:
+                found.append(fact.problem())
+        return found
 
 
 class _Unused:
     """An include argument no run of the include used."""
 
-    __slots__ = ("name", "place", "include", "target", "declared")
+    __slots__ = ("name", "place", "include", "target", "declared", "unknown")
 
     def __init__(self, name: str, place: Location, include: Location, target: str,
-                 declared: set[str]) -> None:
+                 declared: set[str], unknown: bool) -> None:
         self.name = name
         self.place = place
         self.include = include
         self.target = target
         self.declared = declared
         """What the included files declare (for a "did you mean")."""
+        self.unknown = unknown
+        """Whether some of what the include runs is unseen (it may read the argument)."""
 
-    def problem(self, suggest: bool) -> Problem:
-        hint = ": declare it there and use it, or stop passing it"
-        if suggest:
-            # Imported here: difflib is needed only for a finding's "did you mean".
-            import difflib
+    def close_name(self) -> str | None:
+        """A name the included files declare that is spelt like this one (difflib's ratio
+        of 0.8 or more), or that is this one with a word joined by ``_`` (``params`` and
+        ``params_file``), else None."""
+        # Imported here: difflib is needed only for an argument nothing uses.
+        import difflib
 
-            candidates = sorted(self.declared)[:MAX_SUGGESTION_CANDIDATES]
-            close = difflib.get_close_matches(self.name, candidates, 1, 0.8)
-            if close:
-                hint = f"; did you mean '{close[0]}' (declared there)?"
+        candidates = sorted(self.declared)[:MAX_SUGGESTION_CANDIDATES]
+        close = difflib.get_close_matches(self.name, candidates, 1, 0.8)
+        if close:
+            return close[0]
+        extended = [name for name in candidates if _one_word_apart(self.name, name)]
+        return extended[0] if len(extended) == 1 else None
+
+    def misspelt(self, close: str) -> Problem:
+        message = (f"launch argument '{self.name}' is passed to {self.target}, which declares "
+                   f"'{close}' and neither declares nor reads '{self.name}': ROS 2 launch "
+                   f"sets it as a configuration nothing reads, and '{close}' keeps its "
+                   f"default; pass '{close}'")
+        return Problem(MISSPELT, self.place.path, self.place.line, self.place.column,
+                       message, None, (self.include,))
+
+    def problem(self) -> Problem:
         message = (f"launch argument '{self.name}' is passed to {self.target}, which neither "
                    f"declares nor reads it (nor do the files it includes): ROS 2 launch "
-                   f"ignores it without a word{hint}")
+                   f"ignores it without a word: declare it there and use it, or stop "
+                   f"passing it")
         return Problem(RULE, self.place.path, self.place.line, self.place.column, message,
                        None, (self.include,))
+
+
+def _one_word_apart(name: str, other: str) -> bool:
+    """Whether one name is the other with one more word joined by ``_`` before or after
+    it (``params``, ``params_file``; ``frame``, ``base_frame``)."""
+    short, long = sorted((name, other), key=len)
+    if not short or len(long) == len(short):
+        return False
+    if long.startswith(short + "_"):
+        rest = long[len(short) + 1:]
+    elif long.endswith("_" + short):
+        rest = long[:-len(short) - 1]
+    else:
+        return False
+    return bool(rest) and "_" not in rest
 
 
 def _literal(subs: tuple[object, ...]) -> str | None:

@@ -93,6 +93,8 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("ros2_param_empty_list", Category.LAUNCH),
     ("ros2_param_file_refused", Category.LAUNCH),
     ("description_never_loaded", Category.TF),
+    ("py_string_as_bool", Category.LAUNCH),
+    ("ros2_include_arg_misspelt", Category.LAUNCH),
 )
 """(id, category) of every rule, in the rules table's order (the rule modules' names)."""
 

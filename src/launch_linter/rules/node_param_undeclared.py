@@ -5,12 +5,15 @@ Reports a parameter a ROS 2 launch file (or a parameter file it passes) gives a 
 the linted workspace, when the node's source declares every parameter it has with a
 literal name (`declare_parameter("number_particles", 200)`, found from the executable's
 `add_executable` sources or `setup.py` entry point, with the package's own headers and
-modules) and does not declare this one, but declares one close to it: a misspelling,
-another word (`particles` for `number_particles`), `/` written for `.`. A node whose
-declarations cannot all be read (a name that is not a literal, `declare_parameters`,
-`allow_undeclared_parameters`, `automatically_declare_parameters_from_overrides`, a
-generated parameter library, a source not found) is not judged, nor a parameter with no
-declared name close to it (a library the node uses may declare it).
+modules, and the YAML of a `generate_parameter_library` target of its `CMakeLists.txt`
+that it links: `default_tree: {load_default_tree: {type: bool}}` declares
+`default_tree.load_default_tree`) and does not declare this one, but declares one close to
+it: a misspelling, another word (`particles` for `number_particles`), `/` written for
+`.`. A node whose declarations cannot all be read (a name that is not a literal,
+`declare_parameters`, `allow_undeclared_parameters`,
+`automatically_declare_parameters_from_overrides`, a `ParamListener` given a prefix or
+whose YAML is not read, a `__map_` parameter, a source not found) is not judged, nor a
+parameter with no declared name close to it (a library the node uses may declare it).
 
 ## Why is this bad?
 rclcpp keeps the overrides a node is started with and applies one only when the node
@@ -127,8 +130,9 @@ tracker bringups of trial 9: `elevation_min_deg` in a `/**` file given to five n
 declared by the controller node, close to the fusion node's `mag_declination_deg`).
 
 ## Known problems
-Declarations made through a generated parameter library
-(`generate_parameter_library`) are left unknown, so such nodes are not judged.
+A generated parameter library is read from its YAML only where the executable links it
+in the same `CMakeLists.txt` (not a Python node's `generate_parameter_module`); elsewhere
+the node is not judged.
 
 Info. Its judged findings at warning, every verdict file together (trial 9 included):
 4 true (book_ros2#5, amr_slam_nav_core's heartbeat file, the antenna trackers'

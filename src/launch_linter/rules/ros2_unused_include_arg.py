@@ -8,7 +8,8 @@ file neither declares nor reads, counting the files it includes in turn: no
 it (`LaunchConfiguration`, `$(var)`, a `PythonExpression` built from them, an
 `OpaqueFunction`'s `context.launch_configurations` or `perform(context)`), also in actions
 that a false condition skips. The finding is at the argument's line, with the include
-as related place, and proposes a declared name that is spelt alike.
+as related place. An argument spelt like one the included files declare is
+`ros2_include_arg_misspelt`'s.
 
 ## Why is this bad?
 ROS 2 launch sets each include argument as a launch configuration and never checks that

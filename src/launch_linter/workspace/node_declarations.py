@@ -12,12 +12,18 @@ install rules read as text: ``add_executable``/``ament_auto_add_executable`` (an
 libraries of the same ``CMakeLists.txt`` it links, ``rclcpp_components_register_node``'s
 ``EXECUTABLE``) or ``setup.py``'s ``console_scripts``; its package-local headers and
 modules are read with it. The declared names are the literal first arguments of
-``declare_parameter`` calls. Anything else leaves the set unknown, never guessed: a
-declaration whose name is not a literal, ``declare_parameters``, ``allow_undeclared_
-parameters``, ``automatically_declare_parameters_from_overrides``, a generated parameter
-library (``ParamListener``), a source or module not found, a variable in a target's
-sources, no declaration at all (it may be in a library of another package). Bounded in
-files and bytes.
+``declare_parameter`` calls, and the parameters of the ``generate_parameter_library``
+YAML files of the same ``CMakeLists.txt`` the executable links (the library's generated
+``ParamListener`` declares each, its name the YAML's keys below the one top key joined
+with ``.``: generate_parameter_library 1.2.0 b647598
+``generate_parameter_library_py/parse_yaml.py``, ``preprocess_inputs`` line 753,
+``parse_dict`` 969-990, one root element 856-862; read with PyYAML, unknown without it). Anything
+else leaves the set unknown, never guessed: a declaration whose name is not a literal,
+``declare_parameters``, ``allow_undeclared_parameters``,
+``automatically_declare_parameters_from_overrides``, a ``ParamListener`` whose YAML is not
+read, a ``__map_`` parameter (names made from another parameter's value), a source or
+module not found, a variable in a target's sources, no declaration at all (it may be in a
+library of another package). Bounded in files and bytes.
 """
 
 from __future__ import annotations
@@ -39,6 +45,17 @@ MAX_TARGETS = 50
 _UNKNOWABLE = re.compile(
     rb"allow_undeclared_parameters|automatically_declare_parameters_from_overrides"
     rb"|\bdeclare_parameters\b|\bParamListener\b|\bgenerate_parameter_library\b")
+_UNKNOWABLE_GENERATED = re.compile(
+    rb"allow_undeclared_parameters|automatically_declare_parameters_from_overrides"
+    rb"|\bdeclare_parameters\b")
+"""What leaves a node's declarations unknown once its generated parameter library's YAML
+is read (``ParamListener`` then declares what the YAML says)."""
+_LISTENER = re.compile(rb"\bParamListener\s*>?\s*\(")
+_LISTENER_BARE = re.compile(rb"\bParamListener\s*>?\s*\(\s*(?:this|node|node_)?\s*\)")
+"""A ``ParamListener`` made from the node alone; a second argument is a prefix of every
+name it declares (``ParamListener(node, prefix)``), and anything else is not read."""
+MAX_GENERATED_PARAMETERS = 5000
+"""Most parameters read from one executable's generate_parameter_library YAML files."""
 _DECLARE = re.compile(rb"\bdeclare_parameter\b")
 _LITERAL = re.compile(
     rb"\s*(?:<[^;(){}]{0,200}>)?\s*\(\s*(?:\"([^\"\\\n]*)\"|'([^'\\\n]*)')\s*[,)]")
@@ -56,11 +73,18 @@ def declared_parameters(root: str, executable: str) -> tuple[tuple[str, ...], st
     found = _sources(root, executable)
     if found is None:
         return None
-    sources, python = found
-    names = _declared(sources, root, python)
+    sources, python, generated = found
+    names = _declared(sources, root, python, bool(generated))
+    if names is None:
+        return None
+    for path in generated:
+        from_yaml = _generated_parameters(path)
+        if from_yaml is None:
+            return None
+        names.update(from_yaml)
     if not names:
         return None
-    return tuple(sorted(names)), os.path.relpath(sources[0], root)
+    return tuple(sorted(names)), os.path.relpath((generated or sources)[0], root)
 
 
 def declared_in_part(root: str, executable: str) -> tuple[tuple[str, ...], str] | None:
@@ -72,7 +96,8 @@ def declared_in_part(root: str, executable: str) -> tuple[tuple[str, ...], str] 
     data = _read(cmake) if os.path.isfile(cmake) else None
     if data is None:
         return None
-    sources = _cmake_sources(data.decode("utf-8", "replace"), root, executable, partial=True)
+    found = _cmake_sources(data.decode("utf-8", "replace"), root, executable, partial=True)
+    sources = found[0] if found is not None else []
     if not sources:
         return None
     names = _declared(sources, root, False, partial=True)
@@ -89,14 +114,15 @@ def _read(path: str) -> bytes | None:
         return None
 
 
-def _sources(root: str, executable: str) -> tuple[list[str], bool] | None:
+def _sources(root: str, executable: str) -> tuple[list[str], bool, list[str]] | None:
+    """(source files, whether Python, generate_parameter_library YAML files linked)."""
     cmake = os.path.join(root, "CMakeLists.txt")
     if os.path.isfile(cmake):
         data = _read(cmake)
         if data is None:
             return None
-        files = _cmake_sources(data.decode("utf-8", "replace"), root, executable)
-        return None if files is None else (files, False)
+        found = _cmake_sources(data.decode("utf-8", "replace"), root, executable)
+        return None if found is None else (found[0], False, found[1])
     setup = os.path.join(root, "setup.py")
     if os.path.isfile(setup):
         data = _read(setup)
@@ -106,16 +132,18 @@ def _sources(root: str, executable: str) -> tuple[list[str], bool] | None:
         if module is None:
             return None
         path = os.path.join(root, *module.split(".")) + ".py"
-        return ([path], True) if os.path.isfile(path) else None
+        return ([path], True, []) if os.path.isfile(path) else None
     return None
 
 
-def _cmake_sources(text: str, root: str, executable: str,
-                   partial: bool = False) -> list[str] | None:
-    """The source files of ``executable`` and of the libraries of this file it links
-    (``partial``: of those whose sources are all listed, the others left out)."""
+def _cmake_sources(text: str, root: str, executable: str, partial: bool = False
+                   ) -> tuple[list[str], list[str]] | None:
+    """The source files of ``executable`` and of the libraries of this file it links, and
+    the YAML files of the generated parameter libraries among them (``partial``: of the
+    targets whose sources are all listed, the others left out)."""
     project = ""
     sources: dict[str, list[str] | None] = {}
+    generated: dict[str, str | None] = {}
     links: dict[str, list[str]] = {}
     registered: dict[str, str] = {}
     for name, arguments, _line in commands(text):
@@ -135,10 +163,16 @@ def _cmake_sources(text: str, root: str, executable: str,
             at = words.index("EXECUTABLE")
             if at + 1 < len(words):
                 registered[words[at + 1]] = words[0]
+        elif name == "generate_parameter_library" and words:
+            # generate_parameter_library(TARGET YAML [VALIDATE_HEADER]): a header library.
+            yaml_file = words[1] if len(words) > 1 else ""
+            generated[words[0]] = (None if not yaml_file or "$" in yaml_file
+                                   else os.path.normpath(os.path.join(root, yaml_file)))
     start = registered.get(executable, executable)
     if start not in sources:
         return None
     out: list[str] = []
+    yamls: list[str] = []
     todo, seen = [start], {start}
     while todo:
         target = todo.pop()
@@ -151,10 +185,57 @@ def _cmake_sources(text: str, root: str, executable: str,
             return None
         out.extend(os.path.normpath(os.path.join(root, f)) for f in listed)
         for library in links.get(target, ()):
-            if library in sources and library not in seen:
+            if library in generated and library not in seen:
+                seen.add(library)
+                path = generated[library]
+                if path is None:
+                    if partial:
+                        continue
+                    return None
+                yamls.append(path)
+            elif library in sources and library not in seen:
                 seen.add(library)
                 todo.append(library)
-    return out
+    return out, yamls
+
+
+def _generated_parameters(path: str) -> set[str] | None:
+    """The parameters a generate_parameter_library YAML file declares: below its one top
+    key (the generated class's namespace), a mapping whose first value is a mapping groups
+    the entries below it, any other entry is a parameter (``parse_dict``), named by its
+    keys joined with ``.``. None when not read completely (no PyYAML, not YAML, a
+    ``__map_`` parameter, too many)."""
+    data = _read(path)
+    if data is None:
+        return None
+    try:
+        # Imported on use: PyYAML stays out of the standard-library core.
+        import yaml  # type: ignore[import-untyped]
+    except ImportError:
+        return None
+    try:
+        document = yaml.safe_load(data)
+    except (yaml.YAMLError, RecursionError, ValueError):
+        return None
+    if not isinstance(document, dict) or len(document) != 1:
+        return None
+    names: set[str] = set()
+    todo: list[tuple[str, object]] = [("", next(iter(document.values())))]
+    while todo:
+        prefix, value = todo.pop()
+        if not isinstance(value, dict):
+            return None
+        for key, item in value.items():
+            if not isinstance(key, str) or key.startswith("__"):
+                return None  # __map_ parameters: names made from a value
+            name = f"{prefix}.{key}" if prefix else key
+            if isinstance(item, dict) and item and isinstance(next(iter(item.values())), dict):
+                todo.append((name, item))
+            else:
+                names.add(name)
+            if len(names) + len(todo) > MAX_GENERATED_PARAMETERS:
+                return None
+    return names
 
 
 def _console_script(data: bytes, executable: str) -> str | None:
@@ -186,11 +267,13 @@ def _console_script(data: bytes, executable: str) -> str | None:
     return None
 
 
-def _declared(sources: list[str], root: str, python: bool,
+def _declared(sources: list[str], root: str, python: bool, generated: bool = False,
               partial: bool = False) -> set[str] | None:
     """The literal names declared in ``sources`` and the package-local files they
-    include or import; None when any declaration cannot be read (``partial``: the
-    literal names of the files that can be read, the rest left out)."""
+    include or import; None when any declaration cannot be read (``generated``: the
+    executable's generated parameter libraries are read, so ``ParamListener`` is known;
+    ``partial``: the literal names of the files that can be read, the rest left out)."""
+    unknowable = _UNKNOWABLE_GENERATED if generated else _UNKNOWABLE
     names: set[str] = set()
     todo = list(dict.fromkeys(sources))
     seen = set(todo)
@@ -199,10 +282,12 @@ def _declared(sources: list[str], root: str, python: bool,
             return None
         path = todo.pop()
         data = _read(path)
-        if data is None or (_UNKNOWABLE.search(data) and not partial):
+        if data is None or (unknowable.search(data) and not partial):
             if partial:
                 continue
             return None
+        if generated and len(_LISTENER.findall(data)) != len(_LISTENER_BARE.findall(data)):
+            return None  # a listener given a prefix, or made otherwise: names not known
         for call in _DECLARE.finditer(data):
             literal = _LITERAL.match(data, call.end())
             if literal is None:

@@ -14,6 +14,10 @@ from launch_linter.frontends import python_trees
 from launch_linter.frontends.ros2_actions import Action, FileRead, Problem, Unfollowed, Where
 from launch_linter.frontends.ros2_python.launch_api import Interpreter
 from launch_linter.frontends.ros2_python.names import bound_names
+from launch_linter.frontends.ros2_python.string_truth import (
+    may_test_arguments,
+    string_truth_problems,
+)
 from launch_linter.frontends.ros2_python.values import (
     Env,
     FuncVal,
@@ -146,7 +150,9 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
         # The interpreter's own step limit bounds one file; the root file's budget bounds
         # a file included many times.
         budget.step(interpreter.steps)
-    return FileRead(FORMAT, actions, comments, tuple(lines), tuple(interpreter.problems),
+    truth = string_truth_problems(tree) if may_test_arguments(source) else ()
+    problems = (*interpreter.problems, *truth)
+    return FileRead(FORMAT, actions, comments, tuple(lines), problems,
                     interpreter.forget_deferred_scopes if interpreter.deferring else None)
 
 
