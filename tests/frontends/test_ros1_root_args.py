@@ -112,7 +112,7 @@ def test_hostile_many_undeclared_args(tmp_path: Path) -> None:
     reads = "".join(f'<param name="p{i}"\n  value="$(arg a{i})"/>\n' for i in range(20_000))
     root = tmp_path / "h.launch"
     root.write_text(f"<launch>\n{reads}</launch>\n")
-    started = time.perf_counter()
+    started = time.process_time()
     found = refusals(root)
-    assert time.perf_counter() - started < 60
+    assert time.process_time() - started < 60
     assert len(found) == 20_000 and found[-1][1] == 40_001
