@@ -372,6 +372,11 @@ class RobotElement(Record):
         _set(self, "included", included)
 
 
+MALFORMED_XML = "not well-formed XML"
+"""How a ``REFUSED`` fault's message starts when the file is not well-formed XML: a fault
+of that file alone, whoever includes it."""
+
+
 class FaultKind(str, Enum):
     """What xacro itself does with a fault of the description's source."""
 

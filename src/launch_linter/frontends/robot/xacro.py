@@ -58,6 +58,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _Block,
     _boolean,
     _Macro,
+    _Malformed,
     _Mismatch,
     _Property,
     _Refused,
@@ -189,6 +190,9 @@ class XacroExpander:
         # the definition; with the problems capped, nothing after the cap is known.
         own = isinstance(refused, _Mismatch) and len(self.problems) < 1000 and all(
             p.kind != UNKNOWN for p in self.problems[refused.seen:])
+        if isinstance(refused, _Malformed):
+            # The included file's own fault, where expat places it, as for the top file.
+            path, at, message = refused.path, refused.line, f"{MALFORMED}: {refused.detail}"
         self._problem(path, at, message, REFUSED, conditions, arg, own)
 
     def _read(self, absolute: str, at: tuple[str, int] | None,
@@ -222,7 +226,9 @@ class XacroExpander:
                 raise _Abort(f"{MALFORMED}: {exc.message}", absolute, exc.line,
                              REFUSED if exc.malformed else None) from None
             message = f"{self.display(absolute)}:{exc.line}: {MALFORMED}: {exc.message}"
-            raise (_Refused(message) if exc.malformed else _Unknown(message)) from None
+            if exc.malformed:
+                raise _Malformed(message, absolute, exc.line, exc.message) from None
+            raise _Unknown(message) from None
 
     # -- text substitution -------------------------------------------------------------
     def evaluate_text(self, text: str, table: _Table) -> str:
