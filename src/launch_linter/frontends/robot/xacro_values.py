@@ -119,10 +119,11 @@ class _Refused(_Unknown):
         self.arg = arg
 
 
-class _Malformed(_Refused):
-    """An included file that is not well-formed XML: xacro's minidom stops on it, a fault
-    of that file alone (no includer can make it well-formed), placed at its own ``path``
-    and ``line``; ``detail`` is expat's message."""
+class _Placed(_Refused):
+    """A refusal whose fault is in another place than the element being expanded, said
+    there as ``detail``: an included file that is not well-formed XML (xacro's minidom
+    stops on it; no includer can make it well-formed), a property whose name xacro
+    refuses to read (its definition)."""
 
     def __init__(self, reason: str, path: str, line: int, detail: str) -> None:
         super().__init__(reason)
