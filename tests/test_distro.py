@@ -77,3 +77,22 @@ def test_helpers() -> None:
     assert normalise(" Humble ") == "humble" and normalise("") is None and normalise(None) is None
     assert is_known("noetic") and is_known("kilted") and not is_known("hubmle")
     assert describe(("humble", "iron", "jazzy")) == "Humble, Iron and Jazzy"
+
+
+def test_indigo_and_jade_are_targets(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                     capsys: pytest.CaptureFixture[str]) -> None:
+    """ROS 1 Indigo and Jade are accepted, and robot_state_publisher's release there
+    installs state_publisher as well (indigo-devel 611d979, CMakeLists.txt 25-29, 62)."""
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    assert is_known("indigo") and is_known("jade") and not is_known("hydro")
+    node = '<launch><node pkg="robot_state_publisher" type="{}" name="rsp"/></launch>\n'
+    (tmp_path / "a.launch").write_text(node.format("state_publisher"), encoding="utf-8")
+    argv = ["check", "--format", "json", "--select", "node_executable_missing", "a.launch"]
+    for distro in ("indigo", "jade"):
+        assert main([*argv, "--ros-distro", distro]) == 0
+        assert json.loads(capsys.readouterr().out)["diagnostics"] == []
+    (tmp_path / "a.launch").write_text(node.format("rsp_node"), encoding="utf-8")
+    assert main([*argv, "--ros-distro", "indigo"]) == 1
+    (found,) = json.loads(capsys.readouterr().out)["diagnostics"]
+    assert "Indigo installs no executable 'rsp_node'" in found["message"]

@@ -132,11 +132,16 @@ def test_the_quoted_paths_are_relative_to_the_current_folder(
                    "for include of [launch/part.launch]",
                    "file does not exist [config/none.yaml]",
                    "included file urdf/nothere.xacro not found",
-                   "urdf/broken.xacro:3: not well-formed XML",
                    "'urdf/empty.urdf' defines no link",
                    "include file 'launch/$(arg model).launch' not followed",
                    "the description file 'urdf/$(arg model).urdf.xacro' is not resolved"):
         assert quoted in text
+    # An included file that is not well-formed is reported at its own file and line (the
+    # <link> left open on line 2), the path as the diagnostic's, relative like the rest.
+    main(["check", ".", "--format", "json", "--exit-zero", "--no-cache"])
+    places = {(d["path"], d["line"]) for d in json.loads(capsys.readouterr().out)[
+        "diagnostics"] if "not well-formed XML" in d["message"]}
+    assert ("urdf/broken.xacro", 2) in places
 
 
 def test_a_description_that_cannot_be_read_is_named_once(

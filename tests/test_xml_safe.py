@@ -160,6 +160,32 @@ def test_other_errors_stay_where_expat_stops(data: bytes) -> None:
     assert "is not closed" not in caught.value.message and caught.value.line >= 2
 
 
+@pytest.mark.parametrize(
+    ("data", "line", "tag"),
+    [
+        # turtlebot3_manipulation_gazebo's '<include file=".../x.launch/">': expat stops at
+        # '</launch>' two lines on; the include is what is left open.
+        (b'<launch>\n  <include file="x.launch/">\n\n</launch>\n', 2, "include"),
+        (b"<robot>\n  <link>\n    <visual>\n  </link>\n</robot>", 3, "visual"),
+        (b"<launch>\n <group>\n  <arg name='a'>\n </group>\n</launch>", 3, "arg"),
+    ],
+)
+def test_an_element_an_outer_end_tag_leaves_open_is_placed_where_it_starts(
+        data: bytes, line: int, tag: str) -> None:
+    with pytest.raises(XmlError) as caught:
+        parse_xml(data)
+    assert caught.value.line == line and caught.value.malformed
+    assert f"'<{tag}>' is never closed" in caught.value.message
+    assert "mismatched tag" in caught.value.message
+
+
+def test_a_stray_end_tag_stays_where_expat_stops() -> None:
+    """An end tag that closes nothing open is itself the fault."""
+    with pytest.raises(XmlError) as caught:
+        parse_xml(b"<launch>\n  <node/>\n  </group>\n</launch>")
+    assert caught.value.line == 3 and caught.value.message == "mismatched tag"
+
+
 def test_a_tag_left_open_after_20000_lines_is_found_at_once() -> None:
     data = b"<launch>\n" + b'  <arg name="a" default="1"/>\n' * 20_000 + b"  </group\n<x/>"
     started = time.perf_counter()

@@ -107,8 +107,10 @@ def test_hostile_launch_file_gives_diagnostics_not_a_crash() -> None:
                      "not a xacro call", "URDF joint 'j'"):
         assert expected in text
     # missing.xacro is not in its package, which is found: xacro stops on it.
-    (missing,) = [d for d in result.diagnostics if d.rule == "xacro_error"]
+    missing, dunder = [d for d in result.diagnostics if d.rule == "xacro_error"]
     assert "no such file" in missing.message and missing.line == 7
+    # bomb.xacro's ${__import__('os')...}: xacro's safe_eval refuses the name.
+    assert "invalid name(s): __import__" in dunder.message
 
 
 def test_variant_b_escape_keeps_literal_text() -> None:

@@ -155,7 +155,9 @@ def test_an_included_file_that_is_not_well_formed(tmp_path: Path) -> None:
     (tmp_path / "robot.urdf.xacro").write_text(robot(
         link("a") + '\n<xacro:include filename="part.xacro"/>'))
     (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro")
-    assert found.line == 3 and "part.xacro:3: not well-formed" in found.message
+    # The included file's own fault, at its own line (where expat stops), as the top file's.
+    assert found.path.endswith("part.xacro") and found.line == 2
+    assert "not well-formed" in found.message
     # Under a condition the linter cannot decide: xacro may never read it.
     undecided = robot('<xacro:arg name="c" default="true"/>' + link("a") + '\n<xacro:if '
                       'value="$(arg c)"><xacro:include filename="part.xacro"/></xacro:if>')
@@ -233,4 +235,23 @@ def test_a_malformed_include_after_one_not_followed_is_still_proven(tmp_path: Pa
         '<xacro:include filename="$(find nowhere)/x.xacro"/>' + link("a")
         + '\n<xacro:include filename="part.xacro"/>'))
     (found,) = _launch(tmp_path, "xacro $(dirname)/robot.urdf.xacro")
-    assert found.severity.value == "error" and "part.xacro:3: not well-formed" in found.message
+    assert found.severity.value == "error" and found.path.endswith("part.xacro")
+    assert "not well-formed" in found.message
+
+
+def test_a_malformed_include_is_placed_at_the_element_left_open(tmp_path: Path) -> None:
+    # abb_common's irb_6640_macro.xacro: '<parent link="...">' never closed; expat stops
+    # at '</joint>' two lines on. No includer can complete a file that is not well-formed:
+    # an error at the open tag even when the including .xacro is linted on its own.
+    joint = ('<xacro:macro name="arm" params="prefix">\n<joint name="j" type="fixed">\n'
+             '<parent link="a">\n<origin xyz="0 0 0"/>\n</joint>\n</xacro:macro>')
+    (tmp_path / "arm_macro.xacro").write_text(robot(joint))
+    (tmp_path / "arm.xacro").write_text(robot(
+        link("a") + '\n<xacro:include filename="arm_macro.xacro"/>\n<xacro:arm prefix=""/>'))
+    options = LintOptions(package_paths=(), select=frozenset({RULE}))
+    found = [d for d in lint_paths([str(tmp_path / "arm.xacro")], options).diagnostics
+             if d.path.endswith("arm_macro.xacro")]
+    assert [(d.line, d.severity.value) for d in found] == [(4, "error")]
+    assert "'<parent>' is never closed" in found[0].message
+    (tmp_path / "arm_macro.xacro").write_text(robot(joint.replace('"a">', '"a"/>')))
+    assert lint_paths([str(tmp_path / "arm.xacro")], options).diagnostics == ()

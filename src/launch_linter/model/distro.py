@@ -11,12 +11,14 @@ Facts used by the rules (checked in ros2/geometry2 and launch_ros; see docs/seve
 
 from __future__ import annotations
 
-ROS1_DISTROS: tuple[str, ...] = ("kinetic", "lunar", "melodic", "noetic")
+ROS1_DISTROS: tuple[str, ...] = ("indigo", "jade", "kinetic", "lunar", "melodic", "noetic")
 ROS2_DISTROS: tuple[str, ...] = (
     "dashing", "eloquent", "foxy", "galactic", "humble", "iron", "jazzy", "kilted", "lyrical",
     "rolling",
 )
-"""In release order; rolling last (it is always the newest)."""
+"""In release order; rolling last (it is always the newest). Indigo and Jade (ROS 1, 2014
+and 2015) are targets of many repositories still read: a knowledge entry's open run
+(``until``) holds them only where its sources say so (docs/knowledge.md)."""
 
 NO_FLAGS: tuple[str, ...] = ("dashing", "eloquent", "foxy", "galactic")
 """Distributions whose static_transform_publisher knows no flags: positional only."""

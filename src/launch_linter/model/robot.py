@@ -382,6 +382,18 @@ class RobotElement(Record):
         _set(self, "included", included)
 
 
+MALFORMED_XML = "not well-formed XML"
+"""How a ``REFUSED`` fault's message starts when the file is not well-formed XML: a fault
+of that file alone, whoever includes it."""
+
+
+INVALID_NAMES = "use of invalid name(s)"
+"""How a ``REFUSED`` fault's message starts when xacro refuses an expression for reading a
+name that begins with ``__``: whatever defines the name, no includer changes that."""
+OWN_FAULTS = (MALFORMED_XML, INVALID_NAMES)
+"""The starts of the refusals that are faults of the file alone, whoever includes it."""
+
+
 class FaultKind(str, Enum):
     """What xacro itself does with a fault of the description's source."""
 

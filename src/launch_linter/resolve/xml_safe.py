@@ -28,6 +28,7 @@ if TYPE_CHECKING:
 
 MAX_BYTES = 8 * 1024 * 1024
 _NO_ELEMENTS = expat.errors.codes[expat.errors.XML_ERROR_NO_ELEMENTS]
+_TAG_MISMATCH = expat.errors.codes[expat.errors.XML_ERROR_TAG_MISMATCH]
 MAX_DEPTH = 200
 MAX_ELEMENTS = 200_000
 MAX_TEXT = 1024 * 1024
@@ -217,6 +218,24 @@ def _unclosed_tag(data: bytes, at: int) -> tuple[int, int, str] | None:
         return None
     column = start - data.rfind(b"\n", 0, start)
     return data.count(b"\n", 0, start) + 1, column, opened.group().decode("utf-8", "replace")
+
+
+_END_TAG_NAME = re.compile(rb"(?:</)?([^\s<>/]{1,200})")
+
+
+def _left_open(data: bytes, at: int, stack: list[Element]) -> Element | None:
+    """The element a mismatched end tag proves left open: expat stops at an end tag
+    (``at`` is its name, after ``</``) that does not close the innermost open element.
+    When the end tag closes an element further out (``<include ...>`` written for
+    ``<include .../>`` and then ``</launch>``), every element inside that one is left open
+    and the innermost, the one expat expected to close, is the fault; an end tag that
+    closes nothing open (a stray ``</group>``) is itself the fault: None. ``stack`` is at
+    most ``MAX_DEPTH`` deep."""
+    named = _END_TAG_NAME.match(data, at)
+    if named is None or len(stack) < 2:
+        return None
+    name = named.group(1).decode("utf-8", "replace")
+    return stack[-1] if any(element.tag == name for element in stack[:-1]) else None
 
 
 class XmlError(Exception):
@@ -416,6 +435,12 @@ def parse_xml(
             raise XmlError(f"the tag '{tag}' is not closed with '>' (expat stops at the "
                            f"next '<', line {exc.lineno}, column {exc.offset + 1}: {message})",
                            line, column, malformed=True) from None
+        opened = _left_open(data, parser.ErrorByteIndex, stack) \
+            if exc.code == _TAG_MISMATCH else None
+        if opened is not None:
+            raise XmlError(f"'<{opened.tag}>' is never closed: the end tag of an element "
+                           f"around it comes first ({message}: line {exc.lineno}, column "
+                           f"{exc.offset})", opened.line, opened.column, malformed=True) from None
         if count == 0 and exc.code == _NO_ELEMENTS:
             message = f"{message}: {NO_ELEMENT_AT_ALL}"
         raise XmlError(message, exc.lineno, exc.offset + 1, malformed=True) from None

@@ -14,7 +14,11 @@ not pair, which no Python compiles (`${mass * (h * h + l * l) / 12)}`), and a `$
 `$(` never closed (`rpy="0 ${pi/2 0"`), which xacro's lexer cannot read (xacro 1.13.5 and
 newer; the older xacro of Kinetic and Lunar drops the rest: `xacro_unexpanded`). The same
 refusals in any element's text (`<updateRate>$(arg rate)</updateRate>`: xacro evaluates
-every text node as it does attributes; a CDATA section is left as written). A file xacro
+every text node as it does attributes; a CDATA section is left as written). An expression that
+reads a name beginning with `__` (a property `__limits`, an attribute `x.__class__`):
+xacro's `safe_eval` refuses it ("Use of invalid name(s)", ros/xacro 9941961, released in
+1.13.13, 1.14.9 and 2.0.7; not on Kinetic, Lunar, Dashing, Eloquent), reported once at
+the property's definition. A file xacro
 reads, the top one or an included one, that is not well-formed XML (`--` inside a comment,
 a tag left open): xacro parses each with minidom, which stops on it (a description read as
 text, `textfile=` or `cat`, is urdfdom's to parse: unknown; no xacro runs on it, so its
@@ -31,9 +35,11 @@ It is an error when a launch file loads the description (with or without a
 robot_state_publisher: roslaunch runs a `<param command="xacro ...">` when it loads the
 file, for a Gazebo spawner as much as for robot_state_publisher); info when it sits under an
 undecided `xacro:if` and in a `.xacro` file linted on its own (it may be a part that its
-includer completes). When an include could not be read or a directive is not supported
-before it (the macro, arg or property may be defined there; for a `${name}`, also a
-conditional undecided before it), or the xacro call has unresolved words (they may give
+includer completes), except a file that is not well-formed, which no includer completes: it
+is reported at the file's own line, where expat stops, as for the top file.
+When an include could not be read or a directive is not supported before it (the macro,
+arg or property may be defined there; for a `${name}`, also a conditional undecided before
+it), or the xacro call has unresolved words (they may give
 the arg), nothing is proven: it stays an `unresolved` diagnostic. A
 `$(arg X)` where X is a parameter of the enclosing macro is left to `xacro_param_as_arg`,
 which reports it at the same line and level and says what to write instead.
@@ -74,7 +80,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launch_linter.model.diagnostic import Category, Severity
-from launch_linter.model.robot import FaultKind
+from launch_linter.model.robot import OWN_FAULTS, FaultKind
 from launch_linter.rules._api import Finding, RuleContext
 from launch_linter.rules._robot import robots_of
 
@@ -106,5 +112,6 @@ def check(context: RuleContext) -> Iterator[Finding]:
             yield Finding(fault.path, fault.line, 1,
                           f"xacro stops here{when} ({fault.message}): the xacro command "
                           f"fails, so robot_description is not set and {effect}",
-                          severity=(Severity.INFO if robot.standalone or fault.conditions
+                          severity=(Severity.INFO if fault.conditions or (
+                              robot.standalone and not fault.message.startswith(OWN_FAULTS))
                                     else None))

@@ -22,7 +22,7 @@ import typing
 from collections.abc import Callable, Mapping
 
 from launch_linter.frontends.robot.xacro_data import Symbols, yaml_loader
-from launch_linter.frontends.robot.xacro_globals import undefined_name
+from launch_linter.frontends.robot.xacro_globals import dunder_refusal, undefined_name
 from launch_linter.frontends.robot.xacro_macros import (
     ParamArg,
     macro_params,
@@ -59,6 +59,7 @@ from launch_linter.frontends.robot.xacro_values import (
     _boolean,
     _Macro,
     _Mismatch,
+    _Placed,
     _Property,
     _Refused,
     _Table,
@@ -130,6 +131,7 @@ class XacroExpander:
         self._param_args: dict[str, dict[tuple[int, int], list[ParamArg]]] = {}
         """Per file: its macros' parameters read as ``$(arg)``, by the macro's position."""
         self._arg_lines: dict[tuple[str, int, str], int] = {}
+        self._dunder_defined: dict[str, tuple[str, int]] = {}
         """(file, element line, arg) of such a use -> the use's own line."""
 
     # -- entry -------------------------------------------------------------------------
@@ -189,6 +191,8 @@ class XacroExpander:
         # the definition; with the problems capped, nothing after the cap is known.
         own = isinstance(refused, _Mismatch) and len(self.problems) < 1000 and all(
             p.kind != UNKNOWN for p in self.problems[refused.seen:])
+        if isinstance(refused, _Placed):  # a fault of another place: said there
+            path, at, message = refused.path, refused.line, refused.detail
         self._problem(path, at, message, REFUSED, conditions, arg, own)
 
     def _read(self, absolute: str, at: tuple[str, int] | None,
@@ -222,7 +226,10 @@ class XacroExpander:
                 raise _Abort(f"{MALFORMED}: {exc.message}", absolute, exc.line,
                              REFUSED if exc.malformed else None) from None
             message = f"{self.display(absolute)}:{exc.line}: {MALFORMED}: {exc.message}"
-            raise (_Refused(message) if exc.malformed else _Unknown(message)) from None
+            if exc.malformed:
+                raise _Placed(message, absolute, exc.line,
+                              f"{MALFORMED}: {exc.message}") from None
+            raise _Unknown(message) from None
 
     # -- text substitution -------------------------------------------------------------
     def evaluate_text(self, text: str, table: _Table) -> str:
@@ -265,9 +272,12 @@ class XacroExpander:
 
     def _expression(self, source: str, table: _Table, as_text: bool = True) -> typing.Any:
         source = _MATH_PREFIX.sub("", source.strip())
+        self._charge(len(source) + 1)
+        refused = dunder_refusal(source, self.env.get("ROS_DISTRO"), self._dunder_defined)
+        if refused is not None:
+            raise refused
         scope = EvalScope(args=Symbols(self, table), env={}, find=lambda _: None,
                           anon=lambda name: name, dirname=None)
-        self._charge(len(source) + 1)
         try:
             return evaluate(source, scope) if as_text else evaluate_value(source, scope)
         except _Unknown:
@@ -450,6 +460,8 @@ class XacroExpander:
         name = self.evaluate_text(attrib.get("name", ""), table)
         if not valid_name(name):
             raise _Refused(f"property names must be valid Python identifiers: {name!r}")
+        if name.startswith("__"):  # xacro takes it, but refuses any expression reading it
+            self._dunder_defined.setdefault(name, (path, element.line))
         target = table
         scope = attrib.get("scope")
         if scope == "parent" and table.parent is not None:

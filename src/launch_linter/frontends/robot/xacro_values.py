@@ -9,6 +9,7 @@ import unicodedata
 from collections.abc import Callable, Mapping
 
 from launch_linter.model.record import MutableRecord, Record, _set
+from launch_linter.model.robot import MALFORMED_XML
 from launch_linter.resolve.xml_safe import Element
 
 MAX_FILES = 200
@@ -118,6 +119,19 @@ class _Refused(_Unknown):
         self.arg = arg
 
 
+class _Placed(_Refused):
+    """A refusal whose fault is in another place than the element being expanded, said
+    there as ``detail``: an included file that is not well-formed XML (xacro's minidom
+    stops on it; no includer can make it well-formed), a property whose name xacro
+    refuses to read (its definition)."""
+
+    def __init__(self, reason: str, path: str, line: int, detail: str) -> None:
+        super().__init__(reason)
+        self.path = path
+        self.line = line
+        self.detail = detail
+
+
 class _Mismatch(_Refused):
     """A macro call that does not match the macro's definition (a parameter missing or not
     declared, blocks that do not pair): xacro stops whatever else is defined, so it is a
@@ -184,7 +198,7 @@ UNEXPANDED = "unexpanded"
 macro call without the prefix, a ``${`` never closed: see ``xacro_unexpanded``)."""
 FAULT_KINDS = (REFUSED, DROPPED, PARAM_AS_ARG, UNEXPANDED)
 """The kinds that are faults of the source itself."""
-MALFORMED = "not well-formed XML"
+MALFORMED = MALFORMED_XML
 """What a refusal of a file that is not well-formed says: a fault of that file alone, which
 nothing not followed before it can make well-formed."""
 
