@@ -228,6 +228,8 @@ class NodeRecord(Record):
     ``remappings=``, a simulator plugin's ``<ros><remapping>``; a controller also its
     spawner's ``--controller-ros-args``), in order, ``UNKNOWN_VALUE`` for a name not
     resolved; None when they are not known.
+    ``executable_line`` is the line that writes the executable when it is not ``line`` (a
+    ROS 2 Python ``Node(``'s ``executable=`` keyword), 0 otherwise.
     """
 
     path: str
@@ -246,11 +248,12 @@ class NodeRecord(Record):
     param_lines: tuple[tuple[str, str, int, int], ...]
     included_at: tuple[Location, ...]
     remappings: tuple[tuple[str, str], ...] | None
+    executable_line: int
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
         "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "remappings",
-        "_last_given", "_last_set",
+        "executable_line", "_last_given", "_last_set",
     )
     _private = ("_last_given", "_last_set")
     _last_given: dict[str, str] | None
@@ -274,6 +277,7 @@ class NodeRecord(Record):
         param_lines: tuple[tuple[str, str, int, int], ...] = (),
         included_at: tuple[Location, ...] = (),
         remappings: tuple[tuple[str, str], ...] | None = (),
+        executable_line: int = 0,
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -292,6 +296,7 @@ class NodeRecord(Record):
         self.param_lines = param_lines
         self.included_at = included_at
         self.remappings = remappings
+        self.executable_line = executable_line
         self._last_given = None
         self._last_set = None
         _seal(self)
