@@ -59,6 +59,7 @@ def _load() -> None:
         plugin_param_case,
         py_arguments_single_string,
         py_name_error,
+        py_text_truth,
         quaternion_order,
         rep105_order,
         reversed_name,
