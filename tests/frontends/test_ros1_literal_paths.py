@@ -10,6 +10,7 @@ import pytest
 
 from launch_linter.frontends.dispatch import load_tree
 from launch_linter.frontends.ros1 import LoadOptions
+from launch_linter.frontends.ros1_tags import MAX_YAML_BODIES
 from launch_linter.model.launch import LaunchTree
 from launch_linter.workspace.packages import PackageIndex
 
@@ -77,3 +78,46 @@ def test_literal_args_and_params(tmp_path: Path) -> None:
     assert params["anon"] != "$(anon x)"
     # The blank root default is noticed with the literal path: not a roslaunch error.
     assert [p.rule for p in tree.problems if "empty default" in p.message] == ["unresolved"]
+
+
+def test_a_node_rosparam_text_is_read_once_and_judged(tmp_path: Path,
+                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """A node's ``<rosparam>`` text is parsed once: judged (roslaunch refuses text that is
+    not YAML) and read for the node's record from the same parse; only a text that does not
+    read is judged again by the syntax check."""
+    from launch_linter.frontends import ros1_tags
+
+    judged: list[str] = []
+    original = ros1_tags.yaml_syntax_error
+    monkeypatch.setattr(ros1_tags, "yaml_syntax_error",
+                        lambda text: judged.append(text) or original(text))
+    tree = tree_of(tmp_path, """
+        <node name="n" pkg="p" type="t">
+          <rosparam>gain: 2
+frame: odom</rosparam>
+        </node>
+    """)
+    assert dict(tree.nodes[0].params) == {"gain": "2", "frame": "odom"}
+    assert judged == [] and [p for p in tree.problems if p.rule == "roslaunch_error"] == []
+    # rosparam's own tags do not construct, but they compose: no error.
+    tags = '<node name="n" pkg="p" type="t"><rosparam>a: !degrees 90</rosparam></node>'
+    assert errors(tmp_path, tags) == []
+    assert judged == ["a: !degrees 90"]
+    bad = '<node name="n" pkg="p" type="t"><rosparam>a: [1, 2</rosparam></node>'
+    (refused,) = errors(tmp_path, bad)
+    assert refused.startswith("error loading <rosparam> tag: Error within YAML block:")
+    # A text put under a ``param`` is not read as the node's parameters: only judged.
+    under = '<node name="n" pkg="p" type="t"><rosparam param="g">[1, 2</rosparam></node>'
+    (refused,) = errors(tmp_path, under)
+    assert refused.startswith("error loading <rosparam> tag: Error within YAML block:")
+    assert judged[-1] == "[1, 2"
+
+
+def test_more_node_rosparam_texts_than_the_tree_keeps(tmp_path: Path) -> None:
+    """Past the texts a tree keeps parsed, each node's text is still read and judged."""
+    count = MAX_YAML_BODIES + 6
+    nodes = "\n".join(f'<node name="n{i}" pkg="p" type="t"><rosparam>k{i}: {i}</rosparam>'
+                      f'<rosparam>bad{i}: [</rosparam></node>' for i in range(count))
+    tree = tree_of(tmp_path, nodes)
+    assert [dict(n.params) for n in tree.nodes] == [{f"k{i}": str(i)} for i in range(count)]
+    assert len([p for p in tree.problems if "Error within YAML block" in p.message]) == count

@@ -257,6 +257,8 @@ class Ros1Base:
         self._child_values: dict[Element, Value] = {}
         """The resolved ``value`` of each ``<param>`` inside a node whose text names no
         anonymous name: the node's record reads it again (see ``_frame_node``)."""
+        self._yaml_bodies: dict[str, tuple[object, str | None]] = {}
+        """``parse_yaml`` of the last ``<rosparam>`` texts: a node's is judged, then read."""
         """Args whose value comes from the environment -> the substitution it comes from."""
         """The element whose attribute is being resolved (for errors found meanwhile)."""
         self.budget = Budget()

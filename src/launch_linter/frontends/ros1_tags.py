@@ -51,6 +51,9 @@ from launch_linter.resolve.xml_safe import Element, line_starts
 
 MAX_OTHER_DESCRIPTIONS = 256
 """Parameters of other names kept as possible descriptions (bounded per tree)."""
+MAX_YAML_BODIES = 64
+"""``<rosparam>`` texts whose documents a tree keeps for its node to read (a node's are
+read right after its children are judged)."""
 _PARAM_SOURCES = ("textfile", "binfile", "command")
 _PARAM_SOURCE_NAMES = frozenset(_PARAM_SOURCES)
 """Where a ``<param>`` takes its value from, other than ``value``, in roslaunch's order."""
@@ -70,6 +73,12 @@ def nodelet_loaded(args: str | None) -> str | None:
     if len(words) >= {"load": 3, "standalone": 2}.get(words[0] if words else "", 9):
         return words[1]
     return NODELET_ARGS_UNKNOWN
+
+
+def _loads_values(attrib: dict[str, str]) -> bool:
+    """Whether a ``<rosparam>`` loads a document's values as parameters: a literal
+    ``load`` command without a ``param`` to put it under."""
+    return (attrib.get("command") or "load") == "load" and "param" not in attrib
 
 
 class Ros1Tags(Ros1Base):
@@ -398,7 +407,7 @@ class Ros1Tags(Ros1Base):
         why they are not read when they are not, and where each is written (a file's key;
         the ``<rosparam>`` element for its text)."""
         attrib = element.attrib
-        if (attrib.get("command") or "load") != "load" or "param" in attrib:
+        if not _loads_values(attrib):
             return [], None, []
         ns_text = attrib.get("ns", "")
         if "$" in ns_text:
@@ -414,7 +423,7 @@ class Ros1Tags(Ros1Base):
             document, why, keys = read_yaml_file_placed(path)
             shown = self._display(path)
         elif element.text and "$(" not in element.text:
-            document, why = parse_yaml(element.text)
+            document, why = self._yaml_body(element.text)
             keys, shown = {}, ""
             if why is not None:
                 # Without PyYAML, flat ``key: value`` lines are still read.
@@ -437,6 +446,25 @@ class Ros1Tags(Ros1Base):
             places.append(here if line_column is None
                           else (shown, line_column[0], line_column[1]))
         return params, None, places
+
+    def _yaml_body(self, text: str) -> tuple[object, str | None]:
+        """``parse_yaml(text)``, once per text in a tree: a node's ``<rosparam>`` text is
+        judged (:meth:`_rosparam`) and then read (:meth:`_frame_node`)."""
+        read = self._yaml_bodies.get(text)
+        if read is None:
+            if len(self._yaml_bodies) >= MAX_YAML_BODIES:  # the documents are not kept
+                self._yaml_bodies.clear()
+            read = self._yaml_bodies[text] = parse_yaml(text)
+        return read
+
+    def _body_syntax_error(self, element: Element, text: str) -> str | None:
+        """``yaml_syntax_error`` of a ``<rosparam>`` text (``text``, as resolved); a text
+        that :meth:`_rosparam_values` reads is parsed once for both: one that reads as a
+        document composes, so only a failure is judged again."""
+        if (text == element.text and "$(" not in text and _loads_values(element.attrib)
+                and self._yaml_body(text)[1] is None):
+            return None
+        return yaml_syntax_error(text)
 
     def _substituted(self, value: str, substituted: str, context: _Context) -> str:
         """A value of a ``<rosparam>`` file as roslaunch loads it under ``subst_value``
@@ -495,7 +523,7 @@ class Ros1Tags(Ros1Base):
                 value is not None and (resolved_text(value) is None or bool(text_of(value)))
                 for value in (_param, _ns)
             )
-            invalid = None if text is None else yaml_syntax_error(text)
+            invalid = None if text is None else self._body_syntax_error(element, text)
             problem = (f"Error within YAML block: {invalid}" if invalid is not None
                        else None if text is None else rosparam_body_problem(text, has_param))
             if problem is not None:
