@@ -156,6 +156,9 @@ class RunNode:
     remappings: tuple[tuple[Subs, Subs], ...] | None = None
     """Its topic remappings (from, to) as written; None when not known (not read, or not
     a list of pairs)."""
+    executable_at: Where | None = None
+    """Where its executable is written when that is not ``where`` (a Python ``Node(``'s
+    ``executable=`` keyword on a line of its own): the word a fix changes."""
 
     def __init__(self, where: Where, condition: Predicate | None, package: Subs | None,
                  executable: Subs | None, name: Subs | None, namespace: Subs | None,
@@ -163,8 +166,9 @@ class RunNode:
                  pushed_namespace: bool = True,
                  parameters: tuple[Params | ParamsFile | ParamsUnknown, ...] = (),
                  uses: tuple[Subs, ...] = (), may_rename: bool = False,
-                 remappings: tuple[tuple[Subs, Subs], ...] | None = None) -> None:
-        # One per node, fourteen fields: put in the instance's dict, a fifth of the cost of
+                 remappings: tuple[tuple[Subs, Subs], ...] | None = None,
+                 executable_at: Where | None = None) -> None:
+        # One per node, fifteen fields: put in the instance's dict, a fifth of the cost of
         # the frozen dataclass's ``object.__setattr__`` per field (see Where).
         fields = self.__dict__
         fields["where"] = where
@@ -181,6 +185,7 @@ class RunNode:
         fields["uses"] = uses
         fields["may_rename"] = may_rename
         fields["remappings"] = remappings
+        fields["executable_at"] = executable_at
 
 
 RENAMING_WORDS = ("__node", "__name", "__ns")

@@ -212,7 +212,8 @@ class Ros2Loader(Ros2Runner):
             missing = missing_executable(self.options.packages, package_text,
                                          resolved_text(executable), self._display)
             if missing is not None:
-                self._report("node_executable_missing", action.where, missing)
+                self._report("node_executable_missing", action.executable_at or action.where,
+                             missing)
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return
@@ -264,7 +265,8 @@ class Ros2Loader(Ros2Runner):
             unread=given.unread, namespace=known_namespace, ros=2, param_lines=given.lines,
             included_at=frame.sites, remappings=None if action.remappings is None else tuple(
                 (self._word(a, scope, frame, where), self._word(b, scope, frame, where))
-                for a, b in action.remappings[:MAX_REMAPPINGS]))
+                for a, b in action.remappings[:MAX_REMAPPINGS]),
+            executable_line=0 if action.executable_at is None else action.executable_at.line)
         self.nodes.append(node)
         if frame.condition.always and self._judging_files:
             self.problems.extend(self._param_files.problems(node, section, given.placed, (

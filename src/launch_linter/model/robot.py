@@ -231,6 +231,8 @@ class NodeRecord(Record):
     node's ``args`` words as roslaunch splits them (None when one is not resolved; empty
     for other nodes): a spawner's ``--namespace`` names where it calls the controller
     manager.
+    ``executable_line`` is the line that writes the executable when it is not ``line`` (a
+    ROS 2 Python ``Node(``'s ``executable=`` keyword), 0 otherwise.
     """
 
     path: str
@@ -250,11 +252,12 @@ class NodeRecord(Record):
     included_at: tuple[Location, ...]
     remappings: tuple[tuple[str, str], ...] | None
     args: tuple[str, ...] | None
+    executable_line: int
 
     __slots__ = (
         "path", "line", "column", "package", "executable", "name", "params", "condition", "kind",
         "plugin", "unread", "namespace", "ros", "param_lines", "included_at", "remappings",
-        "args", "_last_given", "_last_set",
+        "args", "executable_line", "_last_given", "_last_set",
     )
     _private = ("_last_given", "_last_set")
     _last_given: dict[str, str] | None
@@ -279,6 +282,7 @@ class NodeRecord(Record):
         included_at: tuple[Location, ...] = (),
         remappings: tuple[tuple[str, str], ...] | None = (),
         args: tuple[str, ...] | None = (),
+        executable_line: int = 0,
     ) -> None:
         _open(self)  # made for every launched node: see _open
         self.path = path
@@ -298,6 +302,7 @@ class NodeRecord(Record):
         self.included_at = included_at
         self.remappings = remappings
         self.args = args
+        self.executable_line = executable_line
         self._last_given = None
         self._last_set = None
         _seal(self)

@@ -6,7 +6,10 @@ executables for the target distribution (`--ros-distro`, the `ros-distro` key or
 `ROS_DISTRO`) the knowledge base knows, read from the package's build file
 (`knowledge/programs.json`, docs/knowledge.md), when that executable is not among them:
 robot_state_publisher's `state_publisher`, built until Melodic (1.14) and gone from
-Noetic's release (1.15.0 installs `robot_state_publisher` alone; ROS 2 never had it).
+Noetic's release (1.15.0 installs `robot_state_publisher` alone; ROS 2 never had it);
+controller_manager's `spawner.py`, Foxy's and Galactic's, gone from Humble on (2.3.0 installs
+the console scripts `spawner`, `unspawner`). In a Python launch file the finding is at the
+line of the `executable=` keyword, the word to change.
 An error when the distribution is known; without one, an info when a known ROS 1
 release no longer installs it. For a ROS 2 package of the linted workspace, what its
 `CMakeLists.txt` or `setup.py`/`setup.cfg` install into `lib/<package>`, read statically
@@ -44,8 +47,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launch_linter.model.diagnostic import Category, Severity
+from launch_linter.model.diagnostic import Category, Location, Severity
 from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
+from launch_linter.model.record import replace
+from launch_linter.model.robot import NodeRecord
 from launch_linter.rules._api import Finding, RuleContext, frontend_findings
 from launch_linter.rules._nodes import finding_at_node
 
@@ -64,6 +69,16 @@ def _distro_of(context: RuleContext, ros: int | None) -> str | None:
     return None
 
 
+def _at_executable(node: NodeRecord, message: str) -> Finding:
+    """At the line that writes the executable (the word to change), the node's element
+    as related when that is another line."""
+    finding = finding_at_node(node, message)
+    if not node.executable_line or node.executable_line == node.line:
+        return finding
+    return replace(finding, line=node.executable_line, column=1,
+                   related=(Location(node.path, node.line, node.column),))
+
+
 def check(context: RuleContext) -> Iterator[Finding]:
     yield from frontend_findings(context, ID)
     knowledge = context.knowledge
@@ -75,7 +90,7 @@ def check(context: RuleContext) -> Iterator[Finding]:
             fact = knowledge.installed(node.package, node.ros, distro)
             if fact is None or node.executable in fact.executables:
                 continue
-            yield finding_at_node(node, (
+            yield _at_executable(node, (
                 f"{node.package}'s release for {distro.capitalize()} installs no "
                 f"executable '{node.executable}' (only {', '.join(fact.executables)}): "
                 f"the node cannot start; use "

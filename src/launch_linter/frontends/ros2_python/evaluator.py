@@ -211,6 +211,7 @@ class Evaluator:
         running the statement as Python would (a true test returns, by ``_Return``)."""
         self.step()
         tested = self.eval(node.test, env)
+        self.text_tested(node.test, tested)
         test = self.truth(tested)
         if test is True:
             self.run_block(node.body, env)
@@ -226,6 +227,17 @@ class Evaluator:
             self.branches.pop()
             env.vars = before
         return None
+
+    def text_tested(self, node: ast.expr, value: object) -> None:
+        """Notes a text that launch reads as a boolean (``'false'``, ``'True'``: launch's
+        conditions, evaluate_condition_expression_impl.py) tested for truth by Python,
+        whose truth of a text is its being non-empty: ``'false'`` is true, so the test
+        takes the same side for every boolean value an argument is given."""
+        if isinstance(value, str) and value.lower() in BOOLEAN_WORDS:
+            self.problem("py_text_truth", node, (
+                f"Python tests the text {value!r} for truth: any non-empty text is true, "
+                f"'false' as well, so every boolean value takes the same side; compare the "
+                f"text (.lower() == 'true') or use IfCondition"))
 
     def side(self, node: ast.If, positive: bool, text: str | None = None) -> Predicate:
         """The condition a side of ``if <unknown>`` runs under (``text``: the test as
@@ -386,6 +398,7 @@ class Evaluator:
 
     def run_if(self, node: ast.If, env: Env) -> None:
         tested = self.eval(node.test, env)
+        self.text_tested(node.test, tested)
         test = self.truth(tested)
         if test is True:
             self.run_block(node.body, env)
@@ -478,6 +491,11 @@ class Evaluator:
         """Defined by :class:`.expressions.Expressions`."""
         raise NotImplementedError
 
+
+BOOLEAN_WORDS = frozenset({"true", "false"})
+"""Texts launch's conditions read as booleans (ros2/launch launch/launch/conditions/
+evaluate_condition_expression_impl.py, rolling 02595ba, lines 25-26, compared lowered;
+its '1' and '0' are left out: a number's text may be tested on purpose)."""
 
 MAX_GUARD_CLAUSES = 64
 """Guard clauses followed in one function body: an action after the n-th is under n

@@ -136,7 +136,9 @@ class Expressions(Evaluator):
         return self.binary(node.op, self.eval(node.left, env), self.eval(node.right, env), node)
 
     def _conditional(self, node: ast.IfExp, env: Env) -> object:
-        test = self.truth(self.eval(node.test, env))
+        tested = self.eval(node.test, env)
+        self.text_tested(node.test, tested)
+        test = self.truth(tested)
         if test is None:
             return self.unknown(node, "depends on a condition the linter cannot decide")
         return self.eval(node.body if test else node.orelse, env)
@@ -354,6 +356,7 @@ class Expressions(Evaluator):
     def unary(self, node: ast.UnaryOp, env: Env) -> object:
         operand = self.eval(node.operand, env)
         if isinstance(node.op, ast.Not):
+            self.text_tested(node.operand, operand)
             truth = self.truth(operand)
             return self.unknown(node, "depends on an unknown value") if truth is None else (
                 not truth)

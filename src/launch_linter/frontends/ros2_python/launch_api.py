@@ -199,6 +199,7 @@ class Interpreter(NodeArguments):
                     self.problem("roslaunch_error", node, "arguments is one string, not a "
                                  "list: launch passes each of its characters as an argument")
         executable = pick("executable", "node_executable")
+        executable_written = _keyword(node, "executable") or _keyword(node, "node_executable")
         package = kwargs.get("package")
         # The arguments as written are shown only for a static transform publisher.
         args_written = (self.segment(_keyword(node, "arguments") or node)
@@ -217,6 +218,7 @@ class Interpreter(NodeArguments):
             uses=performed([v for k, v in kwargs.items() if k != "condition"]),
             may_rename=may_rename(_words(arguments, kwargs.get("ros_arguments"))),
             remappings=self.remappings(kwargs.get("remappings"), node),
+            executable_at=None if executable_written is None else self.where(executable_written),
         )
 
     def launch_ExecuteProcess(self, args: list[object], kwargs: dict[str, object],
