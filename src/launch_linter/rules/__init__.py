@@ -62,7 +62,6 @@ def _load() -> None:
         py_arguments_single_string,
         py_name_error,
         py_string_as_bool,
-        py_text_truth,
         quaternion_order,
         rep105_order,
         reversed_name,

@@ -75,7 +75,6 @@ CATALOG: tuple[tuple[str, Category], ...] = (
     ("rounded_pi", Category.TF),
     ("ros2_undeclared_arg", Category.LAUNCH),
     ("py_name_error", Category.LAUNCH),
-    ("py_text_truth", Category.LAUNCH),
     ("ros2_unused_include_arg", Category.LAUNCH),
     ("ros1_unused_arg", Category.LAUNCH),
     ("ros1_ignored_attribute", Category.LAUNCH),

@@ -234,7 +234,7 @@ class Evaluator:
         whose truth of a text is its being non-empty: ``'false'`` is true, so the test
         takes the same side for every boolean value an argument is given."""
         if isinstance(value, str) and value.lower() in BOOLEAN_WORDS:
-            self.problem("py_text_truth", node, (
+            self.problem("py_string_as_bool", node, (
                 f"Python tests the text {value!r} for truth: any non-empty text is true, "
                 f"'false' as well, so every boolean value takes the same side; compare the "
                 f"text (.lower() == 'true') or use IfCondition"))

@@ -1,4 +1,5 @@
-"""py_text_truth: a launch argument's boolean text tested for truth in Python."""
+"""py_string_as_bool, value-based criterion: a launch argument's boolean text (its value
+resolved as launch would) tested for truth in Python."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ from pathlib import Path
 
 from launch_linter.engine import LintOptions, lint_paths
 
-RULE = "py_text_truth"
+RULE = "py_string_as_bool"
 FILE = """from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, OpaqueFunction
 from launch.substitutions import LaunchConfiguration
