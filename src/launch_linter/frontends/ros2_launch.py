@@ -8,11 +8,11 @@ includer are visible inside). ``<arg default=...>`` only sets a configuration th
 set yet; ``<let>`` always sets it. A node's namespace is its own ``namespace`` under the
 pushed ``ros_namespace`` configuration.
 
-As in the ROS 1 loader, what launch would refuse becomes a ``roslaunch_error``
-diagnostic and the walk goes on; what cannot be known statically becomes a hole, and a
-transform that depends on it stays in the output marked unresolved, with its presence
-condition. A value set under a condition that the linter cannot decide, and that
-outlives that condition (an include or an unscoped group), becomes a hole.
+As in the ROS 1 loader, what launch would refuse becomes a ``roslaunch_error`` diagnostic
+and the walk goes on; what cannot be known statically becomes a hole, and a transform that
+depends on it stays in the output marked unresolved, with its presence condition. A value
+set under a condition the linter cannot decide that outlives it (an include, an unscoped
+group) becomes a hole.
 """
 
 from __future__ import annotations
@@ -153,8 +153,7 @@ class Ros2Loader(Ros2Runner):
         self.spawned: tuple[str, ...] | None = ()
         self._param_files = ParamFileChecks(options.packages)
 
-    def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()
-              ) -> LaunchTree:
+    def _tree(self, status: FileStatus, undeclared: tuple[UndeclaredUse, ...] = ()) -> LaunchTree:
         # A file that reaches another node it is given to was written for that one.
         unmatched = tuple(u for u in self.unmatched_param_files
                           if u.file not in self.reached_param_files)
@@ -209,11 +208,10 @@ class Ros2Loader(Ros2Runner):
         package_text = resolved_text(package)
         if package_text is not None:
             self._frame_node(action, scope, frame, package_text, resolved_text(executable))
-            missing = missing_executable(self.options.packages, package_text,
-                                         resolved_text(executable), self._display)
-            if missing is not None:
-                self._report("node_executable_missing", action.executable_at or action.where,
-                             missing)
+            if (missing := missing_executable(self.options.packages, package_text,
+                                              resolved_text(executable), self._display)):
+                self._report(
+                    "node_executable_missing", action.executable_at or action.where, missing)
         if not _is_static_tf(resolved_text(package), resolved_text(executable),
                              STATIC_TF_EXECUTABLE):
             return
