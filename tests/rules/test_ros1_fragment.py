@@ -81,6 +81,8 @@ def test_a_fragment_only_a_ros1_file_includes_is_info(tmp_path: Path) -> None:
     {"bringup.launch": ROS2_XML_INCLUDER},
     # An *.xml includer is decided by its package, not proven ROS 1.
     {"outer.launch.xml": ROS1_INCLUDER},
+    # A ROS 1 file naming it in a comment only includes nothing.
+    {"notes.launch": "<launch>\n  <!-- see pipeline.launch.xml -->\n</launch>\n"},
 ])
 def test_a_fragment_a_ros2_or_undecided_file_names_keeps_its_errors(
         tmp_path: Path, includers: dict[str, str]) -> None:

@@ -29,7 +29,12 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 
-from launch_linter.frontends.xml_dialect import is_ros2_xml, reads_as_python, ros1_sign
+from launch_linter.frontends.xml_dialect import (
+    is_ros2_xml,
+    reads_as_python,
+    ros1_sign,
+    without_comments,
+)
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
 from launch_linter.workspace.mentions import MAX_FILE_BYTES, every_writer, named_by_another_file
 from launch_linter.workspace.packages import MAX_WALK_UP, PackageIndex
@@ -68,11 +73,12 @@ def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) ->
 def ros1_fragment(path: str) -> str | None:
     """A ROS 1 launch file naming ``path`` when every launch file near it that writes its
     name (:func:`every_writer`) is a ``*.launch`` file read as ROS 1 (no sign of ROS 2
-    launch XML); None when none does, when another writer is not (ROS 2, Python, YAML,
-    an ``*.xml``), or when the writers are unknown."""
+    launch XML) that writes it outside comments; None when none does, when another
+    writer is not (ROS 2, Python, YAML, an ``*.xml``), or when the writers are unknown."""
     writers = every_writer(path)
     if not writers:
         return None
+    name = os.path.basename(path).encode("utf-8", "surrogateescape")
     for writer in writers:
         if not writer.lower().endswith(".launch"):
             return None
@@ -80,7 +86,8 @@ def ros1_fragment(path: str) -> str | None:
             data = read_regular_file(writer, MAX_FILE_BYTES)
         except (OSError, NotRegularFile):
             return None
-        if reads_as_python(writer, data) or is_ros2_xml(data):
+        if reads_as_python(writer, data) or is_ros2_xml(data) or (
+                name not in without_comments(data)):  # a comment naming it includes nothing
             return None
     return os.path.basename(writers[0])
 
