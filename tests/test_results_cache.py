@@ -437,6 +437,29 @@ def test_a_launch_file_named_by_a_new_file_is_linted_again(
     assert relinted(workspace) == ["inner.launch.xml", "outer.launch.xml"]
 
 
+def test_a_ros1_fragment_whose_includer_turns_ros2_is_linted_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A fragment only a ROS 1 file names depends on that file's dialect (its content)."""
+    from launch_linter.workspace import mentions
+
+    monkeypatch.setattr(mentions, "_names_by_folder", {})  # kept per process otherwise
+    (workspace / "src/moveit/launch").mkdir(parents=True)
+    (workspace / "src/moveit/package.xml").write_text(
+        '<package format="3"><name>moveit</name>\n'
+        "<export><build_type>ament_cmake</build_type></export></package>\n")
+    (workspace / "src/moveit/launch/pipe.launch.xml").write_text(
+        '<launch><node name="m" pkg="moveit" type="mover"/></launch>\n')
+    includer = workspace / "src/moveit/launch/group.launch"
+    includer.write_text('<launch><include file="$(dirname)/pipe.launch.xml"/></launch>\n')
+    assert "pipe.launch.xml" in relinted(workspace)
+    mentions._names_by_folder.clear()
+    assert relinted(workspace) == []
+    edit(includer, "<include", '<let name="x" value="1"/><include')
+    mentions._names_by_folder.clear()
+    assert relinted(workspace) == ["group.launch", "pipe.launch.xml"]
+
+
 def test_install_rules_read_to_locate_an_include_relint_its_includer(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -84,6 +84,5 @@ def _if_never_launched(tree: LaunchTree, path: str, data: bytes | None,
     if reason is None:
         return tree
     problem = Problem(NEVER_LAUNCHED, tree.root, 1, 0,
-                      f"nothing runs this launch file: {reason}; what ros2 launch would "
-                      "refuse in it is reported at info")
+                      f"{reason}; what ros2 launch would refuse in it is reported at info")
     return replace(tree, problems=(*tree.problems, problem))

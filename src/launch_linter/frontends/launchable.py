@@ -11,6 +11,13 @@ ament package that no launch file names and no rule read installs: navigation2's
 ROS 2 and copied with the package into other workspaces. What ``ros2 launch`` would
 refuse in such a file is true of its text but stops nothing.
 
+So is an XML launch file whose name only ROS 1 launch files write (:func:`ros1_fragment`):
+roslaunch reads every file an ``<include file=...>`` names as roslaunch XML, whatever its
+name (roslaunch's ``xmlloader.py``: ``XmlLoader._include_tag`` hands the substituted
+``file`` to ``_parse_launch``, no suffix looked at), and a ROS 2 launch file cannot include
+a ROS 1 one; a MoveIt setup-assistant config whose manifest was switched to ament_cmake
+keeps ``planning_pipeline.launch.xml`` that only its ``move_group.launch`` includes.
+
 A node of a package built in the workspace starts only if the package installs its
 executable into ``lib/<package>`` (:mod:`launch_linter.workspace.executables`, read
 statically): :func:`missing_executable` says so when the package's build files, read
@@ -22,16 +29,26 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 
-from launch_linter.frontends.xml_dialect import reads_as_python, ros1_sign
+from launch_linter.frontends.xml_dialect import (
+    is_ros2_xml,
+    reads_as_python,
+    ros1_sign,
+    without_comments,
+)
 from launch_linter.resolve.xml_safe import NotRegularFile, read_regular_file
-from launch_linter.workspace.mentions import named_by_another_file
+from launch_linter.workspace.mentions import MAX_FILE_BYTES, every_writer, named_by_another_file
 from launch_linter.workspace.packages import MAX_WALK_UP, PackageIndex
 
 
 def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) -> str | None:
-    """Why the ROS 2 launch file ``path`` (``data``: its bytes, if read) is run by nothing,
-    or None when it may be run (installed, named by another launch file or by a CMake
-    command, a test's, or unknown)."""
+    """Why the ROS 2 launch file ``path`` (``data``: its bytes, if read) is never run by
+    ``ros2 launch`` (a sentence), or None when it may be run (installed, named by another
+    launch file or by a CMake command, a test's, or unknown)."""
+    fragment_of = ros1_fragment(path) if path.lower().endswith(".xml") else None
+    if fragment_of is not None:
+        return (f"ros2 launch never runs this file: only ROS 1 launch files name it "
+                f"({fragment_of}), roslaunch reads every file an <include> names as ROS 1 "
+                "launch XML, and no ROS 2 launch file names it")
     installs = packages.installs(path)
     if named_by_another_file(path) is not None or _named_by_cmake(path, packages):
         return None
@@ -41,16 +58,38 @@ def why_never_launched(path: str, data: bytes | None, packages: PackageIndex) ->
     if installs:
         if sign is None or not marked_as_copy(path):
             return None
-        return (f"a ROS 1 launch file ({sign}) in a ROS 2 package, whose name marks it as "
-                "a kept copy, that no launch file names")
+        return (f"nothing runs this launch file: a ROS 1 launch file ({sign}) in a ROS 2 "
+                "package, whose name marks it as a kept copy, that no launch file names")
     if installs is False:
         what = f"a ROS 1 launch file ({sign}): " if sign else ""
-        return (f"{what}its package's install rules install it nowhere and no launch file "
-                "names it, so ros2 launch cannot find it")
+        return (f"nothing runs this launch file: {what}its package's install rules install "
+                "it nowhere and no launch file names it, so ros2 launch cannot find it")
     if sign is not None:
-        return (f"a ROS 1 launch file ({sign}) left in a ROS 2 package: no launch file "
-                "names it and no install rule read installs it")
+        return (f"nothing runs this launch file: a ROS 1 launch file ({sign}) left in a ROS 2 "
+                "package: no launch file names it and no install rule read installs it")
     return None
+
+
+def ros1_fragment(path: str) -> str | None:
+    """A ROS 1 launch file naming ``path`` when every launch file near it that writes its
+    name (:func:`every_writer`) is a ``*.launch`` file read as ROS 1 (no sign of ROS 2
+    launch XML) that writes it outside comments; None when none does, when another
+    writer is not (ROS 2, Python, YAML, an ``*.xml``), or when the writers are unknown."""
+    writers = every_writer(path)
+    if not writers:
+        return None
+    name = os.path.basename(path).encode("utf-8", "surrogateescape")
+    for writer in writers:
+        if not writer.lower().endswith(".launch"):
+            return None
+        try:
+            data = read_regular_file(writer, MAX_FILE_BYTES)
+        except (OSError, NotRegularFile):
+            return None
+        if reads_as_python(writer, data) or is_ros2_xml(data) or (
+                name not in without_comments(data)):  # a comment naming it includes nothing
+            return None
+    return os.path.basename(writers[0])
 
 
 _COPY_MARKS = ("old", "orig", "bak", "backup", "copy")

@@ -8,16 +8,22 @@ install it and neither a launch file of the workspace nor a CMake command of its
 (`add_launch_test`, ...) names it, or it is a ROS 1 launch file (a rostest `<test>`,
 `$(find)`, `<rosparam>`, a node's `type`) that nothing names and no install rule read
 installs, or one installed whose name marks it as a kept copy (`old_x.launch.xml`,
-`x_orig`, `x-backup`, `copy of x`). What `ros2 launch` would refuse in that file is then
-reported at info, not error; this finding says why once.
+`x_orig`, `x-backup`, `copy of x`); or it is an XML launch file that only ROS 1 launch
+files name (`*.launch` files read as ROS 1) and no other launch file does: a roslaunch
+fragment (a MoveIt setup-assistant config whose manifest was switched to ament_cmake keeps
+`planning_pipeline.launch.xml`, included by its `move_group.launch` only). What
+`ros2 launch` would refuse in that file is then reported at info, not error; this finding
+says why once.
 
 ## Why is this bad?
 It is not: it says why the file's refusals are not errors. `ros2 launch <pkg> <file>`
 finds files in the package's installed share folder only, and a launch file reaches
 another only through an include that names it. A ROS 1 rostest file left in an ament
 package (navigation2's `nav2_costmap_2d/test/simple_driving_test.xml`, vendored with the
-package) is refused by ROS 2 launch, but nothing launches it. Delete the leftover, or
-install it and fix it, if it is meant to run.
+package) is refused by ROS 2 launch, but nothing launches it. roslaunch reads every file an
+`<include>` names as roslaunch XML, whatever its name, and a ROS 2 launch file cannot
+include a ROS 1 one: a fragment only ROS 1 files include is never run by `ros2 launch`.
+Delete the leftover, or install it and fix it, if it is meant to run.
 
 ## Example
 ```xml

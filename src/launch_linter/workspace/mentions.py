@@ -48,26 +48,33 @@ _SUFFIX = re.compile(rb"\.(?:py|xml|launch|ya?ml)\b")
 from there (bounded), never with a pattern that starts at every letter of a long word."""
 _NAME_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 MAX_NAME = 255
+MAX_WRITERS = 16
+"""Files kept per name written: past them, who writes the name is unknown."""
 
-_names_by_folder: dict[str, tuple[float, dict[str, tuple[str, ...]], reads.ReadLog]] = {}
-"""For each folder read: when, and each file name written in it → the first two files
-writing it (a file may write its own name, in a usage comment), and what reading them
-read: every file that asks depends on it (the results cache, ``resolve.reads``)."""
+_names_by_folder: dict[
+    str, tuple[float, dict[str, tuple[str, ...]], bool, reads.ReadLog]] = {}
+"""For each folder read: when, each file name written in it → the first
+:data:`MAX_WRITERS` + 1 files writing it (a file may write its own name, in a usage
+comment), whether every file was read (no bound cut the scan, no file failed), and what
+reading them read: every file that asks depends on it (the results cache,
+``resolve.reads``)."""
 _LISTING = reads.suffix_listing(READ_SUFFIXES)
 """The files of a folder that count for the results cache: those that may be read (a
 launch file's name ends with one of these suffixes too)."""
 
 
-def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
-    """Every file name written in the files under ``folder``, with two files writing it."""
+def _names_in(folder: str) -> tuple[dict[str, tuple[str, ...]], bool]:
+    """Every file name written in the files under ``folder``, with the files writing it
+    (at most :data:`MAX_WRITERS` + 1), and whether every file was read."""
     names: dict[str, tuple[str, ...]] = {}
+    complete = True
     files = 0
     folders = 0
     total = 0
     for directory, subdirs, entries in walk(folder):
         folders += 1
         if folders > MAX_FOLDERS:
-            break
+            return names, False
         with contextlib.suppress(OSError):  # a folder gone since it was listed
             reads.note_folder(directory, os.stat(directory), subdirs, entries, _LISTING)
         subdirs[:] = sorted(
@@ -81,18 +88,20 @@ def _names_in(folder: str) -> dict[str, tuple[str, ...]]:
                 continue
             files += 1
             if files > MAX_FILES or total > MAX_TOTAL_BYTES:
-                return names
+                return names, False
             path = os.path.join(directory, entry)
             try:
                 data = read_regular_file(path, MAX_FILE_BYTES)
             except (OSError, NotRegularFile):
+                complete = False
                 continue
             total += len(data)
+            complete = complete and len(data) < MAX_FILE_BYTES
             for text in _file_names(data):
                 writers = names.get(text, ())
-                if len(writers) < 2:
+                if len(writers) <= MAX_WRITERS:
                     names[text] = (*writers, path)
-    return names
+    return names, complete
 
 
 def _file_names(data: bytes) -> set[str]:
@@ -127,10 +136,9 @@ def scope(absolute: str) -> str:
     return os.path.dirname(manifest)
 
 
-def named_by_another_file(path: str) -> str | None:
-    """A launch file near ``path`` (see the module's doc), other than ``path``, that writes
-    its file name."""
-    absolute = os.path.abspath(path)
+def _writers(absolute: str) -> tuple[tuple[str, ...], bool]:
+    """The files near ``absolute`` that write its file name (at most :data:`MAX_WRITERS`
+    + 1, perhaps itself), and whether the scan read every file."""
     folder = scope(absolute)
     now = time.monotonic()
     read = _names_by_folder.get(folder)
@@ -138,9 +146,26 @@ def named_by_another_file(path: str) -> str | None:
         if len(_names_by_folder) >= MAX_CACHED_FOLDERS:
             _names_by_folder.clear()
         with reads.recording() as log:
-            names = _names_in(folder)
-        read = _names_by_folder[folder] = (now, names, log)
-    reads.depend_on(read[2])
-    names = read[1]
-    others = [w for w in names.get(os.path.basename(absolute), ()) if w != absolute]
+            names, complete = _names_in(folder)
+        read = _names_by_folder[folder] = (now, names, complete, log)
+    reads.depend_on(read[3])
+    return read[1].get(os.path.basename(absolute), ()), read[2]
+
+
+def named_by_another_file(path: str) -> str | None:
+    """A launch file near ``path`` (see the module's doc), other than ``path``, that writes
+    its file name."""
+    absolute = os.path.abspath(path)
+    others = [w for w in _writers(absolute)[0] if w != absolute]
     return others[0] if others else None
+
+
+def every_writer(path: str) -> tuple[str, ...] | None:
+    """Every launch file near ``path`` (see the module's doc), other than ``path``, that
+    writes its file name; None when that is unknown (a bound cut the scan, a file could
+    not be read, or more than :data:`MAX_WRITERS` write it)."""
+    absolute = os.path.abspath(path)
+    writers, complete = _writers(absolute)
+    if not complete or len(writers) > MAX_WRITERS:
+        return None
+    return tuple(w for w in writers if w != absolute)
