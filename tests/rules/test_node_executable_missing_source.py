@@ -5,10 +5,16 @@ files running `state_publisher`)."""
 
 from __future__ import annotations
 
+import os
 import time
 from pathlib import Path
 
+import pytest
+
+from launch_linter import __version__
+from launch_linter.commands.options import NO_CACHE_VARIABLE
 from launch_linter.engine import LintOptions, lint_paths
+from launch_linter.results_cache import ResultsCache
 
 RULE = "node_executable_missing"
 MANIFEST = "<package><name>{name}</name><buildtool_depend>catkin</buildtool_depend></package>\n"
@@ -121,3 +127,25 @@ def test_a_ros2_source_copy_is_judged_by_its_own_install_rules(tmp_path: Path) -
         "project(robot_state_publisher)\nadd_executable(state_publisher src/a.cpp)\n"
         "install(TARGETS state_publisher DESTINATION lib/${PROJECT_NAME})\n")
     assert lint(path, None, "humble") == []
+
+
+def test_a_source_copy_added_later_relints_through_the_results_cache(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The tree depends on the package crawl that found (or did not find) the source.
+    monkeypatch.delenv(NO_CACHE_VARIABLE, raising=False)
+    monkeypatch.chdir(tmp_path)
+    src = tmp_path / "ws" / "src"
+    launch_file(package(src, "my_robot"))
+    options = LintOptions(select=frozenset({RULE}), ros_distro="noetic")
+
+    def cached() -> tuple[list[int], list[str]]:
+        cache = ResultsCache.open(str(tmp_path / "cache"), __version__, options)
+        assert cache is not None
+        found = lint_paths(["ws"], options, keep_trees=False, cache=cache).diagnostics
+        cache.save()
+        return [d.line for d in found], [os.path.basename(p) for p in cache.missed]
+
+    assert cached() == ([2], ["view.launch"])
+    assert cached() == ([2], [])
+    package(src, "robot_state_publisher", RSP_CMAKE)
+    assert cached() == ([], ["view.launch"])
