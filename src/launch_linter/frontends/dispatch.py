@@ -13,7 +13,9 @@ from launch_linter.frontends.robot.describe import attach_robot
 from launch_linter.frontends.robot.standalone import load_description
 from launch_linter.frontends.ros1 import LoadOptions, Ros1Loader, load_ros1
 from launch_linter.frontends.xml_dialect import is_ros2_xml, reads_as_python
+from launch_linter.knowledge import bundled
 from launch_linter.model.diagnostic import Problem
+from launch_linter.model.distro import ROS1_DISTROS, ROS2_DISTROS
 from launch_linter.model.launch import LaunchTree
 from launch_linter.model.record import replace
 from launch_linter.resolve.xml_safe import read_launch_bytes
@@ -70,7 +72,25 @@ def load_tree(path: str, options: LoadOptions, data: bytes | None = None) -> Lau
         from launch_linter.frontends.declarations import attach_declarations
 
         tree = attach_declarations(tree, options.packages)
-    return tree
+    return _with_built_here(tree, options)
+
+
+def _with_built_here(tree: LaunchTree, options: LoadOptions) -> LaunchTree:
+    """``tree`` with the packages of its nodes that the knowledge base has release facts
+    for and whose source is under a linted root (``LaunchTree.built_here``): only those
+    ask for the packages (the crawl is paid when a release fact could be wrong)."""
+    knowledge = bundled() if options.knowledge is None else options.knowledge
+    asked: dict[str, bool] = {}
+    for node in tree.nodes:
+        package = node.package
+        if node.kind != "node" or not package or package in asked:
+            continue
+        asked[package] = any(
+            knowledge.installed(package, node.ros, distro) is not None
+            for distro in (*ROS1_DISTROS, *ROS2_DISTROS)
+        ) and options.packages.in_source(package)
+    built_here = tuple(package for package, here in asked.items() if here)
+    return replace(tree, built_here=built_here) if built_here else tree
 
 
 def _if_never_launched(tree: LaunchTree, path: str, data: bytes | None,

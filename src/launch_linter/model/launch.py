@@ -293,12 +293,16 @@ class LaunchTree(Record):
     declarations: tuple[NodeDeclarations, ...]
     """The parameters workspace nodes of the tree declare, where their source shows them
     completely (``workspace/node_declarations.py``)."""
+    built_here: tuple[str, ...]
+    """The packages of the tree's nodes whose release the knowledge base describes and
+    whose source is under a linted root: their own build files, not that release,
+    decide which executables they have (a source checkout shadows the installed one)."""
 
     __slots__ = (
         "root", "status", "transforms", "problems", "files", "comments", "element_lines",
         "descriptions", "nodes", "joints", "robots", "undeclared", "parse_check_only",
         "forwarded", "unmatched_param_files", "doubled_namespaces", "spawned",
-        "declarations",
+        "declarations", "built_here",
     )
 
     def __init__(
@@ -321,6 +325,7 @@ class LaunchTree(Record):
         doubled_namespaces: tuple[DoubledNamespace, ...] = (),
         spawned: tuple[str, ...] | None = (),
         declarations: tuple[NodeDeclarations, ...] = (),
+        built_here: tuple[str, ...] = (),
     ) -> None:
         _open(self)  # made for every root file: see _open
         self.root = root
@@ -341,4 +346,5 @@ class LaunchTree(Record):
         self.doubled_namespaces = doubled_namespaces
         self.spawned = spawned
         self.declarations = declarations
+        self.built_here = built_here
         _seal(self)

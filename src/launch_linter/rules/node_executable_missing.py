@@ -11,10 +11,15 @@ controller_manager's `spawner.py`, Foxy's and Galactic's, gone from Humble on (2
 the console scripts `spawner`, `unspawner`). In a Python launch file the finding is at the
 line of the `executable=` keyword, the word to change.
 An error when the distribution is known; without one, an info when a known ROS 1
-release no longer installs it. For a ROS 2 package of the linted workspace, what its
-`CMakeLists.txt` or `setup.py`/`setup.cfg` install into `lib/<package>`, read statically
-(docs/workspace.md), decides instead: an error when that reading is complete and names
-no such executable.
+release no longer installs it. The release decides only for a package not in the linted
+workspace: when the package's source is under a linted root (a `package.xml` of that
+name), that checkout shadows the installed release and its own build file decides (an
+older or patched copy may build `state_publisher`; in a ROS 1 devel space every
+`add_executable` target and script is runnable without install). For a ROS 2 package of
+the linted workspace, what its `CMakeLists.txt` or `setup.py`/`setup.cfg` install into
+`lib/<package>`, read statically (docs/workspace.md), decides: an error when that
+reading is complete and names no such executable. A ROS 1 package of the workspace is
+not judged (its catkin build file is not read for this).
 
 ## Why is this bad?
 roslaunch cannot start the node ("cannot launch node of type [robot_state_publisher/
@@ -39,8 +44,8 @@ transforms.
 ```
 
 ## Known problems
-A source checkout of an older release in the workspace shadows the installed package
-and may still build the old executable.
+A ROS 1 package whose source is in the workspace is left unjudged, even when its
+`CMakeLists.txt` provably builds no such executable.
 """
 
 from __future__ import annotations
@@ -82,8 +87,10 @@ def _at_executable(node: NodeRecord, message: str) -> Finding:
 def check(context: RuleContext) -> Iterator[Finding]:
     yield from frontend_findings(context, ID)
     knowledge = context.knowledge
+    built_here = frozenset(context.tree.built_here)
     for node in context.tree.nodes:
-        if node.kind != "node" or node.plugin is not None or not node.executable:
+        if (node.kind != "node" or node.plugin is not None or not node.executable
+                or node.package in built_here):
             continue
         distro = _distro_of(context, node.ros)
         if distro is not None:

@@ -185,6 +185,15 @@ class PackageIndex:
                                  lambda: read_executables(directory, name))
         return None if found is None else (directory, found)
 
+    def in_source(self, name: str) -> bool:
+        """Whether the package ``name`` is found in source under a linted root (not an
+        installed prefix, not a further source place): its own build file, not a
+        release, decides what it builds; two copies of it under the roots count."""
+        directory = self.find(name)
+        if directory is None or directory in self._installed:
+            return False
+        return name in self._twice or any(_under(directory, root) for root in self.roots)
+
     def installs(self, path: str, catkin: bool = False) -> bool | None:
         """Whether the install rules of the ROS 2 package found in source that holds
         ``path`` install it (anywhere in its share folder): False only when every rule
