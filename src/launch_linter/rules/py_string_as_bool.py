@@ -100,16 +100,7 @@ SEVERITY = Severity.WARNING
 EXAMPLE_PATH = "example.launch.py"
 
 
-VALUE_NOTE = "Python tests the text "
-"""How the interpreter's value-based note begins (frontends/ros2_python/evaluator.py)."""
-
-
 def check(context: RuleContext) -> Iterable[Finding]:
     if context.study:
         return ()
-    found = list(frontend_findings(context, ID))
-    # The syntax scan and the interpreter's values can both see one test: one finding per
-    # test, the scan's, which names the argument.
-    named = {(f.path, f.line) for f in found if not f.message.startswith(VALUE_NOTE)}
-    return [f for f in found
-            if not (f.message.startswith(VALUE_NOTE) and (f.path, f.line) in named)]
+    return frontend_findings(context, ID)

@@ -68,6 +68,9 @@ class Evaluator:
     """Whether an ``OpaqueFunction`` will be run later, in its scopes (then they stay)."""
     served: list[object] = field(default_factory=list)
     """What a script gives ``LaunchService.include_launch_description``."""
+    truth_told: frozenset[int] = frozenset()
+    """Lines where the syntax scan (``string_truth``) reports a truth test already: its
+    finding names the argument, so :meth:`text_tested` says nothing more there."""
     environ: Mapping[str, str] = field(default_factory=dict)
     """The environment the run is told of (``--env``, and ``ROS_DISTRO`` from
     ``--ros-distro``): a Python comparison of one of its variables is decided, so that a
@@ -233,7 +236,8 @@ class Evaluator:
         conditions, evaluate_condition_expression_impl.py) tested for truth by Python,
         whose truth of a text is its being non-empty: ``'false'`` is true, so the test
         takes the same side for every boolean value an argument is given."""
-        if isinstance(value, str) and value.lower() in BOOLEAN_WORDS:
+        if (isinstance(value, str) and value.lower() in BOOLEAN_WORDS
+                and self.where(node).line not in self.truth_told):
             self.problem("py_string_as_bool", node, (
                 f"Python tests the text {value!r} for truth: any non-empty text is true, "
                 f"'false' as well, so every boolean value takes the same side; compare the "

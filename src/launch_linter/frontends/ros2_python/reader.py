@@ -145,12 +145,13 @@ def read_python(path: str, data: bytes, budget: Budget | None = None,
     )
     interpreter = Interpreter(path, source, environ=dict(environ or {}),
                               installed=installed, bound=_once(bound_names, tree))
+    truth = string_truth_problems(tree) if may_test_arguments(source) else ()
+    interpreter.truth_told = frozenset(problem.line for problem in truth)
     actions = _launch_description(interpreter, tree)
     if budget is not None:
         # The interpreter's own step limit bounds one file; the root file's budget bounds
         # a file included many times.
         budget.step(interpreter.steps)
-    truth = string_truth_problems(tree) if may_test_arguments(source) else ()
     problems = (*interpreter.problems, *truth)
     return FileRead(FORMAT, actions, comments, tuple(lines), problems,
                     interpreter.forget_deferred_scopes if interpreter.deferring else None)
